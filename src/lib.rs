@@ -1,0 +1,29 @@
+//! # hycon
+//!
+//! The assumed-stress hybrid contact method of Kubomura and Pian for plane elasticity, as a
+//! library for C and C++ finite-element codes (through [`ffi`]) and for Rust.
+//!
+//! Modules, each owning one concept:
+//! * [`material`]: isotropic plane strain / plane stress material (`S`, `D`).
+//! * [`element`]: pure element kernels (hybrid 4/5/6-node, Pian-Sumihara, Q4): stiffness, stress
+//!   recovery, edge tractions.
+//! * [`mesh`]: mesh storage, graded 2:1 mesh generators with transition elements, quality report.
+//! * [`assembly`]: dof numbering and sparse assembly (pattern built once, values refilled).
+//! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.
+//! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
+//!   stresses.
+//! * [`ffi`]: the C ABI, a thin checked layer over the above.
+#![deny(unsafe_op_in_unsafe_fn)]
+#![warn(missing_docs)]
+
+pub mod assembly;
+pub mod element;
+pub mod error;
+pub mod ffi;
+pub mod material;
+pub mod mesh;
+pub mod model;
+pub mod solver;
+
+pub use error::{Error, Result, ShapeError};
+pub use material::{Analysis, Material};
