@@ -75,3 +75,70 @@ impl Formulation {
         }
     }
 }
+
+/// Check an element's shape for `formulation`: node count, finite coordinates, positive area,
+/// counter-clockwise order, convexity (tolerances relative to the element size).
+pub fn check_shape(formulation: Formulation, coords: &[[f64; 2]]) -> Result<(), ShapeError> {
+    let _ = (formulation, coords);
+    unimplemented!("element kernels are being written")
+}
+
+/// Element stiffness `K` into `out` (leading `2n x 2n` block; the rest is zeroed). Returns the
+/// number of element dofs `2n`. Never allocates.
+pub fn stiffness_into(
+    formulation: Formulation,
+    coords: &[[f64; 2]],
+    material: &Material,
+    out: &mut ElementMatrix,
+) -> Result<usize, ShapeError> {
+    let _ = (formulation, coords, material, out);
+    unimplemented!("element kernels are being written")
+}
+
+/// The stress field recovered in one element from its nodal displacements (`beta = H^-1 G q`
+/// for the hybrid elements, `D B q` for Q4). Plain data: copy it freely.
+#[derive(Debug, Clone, Copy)]
+pub struct StressField {
+    formulation: Formulation,
+    n_nodes: usize,
+    coords: [[f64; 2]; MAX_NODES],
+    q: ElementVector,
+    beta: SVector<f64, MAX_BETA>,
+    n_beta: usize,
+}
+
+impl StressField {
+    /// Stress `[sx, sy, txy]` at a physical point `p` of the element.
+    pub fn at(&self, p: [f64; 2]) -> [f64; 3] {
+        let _ = (p, self.formulation, self.n_nodes, self.coords, self.q, self.n_beta);
+        unimplemented!("element kernels are being written")
+    }
+
+    /// Stress at the element centroid.
+    pub fn at_centroid(&self) -> [f64; 3] {
+        unimplemented!("element kernels are being written")
+    }
+
+    /// Traction `Nn sigma` (outward normal) at parameter `s` in `[0, 1]` along boundary edge
+    /// `edge` (from local node `edge` to `edge + 1`, cyclically).
+    pub fn edge_traction(&self, edge: usize, s: f64) -> [f64; 2] {
+        let _ = (edge, s);
+        unimplemented!("element kernels are being written")
+    }
+
+    /// The stress parameters `beta` (empty for Q4).
+    pub fn beta(&self) -> &[f64] {
+        &self.beta.as_slice()[..self.n_beta]
+    }
+}
+
+/// Recover the stress field of an element from its dofs `q` (`2n` values, element dof order).
+pub fn recover_stress(
+    formulation: Formulation,
+    coords: &[[f64; 2]],
+    material: &Material,
+    q: &[f64],
+) -> Result<StressField, ShapeError> {
+    let _ = (formulation, coords, material, q);
+    unimplemented!("element kernels are being written")
+}
