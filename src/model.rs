@@ -1,1 +1,393 @@
-//! (being written)
+//! A linear static problem on a mesh: prescribed displacements (zero or not), nodal forces and
+//! line loads, solved with the sparse Cholesky factorization of the free-free stiffness.
+//!
+//! With `q_p` the prescribed values, the free displacements solve
+//! `K_ff q_f = f_f - K_fp q_p`. [`LinearSystem`] keeps the dof map, the assembled pattern and the
+//! factorization, so one factorization serves any number of load cases (and, in the contact
+//! method, every contact iteration). Reactions and element stresses are computed only when
+//! asked for.
+
+use crate::assembly::{DofMap, SparsePattern, dof, for_each_element_matrix};
+use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
+use crate::error::{Error, Result};
+use crate::material::Material;
+use crate::mesh::Mesh;
+use crate::solver::SparseCholesky;
+use faer::Mat;
+
+/// A prescribed displacement component.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prescribed {
+    /// Node index.
+    pub node: usize,
+    /// 0 = x, 1 = y.
+    pub dir: usize,
+    /// Prescribed displacement.
+    pub value: f64,
+}
+
+/// A line load on a boundary edge `[a, b]`, linear along it: force per unit length of edge
+/// (traction times thickness), given as global `[fx, fy]` at `a` and at `b`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineLoad {
+    /// The edge's end nodes.
+    pub nodes: [usize; 2],
+    /// Force per unit length at the two ends.
+    pub load: [[f64; 2]; 2],
+}
+
+/// Mesh, materials, formulation, boundary conditions and loads of a linear static problem.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// The mesh (material indices refer to `materials`).
+    pub mesh: Mesh,
+    /// Materials, indexed by `mesh.element_material`.
+    pub materials: Vec<Material>,
+    /// Element formulation used for every element.
+    pub formulation: Formulation,
+    /// Prescribed displacement components.
+    pub prescribed: Vec<Prescribed>,
+    /// Nodal forces `(node, [fx, fy])`.
+    pub nodal_forces: Vec<(usize, [f64; 2])>,
+    /// Line loads on boundary edges.
+    pub line_loads: Vec<LineLoad>,
+}
+
+impl Model {
+    /// A model with no boundary conditions or loads yet.
+    pub fn new(mesh: Mesh, materials: Vec<Material>, formulation: Formulation) -> Self {
+        Model {
+            mesh,
+            materials,
+            formulation,
+            prescribed: Vec::new(),
+            nodal_forces: Vec::new(),
+            line_loads: Vec::new(),
+        }
+    }
+
+    /// Prescribe both displacement components of every node in `nodes`.
+    pub fn fix(&mut self, nodes: &[usize], value: [f64; 2]) {
+        for &node in nodes {
+            for (dir, &v) in value.iter().enumerate() {
+                self.prescribed.push(Prescribed { node, dir, value: v });
+            }
+        }
+    }
+
+    /// Prescribe displacement component `dir` of every node in `nodes`.
+    pub fn fix_dir(&mut self, nodes: &[usize], dir: usize, value: f64) {
+        self.prescribed
+            .extend(nodes.iter().map(|&node| Prescribed { node, dir, value }));
+    }
+
+    /// A uniform line load (force per unit length) on every edge of `edges`.
+    pub fn load_edges(&mut self, edges: &[[usize; 2]], load: [f64; 2]) {
+        self.line_loads.extend(edges.iter().map(|&nodes| LineLoad {
+            nodes,
+            load: [load, load],
+        }));
+    }
+
+    /// Check materials, mesh, element shapes, boundary conditions and loads.
+    pub fn validate(&self) -> Result<()> {
+        for m in &self.materials {
+            m.validate()?;
+        }
+        self.mesh.validate()?;
+        let n = self.mesh.n_nodes();
+        let mut coords = [[0.0; 2]; MAX_NODES];
+        for e in 0..self.mesh.n_elements() {
+            let k = self.mesh.element_coords(e, &mut coords);
+            element::check_shape(self.formulation, &coords[..k])
+                .map_err(|kind| Error::at_element(kind, e))?;
+        }
+        let mut seen = vec![false; 2 * n];
+        for p in &self.prescribed {
+            if p.node >= n || p.dir > 1 || !p.value.is_finite() {
+                return Err(Error::InvalidInput(format!(
+                    "bad prescribed displacement {p:?} (mesh has {n} nodes)"
+                )));
+            }
+            let d = dof(p.node, p.dir);
+            if std::mem::replace(&mut seen[d], true) {
+                return Err(Error::InvalidInput(format!(
+                    "node {} direction {} is prescribed twice",
+                    p.node, p.dir
+                )));
+            }
+        }
+        for (node, f) in &self.nodal_forces {
+            if *node >= n || !(f[0].is_finite() && f[1].is_finite()) {
+                return Err(Error::InvalidInput(format!("bad nodal force on node {node}: {f:?}")));
+            }
+        }
+        for l in &self.line_loads {
+            let finite = l.load.iter().flatten().all(|v| v.is_finite());
+            if l.nodes.iter().any(|&a| a >= n) || l.nodes[0] == l.nodes[1] || !finite {
+                return Err(Error::InvalidInput(format!("bad line load {l:?}")));
+            }
+        }
+        Ok(())
+    }
+
+    /// External force vector over all dofs: nodal forces plus consistent line-load forces
+    /// (`f_a = L (2 q_a + q_b) / 6`, `f_b = L (q_a + 2 q_b) / 6` for a linear load `q`).
+    pub fn external_forces(&self) -> Vec<f64> {
+        let mut f = vec![0.0; 2 * self.mesh.n_nodes()];
+        for &(node, force) in &self.nodal_forces {
+            f[dof(node, 0)] += force[0];
+            f[dof(node, 1)] += force[1];
+        }
+        for l in &self.line_loads {
+            let [a, b] = l.nodes;
+            let (pa, pb) = (self.mesh.nodes[a], self.mesh.nodes[b]);
+            let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
+            for dir in 0..2 {
+                let (qa, qb) = (l.load[0][dir], l.load[1][dir]);
+                f[dof(a, dir)] += len * (2.0 * qa + qb) / 6.0;
+                f[dof(b, dir)] += len * (qa + 2.0 * qb) / 6.0;
+            }
+        }
+        f
+    }
+
+    /// Prescribed displacement values over all dofs (zero where free).
+    pub fn prescribed_values(&self) -> Vec<f64> {
+        let mut q = vec![0.0; 2 * self.mesh.n_nodes()];
+        for p in &self.prescribed {
+            q[dof(p.node, p.dir)] = p.value;
+        }
+        q
+    }
+
+    /// Assemble, factor and solve in one call.
+    pub fn solve(&self) -> Result<Solution> {
+        let mut system = LinearSystem::new(self)?;
+        system.solve(self)
+    }
+
+    /// Element forces `K q` summed over all elements (length `2 n_nodes`): the equivalent nodal
+    /// forces the elements exert; at prescribed dofs minus external forces this is the reaction.
+    pub fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
+        let mut r = vec![0.0; q.len()];
+        let mut ke = ElementMatrix::zeros();
+        for_each_element_matrix(
+            &self.mesh,
+            &self.materials,
+            self.formulation,
+            &mut ke,
+            |_, gd, nd, ke| {
+                for a in 0..nd {
+                    r[gd[a]] += (0..nd).map(|b| ke[(a, b)] * q[gd[b]]).sum::<f64>();
+                }
+            },
+        )?;
+        Ok(r)
+    }
+}
+
+/// The factored free-free stiffness of a model, reusable for many right-hand sides.
+#[derive(Debug)]
+pub struct LinearSystem {
+    dofs: DofMap,
+    pattern: SparsePattern,
+    cholesky: SparseCholesky,
+}
+
+impl LinearSystem {
+    /// Validate, number the dofs, check every body is held against rigid motion, assemble and
+    /// factor `K_ff`.
+    pub fn new(model: &Model) -> Result<Self> {
+        model.validate()?;
+        check_rigid_body_support(model)?;
+        let dofs = DofMap::new(
+            model.mesh.n_nodes(),
+            model.prescribed.iter().map(|p| dof(p.node, p.dir)),
+        );
+        let mut pattern = SparsePattern::new(&model.mesh, &dofs);
+        pattern.assemble(&model.mesh, &model.materials, model.formulation, &dofs)?;
+        let mut cholesky = SparseCholesky::analyze(pattern.symbolic())?;
+        cholesky.factorize(pattern.matrix())?;
+        Ok(LinearSystem {
+            dofs,
+            pattern,
+            cholesky,
+        })
+    }
+
+    /// The free-dof numbering.
+    pub fn dofs(&self) -> &DofMap {
+        &self.dofs
+    }
+
+    /// Number of stored entries of the lower triangle of `K_ff` and of its factor `L`.
+    pub fn nnz(&self) -> (usize, usize) {
+        (self.pattern.nnz(), self.cholesky.nnz_l())
+    }
+
+    /// The factorization (for batched solves on free dofs).
+    pub fn cholesky(&mut self) -> &mut SparseCholesky {
+        &mut self.cholesky
+    }
+
+    /// Solve for the model's loads and prescribed displacements (the model must be the one this
+    /// system was built from, up to load and prescribed *values*).
+    pub fn solve(&mut self, model: &Model) -> Result<Solution> {
+        let f = model.external_forces();
+        let qp = model.prescribed_values();
+        // f_f - K_fp q_p: the element forces of the prescribed motion, at the free dofs.
+        let kq = if qp.iter().any(|&v| v != 0.0) {
+            model.internal_forces(&qp)?
+        } else {
+            vec![0.0; qp.len()]
+        };
+        let mut rhs = Mat::<f64>::zeros(self.dofs.n_free(), 1);
+        for d in 0..qp.len() {
+            if let Some(i) = self.dofs.equation(d) {
+                rhs[(i, 0)] = f[d] - kq[d];
+            }
+        }
+        self.cholesky.solve_in_place(rhs.as_mut())?;
+        let mut q = qp;
+        for (d, v) in q.iter_mut().enumerate() {
+            if let Some(i) = self.dofs.equation(d) {
+                *v = rhs[(i, 0)];
+            }
+        }
+        if let Some(d) = q.iter().position(|v| !v.is_finite()) {
+            return Err(Error::Solver(format!("non-finite displacement at dof {d}")));
+        }
+        Ok(Solution { q })
+    }
+}
+
+/// Displacements of a solved model; reactions and stresses are derived on demand.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// Displacements over all dofs, `[u0, v0, u1, v1, ...]`.
+    pub q: Vec<f64>,
+}
+
+impl Solution {
+    /// Displacement `[u, v]` of a node.
+    pub fn displacement(&self, node: usize) -> [f64; 2] {
+        [self.q[dof(node, 0)], self.q[dof(node, 1)]]
+    }
+
+    /// Reactions: `K q - f` over all dofs (non-zero only at prescribed dofs, up to round-off).
+    pub fn reactions(&self, model: &Model) -> Result<Vec<f64>> {
+        let mut r = model.internal_forces(&self.q)?;
+        for (ri, fi) in r.iter_mut().zip(model.external_forces()) {
+            *ri -= fi;
+        }
+        Ok(r)
+    }
+
+    /// The recovered stress field of element `e`.
+    pub fn stress_field(&self, model: &Model, e: usize) -> Result<StressField> {
+        let mut coords = [[0.0; 2]; MAX_NODES];
+        let n = model.mesh.element_coords(e, &mut coords);
+        let mut qe = [0.0; 2 * MAX_NODES];
+        for (i, &node) in model.mesh.element(e).iter().enumerate() {
+            qe[2 * i..2 * i + 2].copy_from_slice(&self.displacement(node));
+        }
+        let material = &model.materials[model.mesh.element_material[e]];
+        element::recover_stress(model.formulation, &coords[..n], material, &qe[..2 * n])
+            .map_err(|kind| Error::at_element(kind, e))
+    }
+}
+
+/// Every connected body must be held against its three rigid-body motions by prescribed
+/// displacements: the rigid modes `(1, 0)`, `(0, 1)`, `(-(y - yc), x - xc) / L` restricted to the
+/// body's prescribed dofs must have rank 3. Also rejects nodes that belong to no element and are
+/// not fully prescribed.
+fn check_rigid_body_support(model: &Model) -> Result<()> {
+    let mesh = &model.mesh;
+    let body = connected_bodies(mesh);
+    let n_bodies = body.iter().filter_map(|b| *b).max().map_or(0, |m| m + 1);
+    let mut prescribed = vec![[false; 2]; mesh.n_nodes()];
+    for p in &model.prescribed {
+        prescribed[p.node][p.dir] = true;
+    }
+    if let Some(node) = (0..mesh.n_nodes()).find(|&i| body[i].is_none() && prescribed[i] != [true; 2]) {
+        return Err(Error::Singular(format!(
+            "node {node} belongs to no element and is not fully prescribed"
+        )));
+    }
+    for b in 0..n_bodies {
+        let nodes: Vec<usize> = (0..mesh.n_nodes()).filter(|&i| body[i] == Some(b)).collect();
+        let rank = rigid_mode_rank(mesh, &nodes, &prescribed);
+        if rank < 3 {
+            let first = nodes.first().copied().unwrap_or(0);
+            return Err(Error::Singular(format!(
+                "body {b} (the {} nodes connected to node {first}) is not held against rigid \
+                 motion: its prescribed displacements fix only {rank} of its 3 rigid-body modes",
+                nodes.len()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Rank of the rigid-body modes of `nodes` restricted to their prescribed dofs.
+fn rigid_mode_rank(mesh: &Mesh, nodes: &[usize], prescribed: &[[bool; 2]]) -> usize {
+    let count = nodes.len().max(1) as f64;
+    let (xc, yc) = nodes.iter().fold((0.0, 0.0), |(x, y), &i| {
+        (x + mesh.nodes[i][0] / count, y + mesh.nodes[i][1] / count)
+    });
+    let scale = nodes
+        .iter()
+        .map(|&i| (mesh.nodes[i][0] - xc).hypot(mesh.nodes[i][1] - yc))
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let mut gram = nalgebra::Matrix3::<f64>::zeros();
+    for &i in nodes {
+        let (x, y) = ((mesh.nodes[i][0] - xc) / scale, (mesh.nodes[i][1] - yc) / scale);
+        for (dir, row) in [[1.0, 0.0, -y], [0.0, 1.0, x]].iter().enumerate() {
+            if prescribed[i][dir] {
+                let r = nalgebra::Vector3::from_row_slice(row);
+                gram += r * r.transpose();
+            }
+        }
+    }
+    let eig = gram.symmetric_eigenvalues();
+    let max = eig.max();
+    eig.iter().filter(|&&l| l > 1e-10 * max.max(1e-300) && max > 0.0).count()
+}
+
+/// Connected body index of every node (through shared elements); `None` for orphan nodes.
+fn connected_bodies(mesh: &Mesh) -> Vec<Option<usize>> {
+    let mut parent: Vec<usize> = (0..mesh.n_nodes()).collect();
+    fn find(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    let mut used = vec![false; mesh.n_nodes()];
+    for e in 0..mesh.n_elements() {
+        let nodes = mesh.element(e);
+        for &n in nodes {
+            used[n] = true;
+            let (a, b) = (find(&mut parent, nodes[0]), find(&mut parent, n));
+            parent[a] = b;
+        }
+    }
+    let mut label = vec![usize::MAX; mesh.n_nodes()];
+    let mut next = 0;
+    (0..mesh.n_nodes())
+        .map(|i| {
+            if !used[i] {
+                return None;
+            }
+            let root = find(&mut parent, i);
+            if label[root] == usize::MAX {
+                label[root] = next;
+                next += 1;
+            }
+            Some(label[root])
+        })
+        .collect()
+}
