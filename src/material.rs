@@ -56,7 +56,9 @@ impl Material {
             )));
         }
         if e <= 0.0 {
-            return Err(Error::Material(format!("Young's modulus must be > 0, got {e}")));
+            return Err(Error::Material(format!(
+                "Young's modulus must be > 0, got {e}"
+            )));
         }
         if !(nu > -1.0 && nu < 0.5) {
             return Err(Error::Material(format!(
@@ -142,7 +144,9 @@ mod tests {
     fn compliance_inverts_elasticity() {
         for analysis in [Analysis::PlaneStrain, Analysis::PlaneStress] {
             let m = Material::new(210e3, 0.3, 1.0, analysis).unwrap();
-            let err = (m.compliance() * m.elasticity() - Matrix3::identity()).abs().max();
+            let err = (m.compliance() * m.elasticity() - Matrix3::identity())
+                .abs()
+                .max();
             assert!(err < 1e-14, "{analysis:?}: |S D - I| = {err}");
         }
     }

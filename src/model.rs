@@ -70,7 +70,11 @@ impl Model {
     pub fn fix(&mut self, nodes: &[usize], value: [f64; 2]) {
         for &node in nodes {
             for (dir, &v) in value.iter().enumerate() {
-                self.prescribed.push(Prescribed { node, dir, value: v });
+                self.prescribed.push(Prescribed {
+                    node,
+                    dir,
+                    value: v,
+                });
             }
         }
     }
@@ -119,7 +123,9 @@ impl Model {
         }
         for (node, f) in &self.nodal_forces {
             if *node >= n || !(f[0].is_finite() && f[1].is_finite()) {
-                return Err(Error::InvalidInput(format!("bad nodal force on node {node}: {f:?}")));
+                return Err(Error::InvalidInput(format!(
+                    "bad nodal force on node {node}: {f:?}"
+                )));
             }
         }
         for l in &self.line_loads {
@@ -310,13 +316,17 @@ fn check_rigid_body_support(model: &Model) -> Result<()> {
     for p in &model.prescribed {
         prescribed[p.node][p.dir] = true;
     }
-    if let Some(node) = (0..mesh.n_nodes()).find(|&i| body[i].is_none() && prescribed[i] != [true; 2]) {
+    if let Some(node) =
+        (0..mesh.n_nodes()).find(|&i| body[i].is_none() && prescribed[i] != [true; 2])
+    {
         return Err(Error::Singular(format!(
             "node {node} belongs to no element and is not fully prescribed"
         )));
     }
     for b in 0..n_bodies {
-        let nodes: Vec<usize> = (0..mesh.n_nodes()).filter(|&i| body[i] == Some(b)).collect();
+        let nodes: Vec<usize> = (0..mesh.n_nodes())
+            .filter(|&i| body[i] == Some(b))
+            .collect();
         let rank = rigid_mode_rank(mesh, &nodes, &prescribed);
         if rank < 3 {
             let first = nodes.first().copied().unwrap_or(0);
@@ -343,7 +353,10 @@ fn rigid_mode_rank(mesh: &Mesh, nodes: &[usize], prescribed: &[[bool; 2]]) -> us
         .max(f64::MIN_POSITIVE);
     let mut gram = nalgebra::Matrix3::<f64>::zeros();
     for &i in nodes {
-        let (x, y) = ((mesh.nodes[i][0] - xc) / scale, (mesh.nodes[i][1] - yc) / scale);
+        let (x, y) = (
+            (mesh.nodes[i][0] - xc) / scale,
+            (mesh.nodes[i][1] - yc) / scale,
+        );
         for (dir, row) in [[1.0, 0.0, -y], [0.0, 1.0, x]].iter().enumerate() {
             if prescribed[i][dir] {
                 let r = nalgebra::Vector3::from_row_slice(row);
@@ -353,7 +366,9 @@ fn rigid_mode_rank(mesh: &Mesh, nodes: &[usize], prescribed: &[[bool; 2]]) -> us
     }
     let eig = gram.symmetric_eigenvalues();
     let max = eig.max();
-    eig.iter().filter(|&&l| l > 1e-10 * max.max(1e-300) && max > 0.0).count()
+    eig.iter()
+        .filter(|&&l| l > 1e-10 * max.max(1e-300) && max > 0.0)
+        .count()
 }
 
 /// Connected body index of every node (through shared elements); `None` for orphan nodes.

@@ -112,7 +112,9 @@ impl SparseCholesky {
     /// Overwrite each column `b` of `rhs` with `A^-1 b`, in batches of right-hand sides.
     pub fn solve_in_place(&mut self, mut rhs: MatMut<'_, f64>) -> Result<()> {
         if !self.factored {
-            return Err(Error::Solver("solve requested before a successful factorization".into()));
+            return Err(Error::Solver(
+                "solve requested before a successful factorization".into(),
+            ));
         }
         if rhs.nrows() != self.n() {
             return Err(Error::InvalidInput(format!(

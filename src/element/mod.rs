@@ -110,7 +110,14 @@ pub struct StressField {
 impl StressField {
     /// Stress `[sx, sy, txy]` at a physical point `p` of the element.
     pub fn at(&self, p: [f64; 2]) -> [f64; 3] {
-        let _ = (p, self.formulation, self.n_nodes, self.coords, self.q, self.n_beta);
+        let _ = (
+            p,
+            self.formulation,
+            self.n_nodes,
+            self.coords,
+            self.q,
+            self.n_beta,
+        );
         unimplemented!("element kernels are being written")
     }
 

@@ -98,8 +98,14 @@ impl Mesh {
                 self.element_material.len()
             )));
         }
-        if let Some(i) = self.nodes.iter().position(|p| !(p[0].is_finite() && p[1].is_finite())) {
-            return Err(Error::InvalidInput(format!("node {i} has a non-finite coordinate")));
+        if let Some(i) = self
+            .nodes
+            .iter()
+            .position(|p| !(p[0].is_finite() && p[1].is_finite()))
+        {
+            return Err(Error::InvalidInput(format!(
+                "node {i} has a non-finite coordinate"
+            )));
         }
         for e in 0..self.n_elements() {
             let (lo, hi) = (self.element_offsets[e], self.element_offsets[e + 1]);
@@ -145,8 +151,20 @@ impl Mesh {
     /// Bounding box `[xmin, ymin, xmax, ymax]` of the nodes.
     pub fn bounding_box(&self) -> [f64; 4] {
         self.nodes.iter().fold(
-            [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY],
-            |b, p| [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])],
+            [
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NEG_INFINITY,
+            ],
+            |b, p| {
+                [
+                    b[0].min(p[0]),
+                    b[1].min(p[1]),
+                    b[2].max(p[0]),
+                    b[3].max(p[1]),
+                ]
+            },
         )
     }
 
@@ -161,8 +179,10 @@ impl Mesh {
             self.push_element(&shifted, other.element_material[e] + material_offset);
         }
         for (name, set) in &other.node_sets {
-            self.node_sets
-                .insert(format!("{prefix}{name}"), set.iter().map(|&n| n + off).collect());
+            self.node_sets.insert(
+                format!("{prefix}{name}"),
+                set.iter().map(|&n| n + off).collect(),
+            );
         }
         for (name, set) in &other.edge_sets {
             self.edge_sets.insert(
