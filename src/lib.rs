@@ -12,11 +12,13 @@
 //! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.
 //! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
 //!   stresses.
+//! * [`cases`]: reference problems (Cook's membrane, the Pian-Sumihara cantilever).
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]
 
 pub mod assembly;
+pub mod cases;
 pub mod element;
 pub mod error;
 pub mod ffi;

@@ -25,7 +25,8 @@ pub mod q4;
 
 use crate::error::ShapeError;
 use crate::material::Material;
-use nalgebra::{SMatrix, SVector};
+use geometry::{Bilinear, Frame, PolygonInfo};
+use nalgebra::{Cholesky, SMatrix, SVector};
 
 /// Largest number of nodes of one element.
 pub const MAX_NODES: usize = 6;
@@ -38,6 +39,10 @@ pub const MAX_BETA: usize = 12;
 pub type ElementMatrix = SMatrix<f64, MAX_DOF, MAX_DOF>;
 /// Element dof vector storage (leading `2 n` entries used).
 pub type ElementVector = SVector<f64, MAX_DOF>;
+/// `H` storage of the hybrid elements (leading `n_beta` block used, identity beyond it).
+pub type BetaMatrix = SMatrix<f64, MAX_BETA, MAX_BETA>;
+/// `G` storage of the hybrid elements (leading `n_beta x 2n` block used, zero beyond it).
+pub type CouplingMatrix = SMatrix<f64, MAX_BETA, MAX_DOF>;
 
 /// Which element formulation to use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -76,23 +81,74 @@ impl Formulation {
     }
 }
 
-/// Check an element's shape for `formulation`: node count, finite coordinates, positive area,
-/// counter-clockwise order, convexity (tolerances relative to the element size).
+/// Check an element's shape for `formulation`: node count, finite coordinates, positive area
+/// (counter-clockwise nodes), convexity; tolerances relative to the element size.
+///
+/// Q4 and Pian-Sumihara need 4 true corners. The hybrid element takes any convex polygon of 4 to
+/// 6 nodes with at least 3 true corners; nodes on a straight edge (the mid-side nodes of the
+/// transition elements) are allowed.
 pub fn check_shape(formulation: Formulation, coords: &[[f64; 2]]) -> Result<(), ShapeError> {
-    let _ = (formulation, coords);
-    unimplemented!("element kernels are being written")
+    checked(formulation, coords).map(|_| ())
+}
+
+fn checked(formulation: Formulation, coords: &[[f64; 2]]) -> Result<PolygonInfo, ShapeError> {
+    if !formulation.accepts(coords.len()) {
+        return Err(ShapeError::NodeCount {
+            got: coords.len(),
+            expected: match formulation {
+                Formulation::Hybrid => "4 to 6",
+                Formulation::PianSumihara | Formulation::Q4 => "4",
+            },
+        });
+    }
+    let min_corners = match formulation {
+        Formulation::Hybrid => 3,
+        Formulation::PianSumihara | Formulation::Q4 => 4,
+    };
+    geometry::check_polygon(coords, min_corners)
+}
+
+/// `H` and `G` of a hybrid formulation, with the number of stress parameters.
+fn hybrid_matrices(
+    formulation: Formulation,
+    coords: &[[f64; 2]],
+    info: &PolygonInfo,
+    material: &Material,
+) -> (BetaMatrix, CouplingMatrix, usize) {
+    match formulation {
+        Formulation::Hybrid => hybrid::matrices(coords, info, material),
+        Formulation::PianSumihara => pian_sumihara::matrices(&Bilinear::new(coords), material),
+        Formulation::Q4 => unreachable!("Q4 has no stress parameters"),
+    }
+}
+
+/// Cholesky factor of `H` (symmetric positive definite for any valid shape and material).
+fn factor_h(h: BetaMatrix) -> Result<Cholesky<f64, nalgebra::Const<MAX_BETA>>, ShapeError> {
+    Cholesky::new(h).ok_or(ShapeError::Degenerate)
 }
 
 /// Element stiffness `K` into `out` (leading `2n x 2n` block; the rest is zeroed). Returns the
 /// number of element dofs `2n`. Never allocates.
+///
+/// Hybrid elements: `K = G^T H^-1 G`, computed as `G^T X` with `H X = G` solved by Cholesky
+/// (no explicit inverse), then symmetrised. Q4: `K = integral of B^T D B t dA`.
 pub fn stiffness_into(
     formulation: Formulation,
     coords: &[[f64; 2]],
     material: &Material,
     out: &mut ElementMatrix,
 ) -> Result<usize, ShapeError> {
-    let _ = (formulation, coords, material, out);
-    unimplemented!("element kernels are being written")
+    let info = checked(formulation, coords)?;
+    let n_dof = 2 * coords.len();
+    if formulation == Formulation::Q4 {
+        q4::stiffness_into(&Bilinear::new(coords), material, out);
+        return Ok(n_dof);
+    }
+    let (h, g, _) = hybrid_matrices(formulation, coords, &info, material);
+    let x = factor_h(h)?.solve(&g);
+    let k = g.transpose() * x;
+    *out = (k + k.transpose()) * 0.5;
+    Ok(n_dof)
 }
 
 /// The stress field recovered in one element from its nodal displacements (`beta = H^-1 G q`
@@ -100,8 +156,10 @@ pub fn stiffness_into(
 #[derive(Debug, Clone, Copy)]
 pub struct StressField {
     formulation: Formulation,
+    material: Material,
     n_nodes: usize,
     coords: [[f64; 2]; MAX_NODES],
+    frame: Frame,
     q: ElementVector,
     beta: SVector<f64, MAX_BETA>,
     n_beta: usize,
@@ -110,42 +168,81 @@ pub struct StressField {
 impl StressField {
     /// Stress `[sx, sy, txy]` at a physical point `p` of the element.
     pub fn at(&self, p: [f64; 2]) -> [f64; 3] {
-        let _ = (
-            p,
-            self.formulation,
-            self.n_nodes,
-            self.coords,
-            self.q,
-            self.n_beta,
-        );
-        unimplemented!("element kernels are being written")
+        match self.formulation {
+            Formulation::Hybrid => hybrid::stress(&self.frame, self.beta(), p),
+            Formulation::PianSumihara | Formulation::Q4 => {
+                let map = Bilinear::new(&self.coords);
+                let [xi, eta] = map.inverse(p);
+                self.at_natural(&map, xi, eta)
+            }
+        }
     }
 
-    /// Stress at the element centroid.
-    pub fn at_centroid(&self) -> [f64; 3] {
-        unimplemented!("element kernels are being written")
+    fn at_natural(&self, map: &Bilinear, xi: f64, eta: f64) -> [f64; 3] {
+        match self.formulation {
+            Formulation::PianSumihara => pian_sumihara::stress(map, self.beta(), xi, eta),
+            _ => q4::stress(map, &self.material, self.q.as_slice(), xi, eta),
+        }
     }
 
-    /// Traction `Nn sigma` (outward normal) at parameter `s` in `[0, 1]` along boundary edge
-    /// `edge` (from local node `edge` to `edge + 1`, cyclically).
+    /// Stress at the element's centre: the area centroid for the hybrid element, where it equals
+    /// the first three `beta` (the mean stress of the linear part); `xi = eta = 0` for the quads.
+    pub fn at_centre(&self) -> [f64; 3] {
+        match self.formulation {
+            Formulation::Hybrid => self.at(self.frame.centre),
+            _ => self.at_natural(&Bilinear::new(&self.coords), 0.0, 0.0),
+        }
+    }
+
+    /// Traction `Nn sigma` (outward normal `n`: `[nx sx + ny txy, nx txy + ny sy]`) at parameter
+    /// `s` in `[0, 1]` along boundary edge `edge` (from local node `edge` to `edge + 1`,
+    /// cyclically). Panics if `edge` is not below the node count.
     pub fn edge_traction(&self, edge: usize, s: f64) -> [f64; 2] {
-        let _ = (edge, s);
-        unimplemented!("element kernels are being written")
+        assert!(edge < self.n_nodes, "edge {edge} of a {}-node element", self.n_nodes);
+        let (a, b) = (self.coords[edge], self.coords[(edge + 1) % self.n_nodes]);
+        let ([nx, ny], _) = geometry::edge_normal(a, b);
+        let p = [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
+        let [sx, sy, txy] = self.at(p);
+        [nx * sx + ny * txy, nx * txy + ny * sy]
     }
 
     /// The stress parameters `beta` (empty for Q4).
     pub fn beta(&self) -> &[f64] {
         &self.beta.as_slice()[..self.n_beta]
     }
+
+    /// Number of nodes of the element.
+    pub fn n_nodes(&self) -> usize {
+        self.n_nodes
+    }
 }
 
 /// Recover the stress field of an element from its dofs `q` (`2n` values, element dof order).
+/// Panics if `q` is shorter than `2n`.
 pub fn recover_stress(
     formulation: Formulation,
     coords: &[[f64; 2]],
     material: &Material,
     q: &[f64],
 ) -> Result<StressField, ShapeError> {
-    let _ = (formulation, coords, material, q);
-    unimplemented!("element kernels are being written")
+    let info = checked(formulation, coords)?;
+    let n = coords.len();
+    let mut field = StressField {
+        formulation,
+        material: *material,
+        n_nodes: n,
+        coords: [[0.0; 2]; MAX_NODES],
+        frame: Frame::new(&info),
+        q: ElementVector::zeros(),
+        beta: SVector::zeros(),
+        n_beta: 0,
+    };
+    field.coords[..n].copy_from_slice(coords);
+    field.q.as_mut_slice()[..2 * n].copy_from_slice(&q[..2 * n]);
+    if formulation != Formulation::Q4 {
+        let (h, g, nb) = hybrid_matrices(formulation, coords, &info, material);
+        field.beta = factor_h(h)?.solve(&(g * field.q));
+        field.n_beta = nb;
+    }
+    Ok(field)
 }
