@@ -10,7 +10,11 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 #[derive(Parser)]
-#[command(name = "hycon", version, about = "Assumed-stress hybrid elements and contact (Kubomura-Pian)")]
+#[command(
+    name = "hycon",
+    version,
+    about = "Assumed-stress hybrid elements and contact (Kubomura-Pian)"
+)]
 struct Cli {
     /// Directory for written results.
     #[arg(long, global = true, default_value = "out")]
@@ -56,6 +60,27 @@ enum Command {
         #[arg(long)]
         plane_strain: bool,
     },
+    /// Performance measurements (printed, never asserted).
+    Bench {
+        #[command(subcommand)]
+        what: Bench,
+    },
+}
+
+#[derive(Subcommand)]
+enum Bench {
+    /// Element stiffness kernel time per element, for each element kind.
+    Kernels {
+        /// Evaluations per kind.
+        #[arg(long, default_value_t = 200_000)]
+        repeats: usize,
+    },
+    /// Assemble, analyse, factor and solve a cantilever of 4n x n hybrid elements
+    /// (n = 354 gives about 1M dofs).
+    Scale {
+        #[arg(long, default_value_t = 354)]
+        n: usize,
+    },
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -86,7 +111,9 @@ pub fn main() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Elements { max_n: 32 }) {
         Command::Elements { max_n } => elements_table(max_n, &cli.out),
         Command::Cook { element, n } => cases::cook_membrane(element.into(), n)
-            .map(|v| println!("Cook's membrane {n}x{n}: v(48,52) = {v:.6} (converged {COOK_CONVERGED})"))
+            .map(|v| {
+                println!("Cook's membrane {n}x{n}: v(48,52) = {v:.6} (converged {COOK_CONVERGED})")
+            })
             .map_err(Into::into),
         Command::Beam {
             element,
@@ -97,6 +124,7 @@ pub fn main() -> ExitCode {
             nu,
             plane_strain,
         } => beam(element.into(), load, nx, ny, distortion, nu, plane_strain),
+        Command::Bench { what } => bench(what),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -112,8 +140,13 @@ type AnyResult = Result<(), Box<dyn std::error::Error>>;
 /// Cook's membrane for every element on n x n meshes, n = 2, 4, ..., max_n; printed and written
 /// to `out/cook.csv`.
 fn elements_table(max_n: usize, out: &Path) -> AnyResult {
-    println!("Cook's membrane: v at (48, 52), plane stress E = 1, nu = 1/3, converged {COOK_CONVERGED}");
-    println!("{:>6} | {:>18} | {:>18} | {:>18} | published Q4 / P-S", "mesh", "hybrid 7-beta", "Pian-Sumihara", "Q4");
+    println!(
+        "Cook's membrane: v at (48, 52), plane stress E = 1, nu = 1/3, converged {COOK_CONVERGED}"
+    );
+    println!(
+        "{:>6} | {:>18} | {:>18} | {:>18} | published Q4 / P-S",
+        "mesh", "hybrid 7-beta", "Pian-Sumihara", "Q4"
+    );
     std::fs::create_dir_all(out)?;
     let path = out.join("cook.csv");
     let mut csv = std::fs::File::create(&path)?;
@@ -154,7 +187,10 @@ fn beam(
         material.analysis = Analysis::PlaneStrain;
     }
     let (load, exact) = match load {
-        Load::Moment => (BeamLoad::Moment, 100.0 * (1.0 - nu * nu).powi(plane_strain as i32)),
+        Load::Moment => (
+            BeamLoad::Moment,
+            100.0 * (1.0 - nu * nu).powi(plane_strain as i32),
+        ),
         Load::Shear => (BeamLoad::Shear, 102.6),
     };
     let v = cases::cantilever(f, load, material, nx, ny, distortion)?;
@@ -163,5 +199,43 @@ fn beam(
         f.name(),
         100.0 * (v - exact) / exact
     );
+    Ok(())
+}
+
+fn bench(what: Bench) -> AnyResult {
+    match what {
+        Bench::Kernels { repeats } => {
+            println!("element stiffness kernel, {repeats} evaluations each:");
+            for k in hycon::bench::kernel_times(repeats)? {
+                println!("  {:<26} {:>8.0} ns/element", k.kind, k.nanoseconds);
+            }
+        }
+        Bench::Scale { n } => {
+            let r = hycon::bench::scale_run(n)?;
+            let mib = |b: Option<u64>| {
+                b.map_or("n/a".into(), |b| format!("{:.0} MiB", b as f64 / 1048576.0))
+            };
+            println!(
+                "cantilever {}x{n} hybrid elements: {} free dofs, nnz(K lower) {}, nnz(L) {}",
+                4 * n,
+                r.dofs,
+                r.nnz_k,
+                r.nnz_l
+            );
+            println!(
+                "  mesh {:.2} s, assembly {:.2} s, analysis {:.2} s, factorization {:.2} s, solve {:.2} s; peak memory {}",
+                r.mesh,
+                r.assembly,
+                r.analysis,
+                r.factorization,
+                r.solve,
+                mib(r.peak_memory)
+            );
+            println!(
+                "  tip deflection / Euler-Bernoulli = {:.4} (shear adds ~ (H/L)^2 terms)",
+                r.tip_ratio
+            );
+        }
+    }
     Ok(())
 }

@@ -13,11 +13,13 @@
 //! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
 //!   stresses.
 //! * [`cases`]: reference problems (Cook's membrane, the Pian-Sumihara cantilever).
+//! * [`bench`]: the measurements behind the README's performance figures.
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]
 
 pub mod assembly;
+pub mod bench;
 pub mod cases;
 pub mod element;
 pub mod error;

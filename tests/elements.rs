@@ -169,8 +169,13 @@ proptest! {
 
 fn field_point(coords: &[[f64; 2]]) -> [f64; 2] {
     let n = coords.len() as f64;
-    let c = coords.iter().fold([0.0, 0.0], |a, p| [a[0] + p[0] / n, a[1] + p[1] / n]);
-    [0.7 * c[0] + 0.3 * coords[1][0], 0.7 * c[1] + 0.3 * coords[1][1]]
+    let c = coords
+        .iter()
+        .fold([0.0, 0.0], |a, p| [a[0] + p[0] / n, a[1] + p[1] / n]);
+    [
+        0.7 * c[0] + 0.3 * coords[1][0],
+        0.7 * c[1] + 0.3 * coords[1][1],
+    ]
 }
 
 /// The paper's warning, checked: the 7-beta field on a 6-node element would have two spurious
@@ -178,12 +183,20 @@ fn field_point(coords: &[[f64; 2]]) -> [f64; 2] {
 /// comparing with the 5-node element's rank deficiency.
 #[test]
 fn six_node_element_uses_twelve_betas() {
-    let coords = element_nodes([[0.0, 0.0], [2.0, 0.1], [2.1, 1.9], [-0.1, 2.0]], 2, [0.5, 0.5]);
+    let coords = element_nodes(
+        [[0.0, 0.0], [2.0, 0.1], [2.1, 1.9], [-0.1, 2.0]],
+        2,
+        [0.5, 0.5],
+    );
     let m = material(Analysis::PlaneStrain);
     let q = vec![0.0; 12];
     let field = element::recover_stress(Formulation::Hybrid, &coords, &m, &q).unwrap();
     assert_eq!(field.beta().len(), 12);
-    let five = element_nodes([[0.0, 0.0], [2.0, 0.1], [2.1, 1.9], [-0.1, 2.0]], 1, [0.5, 0.5]);
+    let five = element_nodes(
+        [[0.0, 0.0], [2.0, 0.1], [2.1, 1.9], [-0.1, 2.0]],
+        1,
+        [0.5, 0.5],
+    );
     let field = element::recover_stress(Formulation::Hybrid, &five, &m, &q[..10]).unwrap();
     assert_eq!(field.beta().len(), 7);
 }
@@ -205,7 +218,10 @@ fn bad_shapes_are_reported() {
         assert_eq!(run(&dart, &mut k), Err(ShapeError::NonConvex { node: 2 }));
         assert_eq!(run(&line, &mut k), Err(ShapeError::Degenerate));
         assert_eq!(run(&same, &mut k), Err(ShapeError::Degenerate));
-        assert!(matches!(run(&sq[..3], &mut k), Err(ShapeError::NodeCount { got: 3, .. })));
+        assert!(matches!(
+            run(&sq[..3], &mut k),
+            Err(ShapeError::NodeCount { got: 3, .. })
+        ));
     }
     let seven = [[0.0; 2]; 7];
     assert!(matches!(

@@ -4,8 +4,8 @@
 
 use hycon::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
 use hycon::element::Formulation;
-use hycon::mesh::generate::{self, Grading};
 use hycon::mesh::Mesh;
+use hycon::mesh::generate::{self, Grading};
 use hycon::model::Model;
 use hycon::{Analysis, Material};
 
@@ -78,10 +78,15 @@ fn distorted_graded_mesh() -> Mesh {
 fn patch_test_with_transition_elements() {
     let mesh = distorted_graded_mesh();
     let counts = hycon::mesh::quality::quality(&mesh).n_by_node_count;
-    assert!(counts[1] > 0 && counts[2] > 0, "needs 5- and 6-node elements: {counts:?}");
+    assert!(
+        counts[1] > 0 && counts[2] > 0,
+        "needs 5- and 6-node elements: {counts:?}"
+    );
     for analysis in [Analysis::PlaneStrain, Analysis::PlaneStress] {
         let (du, ds) = patch_test(mesh.clone(), Formulation::Hybrid, analysis);
-        println!("hybrid {analysis:?}: {counts:?} elements, displacement error {du:.1e}, stress error {ds:.1e}");
+        println!(
+            "hybrid {analysis:?}: {counts:?} elements, displacement error {du:.1e}, stress error {ds:.1e}"
+        );
         assert!(du < 1e-10 && ds < 1e-10, "{analysis:?}: {du:e} {ds:e}");
     }
 }
@@ -91,7 +96,10 @@ fn patch_test_with_transition_elements() {
 fn patch_test_quads_on_distorted_mesh() {
     for f in Formulation::ALL {
         let (du, ds) = patch_test(generate::cooks_membrane(6), f, Analysis::PlaneStress);
-        println!("{}: displacement error {du:.1e}, stress error {ds:.1e}", f.name());
+        println!(
+            "{}: displacement error {du:.1e}, stress error {ds:.1e}",
+            f.name()
+        );
         assert!(du < 1e-10 && ds < 1e-10, "{}: {du:e} {ds:e}", f.name());
     }
 }
@@ -108,14 +116,26 @@ fn cooks_membrane_published_values() {
         let ps = cases::cook_membrane(Formulation::PianSumihara, n).unwrap();
         let hy = cases::cook_membrane(Formulation::Hybrid, n).unwrap();
         println!("{n:>5} {q4:>10.4} {hy:>10.4} {ps:>10.4}");
-        assert!(((q4 - q4_pub) / q4_pub).abs() < 1e-4, "Q4 {n}x{n}: {q4} vs {q4_pub}");
-        assert!(((ps - ps_pub) / ps_pub).abs() < 1e-4, "P-S {n}x{n}: {ps} vs {ps_pub}");
-        assert!(q4 < hy && hy < ps, "{n}x{n}: hybrid {hy} not between {q4} and {ps}");
+        assert!(
+            ((q4 - q4_pub) / q4_pub).abs() < 1e-4,
+            "Q4 {n}x{n}: {q4} vs {q4_pub}"
+        );
+        assert!(
+            ((ps - ps_pub) / ps_pub).abs() < 1e-4,
+            "P-S {n}x{n}: {ps} vs {ps_pub}"
+        );
+        assert!(
+            q4 < hy && hy < ps,
+            "{n}x{n}: hybrid {hy} not between {q4} and {ps}"
+        );
         assert!(hy > last_hybrid);
         last_hybrid = hy;
     }
     let hy32 = cases::cook_membrane(Formulation::Hybrid, 32).unwrap();
-    assert!(((hy32 - COOK_CONVERGED) / COOK_CONVERGED).abs() < 5e-3, "32x32: {hy32}");
+    assert!(
+        ((hy32 - COOK_CONVERGED) / COOK_CONVERGED).abs() < 5e-3,
+        "32x32: {hy32}"
+    );
 }
 
 /// Pian-Sumihara cantilever (exact 100.0 under the end moment, 102.6 under the end shear).
@@ -134,10 +154,17 @@ fn pian_sumihara_cantilever() {
     let m = cases::cantilever_material();
     let run = |f, load, nx, ny, d| cases::cantilever(f, load, m, nx, ny, d).unwrap();
     let err = |v: f64, load| {
-        let exact = if load == BeamLoad::Moment { 100.0 } else { 102.6 };
+        let exact = if load == BeamLoad::Moment {
+            100.0
+        } else {
+            102.6
+        };
         (v - exact) / exact
     };
-    println!("{:>14} {:>6} {:>12} {:>10} {:>10}", "element", "load", "mesh", "tip v", "error");
+    println!(
+        "{:>14} {:>6} {:>12} {:>10} {:>10}",
+        "element", "load", "mesh", "tip v", "error"
+    );
     for f in Formulation::ALL {
         for load in [BeamLoad::Moment, BeamLoad::Shear] {
             for (nx, ny, d) in [(5, 2, 0.0), (5, 2, 1.0), (20, 4, 0.0), (20, 4, 0.2)] {
@@ -162,9 +189,15 @@ fn pian_sumihara_cantilever() {
     assert!(e2 / e4 > 3.5 && e4 / e8 > 3.5);
     for load in [BeamLoad::Moment, BeamLoad::Shear] {
         for d in [0.0, 0.2] {
-            assert!(err(run(hy, load, 20, 4, d), load).abs() < 1.5e-2, "{load:?} d={d}");
+            assert!(
+                err(run(hy, load, 20, 4, d), load).abs() < 1.5e-2,
+                "{load:?} d={d}"
+            );
         }
-        assert!(err(run(Formulation::Q4, load, 5, 2, 0.0), load) < -0.25, "{load:?}");
+        assert!(
+            err(run(Formulation::Q4, load, 5, 2, 0.0), load) < -0.25,
+            "{load:?}"
+        );
     }
 }
 
@@ -182,7 +215,12 @@ fn nearly_incompressible_does_not_lock() {
             .iter()
             .map(|&d| cases::cantilever(f, BeamLoad::Moment, m, 20, 4, d).unwrap() / exact)
             .collect();
-        println!("{:>14} {:>10.4} {:>10.4}   (tip v / exact)", f.name(), v[0], v[1]);
+        println!(
+            "{:>14} {:>10.4} {:>10.4}   (tip v / exact)",
+            f.name(),
+            v[0],
+            v[1]
+        );
         for r in v {
             if f == Formulation::Q4 {
                 assert!(r < 0.1, "Q4 should lock: {r}");
@@ -201,7 +239,11 @@ fn results_do_not_depend_on_units() {
         let base = cases::cook_membrane_scaled(f, 8, 1.0, 1.0).unwrap();
         for (length, force) in [(1e-3, 1.0), (1e3, 1e-3), (1e-6, 1e6)] {
             let v = cases::cook_membrane_scaled(f, 8, length, force).unwrap();
-            assert!(((v - base) / base).abs() < 1e-12, "{}: {v} vs {base}", f.name());
+            assert!(
+                ((v - base) / base).abs() < 1e-12,
+                "{}: {v} vs {base}",
+                f.name()
+            );
         }
     }
 }
@@ -211,8 +253,15 @@ fn results_do_not_depend_on_units() {
 fn unsupported_body_is_reported() {
     let mesh = generate::cooks_membrane(2);
     let clamped = mesh.node_sets["clamped"].clone();
-    let mut model = Model::new(mesh, vec![Material::new(1.0, 0.3, 1.0, Analysis::PlaneStress).unwrap()], Formulation::Hybrid);
+    let mut model = Model::new(
+        mesh,
+        vec![Material::new(1.0, 0.3, 1.0, Analysis::PlaneStress).unwrap()],
+        Formulation::Hybrid,
+    );
     model.fix_dir(&clamped, 0, 0.0);
     let err = model.solve().unwrap_err().to_string();
-    assert!(err.contains("singular") && err.contains("body 0") && err.contains("2 of its 3"), "{err}");
+    assert!(
+        err.contains("singular") && err.contains("body 0") && err.contains("2 of its 3"),
+        "{err}"
+    );
 }

@@ -27,6 +27,14 @@ pub const GAUSS2: [(f64, f64); 2] = [
     (0.577_350_269_189_625_8, 1.0),
 ];
 
+/// Strang and Fix's 3-point rule on a triangle, exact for polynomials of degree 2: barycentric
+/// coordinates and weights summing to 1.
+pub const STRANG_FIX2: [([f64; 3], f64); 3] = [
+    ([2.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0], 1.0 / 3.0),
+    ([1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0], 1.0 / 3.0),
+    ([1.0 / 6.0, 1.0 / 6.0, 2.0 / 3.0], 1.0 / 3.0),
+];
+
 /// Dunavant's 6-point rule on a triangle, exact for polynomials of degree 4: barycentric
 /// coordinates `(l1, l2, l3)` and weights summing to 1 (multiply by the triangle's area).
 pub const DUNAVANT4: [([f64; 3], f64); 6] = {
@@ -265,8 +273,8 @@ mod tests {
 
     #[test]
     fn dunavant_integrates_quartics_exactly() {
-        // integral of l1^4 over the reference triangle (area 1/2) is 2 * 4! / 6! * (1/2) ... use
-        // the barycentric formula: int l1^a l2^b l3^c dA = 2 A a! b! c! / (a + b + c + 2)!
+        // int l1^a l2^b l3^c dA = 2 A a! b! c! / (a + b + c + 2)!; the rules are normalised to
+        // A = 1
         let fact = |n: u32| (1..=n).product::<u32>() as f64;
         for (a, b, c) in [(4, 0, 0), (2, 2, 0), (1, 1, 2), (3, 1, 0), (0, 0, 0)] {
             let exact = 2.0 * fact(a) * fact(b) * fact(c) / fact(a + b + c + 2);
@@ -274,7 +282,19 @@ mod tests {
                 .iter()
                 .map(|(l, w)| w * l[0].powi(a as i32) * l[1].powi(b as i32) * l[2].powi(c as i32))
                 .sum();
-            assert!((quad - exact).abs() < 1e-14, "({a},{b},{c}): {quad} vs {exact}");
+            assert!(
+                (quad - exact).abs() < 1e-14,
+                "({a},{b},{c}): {quad} vs {exact}"
+            );
+            if a + b + c <= 2 {
+                let quad2: f64 = STRANG_FIX2
+                    .iter()
+                    .map(|(l, w)| {
+                        w * l[0].powi(a as i32) * l[1].powi(b as i32) * l[2].powi(c as i32)
+                    })
+                    .sum();
+                assert!((quad2 - exact).abs() < 1e-15, "degree-2 rule ({a},{b},{c})");
+            }
         }
     }
 

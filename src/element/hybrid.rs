@@ -14,23 +14,21 @@
 //! (two Gauss points per edge: exact), `Nn = [[nx, 0, ny], [0, ny, nx]]` with the outward normal,
 //! `L` the linear interpolation between the edge's two nodes.
 
-use super::geometry::{DUNAVANT4, Frame, GAUSS2_UNIT, PolygonInfo, edge_normal};
-use super::{BetaMatrix, CouplingMatrix, MAX_BETA};
+use super::MAX_DOF;
+use super::geometry::{DUNAVANT4, Frame, GAUSS2_UNIT, PolygonInfo, STRANG_FIX2, edge_normal};
 use crate::material::Material;
 use nalgebra::SMatrix;
-
-/// Stress basis: `P`, 3 rows (`sx, sy, txy`), `MAX_BETA` columns (unused ones zero).
-pub type StressBasis = SMatrix<f64, 3, MAX_BETA>;
 
 /// Number of stress parameters for an `n`-node element: 7, or 12 for 6 nodes.
 pub fn n_beta(n_nodes: usize) -> usize {
     if n_nodes >= 6 { 12 } else { 7 }
 }
 
-/// The stress basis `P(xh, yh)` with `n_beta` columns (7 or 12), in local coordinates.
-pub fn stress_basis(local: [f64; 2], n_beta: usize) -> StressBasis {
+/// The stress basis `P(xh, yh)`: 3 rows (`sx, sy, txy`), `NB` columns (7 or 12), in local
+/// coordinates.
+pub fn stress_basis<const NB: usize>(local: [f64; 2]) -> SMatrix<f64, 3, NB> {
     let [x, y] = local;
-    let mut p = StressBasis::zeros();
+    let mut p = SMatrix::<f64, 3, NB>::zeros();
     let linear: [[f64; 3]; 7] = [
         [1.0, 0.0, 0.0],
         [0.0, 1.0, 0.0],
@@ -41,13 +39,13 @@ pub fn stress_basis(local: [f64; 2], n_beta: usize) -> StressBasis {
         [0.0, y, -x],
     ];
     let quadratic: [[f64; 3]; 5] = [
-        [0.0, x * x, 0.0],              // phi = x^4 / 12
-        [y * y, 0.0, 0.0],              // phi = y^4 / 12
-        [0.0, 2.0 * x * y, -x * x],     // phi = x^3 y / 3
-        [2.0 * x * y, 0.0, -y * y],     // phi = x y^3 / 3
-        [x * x, y * y, -2.0 * x * y],   // phi = x^2 y^2 / 2
+        [0.0, x * x, 0.0],            // phi = x^4 / 12
+        [y * y, 0.0, 0.0],            // phi = y^4 / 12
+        [0.0, 2.0 * x * y, -x * x],   // phi = x^3 y / 3
+        [2.0 * x * y, 0.0, -y * y],   // phi = x y^3 / 3
+        [x * x, y * y, -2.0 * x * y], // phi = x^2 y^2 / 2
     ];
-    for (j, col) in linear.iter().chain(quadratic.iter()).take(n_beta).enumerate() {
+    for (j, col) in linear.iter().chain(quadratic.iter()).take(NB).enumerate() {
         for r in 0..3 {
             p[(r, j)] = col[r];
         }
@@ -55,47 +53,41 @@ pub fn stress_basis(local: [f64; 2], n_beta: usize) -> StressBasis {
     p
 }
 
-/// `H` and `G` of the hybrid element (leading `n_beta x n_beta` and `n_beta x 2n` blocks; `H` is
-/// padded with the identity so that a fixed-size Cholesky factorization applies).
-pub fn matrices(
+/// `H` (`NB x NB`) and `G` (`NB x 2n`, zero-padded to `MAX_DOF` columns) of the hybrid element.
+/// `H` uses a degree-2 triangle rule for 7 beta (its integrand is quadratic) and a degree-4 rule
+/// for 12 beta: exact in both cases.
+pub fn matrices<const NB: usize>(
     coords: &[[f64; 2]],
     info: &PolygonInfo,
     material: &Material,
-) -> (BetaMatrix, CouplingMatrix, usize) {
+) -> (SMatrix<f64, NB, NB>, SMatrix<f64, NB, MAX_DOF>) {
     let n = coords.len();
-    let nb = n_beta(n);
     let frame = Frame::new(info);
     let t = material.thickness;
     let s = material.compliance();
-    let mut h = BetaMatrix::zeros();
-    let c = frame.centre;
+    let rule: &[([f64; 3], f64)] = if NB > 7 { &DUNAVANT4 } else { &STRANG_FIX2 };
+    let mut h = SMatrix::<f64, NB, NB>::zeros();
+    // fan of triangles (centroid, node i, node i + 1), in local coordinates (area ~ 1)
     for i in 0..n {
-        let (a, b) = (coords[i], coords[(i + 1) % n]);
-        let twice_area = (a[0] - c[0]) * (b[1] - c[1]) - (b[0] - c[0]) * (a[1] - c[1]);
-        for (l, w) in DUNAVANT4 {
-            let p = [
-                l[0] * c[0] + l[1] * a[0] + l[2] * b[0],
-                l[0] * c[1] + l[1] * a[1] + l[2] * b[1],
-            ];
-            let pb = stress_basis(frame.local(p), nb);
-            h += pb.transpose() * s * pb * (0.5 * twice_area * w * t);
+        let (a, b) = (frame.local(coords[i]), frame.local(coords[(i + 1) % n]));
+        let area = 0.5 * (a[0] * b[1] - b[0] * a[1]);
+        for (l, w) in rule {
+            let p = [l[1] * a[0] + l[2] * b[0], l[1] * a[1] + l[2] * b[1]];
+            let pb = stress_basis::<NB>(p);
+            h += pb.transpose() * (s * pb) * (area * w);
         }
     }
-    for i in nb..MAX_BETA {
-        h[(i, i)] = 1.0;
-    }
-    let mut g = CouplingMatrix::zeros();
+    h *= t * frame.scale * frame.scale;
+    let mut g = SMatrix::<f64, NB, MAX_DOF>::zeros();
     for i in 0..n {
         let j = (i + 1) % n;
-        let (normal, len) = edge_normal(coords[i], coords[j]);
-        let [nx, ny] = normal;
+        let (a, b) = (coords[i], coords[j]);
+        let ([nx, ny], len) = edge_normal(a, b);
         for (r, w) in GAUSS2_UNIT {
-            let a = coords[i];
-            let b = coords[j];
             let p = [a[0] + r * (b[0] - a[0]), a[1] + r * (b[1] - a[1])];
-            let pb = stress_basis(frame.local(p), nb);
+            let pb = stress_basis::<NB>(frame.local(p));
             let weight = w * len * t;
-            for k in 0..nb {
+            for k in 0..NB {
                 // traction of basis column k: Nn P_k
                 let tx = nx * pb[(0, k)] + ny * pb[(2, k)];
                 let ty = nx * pb[(2, k)] + ny * pb[(1, k)];
@@ -106,17 +98,21 @@ pub fn matrices(
             }
         }
     }
-    (h, g, nb)
+    (h, g)
 }
 
-/// Stress at a physical point from `beta`: `P(xh, yh) beta`.
+/// Stress at a physical point from `beta` (7 or 12 values): `P(xh, yh) beta`.
 pub fn stress(frame: &Frame, beta: &[f64], p: [f64; 2]) -> [f64; 3] {
-    let pb = stress_basis(frame.local(p), beta.len());
-    let mut out = [0.0; 3];
-    for (r, o) in out.iter_mut().enumerate() {
-        *o = (0..beta.len()).map(|k| pb[(r, k)] * beta[k]).sum();
+    fn apply<const NB: usize>(local: [f64; 2], beta: &[f64]) -> [f64; 3] {
+        let s = stress_basis::<NB>(local) * nalgebra::SVector::<f64, NB>::from_column_slice(beta);
+        [s[0], s[1], s[2]]
     }
-    out
+    let local = frame.local(p);
+    if beta.len() > 7 {
+        apply::<12>(local, beta)
+    } else {
+        apply::<7>(local, beta)
+    }
 }
 
 #[cfg(test)]
@@ -129,7 +125,7 @@ mod tests {
     #[test]
     fn basis_is_equilibrated() {
         let h = 1e-3;
-        let at = |x: f64, y: f64| stress_basis([x, y], 12);
+        let at = |x: f64, y: f64| stress_basis::<12>([x, y]);
         for &(x, y) in &[(0.3, -0.2), (-0.7, 0.9)] {
             let dx = (at(x + h, y) - at(x - h, y)) / (2.0 * h);
             let dy = (at(x, y + h) - at(x, y - h)) / (2.0 * h);

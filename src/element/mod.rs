@@ -39,10 +39,8 @@ pub const MAX_BETA: usize = 12;
 pub type ElementMatrix = SMatrix<f64, MAX_DOF, MAX_DOF>;
 /// Element dof vector storage (leading `2 n` entries used).
 pub type ElementVector = SVector<f64, MAX_DOF>;
-/// `H` storage of the hybrid elements (leading `n_beta` block used, identity beyond it).
-pub type BetaMatrix = SMatrix<f64, MAX_BETA, MAX_BETA>;
-/// `G` storage of the hybrid elements (leading `n_beta x 2n` block used, zero beyond it).
-pub type CouplingMatrix = SMatrix<f64, MAX_BETA, MAX_DOF>;
+/// `G` of a hybrid element with `NB` stress parameters (leading `NB x 2n` block used).
+pub type CouplingMatrix<const NB: usize> = SMatrix<f64, NB, MAX_DOF>;
 
 /// Which element formulation to use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -108,30 +106,59 @@ fn checked(formulation: Formulation, coords: &[[f64; 2]]) -> Result<PolygonInfo,
     geometry::check_polygon(coords, min_corners)
 }
 
-/// `H` and `G` of a hybrid formulation, with the number of stress parameters.
-fn hybrid_matrices(
-    formulation: Formulation,
-    coords: &[[f64; 2]],
-    info: &PolygonInfo,
-    material: &Material,
-) -> (BetaMatrix, CouplingMatrix, usize) {
+/// Which stress field a checked element uses.
+enum StressFamily {
+    /// Bilinear displacement, no stress parameters.
+    Q4,
+    /// Pian-Sumihara's 5 beta.
+    PianSumihara,
+    /// Kubomura-Pian, 7 beta.
+    Hybrid7,
+    /// Kubomura-Pian, 12 beta (6 nodes).
+    Hybrid12,
+}
+
+fn family(formulation: Formulation, n_nodes: usize) -> StressFamily {
     match formulation {
-        Formulation::Hybrid => hybrid::matrices(coords, info, material),
-        Formulation::PianSumihara => pian_sumihara::matrices(&Bilinear::new(coords), material),
-        Formulation::Q4 => unreachable!("Q4 has no stress parameters"),
+        Formulation::Q4 => StressFamily::Q4,
+        Formulation::PianSumihara => StressFamily::PianSumihara,
+        Formulation::Hybrid if hybrid::n_beta(n_nodes) == 12 => StressFamily::Hybrid12,
+        Formulation::Hybrid => StressFamily::Hybrid7,
     }
 }
 
-/// Cholesky factor of `H` (symmetric positive definite for any valid shape and material).
-fn factor_h(h: BetaMatrix) -> Result<Cholesky<f64, nalgebra::Const<MAX_BETA>>, ShapeError> {
-    Cholesky::new(h).ok_or(ShapeError::Degenerate)
+/// `K = G^T H^-1 G` into `out`, as `W^T W` with `W = L^-1 G` and `H = L L^T` (Cholesky): no
+/// explicit inverse, symmetric by construction. `H` is positive definite for any valid shape.
+fn hybrid_stiffness<const NB: usize>(
+    (h, g): (SMatrix<f64, NB, NB>, CouplingMatrix<NB>),
+    out: &mut ElementMatrix,
+) -> Result<(), ShapeError> {
+    let chol = Cholesky::new(h).ok_or(ShapeError::Degenerate)?;
+    let w = chol
+        .l_dirty()
+        .solve_lower_triangular(&g)
+        .ok_or(ShapeError::Degenerate)?;
+    w.tr_mul_to(&w, out);
+    Ok(())
+}
+
+/// `beta = H^-1 G q` into the leading `NB` entries of `beta`.
+fn hybrid_beta<const NB: usize>(
+    (h, g): (SMatrix<f64, NB, NB>, CouplingMatrix<NB>),
+    q: &ElementVector,
+    beta: &mut SVector<f64, MAX_BETA>,
+) -> Result<usize, ShapeError> {
+    let chol = Cholesky::new(h).ok_or(ShapeError::Degenerate)?;
+    let b = chol.solve(&(g * q));
+    beta.fixed_rows_mut::<NB>(0).copy_from(&b);
+    Ok(NB)
 }
 
 /// Element stiffness `K` into `out` (leading `2n x 2n` block; the rest is zeroed). Returns the
 /// number of element dofs `2n`. Never allocates.
 ///
-/// Hybrid elements: `K = G^T H^-1 G`, computed as `G^T X` with `H X = G` solved by Cholesky
-/// (no explicit inverse), then symmetrised. Q4: `K = integral of B^T D B t dA`.
+/// Hybrid elements: `K = G^T H^-1 G`, computed as `W^T W` with `W = L^-1 G`, `H = L L^T`
+/// (no explicit inverse; symmetric by construction). Q4: `K = integral of B^T D B t dA`.
 pub fn stiffness_into(
     formulation: Formulation,
     coords: &[[f64; 2]],
@@ -139,16 +166,20 @@ pub fn stiffness_into(
     out: &mut ElementMatrix,
 ) -> Result<usize, ShapeError> {
     let info = checked(formulation, coords)?;
-    let n_dof = 2 * coords.len();
-    if formulation == Formulation::Q4 {
-        q4::stiffness_into(&Bilinear::new(coords), material, out);
-        return Ok(n_dof);
+    let map = || Bilinear::new(coords);
+    match family(formulation, coords.len()) {
+        StressFamily::Q4 => q4::stiffness_into(&map(), material, out),
+        StressFamily::PianSumihara => {
+            hybrid_stiffness(pian_sumihara::matrices(&map(), material), out)?
+        }
+        StressFamily::Hybrid7 => {
+            hybrid_stiffness(hybrid::matrices::<7>(coords, &info, material), out)?
+        }
+        StressFamily::Hybrid12 => {
+            hybrid_stiffness(hybrid::matrices::<12>(coords, &info, material), out)?
+        }
     }
-    let (h, g, _) = hybrid_matrices(formulation, coords, &info, material);
-    let x = factor_h(h)?.solve(&g);
-    let k = g.transpose() * x;
-    *out = (k + k.transpose()) * 0.5;
-    Ok(n_dof)
+    Ok(2 * coords.len())
 }
 
 /// The stress field recovered in one element from its nodal displacements (`beta = H^-1 G q`
@@ -198,7 +229,11 @@ impl StressField {
     /// `s` in `[0, 1]` along boundary edge `edge` (from local node `edge` to `edge + 1`,
     /// cyclically). Panics if `edge` is not below the node count.
     pub fn edge_traction(&self, edge: usize, s: f64) -> [f64; 2] {
-        assert!(edge < self.n_nodes, "edge {edge} of a {}-node element", self.n_nodes);
+        assert!(
+            edge < self.n_nodes,
+            "edge {edge} of a {}-node element",
+            self.n_nodes
+        );
         let (a, b) = (self.coords[edge], self.coords[(edge + 1) % self.n_nodes]);
         let ([nx, ny], _) = geometry::edge_normal(a, b);
         let p = [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
@@ -239,10 +274,19 @@ pub fn recover_stress(
     };
     field.coords[..n].copy_from_slice(coords);
     field.q.as_mut_slice()[..2 * n].copy_from_slice(&q[..2 * n]);
-    if formulation != Formulation::Q4 {
-        let (h, g, nb) = hybrid_matrices(formulation, coords, &info, material);
-        field.beta = factor_h(h)?.solve(&(g * field.q));
-        field.n_beta = nb;
-    }
+    let (q, beta) = (&field.q, &mut field.beta);
+    let map = || Bilinear::new(coords);
+    field.n_beta = match family(formulation, n) {
+        StressFamily::Q4 => 0,
+        StressFamily::PianSumihara => {
+            hybrid_beta(pian_sumihara::matrices(&map(), material), q, beta)?
+        }
+        StressFamily::Hybrid7 => {
+            hybrid_beta(hybrid::matrices::<7>(coords, &info, material), q, beta)?
+        }
+        StressFamily::Hybrid12 => {
+            hybrid_beta(hybrid::matrices::<12>(coords, &info, material), q, beta)?
+        }
+    };
     Ok(field)
 }

@@ -15,9 +15,9 @@
 //! `G = integral of P^T B t dA`, `B` the bilinear strain-displacement matrix; 2x2 Gauss is exact
 //! for both.
 
+use super::MAX_DOF;
 use super::geometry::{Bilinear, GAUSS2};
 use super::q4::strain_displacement;
-use super::{BetaMatrix, CouplingMatrix, MAX_BETA};
 use crate::material::Material;
 use nalgebra::SMatrix;
 
@@ -31,35 +31,44 @@ pub fn stress_basis(map: &Bilinear, xi: f64, eta: f64) -> SMatrix<f64, 3, N_BETA
     let (c1, c2) = (a1 * a1 + b1 * b1, a2 * a2 + b2 * b2);
     let (e, x) = (eta / c1, xi / c2);
     SMatrix::<f64, 3, N_BETA>::new(
-        1.0, 0.0, 0.0, a1 * a1 * e, a2 * a2 * x, //
-        0.0, 1.0, 0.0, b1 * b1 * e, b2 * b2 * x, //
-        0.0, 0.0, 1.0, a1 * b1 * e, a2 * b2 * x,
+        1.0,
+        0.0,
+        0.0,
+        a1 * a1 * e,
+        a2 * a2 * x, //
+        0.0,
+        1.0,
+        0.0,
+        b1 * b1 * e,
+        b2 * b2 * x, //
+        0.0,
+        0.0,
+        1.0,
+        a1 * b1 * e,
+        a2 * b2 * x,
     )
 }
 
-/// `H` and `G` (padded to the common fixed sizes, `H` with the identity).
-pub fn matrices(map: &Bilinear, material: &Material) -> (BetaMatrix, CouplingMatrix, usize) {
+/// `H` (5 x 5) and `G` (5 x 8, zero-padded to `MAX_DOF` columns).
+pub fn matrices(
+    map: &Bilinear,
+    material: &Material,
+) -> (SMatrix<f64, N_BETA, N_BETA>, SMatrix<f64, N_BETA, MAX_DOF>) {
     let s = material.compliance();
     let t = material.thickness;
-    let mut h = BetaMatrix::zeros();
-    let mut g = CouplingMatrix::zeros();
+    let mut h = SMatrix::<f64, N_BETA, N_BETA>::zeros();
+    let mut g = SMatrix::<f64, N_BETA, MAX_DOF>::zeros();
     for (xi, wx) in GAUSS2 {
         for (eta, wy) in GAUSS2 {
             let p = stress_basis(map, xi, eta);
             let (b, det) = strain_displacement(map, xi, eta);
             let w = wx * wy * det * t;
-            let hp = p.transpose() * s * p * w;
-            let gp = p.transpose() * b * w;
-            let mut hv = h.fixed_view_mut::<N_BETA, N_BETA>(0, 0);
-            hv += hp;
+            h += p.transpose() * (s * p) * w;
             let mut gv = g.fixed_view_mut::<N_BETA, 8>(0, 0);
-            gv += gp;
+            gv += p.transpose() * b * w;
         }
     }
-    for i in N_BETA..MAX_BETA {
-        h[(i, i)] = 1.0;
-    }
-    (h, g, N_BETA)
+    (h, g)
 }
 
 /// Stress at natural coordinates `(xi, eta)` from `beta`.
