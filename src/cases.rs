@@ -40,7 +40,12 @@ pub fn cook_membrane_scaled(
         p[0] *= length;
         p[1] *= length;
     }
-    let material = Material::new(force / (length * length), 1.0 / 3.0, length, Analysis::PlaneStress)?;
+    let material = Material::new(
+        force / (length * length),
+        1.0 / 3.0,
+        length,
+        Analysis::PlaneStress,
+    )?;
     let clamped = mesh.node_sets["clamped"].clone();
     let loaded = mesh.edge_sets["loaded"].clone();
     let tip = *mesh.node_sets["tip"]
@@ -84,7 +89,9 @@ pub fn cantilever(
     const L: f64 = 10.0;
     const H: f64 = 2.0;
     if ny % 2 != 0 {
-        return Err(Error::InvalidInput(format!("the cantilever needs an even ny, got {ny}")));
+        return Err(Error::InvalidInput(format!(
+            "the cantilever needs an even ny, got {ny}"
+        )));
     }
     let mesh = generate::beam(L, H, nx, ny, distortion);
     let at = |set: &str, y: f64| -> usize {
@@ -121,7 +128,11 @@ pub fn cantilever(
             forces[b][d] += t * len * (sb[d] + 2.0 * sm[d]) / 6.0;
         }
     }
-    model.nodal_forces = forces.into_iter().enumerate().filter(|(_, f)| *f != [0.0; 2]).collect();
+    model.nodal_forces = forces
+        .into_iter()
+        .enumerate()
+        .filter(|(_, f)| *f != [0.0; 2])
+        .collect();
     let solution = model.solve()?;
     Ok(solution.displacement(tip)[1])
 }
