@@ -146,3 +146,36 @@ pub fn cantilever_material() -> Material {
         analysis: Analysis::PlaneStress,
     }
 }
+
+/// Hertz's closed form for a cylinder on a half-plane (plane strain), per unit thickness:
+/// `1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2`, `a = sqrt(4 P R / (pi E*))`, `p0 = 2 P / (pi a)`,
+/// `p(x) = p0 sqrt(1 - x^2/a^2)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hertz {
+    /// Contact half-width `a`.
+    pub half_width: f64,
+    /// Peak pressure `p0`.
+    pub peak: f64,
+}
+
+impl Hertz {
+    /// The closed form for load `p` per unit thickness, disk radius `r`, effective modulus `e_star`.
+    pub fn new(p: f64, r: f64, e_star: f64) -> Self {
+        let a = (4.0 * p * r / (std::f64::consts::PI * e_star)).sqrt();
+        Hertz {
+            half_width: a,
+            peak: 2.0 * p / (std::f64::consts::PI * a),
+        }
+    }
+
+    /// Pressure at distance `x` from the centre of contact (0 outside).
+    pub fn pressure(&self, x: f64) -> f64 {
+        let r = 1.0 - (x / self.half_width).powi(2);
+        if r > 0.0 { self.peak * r.sqrt() } else { 0.0 }
+    }
+
+    /// `1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2` (plane strain moduli of the two bodies).
+    pub fn effective_modulus(a: &Material, b: &Material) -> f64 {
+        1.0 / (1.0 / a.effective_modulus() + 1.0 / b.effective_modulus())
+    }
+}

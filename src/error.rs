@@ -58,6 +58,10 @@ pub enum Error {
     /// The sparse factorization failed for a numerical reason.
     #[error("linear solver failed: {0}")]
     Solver(String),
+    /// A contact increment failed (no convergence, cycling contact set, contact reaching the
+    /// end of a surface); the last converged state is kept.
+    #[error("contact: {0}")]
+    Contact(String),
 }
 
 fn fmt_index(e: Option<usize>) -> String {

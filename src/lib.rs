@@ -12,6 +12,7 @@
 //! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.
 //! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
 //!   stresses.
+//! * [`contact`]: contact-element kernels (mortar projection, weighted gaps, coupling rows).
 //! * [`cases`]: reference problems (Cook's membrane, the Pian-Sumihara cantilever).
 //! * [`bench`]: the measurements behind the README's performance figures.
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
@@ -21,6 +22,7 @@
 pub mod assembly;
 pub mod bench;
 pub mod cases;
+pub mod contact;
 pub mod element;
 pub mod error;
 pub mod ffi;

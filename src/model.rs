@@ -240,22 +240,37 @@ impl LinearSystem {
     /// Solve for the model's loads and prescribed displacements (the model must be the one this
     /// system was built from, up to load and prescribed *values*).
     pub fn solve(&mut self, model: &Model) -> Result<Solution> {
-        let f = model.external_forces();
-        let qp = model.prescribed_values();
+        let (f, qp) = (model.external_forces(), model.prescribed_values());
+        self.solve_for(model, &f, &qp)
+    }
+
+    /// Solve `K_ff q_f = f_f - K_fp q_p` for external forces `f` and prescribed values `qp`, both
+    /// over all dofs (`qp` is read at the prescribed dofs only). One solve with the kept factor.
+    pub fn solve_for(&mut self, model: &Model, f: &[f64], qp: &[f64]) -> Result<Solution> {
+        let n = 2 * model.mesh.n_nodes();
+        if f.len() != n || qp.len() != n {
+            return Err(Error::InvalidInput(format!(
+                "force and prescribed vectors need {n} entries, got {} and {}",
+                f.len(),
+                qp.len()
+            )));
+        }
+        let mut q: Vec<f64> = (0..n)
+            .map(|d| if self.dofs.equation(d).is_some() { 0.0 } else { qp[d] })
+            .collect();
         // f_f - K_fp q_p: the element forces of the prescribed motion, at the free dofs.
-        let kq = if qp.iter().any(|&v| v != 0.0) {
-            model.internal_forces(&qp)?
+        let kq = if q.iter().any(|&v| v != 0.0) {
+            model.internal_forces(&q)?
         } else {
-            vec![0.0; qp.len()]
+            vec![0.0; n]
         };
         let mut rhs = Mat::<f64>::zeros(self.dofs.n_free(), 1);
-        for d in 0..qp.len() {
+        for d in 0..n {
             if let Some(i) = self.dofs.equation(d) {
                 rhs[(i, 0)] = f[d] - kq[d];
             }
         }
         self.cholesky.solve_in_place(rhs.as_mut())?;
-        let mut q = qp;
         for (d, v) in q.iter_mut().enumerate() {
             if let Some(i) = self.dofs.equation(d) {
                 *v = rhs[(i, 0)];

@@ -1,0 +1,797 @@
+//! Contact-element kernels: the mortar integrals of one contact pair in the current
+//! configuration (METHOD.md section 2).
+//!
+//! # Conventions
+//! * A contact pair is a **multiplier-side polyline A** and an **opposite polyline B**, each a
+//!   list of node ids of one body's boundary, ordered so that the body lies on the **left** of
+//!   every segment (the [`crate::mesh::Mesh`] edge convention). Node ids index the slice `x` of
+//!   **current** positions `x = X + U` of all nodes.
+//! * A segment `p0 -> p1` of A with `d = p1 - p0`, `h = |d|`, unit tangent `t = d / h`, has the
+//!   outward normal `n = (d_y, -d_x) / h` (`d` rotated clockwise: it points away from A, into B)
+//!   and `s = (n_y, -n_x)` (so `s = -t`). B's outward normal is defined the same way from B's
+//!   own orientation; a B segment **faces** an A segment when `n_B . n < 0`, i.e.
+//!   `(q1 - q0) . t < 0`.
+//! * The contact traction `t` is the traction acting **on A**, linear on every A segment between
+//!   nodal values (`M_k` = the hat function of A node `k` along A's polyline); `tn < 0` is
+//!   compression. The traction on B is `-t`.
+//! * Every point `x^A(xi) = p0 + xi d`, `xi in [0, 1]`, of an A segment is projected **along
+//!   that segment's constant normal `n`** onto B: the hit point `x^B` solves
+//!   `(x^B - x^A(xi)) . t = 0` on a facing B segment. Its **signed distance**
+//!   `g(xi) = (x^B - x^A) . n` is positive for an open gap and negative for penetration, and
+//!   `x^A - x^B = -g n`. When several facing B segments are hit, the one with the smallest
+//!   `|g|` is used; B segments that do not face A are ignored, and so are hits with
+//!   `|g| > search_distance` (the point counts as uncovered).
+//! * With a single B segment `q0 -> q1` hit, `tau_i = (q_i - p0) . t / h` is where B's node
+//!   projects on the A segment, and the hit point has B parameter
+//!   `eta = (xi - tau0) / (tau1 - tau0)`: affine in `xi`. The A segment is therefore split at
+//!   every `tau` of a B node (and where the choice of B segment changes: `|g_i| = |g_j|`, or
+//!   `|g| = search_distance`), and a 2-point Gauss rule per piece integrates every product
+//!   below (degree 2 in `xi`) **exactly**.
+//! * B nodes that project within `1e-10 h` of an A segment's end are taken to project onto it,
+//!   so that surfaces of equal extent report full coverage despite round-off.
+//!
+//! # What is computed per A node `k` ([`ContactNode`])
+//! With `ds = h dxi` on each of the one or two A segments adjacent to `k` (its *support*):
+//! * `weight_k = integral M_k ds` (the tributary length, `(h_left + h_right) / 2`);
+//! * `F^A_kj = integral M_k L^A_j ds` over the whole support (`h/3` on the diagonal, `h/6` off
+//!   it, summed over the two segments);
+//! * `F^B_kj = integral M_k(xi) L^B_j(x^B(xi)) ds` over the covered part of the support, `L^B_j`
+//!   the hat functions of B's polyline at the hit point;
+//! * `R_C,k = integral M_k (x^A - x^B) ds = -integral M_k g n ds` (a 2-vector, the weighted
+//!   mismatch, over the covered part);
+//! * the nodal frame: `n_k = normalise(sum_e h_e n_e)` over the adjacent segments `e`
+//!   (**length-weighted** average of the segment normals; this is the direction of
+//!   `integral M_k n ds`, so a constant gap gives `R_C,k` parallel to `n_k` exactly), and
+//!   `s_k = (n_k.y, -n_k.x)`;
+//! * `coverage_k in [0, 1]`: the fraction of the support's length where a facing B segment was
+//!   found within `search_distance` (exactly `1.0` when fully covered);
+//! * `normal_gap_k = -n_k . R_C,k / integral_covered M_k ds`, a length, negative = penetration
+//!   (equal to `-n_k . R_C,k / weight_k` when fully covered);
+//! * the **coupling row** `c_kj`: `+F^A_kj` at A nodes, `-F^B_kj` at B nodes, so that with
+//!   nodal displacement increments `du`, `sum_j c_kj du_j` is the change of `R_C,k` with the
+//!   pairing (the projection) frozen. Its normal part `n_k . sum_j c_kj du_j` is the linearised
+//!   normal row of the contact constraint; at zero gap it is the exact first-order change of
+//!   `-n_k . R_C,k` wherever A is straight across node `k` (at a kink of A of angle `theta` it
+//!   differs by a tangential term of relative size `sin(theta / 2)`). The tangential row
+//!   `s_k . sum_j c_kj du_j` measures relative slip at the frozen pairing; it is *not* the
+//!   derivative of `s_k . R_C,k`, which stays about zero by construction because the projection
+//!   follows a tangential motion.
+//!
+//! Column sums of the B part give B's nodal weights over the projected overlap:
+//! `sum_k F^B_kj = integral L^B_j ds` (the hats `M_k` sum to one), for turning B's nodal
+//! forces into pressures.
+//!
+//! # Candidate search
+//! B's segments are binned once per call in a uniform grid (cell size: the largest of the mean
+//! A segment length, the mean B segment length and `search_distance`; long segments are binned
+//! piece by piece), stored as a sorted list of `(cell, segment)` pairs. Each A segment queries the
+//! cells under its projection strip (`xi in [0, 1]`, `|g| <= search_distance`), again piece by
+//! piece, and every candidate is tested exactly. The cost is near-linear in the number of
+//! segments.
+
+use crate::element::geometry::GAUSS2_UNIT;
+use crate::error::{Error, Result};
+
+/// B nodes projecting within this fraction of an A segment's length of its end project onto it.
+const END_SNAP: f64 = 1e-10;
+
+/// A segment shorter than this fraction of its polyline's longest segment is rejected.
+const ZERO_LENGTH: f64 = 1e-12;
+
+/// The contact quantities of one A node (see the [module docs](self) for the equations).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ContactNode {
+    /// Global node id (an entry of A).
+    pub node: usize,
+    /// Nodal normal `n_k = normalise(sum_e h_e n_e)` over the adjacent A segments (A's outward
+    /// normal, pointing into B).
+    pub normal: [f64; 2],
+    /// Nodal tangent `s_k = (n_k.y, -n_k.x)`.
+    pub tangent: [f64; 2],
+    /// `weight_k = integral M_k ds` over the whole support (tributary length).
+    pub weight: f64,
+    /// `integral M_k ds` over the covered part of the support only (`== weight` when
+    /// `coverage == 1`).
+    pub covered_weight: f64,
+    /// Fraction of the support's length where B was found, in `[0, 1]`; exactly `1.0` when fully
+    /// covered. The contact solver must not activate a node with `coverage < 1`.
+    pub coverage: f64,
+    /// `R_C,k = integral M_k (x^A - x^B) ds = -integral M_k g n ds` over the covered part.
+    pub gap: [f64; 2],
+    /// `-n_k . R_C,k / covered_weight`: the weighted normal gap as a length, negative =
+    /// penetration. `f64::INFINITY` when nothing of the support is covered.
+    pub normal_gap: f64,
+    /// `integral M_k g ds / covered_weight`, with each segment's own normal: the weighted mean
+    /// signed distance (equal to `normal_gap` where A is straight; on a curved A it reproduces a
+    /// constant offset exactly, while `normal_gap` carries the factor `n_k . n_e`).
+    /// `f64::INFINITY` when nothing of the support is covered.
+    pub mean_distance: f64,
+    /// The coupling row: `(global node id, c_kj)` with `c_kj = +F^A_kj` at A nodes and
+    /// `-F^B_kj` at B nodes, one entry per node, sorted by node id, exact zeros dropped.
+    pub coupling: Vec<(usize, f64)>,
+}
+
+impl ContactNode {
+    /// Whether the node's whole support is covered by B (`coverage == 1`).
+    pub fn is_covered(&self) -> bool {
+        self.coverage >= 1.0
+    }
+
+    /// `sum_j c_kj du_j`: the first-order change of `R_C,k` (frozen pairing) under nodal
+    /// displacement increments `du` (indexed by global node id).
+    pub fn coupling_times(&self, du: &[[f64; 2]]) -> [f64; 2] {
+        self.coupling.iter().fold([0.0, 0.0], |acc, &(j, c)| {
+            [acc[0] + c * du[j][0], acc[1] + c * du[j][1]]
+        })
+    }
+}
+
+/// The contact quantities of a whole pair: one [`ContactNode`] per A node, in A's order.
+///
+/// Keeps its scratch buffers between calls of [`evaluate_into`], so that re-evaluating the
+/// same pair does not reallocate.
+#[derive(Debug, Clone, Default)]
+pub struct ContactSurface {
+    /// One entry per A node, in A's order.
+    pub nodes: Vec<ContactNode>,
+    work: Workspace,
+}
+
+impl ContactSurface {
+    /// An empty surface (fill it with [`evaluate_into`]).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Whether every A node is fully covered by B.
+    pub fn all_covered(&self) -> bool {
+        self.nodes.iter().all(ContactNode::is_covered)
+    }
+}
+
+/// Evaluate the contact pair `(a, b)` at the current positions `x` (all nodes, indexed by node
+/// id): weights, `F^A`, `F^B`, `R_C`, nodal frames, coverage and coupling rows of every A node
+/// (equations in the [module docs](self)). `search_distance > 0` bounds `|g|` of a valid hit.
+///
+/// # Errors
+/// [`Error::InvalidInput`], naming the node, when a polyline has fewer than 2 nodes, a node id is
+/// out of range, a coordinate is not finite, a node repeats (consecutively or anywhere: a
+/// polyline must be a simple open chain), a segment has zero length, A and B share a node, A
+/// folds back onto itself at a node (no nodal normal), or `search_distance` is not positive and
+/// finite.
+pub fn evaluate(
+    a: &[usize],
+    b: &[usize],
+    x: &[[f64; 2]],
+    search_distance: f64,
+) -> Result<ContactSurface> {
+    let mut out = ContactSurface::new();
+    evaluate_into(a, b, x, search_distance, &mut out)?;
+    Ok(out)
+}
+
+/// [`evaluate`] into an existing surface, reusing its allocations. On error `out` is left in an
+/// unspecified but valid state.
+///
+/// # Errors
+/// As [`evaluate`].
+pub fn evaluate_into(
+    a: &[usize],
+    b: &[usize],
+    x: &[[f64; 2]],
+    search_distance: f64,
+    out: &mut ContactSurface,
+) -> Result<()> {
+    evaluate_impl(a, b, x, search_distance, out, false)
+}
+
+/// One facing B segment that reaches into an A segment's strip.
+#[derive(Debug, Clone, Copy)]
+struct Candidate {
+    /// B segment index (`b[seg] -> b[seg + 1]`).
+    seg: usize,
+    /// Projections of the B segment's nodes on the A segment (`xi` units), raw.
+    tau0: f64,
+    tau1: f64,
+    /// Signed distances of the B segment's nodes from the A segment's line.
+    g0: f64,
+    g1: f64,
+    /// The `xi` range the segment covers, snapped to the A segment's ends (`lo < hi`).
+    lo: f64,
+    hi: f64,
+}
+
+impl Candidate {
+    /// B parameter `eta` of the hit point at `xi`, clamped to `[0, 1]`.
+    fn eta(&self, xi: f64) -> f64 {
+        ((xi - self.tau0) / (self.tau1 - self.tau0)).clamp(0.0, 1.0)
+    }
+
+    /// Signed distance `g(xi)` (affine on the segment's range).
+    fn g(&self, xi: f64) -> f64 {
+        self.g0 + self.eta(xi) * (self.g1 - self.g0)
+    }
+}
+
+/// Scratch buffers of one evaluation.
+#[derive(Debug, Clone, Default)]
+struct Workspace {
+    grid: Grid,
+    ids: Vec<usize>,
+    candidates: Vec<Candidate>,
+    breaks: Vec<f64>,
+    /// Per A segment: length and unit outward normal.
+    seg_len: Vec<f64>,
+    seg_normal: Vec<[f64; 2]>,
+    /// Per A node: uncovered length of the support, `integral_covered M_k g ds`.
+    uncovered: Vec<f64>,
+    distance: Vec<f64>,
+    sorted: Vec<(usize, u8)>,
+}
+
+/// Uniform grid of B segments as a sorted list of `(cell key, segment)` pairs.
+#[derive(Debug, Clone, Default)]
+struct Grid {
+    origin: [f64; 2],
+    top: [f64; 2],
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    entries: Vec<(u64, usize)>,
+}
+
+impl Grid {
+    fn index(&self, v: f64, axis: usize) -> usize {
+        let n = if axis == 0 { self.nx } else { self.ny };
+        ((v - self.origin[axis]) / self.cell)
+            .floor()
+            .clamp(0.0, (n - 1) as f64) as usize
+    }
+
+    /// Bin the segments of `b` (positions `x`) in cells of size `cell`.
+    fn build(&mut self, b: &[usize], x: &[[f64; 2]], cell: f64) {
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        for &i in b {
+            for c in 0..2 {
+                lo[c] = lo[c].min(x[i][c]);
+                hi[c] = hi[c].max(x[i][c]);
+            }
+        }
+        self.origin = lo;
+        self.top = hi;
+        self.cell = cell;
+        // the extent of a chain is at most its length <= n_segments * cell
+        self.nx = ((hi[0] - lo[0]) / cell).floor().min(b.len() as f64) as usize + 1;
+        self.ny = ((hi[1] - lo[1]) / cell).floor().min(b.len() as f64) as usize + 1;
+        self.entries.clear();
+        for (j, w) in b.windows(2).enumerate() {
+            let (q0, q1) = (x[w[0]], x[w[1]]);
+            let len = (q1[0] - q0[0]).hypot(q1[1] - q0[1]);
+            let m = (len / cell).ceil().clamp(1.0, b.len() as f64) as usize;
+            for i in 0..m {
+                let (s0, s1) = (i as f64 / m as f64, (i + 1) as f64 / m as f64);
+                let pa = lerp(q0, q1, s0);
+                let pb = lerp(q0, q1, s1);
+                let (ix0, ix1) = (
+                    self.index(pa[0].min(pb[0]), 0),
+                    self.index(pa[0].max(pb[0]), 0),
+                );
+                let (iy0, iy1) = (
+                    self.index(pa[1].min(pb[1]), 1),
+                    self.index(pa[1].max(pb[1]), 1),
+                );
+                for ix in ix0..=ix1 {
+                    for iy in iy0..=iy1 {
+                        self.entries.push((self.key(ix, iy), j));
+                    }
+                }
+            }
+        }
+        self.entries.sort_unstable();
+        self.entries.dedup();
+    }
+
+    fn key(&self, ix: usize, iy: usize) -> u64 {
+        ix as u64 * self.ny as u64 + iy as u64
+    }
+
+    /// Append the segments binned in cells that meet the box `[lo, hi]` to `out`.
+    fn query(&self, lo: [f64; 2], hi: [f64; 2], out: &mut Vec<usize>) {
+        if hi[0] < self.origin[0]
+            || hi[1] < self.origin[1]
+            || lo[0] > self.top[0]
+            || lo[1] > self.top[1]
+        {
+            return;
+        }
+        let (ix0, ix1) = (self.index(lo[0], 0), self.index(hi[0], 0));
+        let (iy0, iy1) = (self.index(lo[1], 1), self.index(hi[1], 1));
+        for ix in ix0..=ix1 {
+            let (k0, k1) = (self.key(ix, iy0), self.key(ix, iy1));
+            let start = self.entries.partition_point(|e| e.0 < k0);
+            out.extend(
+                self.entries[start..]
+                    .iter()
+                    .take_while(|e| e.0 <= k1)
+                    .map(|e| e.1),
+            );
+        }
+    }
+}
+
+fn lerp(p: [f64; 2], q: [f64; 2], s: f64) -> [f64; 2] {
+    [p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])]
+}
+
+fn dot(u: [f64; 2], v: [f64; 2]) -> f64 {
+    u[0] * v[0] + u[1] * v[1]
+}
+
+fn sub(u: [f64; 2], v: [f64; 2]) -> [f64; 2] {
+    [u[0] - v[0], u[1] - v[1]]
+}
+
+/// Snap a projection `tau` to the A segment's end it lies within [`END_SNAP`] of.
+fn snap(tau: f64) -> f64 {
+    if tau.abs() <= END_SNAP {
+        0.0
+    } else if (tau - 1.0).abs() <= END_SNAP {
+        1.0
+    } else {
+        tau
+    }
+}
+
+/// Check one polyline: length, ids in range, finite coordinates, no consecutive repeat, no
+/// zero-length segment.
+fn check_polyline(name: &str, ids: &[usize], x: &[[f64; 2]]) -> Result<()> {
+    if ids.len() < 2 {
+        return Err(Error::InvalidInput(format!(
+            "contact polyline {name} has {} node(s), needs at least 2",
+            ids.len()
+        )));
+    }
+    for &i in ids {
+        if i >= x.len() {
+            return Err(Error::InvalidInput(format!(
+                "contact polyline {name}: node {i} is out of range ({} nodes)",
+                x.len()
+            )));
+        }
+        if !(x[i][0].is_finite() && x[i][1].is_finite()) {
+            return Err(Error::InvalidInput(format!(
+                "contact polyline {name}: node {i} has a non-finite coordinate"
+            )));
+        }
+    }
+    let mut longest: f64 = 0.0;
+    for w in ids.windows(2) {
+        if w[0] == w[1] {
+            return Err(Error::InvalidInput(format!(
+                "contact polyline {name} repeats node {} consecutively",
+                w[0]
+            )));
+        }
+        let d = sub(x[w[1]], x[w[0]]);
+        longest = longest.max(d[0].hypot(d[1]));
+    }
+    for w in ids.windows(2) {
+        let d = sub(x[w[1]], x[w[0]]);
+        if d[0].hypot(d[1]) <= ZERO_LENGTH * longest {
+            return Err(Error::InvalidInput(format!(
+                "contact polyline {name}: nodes {} and {} coincide (zero-length segment)",
+                w[0], w[1]
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Reject a node that appears twice in A, twice in B, or in both.
+fn check_distinct(a: &[usize], b: &[usize], sorted: &mut Vec<(usize, u8)>) -> Result<()> {
+    sorted.clear();
+    sorted.extend(a.iter().map(|&i| (i, 0u8)));
+    sorted.extend(b.iter().map(|&i| (i, 1u8)));
+    sorted.sort_unstable();
+    for w in sorted.windows(2) {
+        if w[0].0 == w[1].0 {
+            let node = w[0].0;
+            return Err(Error::InvalidInput(if w[0].1 != w[1].1 {
+                format!("node {node} is on both contact polylines A and B")
+            } else {
+                let name = if w[0].1 == 0 { "A" } else { "B" };
+                format!(
+                    "contact polyline {name} visits node {node} twice (it must be a simple \
+                     open chain)"
+                )
+            }));
+        }
+    }
+    Ok(())
+}
+
+fn evaluate_impl(
+    a: &[usize],
+    b: &[usize],
+    x: &[[f64; 2]],
+    dist: f64,
+    out: &mut ContactSurface,
+    brute_force: bool,
+) -> Result<()> {
+    if !(dist > 0.0 && dist.is_finite()) {
+        return Err(Error::InvalidInput(format!(
+            "contact search distance must be positive and finite (got {dist})"
+        )));
+    }
+    check_polyline("A", a, x)?;
+    check_polyline("B", b, x)?;
+    let w = &mut out.work;
+    check_distinct(a, b, &mut w.sorted)?;
+
+    let (na, nb) = (a.len(), b.len());
+    // A segments: lengths and normals n = (d_y, -d_x) / h
+    w.seg_len.clear();
+    w.seg_normal.clear();
+    for s in a.windows(2) {
+        let d = sub(x[s[1]], x[s[0]]);
+        let h = d[0].hypot(d[1]);
+        w.seg_len.push(h);
+        w.seg_normal.push([d[1] / h, -d[0] / h]);
+    }
+    // nodes: frame, weight, F^A
+    out.nodes.resize_with(na, ContactNode::default);
+    for (k, node) in out.nodes.iter_mut().enumerate() {
+        let (hl, hr) = (
+            if k > 0 { w.seg_len[k - 1] } else { 0.0 },
+            if k + 1 < na { w.seg_len[k] } else { 0.0 },
+        );
+        // sum_e h_e n_e = (x_{k+1} - x_{k-1}) rotated clockwise
+        let d = sub(x[a[(k + 1).min(na - 1)]], x[a[k.saturating_sub(1)]]);
+        let len = d[0].hypot(d[1]);
+        if len <= 1e-12 * (hl + hr) {
+            return Err(Error::InvalidInput(format!(
+                "contact polyline A folds back onto itself at node {} (no nodal normal)",
+                a[k]
+            )));
+        }
+        let n = [d[1] / len, -d[0] / len];
+        node.node = a[k];
+        node.normal = n;
+        node.tangent = [n[1], -n[0]];
+        node.weight = 0.5 * (hl + hr);
+        node.covered_weight = 0.0;
+        node.gap = [0.0, 0.0];
+        node.coupling.clear();
+        if k > 0 {
+            node.coupling.push((a[k - 1], hl / 6.0));
+        }
+        node.coupling.push((a[k], (hl + hr) / 3.0));
+        if k + 1 < na {
+            node.coupling.push((a[k + 1], hr / 6.0));
+        }
+    }
+    w.uncovered.clear();
+    w.uncovered.resize(na, 0.0);
+    w.distance.clear();
+    w.distance.resize(na, 0.0);
+
+    // candidate search structure over B
+    let mean_a = w.seg_len.iter().sum::<f64>() / (na - 1) as f64;
+    let mean_b = b
+        .windows(2)
+        .map(|s| {
+            let d = sub(x[s[1]], x[s[0]]);
+            d[0].hypot(d[1])
+        })
+        .sum::<f64>()
+        / (nb - 1) as f64;
+    let cell = mean_a.max(mean_b).max(dist);
+    if !brute_force {
+        w.grid.build(b, x, cell);
+    }
+
+    for e in 0..na - 1 {
+        let (p0, p1) = (x[a[e]], x[a[e + 1]]);
+        let h = w.seg_len[e];
+        let n = w.seg_normal[e];
+        let t = [-n[1], n[0]];
+        // candidates: B segments binned under the strip {xi in [0, 1], |g| <= dist}
+        w.ids.clear();
+        if brute_force {
+            w.ids.extend(0..nb - 1);
+        } else {
+            let m = (h / cell).ceil().clamp(1.0, na as f64) as usize;
+            let scale = p0[0]
+                .abs()
+                .max(p0[1].abs())
+                .max(p1[0].abs())
+                .max(p1[1].abs());
+            let pad = 1e-9 * cell + 1e-14 * scale;
+            for i in 0..m {
+                let c0 = lerp(p0, p1, i as f64 / m as f64);
+                let c1 = lerp(p0, p1, (i + 1) as f64 / m as f64);
+                let mut lo = [f64::INFINITY; 2];
+                let mut hi = [f64::NEG_INFINITY; 2];
+                for c in [c0, c1] {
+                    for sgn in [-dist, dist] {
+                        for ax in 0..2 {
+                            let v = c[ax] + sgn * n[ax];
+                            lo[ax] = lo[ax].min(v - pad);
+                            hi[ax] = hi[ax].max(v + pad);
+                        }
+                    }
+                }
+                w.grid.query(lo, hi, &mut w.ids);
+            }
+            w.ids.sort_unstable();
+            w.ids.dedup();
+        }
+        w.candidates.clear();
+        for &j in &w.ids {
+            let (r0, r1) = (sub(x[b[j]], p0), sub(x[b[j + 1]], p0));
+            let (tau0, tau1) = (dot(r0, t) / h, dot(r1, t) / h);
+            let (g0, g1) = (dot(r0, n), dot(r1, n));
+            // facing: (q1 - q0) . t < 0 (also rejects segments parallel to n)
+            if tau1 >= tau0 {
+                continue;
+            }
+            let (lo, hi) = (snap(tau1), snap(tau0));
+            if hi <= 0.0 || lo >= 1.0 || lo >= hi {
+                continue;
+            }
+            if (g0 > dist && g1 > dist) || (g0 < -dist && g1 < -dist) {
+                continue;
+            }
+            w.candidates.push(Candidate {
+                seg: j,
+                tau0,
+                tau1,
+                g0,
+                g1,
+                lo,
+                hi,
+            });
+        }
+        let (k0, k1) = (e, e + 1);
+        if w.candidates.is_empty() {
+            w.uncovered[k0] += h;
+            w.uncovered[k1] += h;
+            continue;
+        }
+        w.candidates
+            .sort_unstable_by(|u, v| u.lo.total_cmp(&v.lo).then(u.seg.cmp(&v.seg)));
+        // break points: B nodes' projections, |g| = dist, and |g_i| = |g_j|
+        w.breaks.clear();
+        w.breaks.extend([0.0, 1.0]);
+        for c in &w.candidates {
+            w.breaks.extend([c.lo, c.hi]);
+            for level in [dist, -dist] {
+                if (c.g0 - level) * (c.g1 - level) < 0.0 {
+                    let eta = (level - c.g0) / (c.g1 - c.g0);
+                    w.breaks.push(c.tau0 + eta * (c.tau1 - c.tau0));
+                }
+            }
+        }
+        let cands = &w.candidates;
+        for i in 0..cands.len() {
+            for j in i + 1..cands.len() {
+                let (ci, cj) = (&cands[i], &cands[j]);
+                if cj.lo >= ci.hi {
+                    break;
+                }
+                let (l, u) = (cj.lo, ci.hi.min(cj.hi));
+                for sign in [1.0, -1.0] {
+                    let (fl, fu) = (ci.g(l) - sign * cj.g(l), ci.g(u) - sign * cj.g(u));
+                    if fl * fu < 0.0 {
+                        w.breaks.push(l + (u - l) * fl / (fl - fu));
+                    }
+                }
+            }
+        }
+        w.breaks.retain(|v| (0.0..=1.0).contains(v));
+        w.breaks.sort_unstable_by(f64::total_cmp);
+        w.breaks.dedup();
+
+        for piece in w.breaks.windows(2) {
+            let (xa, xb) = (piece[0], piece[1]);
+            let mid = 0.5 * (xa + xb);
+            // the facing hit nearest to A (smallest |g|) within the search distance
+            let mut best: Option<(&Candidate, f64)> = None;
+            for c in cands {
+                if c.lo > mid {
+                    break;
+                }
+                if c.hi < mid {
+                    continue;
+                }
+                let g = c.g(mid).abs();
+                if g <= dist && best.is_none_or(|(_, bg)| g < bg) {
+                    best = Some((c, g));
+                }
+            }
+            let len = (xb - xa) * h;
+            let Some((c, _)) = best else {
+                w.uncovered[k0] += len;
+                w.uncovered[k1] += len;
+                continue;
+            };
+            // exact 2-point Gauss on the piece: M, L^B, g all affine in xi
+            let mut fb = [[0.0; 2]; 2];
+            let mut mg = [0.0; 2];
+            let mut mw = [0.0; 2];
+            for (gp, gw) in GAUSS2_UNIT {
+                let xi = xa + (xb - xa) * gp;
+                let wt = gw * len;
+                let mk = [1.0 - xi, xi];
+                let eta = c.eta(xi);
+                let lb = [1.0 - eta, eta];
+                let g = c.g0 + eta * (c.g1 - c.g0);
+                for r in 0..2 {
+                    fb[r][0] += wt * mk[r] * lb[0];
+                    fb[r][1] += wt * mk[r] * lb[1];
+                    mg[r] += wt * mk[r] * g;
+                    mw[r] += wt * mk[r];
+                }
+            }
+            let (q0, q1) = (b[c.seg], b[c.seg + 1]);
+            for (r, k) in [(0, k0), (1, k1)] {
+                let node = &mut out.nodes[k];
+                node.gap[0] -= mg[r] * n[0];
+                node.gap[1] -= mg[r] * n[1];
+                node.covered_weight += mw[r];
+                w.distance[k] += mg[r];
+                node.coupling.push((q0, -fb[r][0]));
+                node.coupling.push((q1, -fb[r][1]));
+            }
+        }
+    }
+
+    // finish: coverage, gaps, merged coupling rows
+    for (k, node) in out.nodes.iter_mut().enumerate() {
+        let support = 2.0 * node.weight;
+        node.coverage = if w.uncovered[k] <= 0.0 {
+            1.0
+        } else {
+            (1.0 - w.uncovered[k] / support).clamp(0.0, 1.0)
+        };
+        if node.covered_weight > 0.0 {
+            node.normal_gap = -dot(node.normal, node.gap) / node.covered_weight;
+            node.mean_distance = w.distance[k] / node.covered_weight;
+        } else {
+            node.normal_gap = f64::INFINITY;
+            node.mean_distance = f64::INFINITY;
+        }
+        merge(&mut node.coupling);
+    }
+    Ok(())
+}
+
+/// Sort a coupling row by node id, sum entries of the same node, drop exact zeros.
+fn merge(row: &mut Vec<(usize, f64)>) {
+    row.sort_by_key(|e| e.0);
+    let mut write = 0;
+    for read in 0..row.len() {
+        if write > 0 && row[write - 1].0 == row[read].0 {
+            row[write - 1].1 += row[read].1;
+        } else {
+            row[write] = row[read];
+            write += 1;
+        }
+    }
+    row.truncate(write);
+    row.retain(|e| e.1 != 0.0);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A flat A on `y = 0` (nodes right to left: A below, n = +y) and B on `y = gap` (left to
+    /// right: B above, facing).
+    fn flat(xa: &[f64], xb: &[f64], gap: f64) -> (Vec<usize>, Vec<usize>, Vec<[f64; 2]>) {
+        let mut x = Vec::new();
+        let a: Vec<usize> = xa
+            .iter()
+            .rev()
+            .map(|&v| {
+                x.push([v, 0.0]);
+                x.len() - 1
+            })
+            .collect();
+        let b: Vec<usize> = xb
+            .iter()
+            .map(|&v| {
+                x.push([v, gap]);
+                x.len() - 1
+            })
+            .collect();
+        (a, b, x)
+    }
+
+    #[test]
+    fn snap_and_merge() {
+        assert_eq!(snap(1e-12), 0.0);
+        assert_eq!(snap(1.0 - 1e-12), 1.0);
+        assert_eq!(snap(0.5), 0.5);
+        let mut row = vec![(3, 1.0), (1, 2.0), (3, -1.0), (1, 0.5)];
+        merge(&mut row);
+        assert_eq!(row, vec![(1, 2.5)]);
+    }
+
+    #[test]
+    fn normal_points_into_b_and_tangent_convention() {
+        let (a, b, x) = flat(&[0.0, 1.0, 2.0], &[0.0, 2.0], 0.1);
+        let s = evaluate(&a, &b, &x, 1.0).unwrap();
+        for nd in &s.nodes {
+            assert_eq!(nd.normal, [0.0, 1.0]);
+            assert_eq!(nd.tangent, [1.0, 0.0]);
+            assert!((nd.normal_gap - 0.1).abs() < 1e-15);
+        }
+    }
+
+    /// The grid search finds exactly what the brute-force scan finds (bitwise identical
+    /// results): wavy non-matching surfaces, A much coarser or much finer than B, B folding
+    /// back over A, any orientation, search distances from a fraction of a segment to more
+    /// than the whole extent.
+    #[test]
+    fn grid_search_matches_brute_force() {
+        let mut seed = 12345u64;
+        let mut rnd = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for trial in 0..60 {
+            let (na, nb) = match trial % 3 {
+                0 => (5 + trial, 7 + 3 * trial),
+                1 => (3, 150 + trial),
+                _ => (120 + trial, 4),
+            };
+            let folded = trial % 4 == 3;
+            let (c, s) = ((7.0 * rnd()).cos(), (7.0 * rnd()).sin());
+            let norm = c.hypot(s);
+            let (c, s) = (c / norm, s / norm);
+            let place = |p: [f64; 2]| [c * p[0] - s * p[1] + 3.0, s * p[0] + c * p[1] - 1.0];
+            let mut x = Vec::new();
+            let mut a = Vec::new();
+            for i in 0..na {
+                let u = 1.0 - i as f64 / (na - 1) as f64 + 0.2 * (rnd() - 0.5) / na as f64;
+                x.push(place([u, 0.05 * (7.0 * u).sin()]));
+                a.push(x.len() - 1);
+            }
+            let mut b = Vec::new();
+            for i in 0..nb {
+                let u = -0.1 + 1.2 * i as f64 / (nb - 1) as f64;
+                let mut y = 0.05 * (7.0 * u).sin() + 0.02 * (rnd() - 0.5);
+                if folded && i % 2 == 1 {
+                    // zig-zag: every other node far back and ahead, so B folds over A
+                    y += 0.3;
+                }
+                let u = if folded && i % 2 == 1 { u - 0.3 } else { u };
+                x.push(place([u, y]));
+                b.push(x.len() - 1);
+            }
+            let dist = [0.01, 0.05, 0.3, 5.0][trial % 4] * (0.5 + rnd());
+            let mut fast = ContactSurface::new();
+            let mut slow = ContactSurface::new();
+            evaluate_impl(&a, &b, &x, dist, &mut fast, false).unwrap();
+            evaluate_impl(&a, &b, &x, dist, &mut slow, true).unwrap();
+            assert_eq!(fast.nodes, slow.nodes, "trial {trial}");
+            assert!(
+                fast.nodes.iter().any(|n| n.covered_weight > 0.0),
+                "trial {trial}"
+            );
+        }
+    }
+
+    #[test]
+    fn reuse_gives_identical_results() {
+        let (a, b, x) = flat(&[0.0, 0.3, 1.0, 1.4, 2.0], &[-0.1, 0.7, 1.1, 2.2], 0.05);
+        let fresh = evaluate(&a, &b, &x, 1.0).unwrap();
+        let mut reused = evaluate(&b[..2], &a[..3], &x, 1.0).unwrap_or_default();
+        evaluate_into(&a, &b, &x, 1.0, &mut reused).unwrap();
+        assert_eq!(fresh.nodes, reused.nodes);
+    }
+}

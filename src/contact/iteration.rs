@@ -1,0 +1,787 @@
+//! The contact-set iteration of Kubomura and Pian with the stiffness factored once per analysis.
+//!
+//! # The equations (METHOD.md sections 3 and 4)
+//! `t` is the traction acting on body A (the multiplier side), interpolated linearly between the
+//! A nodes; at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
+//! With `Gc` the coupling (its column for a normal multiplier is `+F^A n_k` at A's dofs and
+//! `-F^B n_k` at B's: the contact forces on both bodies, equal and opposite), equilibrium in the
+//! total form reads
+//!
+//! ```text
+//! K q = f - K_fp q_p + Gc t,   so   q = u0 + K^-1 Gc t,   u0 = K^-1 (f - K_fp q_p)
+//! ```
+//!
+//! and an active node closes its weighted gap `R_C,k` (linearised about the latest iterate
+//! `q_i`, geometry re-evaluated every iteration):
+//!
+//! ```text
+//! normal row:   n_k . sum_j c_kj q_j = n_k . sum_j c_kj q_i,j - n_k . R_C,k(q_i)
+//! stick row:    s_k . sum_j c_kj (q_j - q_start,j) = 0     (no slip since the increment began)
+//! slip node:    only the normal row; its force column is n_k + mu sign_k s_k,
+//!               ts_k = mu sign_k tn_k
+//! ```
+//!
+//! Columns of `Gc` live on the contact nodes' dofs only, so `K^-1` is needed only there: the
+//! contact-boundary flexibility `F = E^T K^-1 E` (`E` selects the free dofs of the contact
+//! nodes) is built once per analysis with batched solves, and every iteration is small dense
+//! algebra: `S t = rows . (b - u0)` with `S = rows^T F cols`. The full displacement field is
+//! recovered once per converged increment (one more solve).
+//!
+//! # The iteration (per increment)
+//! Start from the last converged states; each iteration solves the small system, re-evaluates
+//! the geometry at the new iterate and applies the paper's rules: activate an open A node whose
+//! weighted gap is below `-gap_tolerance` (B nodes are checked pointwise only over A segments
+//! whose two nodes are open), drop active nodes in tension, turn stick nodes that violate
+//! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
+//! stops when no state changed and `R = |dU(i+1) - dU(i)| / |dU(i+1)|` (increment displacement
+//! of the contact nodes) is below `tolerance`. A state seen before reappearing is cycling and
+//! stops the increment with an error naming the node; so does the iteration cap. A failed
+//! increment leaves the last converged state untouched.
+
+use super::geometry::{self, ContactSurface};
+use crate::assembly::dof;
+use crate::error::{Error, Result};
+use crate::model::{LinearSystem, Model};
+use faer::Mat;
+use nalgebra::{DMatrix, DVector};
+
+/// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
+/// with its body on the left), and the Coulomb friction coefficient between them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactPair {
+    /// Multiplier-side boundary nodes (body A on the left of each segment).
+    pub a: Vec<usize>,
+    /// Opposite boundary nodes (body B on the left of each segment).
+    pub b: Vec<usize>,
+    /// Coulomb friction coefficient `mu >= 0` (0: frictionless).
+    pub friction: f64,
+}
+
+/// Parameters of the contact-set iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactOptions {
+    /// Convergence tolerance on `R` (the paper used 0.01; 1e-6 costs about one more iteration).
+    pub tolerance: f64,
+    /// Iteration cap per increment.
+    pub max_iterations: usize,
+    /// Penetration tolerance, relative to the mean A segment length.
+    pub gap_tolerance: f64,
+    /// Tension tolerance, relative to the largest `|tn|`.
+    pub tension_tolerance: f64,
+    /// Friction-cone tolerance, relative to `mu |tn|`.
+    pub friction_tolerance: f64,
+    /// Distance within which B segments are paired with an A segment, relative to the mean A
+    /// segment length.
+    pub search_distance: f64,
+}
+
+impl Default for ContactOptions {
+    fn default() -> Self {
+        ContactOptions {
+            tolerance: 1e-6,
+            max_iterations: 60,
+            gap_tolerance: 1e-9,
+            tension_tolerance: 1e-9,
+            friction_tolerance: 1e-9,
+            search_distance: 4.0,
+        }
+    }
+}
+
+/// State of an A node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NodeState {
+    /// Not in contact: no rows.
+    Open,
+    /// In contact, no relative tangential motion since the increment began.
+    Stick,
+    /// In contact, sliding; `sign` is the direction (along `s`) of A's slip relative to B, and
+    /// the friction traction on A is `ts = mu sign tn` (opposing it, since `tn < 0`).
+    Slip {
+        /// +1 or -1.
+        sign: i8,
+    },
+}
+
+/// Converged contact results at one A node.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NodeResult {
+    /// Node id (A side).
+    pub node: usize,
+    /// Open, stick or slip.
+    pub state: NodeState,
+    /// Normal traction on A (multiplier; `< 0` compression, pressure `p = -tn`).
+    pub tn: f64,
+    /// Tangential traction on A along `s`.
+    pub ts: f64,
+    /// Nodal normal (A's outward) in the converged configuration.
+    pub normal: [f64; 2],
+    /// Nodal tangent `s = (n_y, -n_x)`.
+    pub tangent: [f64; 2],
+    /// Current position of the node.
+    pub position: [f64; 2],
+    /// `integral of M_k ds`: divides nodal forces into pressures.
+    pub weight: f64,
+    /// Normal weighted gap per unit length (`< 0` penetration).
+    pub gap: f64,
+    /// Equivalent nodal contact force on A at this node, `sum_k F^A_kj t_k` (global x, y).
+    pub force: [f64; 2],
+}
+
+/// What happened in one iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IterationRecord {
+    /// Increment number (1-based).
+    pub increment: usize,
+    /// Iteration number within the increment (1-based).
+    pub iteration: usize,
+    /// Active (stick + slip) nodes used in this iteration's solve.
+    pub active: usize,
+    /// Stick nodes among them.
+    pub stick: usize,
+    /// Slip nodes among them.
+    pub slip: usize,
+    /// State changes decided after the solve.
+    pub changes: usize,
+    /// Convergence measure `R`.
+    pub r: f64,
+}
+
+/// Summary of a converged increment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IncrementInfo {
+    /// Increment number (1-based).
+    pub increment: usize,
+    /// Iterations used.
+    pub iterations: usize,
+    /// Active nodes at convergence.
+    pub active: usize,
+    /// Slip nodes at convergence.
+    pub slip: usize,
+}
+
+/// Per-node state kept between increments.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct NodeData {
+    state: NodeState,
+    tn: f64,
+    ts: f64,
+}
+
+/// A contact analysis: the model with its stiffness factored once, the contact pairs, the
+/// contact-boundary flexibility, and the last converged state.
+#[derive(Debug)]
+pub struct ContactAnalysis {
+    model: Model,
+    system: LinearSystem,
+    pairs: Vec<ContactPair>,
+    options: ContactOptions,
+    /// Global dofs of the contact nodes (A and B of every pair), sorted.
+    dofs: Vec<usize>,
+    /// Position of each global dof in `dofs`, `usize::MAX` elsewhere.
+    slot: Vec<usize>,
+    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs).
+    flexibility: DMatrix<f64>,
+    /// Converged total displacement over all dofs.
+    q: Vec<f64>,
+    /// Converged node data, per pair, per A node.
+    nodes: Vec<Vec<NodeData>>,
+    increment: usize,
+    records: Vec<IterationRecord>,
+}
+
+impl ContactAnalysis {
+    /// Validate, factor `K` once and build the contact-boundary flexibility.
+    pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
+        let system = LinearSystem::new(&model)?;
+        let n_nodes = model.mesh.n_nodes();
+        for (i, p) in pairs.iter().enumerate() {
+            if !(p.friction.is_finite() && p.friction >= 0.0) {
+                return Err(Error::InvalidInput(format!(
+                    "contact pair {i}: friction must be finite and >= 0, got {}",
+                    p.friction
+                )));
+            }
+            if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| n >= n_nodes) {
+                return Err(Error::InvalidInput(format!(
+                    "contact pair {i}: unknown node {n} (mesh has {n_nodes} nodes)"
+                )));
+            }
+        }
+        let mut dofs: Vec<usize> = pairs
+            .iter()
+            .flat_map(|p| p.a.iter().chain(&p.b))
+            .flat_map(|&n| [dof(n, 0), dof(n, 1)])
+            .collect();
+        dofs.sort_unstable();
+        dofs.dedup();
+        let mut slot = vec![usize::MAX; 2 * n_nodes];
+        for (i, &d) in dofs.iter().enumerate() {
+            slot[d] = i;
+        }
+        let nodes = pairs
+            .iter()
+            .map(|p| {
+                vec![
+                    NodeData {
+                        state: NodeState::Open,
+                        tn: 0.0,
+                        ts: 0.0,
+                    };
+                    p.a.len()
+                ]
+            })
+            .collect();
+        let mut analysis = ContactAnalysis {
+            q: vec![0.0; 2 * n_nodes],
+            model,
+            system,
+            pairs,
+            options,
+            flexibility: DMatrix::zeros(0, 0),
+            dofs,
+            slot,
+            nodes,
+            increment: 0,
+            records: Vec::new(),
+        };
+        analysis.flexibility = analysis.build_flexibility()?;
+        Ok(analysis)
+    }
+
+    /// `F = E^T K^-1 E`: one solve per free contact dof, batched 64 at a time.
+    fn build_flexibility(&mut self) -> Result<DMatrix<f64>> {
+        let m = self.dofs.len();
+        let mut flex = DMatrix::zeros(m, m);
+        let free: Vec<(usize, usize)> = self
+            .dofs
+            .iter()
+            .enumerate()
+            .filter_map(|(i, &d)| self.system.dofs().equation(d).map(|e| (i, e)))
+            .collect();
+        let n_free = self.system.dofs().n_free();
+        for chunk in free.chunks(64) {
+            let mut rhs = Mat::<f64>::zeros(n_free, chunk.len());
+            for (j, &(_, e)) in chunk.iter().enumerate() {
+                rhs[(e, j)] = 1.0;
+            }
+            self.system.cholesky().solve_in_place(rhs.as_mut())?;
+            for (j, &(col, _)) in chunk.iter().enumerate() {
+                for &(row, e) in &free {
+                    flex[(row, col)] = rhs[(e, j)];
+                }
+            }
+        }
+        Ok(flex)
+    }
+
+    /// The model (mesh, materials, boundary conditions).
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// The last converged total displacement over all dofs.
+    pub fn displacement(&self) -> &[f64] {
+        &self.q
+    }
+
+    /// Every iteration record so far, in order.
+    pub fn records(&self) -> &[IterationRecord] {
+        &self.records
+    }
+
+    /// Number of numeric factorizations of `K` performed (1 per analysis).
+    pub fn factorizations(&mut self) -> usize {
+        self.system.cholesky().factorizations()
+    }
+
+    /// Mean A segment length of pair `p` in the current configuration (the length scale of
+    /// the gap tolerance and the search distance).
+    fn mean_segment(&self, p: usize, x: &[[f64; 2]]) -> f64 {
+        let a = &self.pairs[p].a;
+        let total: f64 = a
+            .windows(2)
+            .map(|w| {
+                let (u, v) = (x[w[0]], x[w[1]]);
+                (v[0] - u[0]).hypot(v[1] - u[1])
+            })
+            .sum();
+        total / (a.len().max(2) - 1) as f64
+    }
+
+    /// Current positions `X + q` of every node.
+    fn positions(&self, q: &[f64]) -> Vec<[f64; 2]> {
+        self.model
+            .mesh
+            .nodes
+            .iter()
+            .enumerate()
+            .map(|(i, p)| [p[0] + q[dof(i, 0)], p[1] + q[dof(i, 1)]])
+            .collect()
+    }
+
+    fn surfaces(&self, x: &[[f64; 2]]) -> Result<Vec<ContactSurface>> {
+        (0..self.pairs.len())
+            .map(|p| {
+                let h = self.mean_segment(p, x);
+                geometry::evaluate(
+                    &self.pairs[p].a,
+                    &self.pairs[p].b,
+                    x,
+                    self.options.search_distance * h,
+                )
+            })
+            .collect()
+    }
+
+    /// Apply one load increment: total external forces `f` and total prescribed displacement
+    /// values `qp` (both over all dofs; `qp` read at the prescribed dofs). On success the
+    /// converged state advances; on failure it is left as it was and the error says why.
+    pub fn increment(&mut self, f: &[f64], qp: &[f64]) -> Result<IncrementInfo> {
+        let number = self.increment + 1;
+        let u0 = self.system.solve_for(&self.model, f, qp)?.q;
+        let start = self.q.clone();
+        let mut states: Vec<Vec<NodeState>> = self
+            .nodes
+            .iter()
+            .map(|v| v.iter().map(|d| d.state).collect())
+            .collect();
+        // iterate on the contact dofs only; geometry from the start configuration
+        let mut uc: Vec<f64> = self.dofs.iter().map(|&d| start[d]).collect();
+        let u0c: Vec<f64> = self.dofs.iter().map(|&d| u0[d]).collect();
+        let startc = uc.clone();
+        let mut q = start.clone();
+        let mut surfaces = self.surfaces(&self.positions(&q))?;
+        let mut history: Vec<Vec<Vec<NodeState>>> = vec![states.clone()];
+        let mut records = Vec::new();
+        for iteration in 1..=self.options.max_iterations {
+            let system = self.build_system(&surfaces, &states, &uc, &startc)?;
+            let tau = system.solve(&u0c, &self.flexibility)?;
+            let forces = system.forces(&tau, self.dofs.len());
+            let mut uc_new = u0c.clone();
+            let df = &self.flexibility * DVector::from_column_slice(&forces);
+            for (u, d) in uc_new.iter_mut().zip(df.iter()) {
+                *u += d;
+            }
+            for (i, &d) in self.dofs.iter().enumerate() {
+                q[d] = uc_new[i];
+            }
+            let x = self.positions(&q);
+            let new_surfaces = self.surfaces(&x)?;
+            let tractions = system.tractions(&tau, &states, &self.pairs);
+            let (new_states, changes) =
+                self.update_states(&states, &tractions, &new_surfaces, &x, &uc_new, &startc)?;
+            let r = change_ratio(&uc_new, &uc, &startc);
+            let (active, stick, slip) = count(&states);
+            let record = IterationRecord {
+                increment: number,
+                iteration,
+                active,
+                stick,
+                slip,
+                changes,
+                r,
+            };
+            records.push(record);
+            uc = uc_new;
+            surfaces = new_surfaces;
+            if changes == 0 && r <= self.options.tolerance {
+                return Ok(self.finish(number, iteration, &states, &tractions, &forces, f, qp, records)?);
+            }
+            if changes > 0 {
+                if let Some(j) = history.iter().position(|h| *h == new_states) {
+                    let node = self.flipping_node(&history[j], &states);
+                    return Err(Error::Contact(format!(
+                        "increment {number}: the contact set cycles (iteration {iteration} \
+                         returns to the set of iteration {}; node {node} flips)",
+                        j + 1
+                    )));
+                }
+                history.push(new_states.clone());
+            }
+            states = new_states;
+        }
+        Err(Error::Contact(format!(
+            "increment {number}: no convergence in {} iterations (last R = {:.3e})",
+            self.options.max_iterations,
+            records.last().map_or(f64::NAN, |r: &IterationRecord| r.r)
+        )))
+    }
+
+    /// A node whose state differs between two state sets (for messages).
+    fn flipping_node(&self, a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> usize {
+        for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
+            if let Some(k) = sa.iter().zip(sb).position(|(x, y)| x != y) {
+                return self.pairs[p].a[k];
+            }
+        }
+        usize::MAX
+    }
+}
+
+/// `R = |u_new - u_old| / |u_new - u_start|` over the contact dofs (0 when nothing moved).
+fn change_ratio(new: &[f64], old: &[f64], start: &[f64]) -> f64 {
+    let num: f64 = new.iter().zip(old).map(|(a, b)| (a - b).powi(2)).sum();
+    let den: f64 = new.iter().zip(start).map(|(a, b)| (a - b).powi(2)).sum();
+    if den == 0.0 { num.sqrt() } else { (num / den).sqrt() }
+}
+
+/// `(active, stick, slip)` counts.
+fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
+    let all = states.iter().flatten();
+    let stick = all.clone().filter(|s| **s == NodeState::Stick).count();
+    let slip = all
+        .clone()
+        .filter(|s| matches!(s, NodeState::Slip { .. }))
+        .count();
+    (stick + slip, stick, slip)
+}
+
+/// Which row of a node an unknown belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Row {
+    Normal,
+    Tangent,
+}
+
+/// A sparse vector over the contact dofs: `(slot, value)`.
+type Sparse = Vec<(usize, f64)>;
+
+/// The small dense system of one iteration: one unknown per active row.
+struct SmallSystem {
+    /// `(pair, A node index, row)` of each unknown.
+    unknowns: Vec<(usize, usize, Row)>,
+    /// Constraint rows (`row . u = b`).
+    rows: Vec<Sparse>,
+    /// Force columns (the contact force on the contact dofs is `sum_j tau_j col_j`).
+    cols: Vec<Sparse>,
+    /// Right-hand sides `b`.
+    b: Vec<f64>,
+}
+
+fn dot(v: &Sparse, u: &[f64]) -> f64 {
+    v.iter().map(|&(i, c)| c * u[i]).sum()
+}
+
+impl SmallSystem {
+    /// Solve `(rows^T F cols) tau = b - rows . u0` (LU with partial pivoting).
+    fn solve(&self, u0: &[f64], flex: &DMatrix<f64>) -> Result<Vec<f64>> {
+        let m = self.rows.len();
+        if m == 0 {
+            return Ok(Vec::new());
+        }
+        let mut s = DMatrix::zeros(m, m);
+        let mut fcol = vec![0.0; flex.nrows()];
+        for (j, col) in self.cols.iter().enumerate() {
+            fcol.iter_mut().for_each(|v| *v = 0.0);
+            for &(c, v) in col {
+                for (r, out) in fcol.iter_mut().enumerate() {
+                    *out += flex[(r, c)] * v;
+                }
+            }
+            for (i, row) in self.rows.iter().enumerate() {
+                s[(i, j)] = dot(row, &fcol);
+            }
+        }
+        let rhs = DVector::from_iterator(
+            m,
+            self.rows.iter().zip(&self.b).map(|(row, b)| b - dot(row, u0)),
+        );
+        let tau = s
+            .lu()
+            .solve(&rhs)
+            .filter(|t| t.iter().all(|v| v.is_finite()))
+            .ok_or_else(|| {
+                Error::Singular(
+                    "the contact system is singular: a body held only by contact cannot take \
+                     the load (frictionless contact cannot resist tangential motion)"
+                        .into(),
+                )
+            })?;
+        Ok(tau.iter().copied().collect())
+    }
+
+    /// Contact forces on the contact dofs: `sum_j tau_j col_j`.
+    fn forces(&self, tau: &[f64], n: usize) -> Vec<f64> {
+        let mut f = vec![0.0; n];
+        for (col, t) in self.cols.iter().zip(tau) {
+            for &(i, c) in col {
+                f[i] += c * t;
+            }
+        }
+        f
+    }
+
+    /// `(tn, ts)` of every A node from the unknowns (zero at open nodes; `ts = mu sign tn` at
+    /// slip nodes).
+    fn tractions(
+        &self,
+        tau: &[f64],
+        states: &[Vec<NodeState>],
+        pairs: &[ContactPair],
+    ) -> Vec<Vec<(f64, f64)>> {
+        let mut t: Vec<Vec<(f64, f64)>> = states.iter().map(|s| vec![(0.0, 0.0); s.len()]).collect();
+        for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
+            match row {
+                Row::Normal => t[p][k].0 = v,
+                Row::Tangent => t[p][k].1 = v,
+            }
+        }
+        for (p, s) in states.iter().enumerate() {
+            for (k, state) in s.iter().enumerate() {
+                if let NodeState::Slip { sign } = state {
+                    t[p][k].1 = pairs[p].friction * f64::from(*sign) * t[p][k].0;
+                }
+            }
+        }
+        t
+    }
+}
+
+impl ContactAnalysis {
+    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
+    fn directed(&self, coupling: &[(usize, f64)], d: [f64; 2]) -> Sparse {
+        coupling
+            .iter()
+            .flat_map(|&(j, c)| {
+                [
+                    (self.slot[dof(j, 0)], c * d[0]),
+                    (self.slot[dof(j, 1)], c * d[1]),
+                ]
+            })
+            .collect()
+    }
+
+    /// Assemble the rows, columns and right-hand sides for the active nodes.
+    fn build_system(
+        &self,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<SmallSystem> {
+        let mut sys = SmallSystem {
+            unknowns: Vec::new(),
+            rows: Vec::new(),
+            cols: Vec::new(),
+            b: Vec::new(),
+        };
+        for (p, surface) in surfaces.iter().enumerate() {
+            let mu = self.pairs[p].friction;
+            for (k, node) in surface.nodes.iter().enumerate() {
+                let state = states[p][k];
+                if state == NodeState::Open {
+                    continue;
+                }
+                if node.coverage < 1.0 - 1e-9 {
+                    return Err(Error::Contact(format!(
+                        "active contact node {} is not fully covered by the opposite surface \
+                         (coverage {:.3}): extend the B polyline",
+                        node.node, node.coverage
+                    )));
+                }
+                let normal = self.directed(&node.coupling, node.normal);
+                let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
+                let b = dot(&normal, uc) - rg;
+                let tangent = || self.directed(&node.coupling, node.tangent);
+                let col = match state {
+                    NodeState::Slip { sign } if mu > 0.0 => {
+                        let mut c = normal.clone();
+                        let w = mu * f64::from(sign);
+                        c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
+                        c
+                    }
+                    _ => normal.clone(),
+                };
+                sys.unknowns.push((p, k, Row::Normal));
+                sys.rows.push(normal);
+                sys.cols.push(col);
+                sys.b.push(b);
+                if state == NodeState::Stick {
+                    let t = tangent();
+                    sys.unknowns.push((p, k, Row::Tangent));
+                    sys.b.push(dot(&t, startc));
+                    sys.rows.push(t.clone());
+                    sys.cols.push(t);
+                }
+            }
+        }
+        Ok(sys)
+    }
+
+    /// The paper's rules: penetration (A nodes by weighted gap; B nodes pointwise over A
+    /// segments whose two nodes are open), tension, the friction cone and slip reversal.
+    /// Returns the new states and the number of changes.
+    #[allow(clippy::too_many_arguments)]
+    fn update_states(
+        &self,
+        states: &[Vec<NodeState>],
+        tractions: &[Vec<(f64, f64)>],
+        surfaces: &[ContactSurface],
+        x: &[[f64; 2]],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<(Vec<Vec<NodeState>>, usize)> {
+        let mut new = states.to_vec();
+        let du: Vec<f64> = uc.iter().zip(startc).map(|(a, b)| a - b).collect();
+        let du_scale = du.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (p, surface) in surfaces.iter().enumerate() {
+            let mu = self.pairs[p].friction;
+            let h = self.mean_segment(p, x);
+            let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
+            let closed = if mu > 0.0 {
+                NodeState::Stick
+            } else {
+                NodeState::Slip { sign: 1 }
+            };
+            let activate = |k: usize, new: &mut Vec<Vec<NodeState>>| -> Result<()> {
+                let node = &surface.nodes[k];
+                if node.coverage < 1.0 - 1e-9 {
+                    return Err(Error::Contact(format!(
+                        "contact reaches node {}, whose support is not fully covered by the \
+                         opposite surface: extend the B polyline",
+                        node.node
+                    )));
+                }
+                new[p][k] = closed;
+                Ok(())
+            };
+            for (k, node) in surface.nodes.iter().enumerate() {
+                let (tn, ts) = tractions[p][k];
+                match states[p][k] {
+                    NodeState::Open => {
+                        if node.normal_gap < -self.options.gap_tolerance * h {
+                            activate(k, &mut new)?;
+                        }
+                    }
+                    _ if tn > self.options.tension_tolerance * tn_max => {
+                        new[p][k] = NodeState::Open;
+                    }
+                    NodeState::Stick => {
+                        if ts.abs() > mu * tn.abs() * (1.0 + self.options.friction_tolerance) {
+                            new[p][k] = NodeState::Slip {
+                                sign: if ts > 0.0 { -1 } else { 1 },
+                            };
+                        }
+                    }
+                    NodeState::Slip { sign } if mu > 0.0 => {
+                        let slip = dot(&self.directed(&node.coupling, node.tangent), &du);
+                        if f64::from(sign) * slip < -1e-9 * node.weight * du_scale {
+                            new[p][k] = NodeState::Stick;
+                        }
+                    }
+                    NodeState::Slip { .. } => {}
+                }
+            }
+            // B nodes over A segments whose two nodes are open
+            let a = &self.pairs[p].a;
+            let open: Vec<bool> = (0..a.len())
+                .map(|k| states[p][k] == NodeState::Open && new[p][k] == NodeState::Open)
+                .collect();
+            for (k, w) in a.windows(2).enumerate() {
+                if !(open[k] && open[k + 1]) {
+                    continue;
+                }
+                let (s0, s1) = (x[w[0]], x[w[1]]);
+                let d = [s1[0] - s0[0], s1[1] - s0[1]];
+                let len2 = d[0] * d[0] + d[1] * d[1];
+                let len = len2.sqrt();
+                let n = [d[1] / len, -d[0] / len];
+                for &j in &self.pairs[p].b {
+                    let r = [x[j][0] - s0[0], x[j][1] - s0[1]];
+                    let xi = (r[0] * d[0] + r[1] * d[1]) / len2;
+                    let g = r[0] * n[0] + r[1] * n[1];
+                    let tol = self.options.gap_tolerance * h;
+                    if (0.0..=1.0).contains(&xi) && g < -tol && g > -self.options.search_distance * h
+                    {
+                        activate(if xi < 0.5 { k } else { k + 1 }, &mut new)?;
+                    }
+                }
+            }
+        }
+        let changes = new
+            .iter()
+            .flatten()
+            .zip(states.iter().flatten())
+            .filter(|(a, b)| a != b)
+            .count();
+        Ok((new, changes))
+    }
+
+    /// Accept the converged iterate: recover the full field (one solve), store the node data
+    /// and the records.
+    #[allow(clippy::too_many_arguments)]
+    fn finish(
+        &mut self,
+        number: usize,
+        iterations: usize,
+        states: &[Vec<NodeState>],
+        tractions: &[Vec<(f64, f64)>],
+        forces: &[f64],
+        f: &[f64],
+        qp: &[f64],
+        records: Vec<IterationRecord>,
+    ) -> Result<IncrementInfo> {
+        let mut total = f.to_vec();
+        for (&d, &v) in self.dofs.iter().zip(forces) {
+            total[d] += v;
+        }
+        self.q = self.system.solve_for(&self.model, &total, qp)?.q;
+        for (p, s) in states.iter().enumerate() {
+            for (k, &state) in s.iter().enumerate() {
+                let (tn, ts) = tractions[p][k];
+                self.nodes[p][k] = NodeData { state, tn, ts };
+            }
+        }
+        self.increment = number;
+        self.records.extend(records);
+        let (active, _, slip) = count(states);
+        Ok(IncrementInfo {
+            increment: number,
+            iterations,
+            active,
+            slip,
+        })
+    }
+
+    /// Converged results at the A nodes of pair `p`: states, tractions (multipliers),
+    /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
+    pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
+        let x = self.positions(&self.q);
+        let h = self.mean_segment(p, &x);
+        let pair = &self.pairs[p];
+        let surface = geometry::evaluate(&pair.a, &pair.b, &x, self.options.search_distance * h)?;
+        let data = &self.nodes[p];
+        // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
+        let mut force = vec![[0.0; 2]; pair.a.len()];
+        for (k, node) in surface.nodes.iter().enumerate() {
+            let t = [
+                data[k].tn * node.normal[0] + data[k].ts * node.tangent[0],
+                data[k].tn * node.normal[1] + data[k].ts * node.tangent[1],
+            ];
+            for &(j, c) in &node.coupling {
+                if let Some(i) = pair.a.iter().position(|&a| a == j) {
+                    force[i][0] += c * t[0];
+                    force[i][1] += c * t[1];
+                }
+            }
+        }
+        Ok(surface
+            .nodes
+            .iter()
+            .enumerate()
+            .map(|(k, node)| NodeResult {
+                node: node.node,
+                state: data[k].state,
+                tn: data[k].tn,
+                ts: data[k].ts,
+                normal: node.normal,
+                tangent: node.tangent,
+                position: x[node.node],
+                weight: node.weight,
+                gap: node.normal_gap,
+                force: force[k],
+            })
+            .collect())
+    }
+}

@@ -1,0 +1,11 @@
+//! Contact between two bodies by the method of Kubomura and Pian (METHOD.md sections 2 to 5).
+//!
+//! * [`geometry`]: pure contact-element kernels of one contact pair in the current
+//!   configuration: nodal frames, weights, the mortar matrices `F^A` and `F^B`, the weighted gap
+//!   `R_C`, coverage and the coupling rows.
+//! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open).
+//! * [`scene`]: the reference disk-on-block scene and its comparison with Hertz.
+
+pub mod geometry;
+pub mod iteration;
+pub mod scene;
