@@ -86,14 +86,14 @@ impl SparsePattern {
         let mut col_ptr = Vec::with_capacity(n + 1);
         let mut row_idx = Vec::new();
         col_ptr.push(0);
-        for node in 0..mesh.n_nodes() {
+        for (node, neighbours) in adjacency.iter().enumerate() {
             for dir in 0..2 {
                 let Some(col) = dofs.equation(dof(node, dir)) else {
                     continue;
                 };
                 // neighbours are sorted by node id and free indices grow with node id and
                 // direction, so rows come out sorted.
-                for &other in &adjacency[node] {
+                for &other in neighbours {
                     for d in 0..2 {
                         if let Some(row) = dofs.equation(dof(other, d)).filter(|&r| r >= col) {
                             row_idx.push(row);

@@ -88,7 +88,7 @@ pub fn cantilever(
 ) -> Result<f64> {
     const L: f64 = 10.0;
     const H: f64 = 2.0;
-    if ny % 2 != 0 {
+    if !ny.is_multiple_of(2) {
         return Err(Error::InvalidInput(format!(
             "the cantilever needs an even ny, got {ny}"
         )));

@@ -1,1 +1,832 @@
-//! (being written)
+//! The C ABI: a thin checked layer over [`crate::element`] and [`crate::material`].
+//!
+//! No mathematics lives here. Every exported function checks its inputs (pointers, lengths,
+//! enums, finite values, element shape), calls the safe Rust API, and copies the result into
+//! the caller's buffers. The header `include/hycon.h` is generated from this file by cbindgen
+//! (`cbindgen --config cbindgen.toml --output include/hycon.h src/ffi.rs`, or
+//! `HYCON_BLESS=1 cargo test --test header_fresh`) and committed; `tests/header_fresh.rs` fails
+//! when it is stale.
+//!
+//! # Conventions (repeated at the top of the header)
+//! * Every symbol starts with `hycon_` / `Hycon` / `HYCON_`.
+//! * Functions return a [`HyconStatus`]: `0` ([`HYCON_OK`]) on success, a negative
+//!   `HYCON_ERROR_*` code on failure, and a positive value for a warning (the call succeeded,
+//!   outputs were written, but something deserves attention; codes `1..=99` are reserved, none
+//!   is produced yet). [`hycon_last_error_message`] copies a readable description of the last
+//!   call's failure into a caller buffer.
+//! * Arrays are (pointer, length) pairs, or a pointer whose length is fixed by other arguments
+//!   (stated per function). `(NULL, 0)` is an empty array.
+//! * Outputs are written only on success: on an error, every output buffer is left untouched.
+//! * Inputs are read during the call only; the caller keeps ownership of all memory and nothing
+//!   is retained after a call returns. Input and output buffers may overlap.
+//! * Thread safety: every function is reentrant and may be called from several threads at once.
+//!   The last error message is thread-local.
+//! * Doubles must be finite (no NaN, no infinity); this is checked.
+//! * Rust panics never cross the boundary: an internal error becomes
+//!   [`HYCON_ERROR_PANIC`], and the panic message goes to the last error message, not to
+//!   stderr (see `boundary` and `install_panic_hook` for the quiet panic hook).
+//!
+//! # Element node and dof order
+//! An element is the counter-clockwise polygon of its boundary nodes, coordinates interleaved
+//! `x0 y0 x1 y1 ...`. Q4 and Pian-Sumihara take the 4 corners; the hybrid element takes 4 to 6
+//! nodes (corners plus mid-side nodes on straight edges, in boundary order). Element dofs are
+//! `u0 v0 u1 v1 ...` in the same node order; element matrices are `2n x 2n`, row-major.
+
+use crate::element::{self, Formulation};
+use crate::error::{Error, ShapeError};
+use crate::material::{Analysis, Material};
+use std::cell::{Cell, RefCell};
+use std::ffi::c_char;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+// ------------------------------------------------------------------------------------------
+// Version
+
+/// Parse a decimal version component at compile time.
+const fn parse_component(s: &str) -> i32 {
+    let b = s.as_bytes();
+    assert!(!b.is_empty(), "empty version component");
+    let mut v = 0i32;
+    let mut i = 0;
+    while i < b.len() {
+        assert!(b[i].is_ascii_digit(), "version component is not a number");
+        v = v * 10 + (b[i] - b'0') as i32;
+        i += 1;
+    }
+    v
+}
+
+/// Major version of the library this header belongs to (from `Cargo.toml`).
+pub const HYCON_VERSION_MAJOR: i32 = 0;
+/// Minor version of the library this header belongs to.
+pub const HYCON_VERSION_MINOR: i32 = 1;
+/// Patch version of the library this header belongs to.
+pub const HYCON_VERSION_PATCH: i32 = 0;
+/// The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
+pub const HYCON_VERSION: i32 = 100;
+
+// The literals above are what cbindgen can put into the header; `version_checks` (evaluated at
+// compile time in `hycon_version`) compares them with the single source, `version` in
+// Cargo.toml.
+#[allow(clippy::assertions_on_constants)] // compile-time checks are the point
+const fn version_checks() {
+    assert!(HYCON_VERSION_MAJOR == parse_component(env!("CARGO_PKG_VERSION_MAJOR")));
+    assert!(HYCON_VERSION_MINOR == parse_component(env!("CARGO_PKG_VERSION_MINOR")));
+    assert!(HYCON_VERSION_PATCH == parse_component(env!("CARGO_PKG_VERSION_PATCH")));
+    assert!(HYCON_VERSION_MINOR < 100 && HYCON_VERSION_PATCH < 100);
+    assert!(
+        HYCON_VERSION
+            == HYCON_VERSION_MAJOR * 10000 + HYCON_VERSION_MINOR * 100 + HYCON_VERSION_PATCH
+    );
+}
+
+// ------------------------------------------------------------------------------------------
+// Status codes
+
+/// Result of every status-returning function: `0` OK, `< 0` error, `> 0` warning.
+pub type HyconStatus = i32;
+
+/// Success.
+pub const HYCON_OK: HyconStatus = 0;
+/// A required pointer argument is NULL (or an array pointer is NULL with a nonzero length).
+pub const HYCON_ERROR_NULL_POINTER: HyconStatus = -1;
+/// An argument is out of range: unknown enum value, wrong length or index, a non-finite double,
+/// a misaligned pointer.
+pub const HYCON_ERROR_INVALID_ARGUMENT: HyconStatus = -2;
+/// The material is invalid: `E <= 0`, `nu` outside `(-1, 0.5)`, `t <= 0`, non-finite values,
+/// unknown analysis type.
+pub const HYCON_ERROR_INVALID_MATERIAL: HyconStatus = -3;
+/// An element has a bad shape or node count: degenerate (zero area, coincident nodes),
+/// inverted (clockwise), non-convex, or a node count the formulation does not take. The
+/// message names the element (its index when the call handles a mesh) and the defect.
+pub const HYCON_ERROR_BAD_ELEMENT: HyconStatus = -4;
+/// A global system is singular (a body not held against rigid motion).
+pub const HYCON_ERROR_SINGULAR: HyconStatus = -5;
+/// A linear solver failed for a numerical reason.
+pub const HYCON_ERROR_SOLVER: HyconStatus = -6;
+/// An output buffer is shorter than required; the message states the length needed.
+pub const HYCON_ERROR_BUFFER_TOO_SMALL: HyconStatus = -7;
+/// A contact increment failed (no convergence, cycling contact set, contact reaching the end
+/// of a surface); the last converged state is kept.
+pub const HYCON_ERROR_CONTACT: HyconStatus = -8;
+/// Internal error: a Rust panic was caught at the boundary. Please report it with the message.
+pub const HYCON_ERROR_PANIC: HyconStatus = -99;
+
+// ------------------------------------------------------------------------------------------
+// Enumerations passed as integers (a C enum value outside the Rust enum would be undefined
+// behaviour, so they cross as `int32_t` and are checked). Zero is never valid, so a zeroed
+// struct is rejected.
+
+/// Element formulation selector, one of the `HYCON_ELEMENT_*` values.
+pub type HyconElementKind = i32;
+/// Assumed-stress hybrid element (7 stress parameters; 12 for 6 nodes), 4 to 6 nodes.
+pub const HYCON_ELEMENT_HYBRID: HyconElementKind = 1;
+/// Pian-Sumihara 5-beta hybrid quadrilateral, 4 nodes.
+pub const HYCON_ELEMENT_PIAN_SUMIHARA: HyconElementKind = 2;
+/// Bilinear displacement quadrilateral with 2x2 Gauss integration, 4 nodes.
+pub const HYCON_ELEMENT_Q4: HyconElementKind = 3;
+
+/// Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`.
+pub type HyconAnalysis = i32;
+/// Plane strain (`eps_z = 0`).
+pub const HYCON_PLANE_STRAIN: HyconAnalysis = 1;
+/// Plane stress (`sigma_z = 0`).
+pub const HYCON_PLANE_STRESS: HyconAnalysis = 2;
+
+/// Largest node count of one element.
+pub const HYCON_MAX_NODES: usize = 6;
+/// Largest dof count of one element (`2 * HYCON_MAX_NODES`).
+pub const HYCON_MAX_DOF: usize = 12;
+/// Largest number of stress parameters of one element.
+pub const HYCON_MAX_BETA: usize = 12;
+
+#[allow(clippy::assertions_on_constants)] // compile-time checks are the point
+const fn size_checks() {
+    assert!(HYCON_MAX_NODES == element::MAX_NODES);
+    assert!(HYCON_MAX_DOF == element::MAX_DOF);
+    assert!(HYCON_MAX_BETA == element::MAX_BETA);
+}
+
+/// Isotropic linear elastic material.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HyconMaterial {
+    /// Young's modulus `E > 0`.
+    pub youngs: f64,
+    /// Poisson's ratio, `-1 < nu < 0.5`.
+    pub poisson: f64,
+    /// Thickness `t > 0` (plane strain: the depth results are reported per, usually 1).
+    pub thickness: f64,
+    /// `HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS`.
+    pub analysis: HyconAnalysis,
+}
+
+// ------------------------------------------------------------------------------------------
+// The boundary: errors, last error message, panics
+
+/// A failure on its way to the C caller: a status and a message.
+#[derive(Debug)]
+struct Fail {
+    status: HyconStatus,
+    message: String,
+}
+
+impl Fail {
+    fn new(status: HyconStatus, message: impl Into<String>) -> Self {
+        Fail {
+            status,
+            message: message.into(),
+        }
+    }
+    fn invalid(message: impl Into<String>) -> Self {
+        Fail::new(HYCON_ERROR_INVALID_ARGUMENT, message)
+    }
+}
+
+/// The status a core error maps to. Deliberately exhaustive: a new `Error` variant needs a
+/// decision about its C status code here (and in `hycon_status_name` and the header).
+fn status_of(error: &Error) -> HyconStatus {
+    match error {
+        Error::Element {
+            kind: ShapeError::NonFinite,
+            ..
+        } => HYCON_ERROR_INVALID_ARGUMENT,
+        Error::Element { .. } => HYCON_ERROR_BAD_ELEMENT,
+        Error::Material(_) => HYCON_ERROR_INVALID_MATERIAL,
+        Error::InvalidInput(_) => HYCON_ERROR_INVALID_ARGUMENT,
+        Error::Singular(_) => HYCON_ERROR_SINGULAR,
+        Error::Solver(_) => HYCON_ERROR_SOLVER,
+        Error::Contact(_) => HYCON_ERROR_CONTACT,
+    }
+}
+
+impl From<Error> for Fail {
+    fn from(error: Error) -> Self {
+        let message = match &error {
+            // a single-element call: the function name already says which element
+            Error::Element {
+                element: None,
+                kind,
+            } => kind.to_string(),
+            e => e.to_string(),
+        };
+        Fail::new(status_of(&error), message)
+    }
+}
+
+impl From<ShapeError> for Fail {
+    fn from(kind: ShapeError) -> Self {
+        Error::from(kind).into()
+    }
+}
+
+thread_local! {
+    /// Message of the last failed call on this thread (empty after a successful one).
+    static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
+    /// How many [`boundary`] frames are active on this thread (panics inside are silent).
+    static BOUNDARY_DEPTH: Cell<u32> = const { Cell::new(0) };
+    /// Message and location of the last panic caught inside a boundary, set by the hook.
+    static PANIC_MESSAGE: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+fn set_last_error(message: &str) {
+    // `try_with`: during thread teardown the slot may be gone; then there is nobody to read it.
+    let _ = LAST_ERROR.try_with(|m| {
+        if let Ok(mut m) = m.try_borrow_mut() {
+            m.clear();
+            m.push_str(message);
+        }
+    });
+}
+
+fn payload_text(payload: &(dyn std::any::Any + Send)) -> &str {
+    if let Some(s) = payload.downcast_ref::<&str>() {
+        s
+    } else if let Some(s) = payload.downcast_ref::<String>() {
+        s
+    } else {
+        "(non-string panic payload)"
+    }
+}
+
+/// Install, once per process, a panic hook that is silent for panics inside [`boundary`] (it
+/// records message and location for [`hycon_last_error_message`] instead of printing them to
+/// the host's stderr) and hands every other panic to the previously installed hook.
+///
+/// In a C host the cdylib / staticlib carries its own copy of the Rust standard library, so this
+/// hook only ever sees hycon's own panics. A Rust program linking the rlib shares the hook; its
+/// own panics still reach its previous hook unchanged.
+fn install_panic_hook() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            let inside = BOUNDARY_DEPTH.try_with(|d| d.get() > 0).unwrap_or(false);
+            if !inside {
+                previous(info);
+                return;
+            }
+            let text = payload_text(info.payload());
+            let message = match info.location() {
+                Some(l) => format!("{text} (at {}:{})", l.file(), l.line()),
+                None => text.to_string(),
+            };
+            let _ = PANIC_MESSAGE.try_with(|m| {
+                if let Ok(mut m) = m.try_borrow_mut() {
+                    *m = message;
+                }
+            });
+        }));
+    });
+}
+
+/// Run one exported function's body: catch panics, map `Err` to its status and store the
+/// message (prefixed with `function`) as this thread's last error; on success clear it.
+fn boundary(function: &'static str, body: impl FnOnce() -> Result<(), Fail>) -> HyconStatus {
+    install_panic_hook();
+    BOUNDARY_DEPTH.with(|d| d.set(d.get() + 1));
+    let result = catch_unwind(AssertUnwindSafe(body));
+    BOUNDARY_DEPTH.with(|d| d.set(d.get() - 1));
+    match result {
+        Ok(Ok(())) => {
+            set_last_error("");
+            HYCON_OK
+        }
+        Ok(Err(fail)) => {
+            set_last_error(&format!("{function}: {}", fail.message));
+            fail.status
+        }
+        Err(payload) => {
+            let recorded = PANIC_MESSAGE
+                .try_with(|m| m.try_borrow_mut().map(|mut m| std::mem::take(&mut *m)))
+                .ok()
+                .and_then(Result::ok)
+                .filter(|m| !m.is_empty());
+            let text = recorded.unwrap_or_else(|| payload_text(&*payload).to_string());
+            set_last_error(&format!("{function}: internal error (Rust panic): {text}"));
+            HYCON_ERROR_PANIC
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Argument checks (safe wrappers around the raw-pointer reads and writes)
+
+fn formulation(kind: HyconElementKind) -> Result<Formulation, Fail> {
+    match kind {
+        HYCON_ELEMENT_HYBRID => Ok(Formulation::Hybrid),
+        HYCON_ELEMENT_PIAN_SUMIHARA => Ok(Formulation::PianSumihara),
+        HYCON_ELEMENT_Q4 => Ok(Formulation::Q4),
+        _ => Err(Fail::invalid(format!(
+            "unknown element kind {kind} (expected HYCON_ELEMENT_HYBRID = 1, \
+             HYCON_ELEMENT_PIAN_SUMIHARA = 2 or HYCON_ELEMENT_Q4 = 3)"
+        ))),
+    }
+}
+
+/// Check that `n_nodes` suits `f` before any coordinate is read.
+fn node_count(f: Formulation, n_nodes: usize) -> Result<usize, Fail> {
+    if f.accepts(n_nodes) {
+        Ok(n_nodes)
+    } else {
+        let expected = match f {
+            Formulation::Hybrid => "4 to 6",
+            Formulation::PianSumihara | Formulation::Q4 => "4",
+        };
+        Err(ShapeError::NodeCount {
+            got: n_nodes,
+            expected,
+        }
+        .into())
+    }
+}
+
+fn check_pointer<T>(ptr: *const T, name: &str) -> Result<(), Fail> {
+    if ptr.is_null() {
+        Err(Fail::new(
+            HYCON_ERROR_NULL_POINTER,
+            format!("{name} is NULL"),
+        ))
+    } else if !ptr.is_aligned() {
+        Err(Fail::invalid(format!("{name} is misaligned")))
+    } else {
+        Ok(())
+    }
+}
+
+fn check_finite(values: &[f64], name: &str) -> Result<(), Fail> {
+    match values.iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(i) => Err(Fail::invalid(format!(
+            "{name}[{i}] = {} is not finite",
+            values[i]
+        ))),
+    }
+}
+
+fn check_finite_scalar(value: f64, name: &str) -> Result<(), Fail> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(Fail::invalid(format!("{name} = {value} is not finite")))
+    }
+}
+
+/// Copy `N <= dst.len()` doubles from a caller array into `dst` and check they are finite.
+///
+/// # Safety
+/// If `ptr` is non-null it must point to at least `dst.len()` readable doubles.
+unsafe fn read_doubles(ptr: *const f64, dst: &mut [f64], name: &str) -> Result<(), Fail> {
+    check_pointer(ptr, name)?;
+    // SAFETY: non-null and aligned (checked); the caller guarantees `dst.len()` readable
+    // doubles. `dst` is our own local buffer, so the regions cannot overlap.
+    unsafe { std::ptr::copy_nonoverlapping(ptr, dst.as_mut_ptr(), dst.len()) };
+    check_finite(dst, name)
+}
+
+/// Read `n` interleaved node coordinates.
+///
+/// # Safety
+/// If `coords` is non-null it must point to `2 n` readable doubles.
+unsafe fn read_coords(
+    coords: *const f64,
+    n: usize,
+) -> Result<[[f64; 2]; element::MAX_NODES], Fail> {
+    let mut flat = [0.0; element::MAX_DOF];
+    // SAFETY: forwarded contract; `n <= MAX_NODES` was checked by `node_count`.
+    unsafe { read_doubles(coords, &mut flat[..2 * n], "coords")? };
+    let mut out = [[0.0; 2]; element::MAX_NODES];
+    for (p, xy) in out.iter_mut().zip(flat.chunks_exact(2)) {
+        *p = [xy[0], xy[1]];
+    }
+    Ok(out)
+}
+
+/// Read and validate a material.
+///
+/// # Safety
+/// If `m` is non-null it must point to a readable `HyconMaterial`.
+unsafe fn read_material(m: *const HyconMaterial) -> Result<Material, Fail> {
+    check_pointer(m, "material")?;
+    // SAFETY: non-null and aligned (checked); the caller guarantees a readable struct of
+    // plain doubles and an int32_t (every bit pattern is valid).
+    let m = unsafe { m.read() };
+    let analysis = match m.analysis {
+        HYCON_PLANE_STRAIN => Analysis::PlaneStrain,
+        HYCON_PLANE_STRESS => Analysis::PlaneStress,
+        a => {
+            return Err(Fail::new(
+                HYCON_ERROR_INVALID_MATERIAL,
+                format!(
+                    "invalid material: unknown analysis {a} (expected HYCON_PLANE_STRAIN = 1 \
+                     or HYCON_PLANE_STRESS = 2)"
+                ),
+            ));
+        }
+    };
+    Ok(Material::new(m.youngs, m.poisson, m.thickness, analysis)?)
+}
+
+/// Check an output array `(ptr, len)` can take `needed` values. `(NULL, 0)` is an empty array.
+fn check_output<T>(ptr: *mut T, len: usize, needed: usize, name: &str) -> Result<(), Fail> {
+    if ptr.is_null() && len > 0 {
+        return Err(Fail::new(
+            HYCON_ERROR_NULL_POINTER,
+            format!("{name} is NULL but its length is {len}"),
+        ));
+    }
+    if len < needed {
+        return Err(Fail::new(
+            HYCON_ERROR_BUFFER_TOO_SMALL,
+            format!("{name} has length {len}, {needed} needed"),
+        ));
+    }
+    if needed > 0 {
+        check_pointer(ptr.cast_const(), name)?;
+    }
+    Ok(())
+}
+
+/// Copy `src` to a caller array.
+///
+/// # Safety
+/// `dst` must have been checked with [`check_output`] for `src.len()` values (or be a fixed-size
+/// output array that [`check_pointer`] accepted and the caller guarantees to be that long).
+unsafe fn write_doubles(dst: *mut f64, src: &[f64]) {
+    if src.is_empty() {
+        return;
+    }
+    // SAFETY: `dst` is non-null, aligned and writable for `src.len()` doubles (caller
+    // contract); `src` is our own local storage, so the regions do not overlap.
+    unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), dst, src.len()) };
+}
+
+/// The inputs shared by the element functions, read and checked.
+struct ElementInput {
+    formulation: Formulation,
+    n: usize,
+    coords: [[f64; 2]; element::MAX_NODES],
+}
+
+impl ElementInput {
+    /// # Safety
+    /// If `coords` is non-null it must point to `2 n_nodes` readable doubles.
+    unsafe fn read(
+        kind: HyconElementKind,
+        n_nodes: usize,
+        coords: *const f64,
+    ) -> Result<Self, Fail> {
+        let formulation = formulation(kind)?;
+        let n = node_count(formulation, n_nodes)?;
+        // SAFETY: forwarded contract.
+        let coords = unsafe { read_coords(coords, n)? };
+        Ok(ElementInput {
+            formulation,
+            n,
+            coords,
+        })
+    }
+
+    fn coords(&self) -> &[[f64; 2]] {
+        &self.coords[..self.n]
+    }
+
+    /// Recover the stress field from `2n` dofs at `q`.
+    ///
+    /// # Safety
+    /// If `q` is non-null it must point to `2 n` readable doubles.
+    unsafe fn stress_field(
+        &self,
+        material: &Material,
+        q: *const f64,
+    ) -> Result<element::StressField, Fail> {
+        let mut dofs = [0.0; element::MAX_DOF];
+        // SAFETY: forwarded contract.
+        unsafe { read_doubles(q, &mut dofs[..2 * self.n], "q")? };
+        Ok(element::recover_stress(
+            self.formulation,
+            self.coords(),
+            material,
+            &dofs[..2 * self.n],
+        )?)
+    }
+}
+
+fn check_result(values: &[f64], what: &str) -> Result<(), Fail> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(Fail::invalid(format!(
+            "{what} is not finite (is the point inside the element?)"
+        )))
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Exported functions
+
+/// Write the library's version `{major, minor, patch}` to `out` (3 values). Compare with the
+/// header's `HYCON_VERSION_MAJOR` etc. to detect a header / library mismatch.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER` if `out` is NULL.
+///
+/// # Safety
+/// `out` must be NULL or point to 3 writable `int32_t`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_version(out: *mut i32) -> HyconStatus {
+    // Compile-time checks of the header constants, inside a function body where cbindgen does
+    // not look: a failed check fails the build.
+    const {
+        version_checks();
+        size_checks();
+    };
+    boundary("hycon_version", || {
+        check_pointer(out.cast_const(), "out")?;
+        let v = [
+            parse_component(env!("CARGO_PKG_VERSION_MAJOR")),
+            parse_component(env!("CARGO_PKG_VERSION_MINOR")),
+            parse_component(env!("CARGO_PKG_VERSION_PATCH")),
+        ];
+        // SAFETY: `out` is non-null and aligned (checked), writable for 3 values (contract);
+        // `v` is local.
+        unsafe { std::ptr::copy_nonoverlapping(v.as_ptr(), out, 3) };
+        Ok(())
+    })
+}
+
+/// Copy this thread's last error message into `buf` and return the length it needs, including
+/// the terminating NUL.
+///
+/// At most `len - 1` bytes plus a NUL are written (nothing if `buf` is NULL or `len` is 0), so
+/// `hycon_last_error_message(NULL, 0)` asks for the size and a return value greater than `len`
+/// means the copy was truncated. The message is empty (return value 1) when the last
+/// status-returning call on this thread succeeded; this function does not change it.
+///
+/// # Safety
+/// `buf` must be NULL or point to `len` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_last_error_message(buf: *mut c_char, len: usize) -> usize {
+    let copy = |message: &str| -> usize {
+        let needed = message.len() + 1;
+        if buf.is_null() || len == 0 {
+            return needed;
+        }
+        let mut n = message.len().min(len - 1);
+        while !message.is_char_boundary(n) {
+            n -= 1; // do not cut a UTF-8 sequence
+        }
+        // SAFETY: `buf` is non-null and writable for `len > n` bytes (caller contract); the
+        // message is our own storage.
+        unsafe {
+            std::ptr::copy_nonoverlapping(message.as_ptr().cast::<c_char>(), buf, n);
+            buf.add(n).write(0);
+        }
+        needed
+    };
+    LAST_ERROR
+        .try_with(|m| match m.try_borrow() {
+            Ok(m) => copy(&m),
+            Err(_) => copy(""),
+        })
+        .unwrap_or_else(|_| copy(""))
+}
+
+/// A static, NUL-terminated name for a status code (`"HYCON_OK"`, `"HYCON_ERROR_NULL_POINTER"`,
+/// ..., `"HYCON_WARNING"` for any positive value, `"HYCON_ERROR_UNKNOWN"` otherwise). The
+/// string is owned by the library and valid for the life of the process; do not free it.
+#[unsafe(no_mangle)]
+pub extern "C" fn hycon_status_name(status: HyconStatus) -> *const c_char {
+    let name = match status {
+        HYCON_OK => c"HYCON_OK",
+        HYCON_ERROR_NULL_POINTER => c"HYCON_ERROR_NULL_POINTER",
+        HYCON_ERROR_INVALID_ARGUMENT => c"HYCON_ERROR_INVALID_ARGUMENT",
+        HYCON_ERROR_INVALID_MATERIAL => c"HYCON_ERROR_INVALID_MATERIAL",
+        HYCON_ERROR_BAD_ELEMENT => c"HYCON_ERROR_BAD_ELEMENT",
+        HYCON_ERROR_SINGULAR => c"HYCON_ERROR_SINGULAR",
+        HYCON_ERROR_SOLVER => c"HYCON_ERROR_SOLVER",
+        HYCON_ERROR_BUFFER_TOO_SMALL => c"HYCON_ERROR_BUFFER_TOO_SMALL",
+        HYCON_ERROR_CONTACT => c"HYCON_ERROR_CONTACT",
+        HYCON_ERROR_PANIC => c"HYCON_ERROR_PANIC",
+        s if s > 0 => c"HYCON_WARNING",
+        _ => c"HYCON_ERROR_UNKNOWN",
+    };
+    name.as_ptr()
+}
+
+/// Check one element's shape for a formulation: node count, finite coordinates, positive area,
+/// counter-clockwise order, convexity (tolerances relative to the element size).
+///
+/// `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise.
+///
+/// Returns `HYCON_OK`, or `HYCON_ERROR_BAD_ELEMENT` with a message naming the defect
+/// (degenerate, inverted, non-convex at local node i, node count), `HYCON_ERROR_INVALID_ARGUMENT`
+/// (unknown kind, non-finite coordinate), `HYCON_ERROR_NULL_POINTER`.
+///
+/// # Safety
+/// `coords` must be NULL or point to `2 * n_nodes` readable doubles (only read when `n_nodes`
+/// suits `kind`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_element_check(
+    kind: HyconElementKind,
+    n_nodes: usize,
+    coords: *const f64,
+) -> HyconStatus {
+    boundary("hycon_element_check", || {
+        // SAFETY: the caller's contract on `coords`.
+        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
+        Ok(element::check_shape(e.formulation, e.coords())?)
+    })
+}
+
+/// Element stiffness matrix `K` (`2n x 2n`, `n = n_nodes`) into `k_out`, row-major:
+/// `k_out[i * 2n + j] = K_ij`, rows and columns in element dof order `u0 v0 u1 v1 ...` (the
+/// node order of `coords`). `K` is symmetric, so column-major readers get the same matrix.
+///
+/// * `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise. Q4 and
+///   Pian-Sumihara take 4 nodes, the hybrid element 4 to 6 (corners plus mid-side nodes on
+///   straight edges, in boundary order).
+/// * `material`: finite, `E > 0`, `-1 < nu < 0.5`, `t > 0`, known analysis; `t` multiplies `K`.
+/// * `k_out`, `k_len`: output array of at least `(2n)^2` doubles (`HYCON_MAX_DOF^2 = 144` always
+///   suffices); only the first `(2n)^2` are written, and only on success.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, non-finite
+/// coordinate), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`,
+/// `HYCON_ERROR_BUFFER_TOO_SMALL`.
+///
+/// # Safety
+/// `coords` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or a
+/// readable struct; `k_out` NULL or writable for `k_len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_element_stiffness(
+    kind: HyconElementKind,
+    n_nodes: usize,
+    coords: *const f64,
+    material: *const HyconMaterial,
+    k_out: *mut f64,
+    k_len: usize,
+) -> HyconStatus {
+    boundary("hycon_element_stiffness", || {
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
+        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
+        // SAFETY: the caller's contract on `material` (a readable struct).
+        let material = unsafe { read_material(material)? };
+        let n_dof = 2 * e.n;
+        check_output(k_out, k_len, n_dof * n_dof, "k_out")?;
+        let mut k = element::ElementMatrix::zeros();
+        let got = element::stiffness_into(e.formulation, e.coords(), &material, &mut k)?;
+        debug_assert_eq!(got, n_dof);
+        let mut row_major = [0.0; element::MAX_DOF * element::MAX_DOF];
+        for i in 0..n_dof {
+            for j in 0..n_dof {
+                row_major[i * n_dof + j] = k[(i, j)];
+            }
+        }
+        check_result(&row_major[..n_dof * n_dof], "stiffness")?;
+        // SAFETY: `k_out` was checked for `n_dof^2` values.
+        unsafe { write_doubles(k_out, &row_major[..n_dof * n_dof]) };
+        Ok(())
+    })
+}
+
+/// Stress `{sx, sy, txy}` at the physical point `(px, py)` of an element, recovered from its
+/// nodal displacements `q` (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`).
+///
+/// Hybrid elements evaluate their assumed stress field `P beta` with `beta = H^-1 G q`; Q4
+/// evaluates `D B q`. The point should lie in the element; outside it the value is an
+/// extrapolation (a non-finite result is reported as `HYCON_ERROR_INVALID_ARGUMENT`).
+/// `out` receives 3 doubles on success.
+///
+/// # Safety
+/// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
+/// a readable struct; `out` NULL or writable for 3 doubles.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)] // flat C signature
+pub unsafe extern "C" fn hycon_element_stress(
+    kind: HyconElementKind,
+    n_nodes: usize,
+    coords: *const f64,
+    material: *const HyconMaterial,
+    q: *const f64,
+    px: f64,
+    py: f64,
+    out: *mut f64,
+) -> HyconStatus {
+    boundary("hycon_element_stress", || {
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
+        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
+        // SAFETY: the caller's contract on `material` (a readable struct).
+        let material = unsafe { read_material(material)? };
+        check_finite_scalar(px, "px")?;
+        check_finite_scalar(py, "py")?;
+        check_pointer(out.cast_const(), "out")?;
+        // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
+        let field = unsafe { e.stress_field(&material, q)? };
+        let s = field.at([px, py]);
+        check_result(&s, "stress")?;
+        // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles (contract).
+        unsafe { write_doubles(out, &s) };
+        Ok(())
+    })
+}
+
+/// Stress parameters `beta` of a hybrid element, recovered from its nodal displacements `q`
+/// (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): 7 for the hybrid element with 4 or 5
+/// nodes, 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
+///
+/// `beta_out`, `beta_len`: output array (`HYCON_MAX_BETA` always suffices; `(NULL, 0)` is fine
+/// for Q4). `n_beta` receives the count. Both are written only on success; a short array gives
+/// `HYCON_ERROR_BUFFER_TOO_SMALL` with the count needed in the message.
+///
+/// # Safety
+/// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
+/// a readable struct; `beta_out` NULL or writable for `beta_len` doubles; `n_beta` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)] // flat C signature
+pub unsafe extern "C" fn hycon_element_stress_params(
+    kind: HyconElementKind,
+    n_nodes: usize,
+    coords: *const f64,
+    material: *const HyconMaterial,
+    q: *const f64,
+    beta_out: *mut f64,
+    beta_len: usize,
+    n_beta: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_element_stress_params", || {
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
+        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
+        // SAFETY: the caller's contract on `material` (a readable struct).
+        let material = unsafe { read_material(material)? };
+        check_pointer(n_beta.cast_const(), "n_beta")?;
+        // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
+        let field = unsafe { e.stress_field(&material, q)? };
+        let beta = field.beta();
+        check_output(beta_out, beta_len, beta.len(), "beta_out")?;
+        check_result(beta, "beta")?;
+        // SAFETY: `beta_out` was checked for `beta.len()` values; `n_beta` is non-null and
+        // aligned (checked) and writable (contract).
+        unsafe {
+            write_doubles(beta_out, beta);
+            n_beta.write(beta.len());
+        }
+        Ok(())
+    })
+}
+
+/// Traction `{tx, ty} = sigma n` (outward unit normal `n`) at parameter `s` in `[0, 1]` along
+/// boundary edge `edge` of an element, the edge running from local node `edge` to local node
+/// `edge + 1` (cyclically, so `edge < n_nodes`), from nodal displacements `q` (`2 * n_nodes`
+/// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success.
+///
+/// # Safety
+/// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
+/// a readable struct; `out` NULL or writable for 2 doubles.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)] // flat C signature
+pub unsafe extern "C" fn hycon_element_edge_traction(
+    kind: HyconElementKind,
+    n_nodes: usize,
+    coords: *const f64,
+    material: *const HyconMaterial,
+    q: *const f64,
+    edge: usize,
+    s: f64,
+    out: *mut f64,
+) -> HyconStatus {
+    boundary("hycon_element_edge_traction", || {
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
+        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
+        // SAFETY: the caller's contract on `material` (a readable struct).
+        let material = unsafe { read_material(material)? };
+        if edge >= e.n {
+            return Err(Fail::invalid(format!(
+                "edge {edge} of a {}-node element (edges are 0 to {})",
+                e.n,
+                e.n - 1
+            )));
+        }
+        check_finite_scalar(s, "s")?;
+        if !(0.0..=1.0).contains(&s) {
+            return Err(Fail::invalid(format!("s = {s} is outside [0, 1]")));
+        }
+        check_pointer(out.cast_const(), "out")?;
+        // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
+        let field = unsafe { e.stress_field(&material, q)? };
+        let t = field.edge_traction(edge, s);
+        check_result(&t, "traction")?;
+        // SAFETY: `out` is non-null and aligned (checked) and holds 2 doubles (contract).
+        unsafe { write_doubles(out, &t) };
+        Ok(())
+    })
+}
+
+/// For tests only: panics inside the boundary and so returns `HYCON_ERROR_PANIC`, with the
+/// panic message in the last error message. Proves that panics never cross into the host and
+/// are not printed to its stderr. Do not call it in production code.
+#[unsafe(no_mangle)]
+pub extern "C" fn hycon_debug_panic() -> HyconStatus {
+    boundary("hycon_debug_panic", || {
+        panic!("deliberate panic for testing the C boundary")
+    })
+}

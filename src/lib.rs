@@ -14,7 +14,7 @@
 //!   stresses.
 //! * [`contact`]: contact-element kernels (mortar projection, weighted gaps, coupling rows).
 //! * [`cases`]: reference problems (Cook's membrane, the Pian-Sumihara cantilever).
-//! * [`bench`]: the measurements behind the README's performance figures.
+//! * [`bench`](mod@bench): the measurements behind the README's performance figures.
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]

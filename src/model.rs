@@ -199,6 +199,7 @@ pub struct LinearSystem {
     dofs: DofMap,
     pattern: SparsePattern,
     cholesky: SparseCholesky,
+    seconds: [f64; 2],
 }
 
 impl LinearSystem {
@@ -211,15 +212,23 @@ impl LinearSystem {
             model.mesh.n_nodes(),
             model.prescribed.iter().map(|p| dof(p.node, p.dir)),
         );
+        let clock = std::time::Instant::now();
         let mut pattern = SparsePattern::new(&model.mesh, &dofs);
         pattern.assemble(&model.mesh, &model.materials, model.formulation, &dofs)?;
+        let assembly = clock.elapsed().as_secs_f64();
         let mut cholesky = SparseCholesky::analyze(pattern.symbolic())?;
         cholesky.factorize(pattern.matrix())?;
         Ok(LinearSystem {
             dofs,
             pattern,
             cholesky,
+            seconds: [assembly, clock.elapsed().as_secs_f64() - assembly],
         })
+    }
+
+    /// Wall-clock seconds of `[assembly, analysis + factorization]` when the system was built.
+    pub fn setup_seconds(&self) -> [f64; 2] {
+        self.seconds
     }
 
     /// The free-dof numbering.
@@ -256,7 +265,13 @@ impl LinearSystem {
             )));
         }
         let mut q: Vec<f64> = (0..n)
-            .map(|d| if self.dofs.equation(d).is_some() { 0.0 } else { qp[d] })
+            .map(|d| {
+                if self.dofs.equation(d).is_some() {
+                    0.0
+                } else {
+                    qp[d]
+                }
+            })
             .collect();
         // f_f - K_fp q_p: the element forces of the prescribed motion, at the free dofs.
         let kq = if q.iter().any(|&v| v != 0.0) {

@@ -70,6 +70,9 @@ pub struct ContactOptions {
     pub tension_tolerance: f64,
     /// Friction-cone tolerance, relative to `mu |tn|`.
     pub friction_tolerance: f64,
+    /// A slip node returns to stick when its slip has reversed by more than this, relative to
+    /// the mean A segment length.
+    pub slip_tolerance: f64,
     /// Distance within which B segments are paired with an A segment, relative to the mean A
     /// segment length.
     pub search_distance: f64,
@@ -83,6 +86,7 @@ impl Default for ContactOptions {
             gap_tolerance: 1e-9,
             tension_tolerance: 1e-9,
             friction_tolerance: 1e-9,
+            slip_tolerance: 1e-6,
             search_distance: 4.0,
         }
     }
@@ -160,6 +164,35 @@ pub struct IncrementInfo {
     pub slip: usize,
 }
 
+/// Where the time of an analysis went (wall-clock seconds, accumulated over increments).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Timings {
+    /// Sparse assembly of `K`.
+    pub assembly: f64,
+    /// Symbolic analysis and numeric factorization of `K` (once per analysis).
+    pub factorization: f64,
+    /// Contact-boundary flexibility `F` (batched solves, once per analysis).
+    pub flexibility: f64,
+    /// The load solves `u0 = K^-1 (f - K_fp q_p)`, one per increment.
+    pub load_solves: f64,
+    /// Contact iterations: geometry, small dense systems, state updates.
+    pub iterations: f64,
+    /// Full-field recovery, one solve per converged increment.
+    pub recovery: f64,
+}
+
+impl Timings {
+    /// Sum of all parts.
+    pub fn total(&self) -> f64 {
+        self.assembly
+            + self.factorization
+            + self.flexibility
+            + self.load_solves
+            + self.iterations
+            + self.recovery
+    }
+}
+
 /// Per-node state kept between increments.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct NodeData {
@@ -188,6 +221,7 @@ pub struct ContactAnalysis {
     nodes: Vec<Vec<NodeData>>,
     increment: usize,
     records: Vec<IterationRecord>,
+    timings: Timings,
 }
 
 impl ContactAnalysis {
@@ -244,8 +278,13 @@ impl ContactAnalysis {
             nodes,
             increment: 0,
             records: Vec::new(),
+            timings: Timings::default(),
         };
+        [analysis.timings.assembly, analysis.timings.factorization] =
+            analysis.system.setup_seconds();
+        let clock = std::time::Instant::now();
         analysis.flexibility = analysis.build_flexibility()?;
+        analysis.timings.flexibility = clock.elapsed().as_secs_f64();
         Ok(analysis)
     }
 
@@ -283,6 +322,11 @@ impl ContactAnalysis {
     /// The last converged total displacement over all dofs.
     pub fn displacement(&self) -> &[f64] {
         &self.q
+    }
+
+    /// Where the time went so far.
+    pub fn timings(&self) -> Timings {
+        self.timings
     }
 
     /// Every iteration record so far, in order.
@@ -339,7 +383,10 @@ impl ContactAnalysis {
     /// converged state advances; on failure it is left as it was and the error says why.
     pub fn increment(&mut self, f: &[f64], qp: &[f64]) -> Result<IncrementInfo> {
         let number = self.increment + 1;
+        let clock = std::time::Instant::now();
         let u0 = self.system.solve_for(&self.model, f, qp)?.q;
+        self.timings.load_solves += clock.elapsed().as_secs_f64();
+        let clock = std::time::Instant::now();
         let start = self.q.clone();
         let mut states: Vec<Vec<NodeState>> = self
             .nodes
@@ -386,7 +433,10 @@ impl ContactAnalysis {
             uc = uc_new;
             surfaces = new_surfaces;
             if changes == 0 && r <= self.options.tolerance {
-                return Ok(self.finish(number, iteration, &states, &tractions, &forces, f, qp, records)?);
+                self.timings.iterations += clock.elapsed().as_secs_f64();
+                return self.finish(
+                    number, iteration, &states, &tractions, &forces, f, qp, records,
+                );
             }
             if changes > 0 {
                 if let Some(j) = history.iter().position(|h| *h == new_states) {
@@ -423,7 +473,11 @@ impl ContactAnalysis {
 fn change_ratio(new: &[f64], old: &[f64], start: &[f64]) -> f64 {
     let num: f64 = new.iter().zip(old).map(|(a, b)| (a - b).powi(2)).sum();
     let den: f64 = new.iter().zip(start).map(|(a, b)| (a - b).powi(2)).sum();
-    if den == 0.0 { num.sqrt() } else { (num / den).sqrt() }
+    if den == 0.0 {
+        num.sqrt()
+    } else {
+        (num / den).sqrt()
+    }
 }
 
 /// `(active, stick, slip)` counts.
@@ -485,7 +539,10 @@ impl SmallSystem {
         }
         let rhs = DVector::from_iterator(
             m,
-            self.rows.iter().zip(&self.b).map(|(row, b)| b - dot(row, u0)),
+            self.rows
+                .iter()
+                .zip(&self.b)
+                .map(|(row, b)| b - dot(row, u0)),
         );
         let tau = s
             .lu()
@@ -520,7 +577,8 @@ impl SmallSystem {
         states: &[Vec<NodeState>],
         pairs: &[ContactPair],
     ) -> Vec<Vec<(f64, f64)>> {
-        let mut t: Vec<Vec<(f64, f64)>> = states.iter().map(|s| vec![(0.0, 0.0); s.len()]).collect();
+        let mut t: Vec<Vec<(f64, f64)>> =
+            states.iter().map(|s| vec![(0.0, 0.0); s.len()]).collect();
         for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
             match row {
                 Row::Normal => t[p][k].0 = v,
@@ -623,16 +681,28 @@ impl ContactAnalysis {
         startc: &[f64],
     ) -> Result<(Vec<Vec<NodeState>>, usize)> {
         let mut new = states.to_vec();
-        let du: Vec<f64> = uc.iter().zip(startc).map(|(a, b)| a - b).collect();
-        let du_scale = du.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (p, surface) in surfaces.iter().enumerate() {
             let mu = self.pairs[p].friction;
             let h = self.mean_segment(p, x);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
-            let closed = if mu > 0.0 {
-                NodeState::Stick
-            } else {
-                NodeState::Slip { sign: 1 }
+            // tangential slip of A relative to B since the increment began, per unit length
+            let slip_since_start = |node: &geometry::ContactNode| {
+                let row = self.directed(&node.coupling, node.tangent);
+                (dot(&row, uc) - dot(&row, startc)) / node.weight
+            };
+            // a node closing while the surfaces slide past each other slides with them; one
+            // closing without relative motion sticks
+            let closed = |node: &geometry::ContactNode| {
+                let slip = slip_since_start(node);
+                if mu == 0.0 {
+                    NodeState::Slip { sign: 1 }
+                } else if slip.abs() > self.options.slip_tolerance * h {
+                    NodeState::Slip {
+                        sign: if slip > 0.0 { 1 } else { -1 },
+                    }
+                } else {
+                    NodeState::Stick
+                }
             };
             let activate = |k: usize, new: &mut Vec<Vec<NodeState>>| -> Result<()> {
                 let node = &surface.nodes[k];
@@ -643,7 +713,7 @@ impl ContactAnalysis {
                         node.node
                     )));
                 }
-                new[p][k] = closed;
+                new[p][k] = closed(node);
                 Ok(())
             };
             for (k, node) in surface.nodes.iter().enumerate() {
@@ -665,8 +735,9 @@ impl ContactAnalysis {
                         }
                     }
                     NodeState::Slip { sign } if mu > 0.0 => {
-                        let slip = dot(&self.directed(&node.coupling, node.tangent), &du);
-                        if f64::from(sign) * slip < -1e-9 * node.weight * du_scale {
+                        if f64::from(sign) * slip_since_start(node)
+                            < -self.options.slip_tolerance * h
+                        {
                             new[p][k] = NodeState::Stick;
                         }
                     }
@@ -692,7 +763,9 @@ impl ContactAnalysis {
                     let xi = (r[0] * d[0] + r[1] * d[1]) / len2;
                     let g = r[0] * n[0] + r[1] * n[1];
                     let tol = self.options.gap_tolerance * h;
-                    if (0.0..=1.0).contains(&xi) && g < -tol && g > -self.options.search_distance * h
+                    if (0.0..=1.0).contains(&xi)
+                        && g < -tol
+                        && g > -self.options.search_distance * h
                     {
                         activate(if xi < 0.5 { k } else { k + 1 }, &mut new)?;
                     }
@@ -726,7 +799,9 @@ impl ContactAnalysis {
         for (&d, &v) in self.dofs.iter().zip(forces) {
             total[d] += v;
         }
+        let clock = std::time::Instant::now();
         self.q = self.system.solve_for(&self.model, &total, qp)?.q;
+        self.timings.recovery += clock.elapsed().as_secs_f64();
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {
                 let (tn, ts) = tractions[p][k];

@@ -128,12 +128,8 @@ impl DiskOnBlock {
             r,
             &Grading::toward_line([-disk_zone, 0.0], [disk_zone, 0.0], h, 8),
         );
-        let block_material = Material::new(
-            self.block_modulus,
-            self.poisson,
-            1.0,
-            Analysis::PlaneStrain,
-        )?;
+        let block_material =
+            Material::new(self.block_modulus, self.poisson, 1.0, Analysis::PlaneStrain)?;
         let disk_material = Material::new(
             self.block_modulus * self.modulus_ratio,
             self.poisson,
@@ -158,11 +154,7 @@ impl DiskOnBlock {
         };
         let top = mesh.node_sets["disk.top"].clone();
         let bottom = mesh.node_sets["block.bottom"].clone();
-        let mut model = Model::new(
-            mesh,
-            vec![block_material, disk_material],
-            self.formulation,
-        );
+        let mut model = Model::new(mesh, vec![block_material, disk_material], self.formulation);
         model.fix(&bottom, [0.0, 0.0]);
         model.fix(&top, [0.0, 0.0]);
         Ok(Scene {
@@ -223,7 +215,11 @@ pub fn total_load(nodes: &[NodeResult]) -> f64 {
 }
 
 /// Hertz comparison of nodal results along a straight A surface (x is the coordinate along it).
-pub fn compare_with_hertz(nodes: &[NodeResult], radius: f64, e_star: f64) -> Result<HertzComparison> {
+pub fn compare_with_hertz(
+    nodes: &[NodeResult],
+    radius: f64,
+    e_star: f64,
+) -> Result<HertzComparison> {
     let load = total_load(nodes);
     if load <= 0.0 {
         return Err(Error::Contact("no compressive contact load".into()));

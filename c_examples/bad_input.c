@@ -1,0 +1,309 @@
+/* Bad-input tests of the hycon C API, as a C host would hit them (strict C99). One
+ * `bool test_x(void)` per case; main counts failures and prints OK when there are none. */
+#include "hycon.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <string.h>
+
+/* a good unit square, counter-clockwise */
+static const double square[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+static const HyconMaterial steel = {210e3, 0.3, 1.0, HYCON_PLANE_STRAIN};
+static const double sentinel = 12345.0;
+
+#define EXPECT(cond)                                                                           \
+    do {                                                                                       \
+        if (!(cond)) {                                                                         \
+            fprintf(stderr, "  %s:%d: expectation failed: %s\n", __FILE__, __LINE__, #cond);   \
+            return false;                                                                      \
+        }                                                                                      \
+    } while (0)
+
+/* The call returned `want` and the last error message contains `part`. */
+static bool status_is(HyconStatus got, HyconStatus want, const char *part) {
+    char message[512];
+    hycon_last_error_message(message, sizeof message);
+    if (got != want) {
+        fprintf(stderr, "  got %s (%d), expected %s: %s\n", hycon_status_name(got), (int)got,
+                hycon_status_name(want), message);
+        return false;
+    }
+    if (part != NULL && strstr(message, part) == NULL) {
+        fprintf(stderr, "  message \"%s\" lacks \"%s\"\n", message, part);
+        return false;
+    }
+    return true;
+}
+
+static void fill(double *a, size_t n) {
+    size_t i;
+    for (i = 0; i < n; ++i) a[i] = sentinel;
+}
+
+static bool untouched(const double *a, size_t n) {
+    size_t i;
+    for (i = 0; i < n; ++i)
+        if (a[i] != sentinel) return false;
+    return true;
+}
+
+static bool test_version(void) {
+    int32_t v[3] = {-1, -1, -1};
+    EXPECT(hycon_version(v) == HYCON_OK);
+    EXPECT(v[0] == HYCON_VERSION_MAJOR && v[1] == HYCON_VERSION_MINOR &&
+           v[2] == HYCON_VERSION_PATCH);
+    EXPECT(status_is(hycon_version(NULL), HYCON_ERROR_NULL_POINTER, "out"));
+    return true;
+}
+
+static bool test_good_stiffness(void) {
+    double k[64];
+    size_t i, j;
+    EXPECT(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &steel, k, 64) == HYCON_OK);
+    EXPECT(hycon_last_error_message(NULL, 0) == 1); /* success clears the message */
+    for (i = 0; i < 8; ++i) {
+        double row_x = 0.0, row_y = 0.0; /* rigid translations carry no force */
+        for (j = 0; j < 8; ++j) {
+            EXPECT(isfinite(k[i * 8 + j]));
+            EXPECT(fabs(k[i * 8 + j] - k[j * 8 + i]) <= 1e-9 * fabs(k[0]));
+            row_x += k[i * 8 + j] * (j % 2 == 0);
+            row_y += k[i * 8 + j] * (j % 2 == 1);
+        }
+        EXPECT(k[i * 8 + i] > 0.0);
+        EXPECT(fabs(row_x) <= 1e-9 * k[0] && fabs(row_y) <= 1e-9 * k[0]);
+    }
+    /* a longer buffer is fine; only the first 64 values are written */
+    {
+        double big[HYCON_MAX_DOF * HYCON_MAX_DOF];
+        fill(big, HYCON_MAX_DOF * HYCON_MAX_DOF);
+        EXPECT(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, big,
+                                       HYCON_MAX_DOF * HYCON_MAX_DOF) == HYCON_OK);
+        EXPECT(big[63] != sentinel && untouched(big + 64, HYCON_MAX_DOF * HYCON_MAX_DOF - 64));
+    }
+    return true;
+}
+
+static bool test_null_pointers(void) {
+    double k[64];
+    fill(k, 64);
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, NULL, &steel, k, 64),
+                     HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, NULL, k, 64),
+                     HYCON_ERROR_NULL_POINTER, "material"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, NULL, 64),
+                     HYCON_ERROR_NULL_POINTER, "k_out"));
+    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_Q4, 4, NULL), HYCON_ERROR_NULL_POINTER,
+                     "coords"));
+    EXPECT(untouched(k, 64));
+    return true;
+}
+
+static bool test_short_output(void) {
+    double k[64];
+    fill(k, 64);
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, k, 63),
+                     HYCON_ERROR_BUFFER_TOO_SMALL, "64 needed"));
+    EXPECT(untouched(k, 64));
+    /* (NULL, 0) is an empty array: too small, not a null-pointer error */
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, NULL, 0),
+                     HYCON_ERROR_BUFFER_TOO_SMALL, "k_out"));
+    return true;
+}
+
+static bool test_bad_kind_and_node_count(void) {
+    double k[144];
+    const double hexagon[12] = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1};
+    EXPECT(status_is(hycon_element_stiffness(0, 4, square, &steel, k, 144),
+                     HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 0"));
+    EXPECT(status_is(hycon_element_stiffness(42, 4, square, &steel, k, 144),
+                     HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 42"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 3, square, &steel, k, 144),
+                     HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, 6, hexagon, &steel, k,
+                                             144),
+                     HYCON_ERROR_BAD_ELEMENT, "6 nodes"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 7, hexagon, &steel, k, 144),
+                     HYCON_ERROR_BAD_ELEMENT, "7 nodes"));
+    /* a 6-node hybrid transition element is fine */
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 6, hexagon, &steel, k, 144),
+                     HYCON_OK, NULL));
+    return true;
+}
+
+static bool test_non_finite_coordinates(void) {
+    double k[64], c[8];
+    memcpy(c, square, sizeof c);
+    c[3] = NAN;
+    fill(k, 64);
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, c, &steel, k, 64),
+                     HYCON_ERROR_INVALID_ARGUMENT, "coords[3]"));
+    c[3] = INFINITY;
+    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_Q4, 4, c), HYCON_ERROR_INVALID_ARGUMENT,
+                     "not finite"));
+    EXPECT(untouched(k, 64));
+    return true;
+}
+
+static bool test_bad_shapes(void) {
+    const double clockwise[8] = {0, 0, 0, 1, 1, 1, 1, 0};
+    const double flat[8] = {0, 0, 1, 0, 2, 0, 3, 0};
+    const double coincident[8] = {0, 0, 1, 0, 1, 0, 0, 1};
+    const double dart[8] = {0, 0, 2, 0, 0.5, 0.5, 0, 2}; /* reflex corner at node 2 */
+    int kind;
+    for (kind = HYCON_ELEMENT_HYBRID; kind <= HYCON_ELEMENT_Q4; ++kind) {
+        double k[64];
+        fill(k, 64);
+        EXPECT(status_is(hycon_element_stiffness(kind, 4, clockwise, &steel, k, 64),
+                         HYCON_ERROR_BAD_ELEMENT, "inverted"));
+        EXPECT(status_is(hycon_element_check(kind, 4, flat), HYCON_ERROR_BAD_ELEMENT, NULL));
+        EXPECT(status_is(hycon_element_check(kind, 4, coincident), HYCON_ERROR_BAD_ELEMENT,
+                         NULL));
+        EXPECT(status_is(hycon_element_stiffness(kind, 4, dart, &steel, k, 64),
+                         HYCON_ERROR_BAD_ELEMENT, "non-convex"));
+        EXPECT(status_is(hycon_element_check(kind, 4, square), HYCON_OK, NULL));
+        EXPECT(untouched(k, 64));
+    }
+    return true;
+}
+
+static bool test_bad_material(void) {
+    double k[64];
+    HyconMaterial m[6];
+    size_t i;
+    for (i = 0; i < 6; ++i) m[i] = steel;
+    m[0].youngs = 0.0;
+    m[1].poisson = 0.5;
+    m[2].thickness = -1.0;
+    m[3].youngs = NAN;
+    m[4].analysis = 0;
+    m[5].poisson = -1.0;
+    fill(k, 64);
+    for (i = 0; i < 6; ++i)
+        EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m[i], k, 64),
+                         HYCON_ERROR_INVALID_MATERIAL, "material"));
+    EXPECT(untouched(k, 64));
+    return true;
+}
+
+static bool test_message_protocol(void) {
+    char buf[8];
+    size_t needed, full_len;
+    char full[512];
+    EXPECT(hycon_element_stiffness(0, 4, square, &steel, NULL, 0) ==
+           HYCON_ERROR_INVALID_ARGUMENT);
+    needed = hycon_last_error_message(NULL, 0);
+    EXPECT(needed > sizeof buf); /* a real message is longer than 7 characters */
+    EXPECT(hycon_last_error_message(NULL, 100) == needed); /* NULL buffer: size query */
+    memset(buf, 'x', sizeof buf);
+    EXPECT(hycon_last_error_message(buf, 0) == needed && buf[0] == 'x'); /* len 0: no write */
+    EXPECT(hycon_last_error_message(buf, 1) == needed && buf[0] == '\0');
+    EXPECT(hycon_last_error_message(buf, sizeof buf) == needed);
+    EXPECT(strlen(buf) == sizeof buf - 1); /* truncated to len - 1 bytes plus NUL */
+    full_len = hycon_last_error_message(full, sizeof full);
+    EXPECT(full_len == needed && strlen(full) == needed - 1);
+    EXPECT(strncmp(full, buf, sizeof buf - 1) == 0);
+    EXPECT(strstr(full, "hycon_element_stiffness") == full); /* names the function */
+    /* reading the message does not change it; a successful call clears it */
+    EXPECT(hycon_last_error_message(NULL, 0) == needed);
+    EXPECT(hycon_element_check(HYCON_ELEMENT_Q4, 4, square) == HYCON_OK);
+    EXPECT(hycon_last_error_message(full, sizeof full) == 1 && full[0] == '\0');
+    return true;
+}
+
+static bool test_panic_becomes_status(void) {
+    double k[64];
+    EXPECT(status_is(hycon_debug_panic(), HYCON_ERROR_PANIC, "deliberate panic"));
+    /* the library keeps working after a caught panic */
+    EXPECT(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, k, 64) == HYCON_OK);
+    return true;
+}
+
+static bool test_stress_routines(void) {
+    /* uniform stretch u = x along x: any valid element gives a uniform stress state */
+    const double q[8] = {0, 0, 1e-3, 0, 1e-3, 0, 0, 0};
+    double s[3], t[2], beta[HYCON_MAX_BETA];
+    size_t n_beta = 99;
+    fill(s, 3);
+    fill(t, 2);
+    fill(beta, HYCON_MAX_BETA);
+    EXPECT(status_is(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, NAN, 0.5, s),
+                     HYCON_ERROR_INVALID_ARGUMENT, "px"));
+    EXPECT(status_is(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, NULL, 0.5, 0.5,
+                                          s),
+                     HYCON_ERROR_NULL_POINTER, "q"));
+    EXPECT(status_is(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 0.5, 0.5,
+                                          NULL),
+                     HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(status_is(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 4,
+                                                 0.5, t),
+                     HYCON_ERROR_INVALID_ARGUMENT, "edge 4"));
+    EXPECT(status_is(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 1,
+                                                 1.5, t),
+                     HYCON_ERROR_INVALID_ARGUMENT, "outside [0, 1]"));
+    EXPECT(status_is(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                                                 beta, 3, &n_beta),
+                     HYCON_ERROR_BUFFER_TOO_SMALL, "7 needed"));
+    EXPECT(n_beta == 99 && untouched(s, 3) && untouched(t, 2) && untouched(beta, 3));
+
+    EXPECT(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 0.25, 0.75, s) ==
+           HYCON_OK);
+    EXPECT(s[0] > 0.0 && isfinite(s[1]) && fabs(s[2]) <= 1e-9 * s[0]);
+    /* edge 1 runs along x = 1 with outward normal +x: traction = (sx, txy) */
+    EXPECT(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 1, 0.5, t) ==
+           HYCON_OK);
+    EXPECT(fabs(t[0] - s[0]) <= 1e-9 * s[0] && fabs(t[1]) <= 1e-9 * s[0]);
+    EXPECT(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, beta,
+                                       HYCON_MAX_BETA, &n_beta) == HYCON_OK);
+    EXPECT(n_beta == 7 && untouched(beta + 7, HYCON_MAX_BETA - 7));
+    EXPECT(hycon_element_stress_params(HYCON_ELEMENT_PIAN_SUMIHARA, 4, square, &steel, q, beta,
+                                       HYCON_MAX_BETA, &n_beta) == HYCON_OK);
+    EXPECT(n_beta == 5);
+    /* Q4 has no stress parameters: (NULL, 0) is enough */
+    EXPECT(hycon_element_stress_params(HYCON_ELEMENT_Q4, 4, square, &steel, q, NULL, 0, &n_beta) ==
+           HYCON_OK);
+    EXPECT(n_beta == 0);
+    return true;
+}
+
+static bool test_status_names(void) {
+    EXPECT(strcmp(hycon_status_name(HYCON_OK), "HYCON_OK") == 0);
+    EXPECT(strcmp(hycon_status_name(HYCON_ERROR_BAD_ELEMENT), "HYCON_ERROR_BAD_ELEMENT") == 0);
+    EXPECT(strcmp(hycon_status_name(HYCON_ERROR_PANIC), "HYCON_ERROR_PANIC") == 0);
+    EXPECT(strcmp(hycon_status_name(7), "HYCON_WARNING") == 0);
+    EXPECT(strcmp(hycon_status_name(-1000), "HYCON_ERROR_UNKNOWN") == 0);
+    return true;
+}
+
+int main(void) {
+    static const struct {
+        const char *name;
+        bool (*run)(void);
+    } tests[] = {
+        {"version", test_version},
+        {"good_stiffness", test_good_stiffness},
+        {"null_pointers", test_null_pointers},
+        {"short_output", test_short_output},
+        {"bad_kind_and_node_count", test_bad_kind_and_node_count},
+        {"non_finite_coordinates", test_non_finite_coordinates},
+        {"bad_shapes", test_bad_shapes},
+        {"bad_material", test_bad_material},
+        {"message_protocol", test_message_protocol},
+        {"panic_becomes_status", test_panic_becomes_status},
+        {"stress_routines", test_stress_routines},
+        {"status_names", test_status_names},
+    };
+    size_t i, n = sizeof tests / sizeof tests[0];
+    int failures = 0;
+    for (i = 0; i < n; ++i) {
+        bool ok = tests[i].run();
+        printf("%-28s %s\n", tests[i].name, ok ? "ok" : "FAILED");
+        failures += !ok;
+    }
+    if (failures != 0) {
+        printf("%d of %d test(s) failed\n", failures, (int)n);
+        return 1;
+    }
+    printf("OK\n");
+    return 0;
+}

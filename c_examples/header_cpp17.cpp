@@ -1,0 +1,42 @@
+// Compile check: include/hycon.h is standalone, include-guarded and clean C++17
+// (-std=c++17 -Wall -Wextra -Werror -pedantic), with C linkage, and the library matches the
+// header's version.
+#include "hycon.h"
+#include "hycon.h"  // twice on purpose: the include guard must hold
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <type_traits>
+
+static_assert(sizeof(HyconMaterial) == 32, "HyconMaterial layout");
+static_assert(offsetof(HyconMaterial, youngs) == 0, "HyconMaterial layout");
+static_assert(offsetof(HyconMaterial, poisson) == 8, "HyconMaterial layout");
+static_assert(offsetof(HyconMaterial, thickness) == 16, "HyconMaterial layout");
+static_assert(offsetof(HyconMaterial, analysis) == 24, "HyconMaterial layout");
+static_assert(std::is_standard_layout_v<HyconMaterial>, "HyconMaterial is plain data");
+static_assert(std::is_trivially_copyable_v<HyconMaterial>, "HyconMaterial is plain data");
+static_assert(std::is_same_v<HyconStatus, std::int32_t>, "HyconStatus is int32_t");
+static_assert(HYCON_VERSION == HYCON_VERSION_MAJOR * 10000 + HYCON_VERSION_MINOR * 100 +
+                                   HYCON_VERSION_PATCH,
+              "packed version");
+
+// The prototypes have C linkage and the expected types.
+static_assert(std::is_same_v<decltype(&hycon_element_stiffness),
+                             HyconStatus (*)(HyconElementKind, std::size_t, const double *,
+                                             const HyconMaterial *, double *, std::size_t)>,
+              "hycon_element_stiffness signature");
+
+int main() {
+    std::int32_t v[3] = {-1, -1, -1};
+    if (hycon_version(v) != HYCON_OK) {
+        std::fprintf(stderr, "hycon_version failed\n");
+        return 1;
+    }
+    if (v[0] != HYCON_VERSION_MAJOR || v[1] != HYCON_VERSION_MINOR || v[2] != HYCON_VERSION_PATCH) {
+        std::fprintf(stderr, "library/header version mismatch\n");
+        return 1;
+    }
+    std::printf("hycon %d.%d.%d (C++17)\nOK\n", int(v[0]), int(v[1]), int(v[2]));
+    return 0;
+}

@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# The whole test suite of hycon: the README's test command, also what CI runs (.ci/run).
+#
+#   scripts/test-all.sh
+#
+# Needs the Rust toolchain (with clippy and rustfmt) and gcc/g++. On Debian it first installs
+# what else it needs (cmake, ninja-build, libsuitesparse-dev, libclang-dev, pkg-config,
+# valgrind, g++) with apt-get when any is missing: as root, or through sudo.
+# Order: builds and tests first (their summaries are printed as they finish), then the
+# static checks (clippy, rustfmt, rustdoc). Every step shares cargo's target/ directory, so
+# the library is compiled once per profile: release (used by CMake) and dev (used by tests).
+# No `cargo test --release`: it would compile faer a third time.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+root=$PWD
+
+start=$SECONDS
+timings=()
+current=""
+step() {
+    if [[ -n $current ]]; then timings+=("$(printf '%5d s  %s' $((SECONDS - step_start)) "$current")"); fi
+    current="$*"
+    step_start=$SECONDS
+    printf '\n==== [%d s] %s\n' $((SECONDS - start)) "$current"
+}
+summary() {
+    local rc=$?
+    if [[ -n $current ]]; then timings+=("$(printf '%5d s  %s' $((SECONDS - step_start)) "$current")"); fi
+    printf '\n==== step timings\n'
+    printf '%s\n' "${timings[@]}"
+    if ((rc == 0)); then
+        printf '==== test-all: PASSED in %d s\n' $((SECONDS - start))
+    else
+        printf '==== test-all: FAILED (exit %d) in step "%s" after %d s\n' "$rc" "$current" $((SECONDS - start))
+    fi
+}
+trap summary EXIT
+
+packages=(cmake ninja-build libsuitesparse-dev libclang-dev pkg-config valgrind g++)
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+        missing+=("$p")
+    fi
+done
+if ((${#missing[@]} > 0)); then
+    step "install system packages: ${missing[*]}"
+    sudo=()
+    if [[ $(id -u) -ne 0 ]]; then sudo=(sudo); fi
+    "${sudo[@]}" apt-get update
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get -o DPkg::Lock::Timeout=900 install -y "${packages[@]}"
+fi
+
+export CARGO_TERM_COLOR=${CARGO_TERM_COLOR:-never}
+build=$root/build
+stage=$build/stage
+
+step "cargo build --release --locked"
+cargo build --release --locked
+
+step "cargo test --locked (unit, integration, C API, header freshness, C examples via cc)"
+log=$(mktemp)
+cargo test --locked 2>&1 | tee "$log"
+grep -E '^test result:' "$log" |
+    awk '{p += $4; f += $6; i += $8} END {printf "==== cargo test: %d passed, %d failed, %d ignored\n", p, f, i}'
+rm -f "$log"
+
+step "cmake configure"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$stage"
+
+step "cmake build"
+cmake --build "$build"
+
+step "ctest (C/C++ examples shared + static, valgrind, ASan+UBSan)"
+ctest --test-dir "$build" --output-on-failure
+
+step "cmake install"
+rm -rf "$stage"
+cmake --install "$build"
+
+step "consumer project against the installed package (find_package + pkg-config)"
+rm -rf "$build/consumer"
+cmake -S tests/consumer -B "$build/consumer" -G Ninja -DCMAKE_PREFIX_PATH="$stage"
+cmake --build "$build/consumer"
+ctest --test-dir "$build/consumer" --output-on-failure
+
+step "relocated install: consumer and plain pkg-config against a moved copy"
+rm -rf "$build/relocated" "$build/consumer-relocated"
+cp -a "$stage" "$build/relocated"
+cmake -S tests/consumer -B "$build/consumer-relocated" -G Ninja -DCMAKE_PREFIX_PATH="$build/relocated"
+cmake --build "$build/consumer-relocated"
+ctest --test-dir "$build/consumer-relocated" --output-on-failure
+PKG_CONFIG_PATH="$build/relocated/lib/pkgconfig" pkg-config --modversion hycon
+# shellcheck disable=SC2046 # word splitting of pkg-config output is intended
+cc -std=c99 -Wall -Wextra -Werror -pedantic tests/consumer/main.c -o "$build/consumer-pc" \
+    $(PKG_CONFIG_PATH="$build/relocated/lib/pkgconfig" pkg-config --cflags --libs hycon)
+LD_LIBRARY_PATH="$build/relocated/lib" "$build/consumer-pc"
+
+step "cargo clippy --all-targets -- -D warnings"
+cargo clippy --locked --all-targets -- -D warnings
+
+step "cargo fmt --check"
+cargo fmt --check
+
+step "cargo doc --no-deps"
+RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps
