@@ -206,6 +206,13 @@ impl LinearSystem {
     /// Validate, number the dofs, check every body is held against rigid motion, assemble and
     /// factor `K_ff`.
     pub fn new(model: &Model) -> Result<Self> {
+        Self::with_trailing(model, &[])
+    }
+
+    /// As [`LinearSystem::new`], with the free ones among the global dofs `trailing` eliminated
+    /// last, so that [`LinearSystem::condensed_flexibility`] can read their flexibility off the
+    /// factor.
+    pub fn with_trailing(model: &Model, trailing: &[usize]) -> Result<Self> {
         model.validate()?;
         check_rigid_body_support(model)?;
         let dofs = DofMap::new(
@@ -216,7 +223,12 @@ impl LinearSystem {
         let mut pattern = SparsePattern::new(&model.mesh, &dofs);
         pattern.assemble(&model.mesh, &model.materials, model.formulation, &dofs)?;
         let assembly = clock.elapsed().as_secs_f64();
-        let mut cholesky = SparseCholesky::analyze(pattern.symbolic())?;
+        let trailing_free: Vec<usize> = trailing.iter().filter_map(|&d| dofs.equation(d)).collect();
+        let mut cholesky = if trailing_free.is_empty() {
+            SparseCholesky::analyze(pattern.symbolic())?
+        } else {
+            SparseCholesky::analyze_with_trailing(pattern.symbolic(), &trailing_free)?
+        };
         cholesky.factorize(pattern.matrix())?;
         Ok(LinearSystem {
             dofs,
@@ -224,6 +236,13 @@ impl LinearSystem {
             cholesky,
             seconds: [assembly, clock.elapsed().as_secs_f64() - assembly],
         })
+    }
+
+    /// The flexibility `(K^-1)` between the free dofs among the `trailing` dofs given to
+    /// [`LinearSystem::with_trailing`] (in that order, prescribed ones skipped), read off the
+    /// factor: no solves.
+    pub fn condensed_flexibility(&self) -> Result<Mat<f64>> {
+        self.cholesky.condensed_inverse()
     }
 
     /// Wall-clock seconds of `[assembly, analysis + factorization]` when the system was built.

@@ -12,12 +12,14 @@ use crate::error::{Error, Result};
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::linalg::solvers::LltError;
+use faer::perm::PermRef;
+use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
-    CholeskySymbolicParams, LltRef, SymbolicCholesky, SymmetricOrdering,
+    CholeskySymbolicParams, LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering,
     factorize_symbolic_cholesky,
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
-use faer::{Conj, MatMut, Par, Side};
+use faer::{Conj, Mat, MatMut, Par, Side};
 
 /// How many right-hand sides one internal solve call handles (bounds the workspace).
 const RHS_BATCH: usize = 64;
@@ -30,6 +32,8 @@ pub struct SparseCholesky {
     workspace: MemBuffer,
     factorizations: usize,
     factored: bool,
+    /// Number of unknowns ordered last (see [`SparseCholesky::analyze_with_trailing`]).
+    trailing: usize,
 }
 
 impl std::fmt::Debug for SparseCholesky {
@@ -45,10 +49,53 @@ impl std::fmt::Debug for SparseCholesky {
 impl SparseCholesky {
     /// Symbolic analysis (AMD ordering, elimination tree, supernodes) of the lower-triangle pattern.
     pub fn analyze(pattern: SymbolicSparseColMatRef<'_, usize>) -> Result<Self> {
+        Self::analyze_ordered(pattern, SymmetricOrdering::Amd, 0)
+    }
+
+    /// Symbolic analysis with the unknowns `trailing` eliminated last, in the given order (the
+    /// others in AMD order). After [`factorize`](Self::factorize), the trailing block `L22` of
+    /// the factor gives the condensed (Schur complement) matrix of those unknowns,
+    /// `S = K22 - K21 K11^-1 K12 = L22 L22^T`: see [`condensed_inverse`](Self::condensed_inverse).
+    pub fn analyze_with_trailing(
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+        trailing: &[usize],
+    ) -> Result<Self> {
+        let n = pattern.nrows();
+        let amd = Self::analyze(pattern)?;
+        let mut last = vec![false; n];
+        for &t in trailing {
+            if t >= n || std::mem::replace(&mut last[t], true) {
+                return Err(Error::InvalidInput(format!(
+                    "trailing unknown {t} is out of range or repeated (order {n})"
+                )));
+            }
+        }
+        let amd_order: Vec<usize> = match amd.symbolic.perm() {
+            Some(p) => p.arrays().0.to_vec(),
+            None => (0..n).collect(),
+        };
+        let fwd: Vec<usize> = amd_order
+            .into_iter()
+            .filter(|&i| !last[i])
+            .chain(trailing.iter().copied())
+            .collect();
+        let mut inv = vec![0; n];
+        for (new, &old) in fwd.iter().enumerate() {
+            inv[old] = new;
+        }
+        let perm = PermRef::new_checked(&fwd, &inv, n);
+        Self::analyze_ordered(pattern, SymmetricOrdering::Custom(perm), trailing.len())
+    }
+
+    fn analyze_ordered(
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+        ordering: SymmetricOrdering<'_, usize>,
+        trailing: usize,
+    ) -> Result<Self> {
         let symbolic = factorize_symbolic_cholesky(
             pattern,
             Side::Lower,
-            SymmetricOrdering::Amd,
+            ordering,
             CholeskySymbolicParams::default(),
         )
         .map_err(|e| Error::Solver(format!("symbolic analysis failed: {e:?}")))?;
@@ -63,7 +110,66 @@ impl SparseCholesky {
             workspace: MemBuffer::new(req),
             factorizations: 0,
             factored: false,
+            trailing,
         })
+    }
+
+    /// The inverse of the condensed matrix of the trailing unknowns (in the order given to
+    /// [`analyze_with_trailing`](Self::analyze_with_trailing)): `S^-1 = (K^-1)_22`, the
+    /// flexibility of those unknowns with all others free and unloaded. Computed from the
+    /// factor's trailing block, `S^-1 = L22^-T L22^-1`: no solves with `K`.
+    pub fn condensed_inverse(&self) -> Result<Mat<f64>> {
+        if !self.factored {
+            return Err(Error::Solver(
+                "condensation requested before a successful factorization".into(),
+            ));
+        }
+        let l22 = self.trailing_block();
+        let m = self.trailing;
+        let mut x = Mat::<f64>::identity(m, m);
+        faer::linalg::triangular_solve::solve_lower_triangular_in_place(
+            l22.as_ref(),
+            x.as_mut(),
+            Par::Seq,
+        );
+        Ok(x.transpose() * &x)
+    }
+
+    /// The trailing `m x m` block of `L` (dense, lower triangular).
+    fn trailing_block(&self) -> Mat<f64> {
+        let (n, m) = (self.n(), self.trailing);
+        let first = n - m;
+        let mut l = Mat::<f64>::zeros(m, m);
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(sym) => {
+                let (cp, ri) = (sym.col_ptr(), sym.row_idx());
+                for j in first..n {
+                    for idx in cp[j]..cp[j + 1] {
+                        if ri[idx] >= first {
+                            l[(ri[idx] - first, j - first)] = self.l_values[idx];
+                        }
+                    }
+                }
+            }
+            SymbolicCholeskyRaw::Supernodal(sym) => {
+                let llt = SupernodalLltRef::<usize, f64>::new(sym, &self.l_values);
+                for s in 0..sym.n_supernodes() {
+                    let node = llt.supernode(s);
+                    let (start, pattern, val) = (node.start(), node.pattern(), node.val());
+                    let width = val.ncols();
+                    for jj in (0..width).filter(|&jj| start + jj >= first) {
+                        let col = start + jj - first;
+                        for ii in jj..width {
+                            l[(start + ii - first, col)] = val[(ii, jj)];
+                        }
+                        for (k, &r) in pattern.iter().enumerate() {
+                            l[(r - first, col)] = val[(width + k, jj)];
+                        }
+                    }
+                }
+            }
+        }
+        l
     }
 
     /// Order of the matrix.
@@ -179,6 +285,46 @@ mod tests {
         let r = &full * &x - &b;
         assert!(r.norm_max() < 1e-10 * b.norm_max() * (n * n) as f64 / 4.0);
         assert_eq!(chol.factorizations(), 1);
+    }
+
+    /// The condensed inverse from the factor's trailing block equals `(A^-1)_22` computed by
+    /// solves, for a trailing set in arbitrary order, both simplicial and supernodal sizes.
+    #[test]
+    fn condensed_inverse_matches_solves() {
+        for n in [30, 40_000] {
+            // 2D Laplacian-like band: i coupled to i+1 and i+k
+            let k = (n as f64).sqrt() as usize;
+            let mut t = Vec::new();
+            for i in 0..n {
+                t.push(Triplet::new(i, i, 4.5));
+                for j in [i + 1, i + k] {
+                    if j < n {
+                        t.push(Triplet::new(j, i, -1.0));
+                    }
+                }
+            }
+            let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &t).unwrap();
+            let trailing: Vec<usize> = vec![n / 2, 3, n - 1, n / 3, 7];
+            let mut chol = SparseCholesky::analyze_with_trailing(a.symbolic(), &trailing).unwrap();
+            let supernodal = matches!(chol.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_));
+            assert_eq!(
+                supernodal,
+                n > 100,
+                "n = {n} should exercise the other storage"
+            );
+            chol.factorize(a.as_ref()).unwrap();
+            let f = chol.condensed_inverse().unwrap();
+            let mut e = Mat::<f64>::zeros(n, trailing.len());
+            for (j, &d) in trailing.iter().enumerate() {
+                e[(d, j)] = 1.0;
+            }
+            chol.solve_in_place(e.as_mut()).unwrap();
+            for (i, &d) in trailing.iter().enumerate() {
+                for j in 0..trailing.len() {
+                    assert!((f[(i, j)] - e[(d, j)]).abs() < 1e-13, "n = {n}: ({i}, {j})");
+                }
+            }
+        }
     }
 
     #[test]

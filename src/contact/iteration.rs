@@ -42,7 +42,6 @@ use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
 use crate::error::{Error, Result};
 use crate::model::{LinearSystem, Model};
-use faer::Mat;
 use nalgebra::{DMatrix, DVector};
 
 /// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
@@ -193,6 +192,56 @@ impl Timings {
     }
 }
 
+/// What the full field of a converged increment is recovered from.
+#[derive(Debug, Clone)]
+struct Converged {
+    /// External forces plus contact forces, over all dofs.
+    forces: Vec<f64>,
+    /// Prescribed values.
+    prescribed: Vec<f64>,
+}
+
+/// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs for one load `(f, q_p)`.
+#[derive(Debug, Clone)]
+struct LoadSolve {
+    /// `f` and `q_p` (zero at free dofs), concatenated.
+    load: Vec<f64>,
+    /// `u0` at the contact dofs.
+    u0c: Vec<f64>,
+}
+
+/// Coefficients `c` with `new = sum_i c_i old_i` to round-off (relative 1e-13), if the loads
+/// `old` span `new` without cancellation (`sum |c_i| |old_i| <= 4 |new|`, so that combining
+/// their solutions loses no accuracy).
+fn combination(new: &[f64], old: &[LoadSolve]) -> Option<Vec<f64>> {
+    let k = old.len();
+    if k == 0 {
+        return None;
+    }
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let gram = DMatrix::from_fn(k, k, |i, j| dot(&old[i].load, &old[j].load));
+    let rhs = DVector::from_fn(k, |i, _| dot(&old[i].load, new));
+    let c = gram.lu().solve(&rhs)?;
+    let norm = |v: &[f64]| dot(v, v).sqrt();
+    let new_norm = norm(new);
+    let mut residual = new.to_vec();
+    for (ci, o) in c.iter().zip(old) {
+        for (r, v) in residual.iter_mut().zip(&o.load) {
+            *r -= ci * v;
+        }
+    }
+    let spread: f64 = c
+        .iter()
+        .zip(old)
+        .map(|(ci, o)| ci.abs() * norm(&o.load))
+        .sum();
+    (norm(&residual) <= 1e-13 * new_norm && spread <= 4.0 * new_norm)
+        .then(|| c.iter().copied().collect())
+}
+
+/// How many load solves are kept for reuse.
+const KEPT_LOADS: usize = 4;
+
 /// Per-node state kept between increments.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct NodeData {
@@ -215,8 +264,14 @@ pub struct ContactAnalysis {
     slot: Vec<usize>,
     /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs).
     flexibility: DMatrix<f64>,
-    /// Converged total displacement over all dofs.
-    q: Vec<f64>,
+    /// Converged displacement of the contact dofs (`dofs` order).
+    qc: Vec<f64>,
+    /// Loads and contact forces of the last converged increment, for the full field.
+    converged: Option<Converged>,
+    /// The full displacement field of the last converged increment, once asked for.
+    field: Option<Vec<f64>>,
+    /// Recent load solves, reused when a new load is a combination of their loads.
+    loads: Vec<LoadSolve>,
     /// Converged node data, per pair, per A node.
     nodes: Vec<Vec<NodeData>>,
     increment: usize,
@@ -225,9 +280,9 @@ pub struct ContactAnalysis {
 }
 
 impl ContactAnalysis {
-    /// Validate, factor `K` once and build the contact-boundary flexibility.
+    /// Validate, factor `K` once (the contact nodes' dofs eliminated last) and read the
+    /// contact-boundary flexibility `F` off the factor's trailing block.
     pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
-        let system = LinearSystem::new(&model)?;
         let n_nodes = model.mesh.n_nodes();
         for (i, p) in pairs.iter().enumerate() {
             if !(p.friction.is_finite() && p.friction >= 0.0) {
@@ -253,6 +308,12 @@ impl ContactAnalysis {
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = i;
         }
+        let system = LinearSystem::with_trailing(&model, &dofs)?;
+        let mut timings = Timings::default();
+        [timings.assembly, timings.factorization] = system.setup_seconds();
+        let clock = std::time::Instant::now();
+        let flexibility = Self::flexibility(&system, &dofs)?;
+        timings.flexibility = clock.elapsed().as_secs_f64();
         let nodes = pairs
             .iter()
             .map(|p| {
@@ -266,49 +327,36 @@ impl ContactAnalysis {
                 ]
             })
             .collect();
-        let mut analysis = ContactAnalysis {
-            q: vec![0.0; 2 * n_nodes],
+        Ok(ContactAnalysis {
+            qc: vec![0.0; dofs.len()],
+            converged: None,
+            field: None,
+            loads: Vec::new(),
             model,
             system,
             pairs,
             options,
-            flexibility: DMatrix::zeros(0, 0),
+            flexibility,
             dofs,
             slot,
             nodes,
             increment: 0,
             records: Vec::new(),
-            timings: Timings::default(),
-        };
-        [analysis.timings.assembly, analysis.timings.factorization] =
-            analysis.system.setup_seconds();
-        let clock = std::time::Instant::now();
-        analysis.flexibility = analysis.build_flexibility()?;
-        analysis.timings.flexibility = clock.elapsed().as_secs_f64();
-        Ok(analysis)
+            timings,
+        })
     }
 
-    /// `F = E^T K^-1 E`: one solve per free contact dof, batched 64 at a time.
-    fn build_flexibility(&mut self) -> Result<DMatrix<f64>> {
-        let m = self.dofs.len();
-        let mut flex = DMatrix::zeros(m, m);
-        let free: Vec<(usize, usize)> = self
-            .dofs
-            .iter()
-            .enumerate()
-            .filter_map(|(i, &d)| self.system.dofs().equation(d).map(|e| (i, e)))
+    /// `F = E^T K^-1 E` over the contact dofs (zero rows and columns at prescribed ones), from
+    /// the condensed flexibility of the free contact dofs.
+    fn flexibility(system: &LinearSystem, dofs: &[usize]) -> Result<DMatrix<f64>> {
+        let condensed = system.condensed_flexibility()?;
+        let free: Vec<usize> = (0..dofs.len())
+            .filter(|&i| system.dofs().equation(dofs[i]).is_some())
             .collect();
-        let n_free = self.system.dofs().n_free();
-        for chunk in free.chunks(64) {
-            let mut rhs = Mat::<f64>::zeros(n_free, chunk.len());
-            for (j, &(_, e)) in chunk.iter().enumerate() {
-                rhs[(e, j)] = 1.0;
-            }
-            self.system.cholesky().solve_in_place(rhs.as_mut())?;
-            for (j, &(col, _)) in chunk.iter().enumerate() {
-                for &(row, e) in &free {
-                    flex[(row, col)] = rhs[(e, j)];
-                }
+        let mut flex = DMatrix::zeros(dofs.len(), dofs.len());
+        for (a, &i) in free.iter().enumerate() {
+            for (b, &j) in free.iter().enumerate() {
+                flex[(i, j)] = condensed[(a, b)];
             }
         }
         Ok(flex)
@@ -319,9 +367,72 @@ impl ContactAnalysis {
         &self.model
     }
 
-    /// The last converged total displacement over all dofs.
-    pub fn displacement(&self) -> &[f64] {
-        &self.q
+    /// The displacement field of the last converged increment over all dofs (zero before the
+    /// first). Recovered on the first call after an increment (one solve), then kept: the
+    /// iteration itself needs only the contact dofs.
+    pub fn displacement(&mut self) -> Result<&[f64]> {
+        if self.field.is_none() {
+            let clock = std::time::Instant::now();
+            let q = match &self.converged {
+                Some(c) => {
+                    self.system
+                        .solve_for(&self.model, &c.forces, &c.prescribed)?
+                        .q
+                }
+                None => vec![0.0; 2 * self.model.mesh.n_nodes()],
+            };
+            self.timings.recovery += clock.elapsed().as_secs_f64();
+            self.field = Some(q);
+        }
+        Ok(self.field.as_deref().unwrap_or_default())
+    }
+
+    /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
+    /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
+    /// superposed on a fixed approach, costs one or two solves in all).
+    fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+        let n = f.len();
+        if qp.len() != n || n != 2 * self.model.mesh.n_nodes() {
+            return Err(Error::InvalidInput(format!(
+                "force and prescribed vectors need {} entries, got {} and {}",
+                2 * self.model.mesh.n_nodes(),
+                n,
+                qp.len()
+            )));
+        }
+        let dofs = self.system.dofs();
+        let load: Vec<f64> = f
+            .iter()
+            .copied()
+            .chain((0..n).map(|d| {
+                if dofs.equation(d).is_some() {
+                    0.0
+                } else {
+                    qp[d]
+                }
+            }))
+            .collect();
+        if let Some(c) = combination(&load, &self.loads) {
+            let mut u0c = vec![0.0; self.dofs.len()];
+            for (ci, cached) in c.iter().zip(&self.loads) {
+                for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
+                    *u += ci * v;
+                }
+            }
+            return Ok(u0c);
+        }
+        let clock = std::time::Instant::now();
+        let u0 = self.system.solve_for(&self.model, f, qp)?.q;
+        self.timings.load_solves += clock.elapsed().as_secs_f64();
+        let u0c: Vec<f64> = self.dofs.iter().map(|&d| u0[d]).collect();
+        if self.loads.len() == KEPT_LOADS {
+            self.loads.remove(0);
+        }
+        self.loads.push(LoadSolve {
+            load,
+            u0c: u0c.clone(),
+        });
+        Ok(u0c)
     }
 
     /// Where the time went so far.
@@ -353,15 +464,14 @@ impl ContactAnalysis {
         total / (a.len().max(2) - 1) as f64
     }
 
-    /// Current positions `X + q` of every node.
-    fn positions(&self, q: &[f64]) -> Vec<[f64; 2]> {
-        self.model
-            .mesh
-            .nodes
-            .iter()
-            .enumerate()
-            .map(|(i, p)| [p[0] + q[dof(i, 0)], p[1] + q[dof(i, 1)]])
-            .collect()
+    /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
+    /// nodes keep their reference positions: the contact geometry never reads them).
+    fn positions(&self, uc: &[f64]) -> Vec<[f64; 2]> {
+        let mut x = self.model.mesh.nodes.clone();
+        for (&d, &u) in self.dofs.iter().zip(uc) {
+            x[d / 2][d % 2] += u;
+        }
+        x
     }
 
     fn surfaces(&self, x: &[[f64; 2]]) -> Result<Vec<ContactSurface>> {
@@ -383,22 +493,17 @@ impl ContactAnalysis {
     /// converged state advances; on failure it is left as it was and the error says why.
     pub fn increment(&mut self, f: &[f64], qp: &[f64]) -> Result<IncrementInfo> {
         let number = self.increment + 1;
+        let u0c = self.load_solve(f, qp)?;
         let clock = std::time::Instant::now();
-        let u0 = self.system.solve_for(&self.model, f, qp)?.q;
-        self.timings.load_solves += clock.elapsed().as_secs_f64();
-        let clock = std::time::Instant::now();
-        let start = self.q.clone();
         let mut states: Vec<Vec<NodeState>> = self
             .nodes
             .iter()
             .map(|v| v.iter().map(|d| d.state).collect())
             .collect();
         // iterate on the contact dofs only; geometry from the start configuration
-        let mut uc: Vec<f64> = self.dofs.iter().map(|&d| start[d]).collect();
-        let u0c: Vec<f64> = self.dofs.iter().map(|&d| u0[d]).collect();
-        let startc = uc.clone();
-        let mut q = start.clone();
-        let mut surfaces = self.surfaces(&self.positions(&q))?;
+        let startc = self.qc.clone();
+        let mut uc = startc.clone();
+        let mut surfaces = self.surfaces(&self.positions(&uc))?;
         let mut history: Vec<Vec<Vec<NodeState>>> = vec![states.clone()];
         let mut records = Vec::new();
         for iteration in 1..=self.options.max_iterations {
@@ -410,10 +515,7 @@ impl ContactAnalysis {
             for (u, d) in uc_new.iter_mut().zip(df.iter()) {
                 *u += d;
             }
-            for (i, &d) in self.dofs.iter().enumerate() {
-                q[d] = uc_new[i];
-            }
-            let x = self.positions(&q);
+            let x = self.positions(&uc_new);
             let new_surfaces = self.surfaces(&x)?;
             let tractions = system.tractions(&tau, &states, &self.pairs);
             let (new_states, changes) =
@@ -434,9 +536,17 @@ impl ContactAnalysis {
             surfaces = new_surfaces;
             if changes == 0 && r <= self.options.tolerance {
                 self.timings.iterations += clock.elapsed().as_secs_f64();
-                return self.finish(
-                    number, iteration, &states, &tractions, &forces, f, qp, records,
-                );
+                let mut total = f.to_vec();
+                for (&d, &v) in self.dofs.iter().zip(&forces) {
+                    total[d] += v;
+                }
+                let converged = Converged {
+                    forces: total,
+                    prescribed: qp.to_vec(),
+                };
+                return Ok(self.finish(
+                    number, iteration, &states, &tractions, uc, converged, records,
+                ));
             }
             if changes > 0 {
                 if let Some(j) = history.iter().position(|h| *h == new_states) {
@@ -781,8 +891,8 @@ impl ContactAnalysis {
         Ok((new, changes))
     }
 
-    /// Accept the converged iterate: recover the full field (one solve), store the node data
-    /// and the records.
+    /// Accept the converged iterate: store the contact state, the node data and the records;
+    /// the full field is recovered only when asked for.
     #[allow(clippy::too_many_arguments)]
     fn finish(
         &mut self,
@@ -790,18 +900,13 @@ impl ContactAnalysis {
         iterations: usize,
         states: &[Vec<NodeState>],
         tractions: &[Vec<(f64, f64)>],
-        forces: &[f64],
-        f: &[f64],
-        qp: &[f64],
+        uc: Vec<f64>,
+        converged: Converged,
         records: Vec<IterationRecord>,
-    ) -> Result<IncrementInfo> {
-        let mut total = f.to_vec();
-        for (&d, &v) in self.dofs.iter().zip(forces) {
-            total[d] += v;
-        }
-        let clock = std::time::Instant::now();
-        self.q = self.system.solve_for(&self.model, &total, qp)?.q;
-        self.timings.recovery += clock.elapsed().as_secs_f64();
+    ) -> IncrementInfo {
+        self.qc = uc;
+        self.converged = Some(converged);
+        self.field = None;
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {
                 let (tn, ts) = tractions[p][k];
@@ -811,18 +916,18 @@ impl ContactAnalysis {
         self.increment = number;
         self.records.extend(records);
         let (active, _, slip) = count(states);
-        Ok(IncrementInfo {
+        IncrementInfo {
             increment: number,
             iterations,
             active,
             slip,
-        })
+        }
     }
 
     /// Converged results at the A nodes of pair `p`: states, tractions (multipliers),
     /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
     pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
-        let x = self.positions(&self.q);
+        let x = self.positions(&self.qc);
         let h = self.mean_segment(p, &x);
         let pair = &self.pairs[p];
         let surface = geometry::evaluate(&pair.a, &pair.b, &x, self.options.search_distance * h)?;

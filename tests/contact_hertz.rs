@@ -1,0 +1,132 @@
+//! Hertz validation of the contact method (METHOD.md section 7): a half disk of radius R pressed
+//! onto a large block, plane strain, frictionless, node-to-internode meshes graded toward the
+//! contact with transition elements, displacement control in 3 increments up to the approach
+//! that gives a = R/64 (see `hycon::contact::scene` for every number of the set-up).
+//!
+//! Tolerances: the half-width and the peak pressure within 1% (the set-up offset of order a/R,
+//! measured 0.3-0.6%, plus discretisation); the continuous L2 error of the multiplier pressure at
+//! most 2% at about 16 elements per half-width, decreasing with refinement.
+
+use hycon::contact::iteration::ContactOptions;
+use hycon::contact::scene::{DiskOnBlock, HertzComparison};
+
+/// Run the scene and return the comparison at each of the 3 increments (after the calibration
+/// increment), with the iteration counts.
+fn run(def: DiskOnBlock) -> Vec<(HertzComparison, usize)> {
+    run_with(def, ContactOptions::default())
+}
+
+fn run_with(def: DiskOnBlock, options: ContactOptions) -> Vec<(HertzComparison, usize)> {
+    let scene = def.build().unwrap();
+    let mut analysis = scene.analysis(options).unwrap();
+    let approach = scene.calibrated_approach(&mut analysis).unwrap();
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    (1..=3)
+        .map(|step| {
+            let qp = scene.prescribed(approach * step as f64 / 3.0, 0.0);
+            let info = analysis.increment(&f, &qp).unwrap();
+            (scene.compare(&analysis).unwrap(), info.iterations)
+        })
+        .collect()
+}
+
+fn print(label: &str, c: &HertzComparison, iterations: usize, h: f64) {
+    println!(
+        "{label:>24} | a/h {:>5.1} | a {:>+7.3}% | p0 {:>+7.3}% | L2 {:>6.3}% (forces {:>6.3}%) | active {:>3} | it {iterations}",
+        c.hertz.half_width / h,
+        100.0 * (c.half_width / c.hertz.half_width - 1.0),
+        100.0 * (c.peak / c.hertz.peak - 1.0),
+        100.0 * c.l2_error,
+        100.0 * c.l2_error_forces,
+        c.active
+    );
+}
+
+fn check_final(c: &HertzComparison) {
+    assert!(
+        (c.half_width / c.hertz.half_width - 1.0).abs() < 0.01,
+        "half-width {c:?}"
+    );
+    assert!((c.peak / c.hertz.peak - 1.0).abs() < 0.01, "peak {c:?}");
+    assert!(c.l2_error < 0.02, "L2 {c:?}");
+    assert_eq!(
+        c.tangential_ratio, 0.0,
+        "frictionless contact has no tangential traction"
+    );
+}
+
+/// Refinement: 4, 8, 16 and 32 elements per target half-width; the L2 error decreases and at
+/// 16 the final increment is within the stated tolerances.
+#[test]
+fn hertz_refinement() {
+    let mut errors = Vec::new();
+    for n in [4, 8, 16, 32] {
+        let def = DiskOnBlock {
+            elements_per_half_width: n,
+            ..Default::default()
+        };
+        let h = def.target_half_width() / n as f64;
+        let results = run(def);
+        for (step, (c, it)) in results.iter().enumerate() {
+            print(&format!("n = {n}, increment {}", step + 1), c, *it, h);
+        }
+        let last = &results.last().unwrap().0;
+        if n >= 16 {
+            check_final(last);
+        }
+        errors.push(last.l2_error);
+    }
+    assert!(
+        errors.windows(2).all(|w| w[1] < w[0]),
+        "L2 errors {errors:?} must decrease"
+    );
+}
+
+/// Modulus ratios E_disk / E_block = 1, 1e-2, 1e-4 with the load scaled so that a/R stays at
+/// 1/64 (the calibrated approach): all within the tolerances at 16 elements per half-width.
+#[test]
+fn hertz_modulus_ratios() {
+    for ratio in [1.0, 1e-2, 1e-4] {
+        let def = DiskOnBlock {
+            modulus_ratio: ratio,
+            ..Default::default()
+        };
+        let h = def.target_half_width() / 16.0;
+        let results = run(def);
+        for (step, (c, it)) in results.iter().enumerate() {
+            print(&format!("E ratio {ratio:e}, incr. {}", step + 1), c, *it, h);
+        }
+        check_final(&results.last().unwrap().0);
+    }
+}
+
+/// The same scene in other units (lengths x 1e-3, moduli x 1e9) gives the same dimensionless
+/// results (a/R, p0/E*, L2) to relative 1e-9. The iteration stops at `R < tolerance`, so two
+/// runs whose round-off differs agree only to about that tolerance: it is set to 1e-12 here.
+#[test]
+fn hertz_unit_invariance() {
+    let base = DiskOnBlock {
+        elements_per_half_width: 4,
+        ..Default::default()
+    };
+    let scaled = DiskOnBlock {
+        radius: 1e-3,
+        block_modulus: 1e9,
+        ..base
+    };
+    let dimensionless = |def: DiskOnBlock| -> Vec<f64> {
+        let e = def.block_modulus;
+        let options = ContactOptions {
+            tolerance: 1e-12,
+            ..Default::default()
+        };
+        run_with(def, options)
+            .iter()
+            .flat_map(|(c, _)| [c.half_width / def.radius, c.peak / e, c.l2_error])
+            .collect()
+    };
+    let (a, b) = (dimensionless(base), dimensionless(scaled));
+    for (x, y) in a.iter().zip(&b) {
+        assert!(((x - y) / x).abs() < 1e-9, "{a:?} vs {b:?}");
+    }
+}
