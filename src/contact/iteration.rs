@@ -924,6 +924,52 @@ impl ContactAnalysis {
         }
     }
 
+    /// Contact tractions at the A nodes of pair `p` from the element stresses of body A (the
+    /// paper's way (a)): at each node, `t = sigma n` of the element owning each adjacent A
+    /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
+    /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
+    pub fn stress_tractions(&mut self, p: usize) -> Result<Vec<(f64, f64)>> {
+        let frames = self.node_results(p)?;
+        let q = self.displacement()?.to_vec();
+        let model = &self.model;
+        let mut edges = std::collections::HashMap::new();
+        for e in 0..model.mesh.n_elements() {
+            let nodes = model.mesh.element(e);
+            for i in 0..nodes.len() {
+                edges.insert((nodes[i], nodes[(i + 1) % nodes.len()]), (e, i));
+            }
+        }
+        let solution = crate::model::Solution { q };
+        let a = &self.pairs[p].a;
+        let mut sums = vec![([0.0; 2], 0.0); a.len()];
+        for (k, w) in a.windows(2).enumerate() {
+            let &(e, edge) = edges.get(&(w[0], w[1])).ok_or_else(|| {
+                Error::InvalidInput(format!(
+                    "A segment {} -> {} is not an element edge with its body on the left",
+                    w[0], w[1]
+                ))
+            })?;
+            let field = solution.stress_field(model, e)?;
+            for (node, at) in [(k, 0.0), (k + 1, 1.0)] {
+                let t = field.edge_traction(edge, at);
+                sums[node].0[0] += t[0];
+                sums[node].0[1] += t[1];
+                sums[node].1 += 1.0;
+            }
+        }
+        Ok(sums
+            .iter()
+            .zip(&frames)
+            .map(|((t, count), r)| {
+                let t = [t[0] / count, t[1] / count];
+                (
+                    t[0] * r.normal[0] + t[1] * r.normal[1],
+                    t[0] * r.tangent[0] + t[1] * r.tangent[1],
+                )
+            })
+            .collect())
+    }
+
     /// Converged results at the A nodes of pair `p`: states, tractions (multipliers),
     /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
     pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {

@@ -222,6 +222,24 @@ impl Scene {
     }
 }
 
+impl Scene {
+    /// The L2 error against Hertz (same definition as [`HertzComparison::l2_error`]) of the
+    /// pressure recovered from the block's element stresses, the paper's way (a). Recovers the
+    /// full field (one solve) if it was not yet.
+    pub fn stress_pressure_error(&self, analysis: &mut ContactAnalysis) -> Result<f64> {
+        let comparison = self.compare(analysis)?;
+        let tractions = analysis.stress_tractions(0)?;
+        let nodes = analysis.node_results(0)?;
+        let mut points: Vec<[f64; 2]> = nodes
+            .iter()
+            .zip(&tractions)
+            .map(|(n, t)| [n.position[0] - comparison.centre, (-t.0).max(0.0)])
+            .collect();
+        points.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        Ok(l2_error(&points, &comparison.hertz))
+    }
+}
+
 /// Total normal load `P = sum_j -n . f_j` on the A side.
 pub fn total_load(nodes: &[NodeResult]) -> f64 {
     nodes
