@@ -143,3 +143,62 @@ pub fn peak_memory() -> Option<u64> {
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
 }
+
+/// One Hertz contact analysis against the linear-solve floor on the same mesh.
+#[derive(Debug, Clone)]
+pub struct ContactRun {
+    /// Elements per target half-width.
+    pub n: usize,
+    /// Free dofs.
+    pub dofs: usize,
+    /// Dofs of the contact candidates (the condensed boundary).
+    pub contact_dofs: usize,
+    /// The contact analysis' own time split.
+    pub timings: crate::contact::iteration::Timings,
+    /// Wall time of the whole contact analysis (construction, calibration increment and 3
+    /// load increments).
+    pub contact_seconds: f64,
+    /// Wall time of the floor: assembly, analysis and factorization of `K` plus one solve.
+    pub floor_seconds: f64,
+    /// L2 error of the multiplier pressure against Hertz at the last increment.
+    pub l2_error: f64,
+    /// Total contact iterations.
+    pub iterations: usize,
+}
+
+/// The reference Hertz scene at `n` elements per half-width (frictionless, `a = R/64`):
+/// time the whole contact analysis and, on the same model, one plain factorization and solve.
+pub fn contact_run(n: usize) -> Result<ContactRun> {
+    use crate::contact::iteration::ContactOptions;
+    use crate::contact::scene::DiskOnBlock;
+    use crate::model::LinearSystem;
+    let scene = DiskOnBlock {
+        elements_per_half_width: n,
+        ..Default::default()
+    }
+    .build()?;
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    let clock = Instant::now();
+    let mut floor = LinearSystem::new(&scene.model)?;
+    floor.solve_for(&scene.model, &f, &scene.prescribed(1e-3, 0.0))?;
+    let floor_seconds = clock.elapsed().as_secs_f64();
+    let dofs = floor.dofs().n_free();
+    drop(floor);
+    let clock = Instant::now();
+    let mut analysis = scene.analysis(ContactOptions::default())?;
+    let approach = scene.calibrated_approach(&mut analysis)?;
+    for step in 1..=3 {
+        analysis.increment(&f, &scene.prescribed(approach * step as f64 / 3.0, 0.0))?;
+    }
+    let contact_seconds = clock.elapsed().as_secs_f64();
+    Ok(ContactRun {
+        n,
+        dofs,
+        contact_dofs: 2 * (scene.pair.a.len() + scene.pair.b.len()),
+        timings: analysis.timings(),
+        contact_seconds,
+        floor_seconds,
+        l2_error: scene.compare(&analysis)?.l2_error,
+        iterations: analysis.records().len(),
+    })
+}

@@ -1,9 +1,13 @@
-//! Command-line interface (clap): the main job and one subcommand per reference case.
+//! Command-line interface (clap): the main job (the contact examples) and one subcommand per
+//! reference case.
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 use hycon::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
+use hycon::contact::examples::{self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase};
 use hycon::element::Formulation;
 use hycon::material::Analysis;
+use hycon::report;
+use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -13,19 +17,82 @@ use std::time::Instant;
 #[command(
     name = "hycon",
     version,
-    about = "Assumed-stress hybrid elements and contact (Kubomura-Pian)"
+    about = "Assumed-stress hybrid elements and contact (Kubomura-Pian)",
+    long_about = "Assumed-stress hybrid elements and contact (Kubomura-Pian).\n\nWithout a \
+                  subcommand, runs the main job: the paper's four contact examples (`hycon \
+                  contact`)."
 )]
 struct Cli {
-    /// Directory for written results.
-    #[arg(long, global = true, default_value = "out")]
-    out: PathBuf,
+    /// Directory for written results [default: out for `elements`, out/contact for the contact
+    /// jobs].
+    #[arg(long, global = true, value_name = "DIR")]
+    out: Option<PathBuf>,
     #[command(subcommand)]
     command: Option<Command>,
 }
 
 #[derive(Subcommand)]
 enum Command {
-    /// The main job: Cook's membrane convergence table for every element (also the default).
+    /// The main job (also the default): the four contact examples on the disk-on-block scene
+    /// (Hertz for three modulus ratios, frictionless and frictional sliding, Cattaneo-Mindlin),
+    /// tables against the closed forms, the time split, SVG plots, VTU fields and summary.json.
+    Contact {
+        /// Elements per contact half-width (a power of two).
+        #[arg(long, default_value_t = 32)]
+        n: usize,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Non-sliding frictionless Hertz contact, increments of the approach up to the target half-width a.
+    Hertz {
+        /// Elements per contact half-width (a power of two).
+        #[arg(long, default_value_t = 16)]
+        n: usize,
+        /// E_disk / E_block, one run each (comma-separated or repeated).
+        #[arg(long, value_delimiter = ',', num_args = 1.., default_values_t = [1.0, 1e-2, 1e-4])]
+        modulus_ratio: Vec<f64>,
+        /// Displacement increments up to the calibrated approach.
+        #[arg(long, default_value_t = 3)]
+        increments: usize,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Extensive sliding: pressed to the target half-width a, then moved sideways.
+    Slide {
+        /// Elements per contact half-width (a power of two).
+        #[arg(long, default_value_t = 8)]
+        n: usize,
+        /// Coulomb friction coefficient (0: frictionless).
+        #[arg(long, default_value_t = 0.0)]
+        friction: f64,
+        /// Sliding increments.
+        #[arg(long, default_value_t = 8)]
+        increments: usize,
+        /// Sliding distance, in contact half-widths a.
+        #[arg(long, default_value_t = 2.0)]
+        distance: f64,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Cattaneo-Mindlin partial slip (identical materials): pressed, then tangential
+    /// displacement in small increments until Q/(mu P) passes the target.
+    Cattaneo {
+        /// Elements per contact half-width (a power of two).
+        #[arg(long, default_value_t = 16)]
+        n: usize,
+        /// Coulomb friction coefficient (> 0).
+        #[arg(long, default_value_t = 0.3)]
+        friction: f64,
+        /// Wanted increase of Q/(mu P) per increment.
+        #[arg(long, default_value_t = 0.1)]
+        step: f64,
+        /// Stop once Q/(mu P) has passed this value.
+        #[arg(long, default_value_t = 0.75)]
+        target: f64,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Cook's membrane convergence table for every element.
     Elements {
         /// Finest mesh (n x n), a power of two >= 2.
         #[arg(long, default_value_t = 32)]
@@ -67,6 +134,21 @@ enum Command {
     },
 }
 
+/// Output options of the contact jobs.
+#[derive(Args, Clone, Copy, Default)]
+struct Output {
+    /// Print the result as JSON on stdout instead of the tables.
+    #[arg(long)]
+    json: bool,
+    /// Write no files (SVG, VTU, and the main job's summary.json).
+    #[arg(long)]
+    no_files: bool,
+    /// Also write a VTU per increment, with a ParaView .pvd collection (each field costs one
+    /// more solve, which then shows in the time split's recovery).
+    #[arg(long)]
+    every_increment: bool,
+}
+
 #[derive(Subcommand)]
 enum Bench {
     /// Element stiffness kernel time per element, for each element kind.
@@ -80,6 +162,13 @@ enum Bench {
     Scale {
         #[arg(long, default_value_t = 354)]
         n: usize,
+    },
+    /// The Hertz scene (frictionless, a = R/64, calibration + 3 increments) at each refinement:
+    /// whole contact analysis against one assembly + factorization + solve of K.
+    Contact {
+        /// Elements per half-width, comma separated (powers of two).
+        #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
+        n: Vec<usize>,
     },
 }
 
@@ -107,9 +196,86 @@ enum Load {
 }
 
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let result = match cli.command.unwrap_or(Command::Elements { max_n: 32 }) {
-        Command::Elements { max_n } => elements_table(max_n, &cli.out),
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // usage errors exit with status 1 like every other error; --help and --version
+            // print and succeed
+            let _ = e.print();
+            return if e.use_stderr() {
+                ExitCode::FAILURE
+            } else {
+                ExitCode::SUCCESS
+            };
+        }
+    };
+    let out = cli.out;
+    let contact_dir = || {
+        out.clone()
+            .unwrap_or_else(|| Path::new("out").join("contact"))
+    };
+    let command = cli.command.unwrap_or(Command::Contact {
+        n: 32,
+        output: Output::default(),
+    });
+    let result = match command {
+        Command::Contact { n, output } => main_job(n, output, &contact_dir()),
+        Command::Hertz {
+            n,
+            modulus_ratio,
+            increments,
+            output,
+        } => single(output, &contact_dir(), |progress| {
+            examples::hertz(
+                &HertzCase {
+                    n,
+                    modulus_ratios: modulus_ratio,
+                    increments,
+                    fields: output.fields(),
+                },
+                progress,
+            )
+        }),
+        Command::Slide {
+            n,
+            friction,
+            increments,
+            distance,
+            output,
+        } => single(output, &contact_dir(), |progress| {
+            examples::slide(
+                &SlideCase {
+                    n,
+                    friction,
+                    increments,
+                    distance,
+                    fields: output.fields(),
+                },
+                progress,
+            )
+        }),
+        Command::Cattaneo {
+            n,
+            friction,
+            step,
+            target,
+            output,
+        } => single(output, &contact_dir(), |progress| {
+            examples::cattaneo_mindlin(
+                &CattaneoCase {
+                    n,
+                    friction,
+                    step,
+                    target,
+                    fields: output.fields(),
+                    ..Default::default()
+                },
+                progress,
+            )
+        }),
+        Command::Elements { max_n } => {
+            elements_table(max_n, out.as_deref().unwrap_or(Path::new("out")))
+        }
         Command::Cook { element, n } => cases::cook_membrane(element.into(), n)
             .map(|v| {
                 println!("Cook's membrane {n}x{n}: v(48,52) = {v:.6} (converged {COOK_CONVERGED})")
@@ -135,7 +301,7 @@ pub fn main() -> ExitCode {
     }
 }
 
-type AnyResult = Result<(), Box<dyn std::error::Error>>;
+type AnyResult<T = ()> = Result<T, Box<dyn std::error::Error>>;
 
 /// Cook's membrane for every element on n x n meshes, n = 2, 4, ..., max_n; printed and written
 /// to `out/cook.csv`.
@@ -210,6 +376,32 @@ fn bench(what: Bench) -> AnyResult {
                 println!("  {:<26} {:>8.0} ns/element", k.kind, k.nanoseconds);
             }
         }
+        Bench::Contact { n } => {
+            println!(
+                "{:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",
+                "n", "dofs", "contact", "contact s", "floor s", "ratio", "L2", "iters"
+            );
+            for n in n {
+                let r = hycon::bench::contact_run(n)?;
+                let t = r.timings;
+                println!(
+                    "{:>4} {:>7} {:>8} {:>9.4} {:>9.4} {:>6.2} {:>6.2}% {:>5} | {:.4} {:.4} {:.4} {:.4} {:.4}",
+                    r.n,
+                    r.dofs,
+                    r.contact_dofs,
+                    r.contact_seconds,
+                    r.floor_seconds,
+                    r.contact_seconds / r.floor_seconds,
+                    100.0 * r.l2_error,
+                    r.iterations,
+                    t.assembly,
+                    t.factorization,
+                    t.flexibility,
+                    t.load_solves,
+                    t.iterations
+                );
+            }
+        }
         Bench::Scale { n } => {
             let r = hycon::bench::scale_run(n)?;
             let mib = |b: Option<u64>| {
@@ -238,4 +430,353 @@ fn bench(what: Bench) -> AnyResult {
         }
     }
     Ok(())
+}
+
+/// Progress lines on stderr, with the elapsed time, once `after` seconds have passed (short runs
+/// stay quiet).
+fn progress_printer(start: Instant, after: f64) -> impl FnMut(&str) {
+    move |message: &str| {
+        let t = start.elapsed().as_secs_f64();
+        if t >= after {
+            eprintln!("[{t:6.1} s] {message}");
+        }
+    }
+}
+
+/// One contact example alone (`hycon hertz | slide | cattaneo`).
+fn single(
+    output: Output,
+    dir: &Path,
+    run: impl FnOnce(examples::Progress<'_>) -> hycon::Result<Example>,
+) -> AnyResult {
+    let mut progress = progress_printer(Instant::now(), 1.0);
+    let example = run(Some(&mut progress))?;
+    let files = if output.no_files {
+        Vec::new()
+    } else {
+        write_files(dir, &example, output.every_increment)?
+    };
+    if output.json {
+        println!("{}", report::json::to_string(&example)?);
+    } else {
+        print_example(&example);
+    }
+    say_written(dir, &files, output.json);
+    Ok(())
+}
+
+/// What the main job writes into `summary.json`.
+#[derive(Serialize)]
+struct Summary<'a> {
+    program: &'static str,
+    version: &'static str,
+    elements_per_half_width: usize,
+    seconds: f64,
+    examples: &'a [Example],
+}
+
+/// The main job: the four contact examples, tables, time split, files.
+fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
+    let start = Instant::now();
+    let mut progress = progress_printer(start, 0.0);
+    let all = [
+        examples::hertz(
+            &HertzCase {
+                n,
+                fields: output.fields(),
+                ..Default::default()
+            },
+            Some(&mut progress),
+        )?,
+        examples::slide(
+            &SlideCase {
+                n,
+                friction: 0.0,
+                increments: 8,
+                distance: 2.0,
+                fields: output.fields(),
+            },
+            Some(&mut progress),
+        )?,
+        examples::slide(
+            &SlideCase {
+                n,
+                friction: 0.3,
+                increments: 8,
+                distance: 2.0,
+                fields: output.fields(),
+            },
+            Some(&mut progress),
+        )?,
+        examples::cattaneo_mindlin(
+            &CattaneoCase {
+                n,
+                fields: output.fields(),
+                ..Default::default()
+            },
+            Some(&mut progress),
+        )?,
+    ];
+    let seconds = start.elapsed().as_secs_f64();
+    let mut files = Vec::new();
+    if !output.no_files {
+        for example in &all {
+            progress(&format!("writing the plot and fields of {}", example.name));
+            files.extend(write_files(dir, example, output.every_increment)?);
+        }
+    }
+    let summary = Summary {
+        program: "hycon",
+        version: env!("CARGO_PKG_VERSION"),
+        elements_per_half_width: n,
+        seconds,
+        examples: &all,
+    };
+    if !output.no_files {
+        let path = dir.join("summary.json");
+        report::json::write(&path, &summary)?;
+        files.push(path);
+    }
+    if output.json {
+        println!("{}", report::json::to_string(&summary)?);
+    } else {
+        for example in &all {
+            print_example(example);
+        }
+        print_overview(&all, seconds);
+    }
+    say_written(dir, &files, output.json);
+    Ok(())
+}
+
+impl Output {
+    /// The displacement fields the files need (each costs one solve).
+    fn fields(&self) -> Fields {
+        if self.no_files {
+            Fields::None
+        } else if self.every_increment {
+            Fields::Every
+        } else {
+            Fields::Final
+        }
+    }
+}
+
+/// The SVG plot and the VTU fields of `example` into `dir`.
+fn write_files(dir: &Path, example: &Example, every_increment: bool) -> AnyResult<Vec<PathBuf>> {
+    let svg = dir.join(format!("{}.svg", example.name));
+    report::svg::write(&svg, example)?;
+    let mut files = vec![svg];
+    files.extend(report::vtu::write_example(dir, example, every_increment)?);
+    Ok(files)
+}
+
+fn say_written(dir: &Path, files: &[PathBuf], to_stderr: bool) {
+    if files.is_empty() {
+        return;
+    }
+    let count = |ext: &str| {
+        files
+            .iter()
+            .filter(|f| f.extension().is_some_and(|e| e == ext))
+            .count()
+    };
+    let names: Vec<String> = files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "svg" || e == "json"))
+        .filter_map(|f| f.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    let line = format!(
+        "written to {}: {} ({} .vtu fields{})",
+        dir.display(),
+        names.join(", "),
+        count("vtu"),
+        if count("pvd") > 0 {
+            format!(", {} .pvd collections for ParaView", count("pvd"))
+        } else {
+            String::new()
+        }
+    );
+    if to_stderr {
+        eprintln!("{line}");
+    } else {
+        println!("{line}");
+    }
+}
+
+fn pct(x: f64) -> String {
+    format!("{:+.2}%", 100.0 * x)
+}
+
+/// The table of one example: one block per run, one row per increment, then the time split.
+fn print_example(example: &Example) {
+    println!();
+    println!("== {}: {}", example.name, example.title);
+    for run in &example.runs {
+        print_run(run);
+    }
+}
+
+fn print_run(run: &Run) {
+    let s = &run.setup;
+    let a = s.target_half_width;
+    let friction = s.friction > 0.0;
+    println!(
+        "-- {}: {} nodes, {} elements, {} dofs, {} + {} contact nodes; R = {}, a = R/{} = {:.4e}, \
+         h = a/{}, E* = {:.4}, nu = {}, mu = {}",
+        run.label,
+        s.nodes,
+        s.elements,
+        s.dofs,
+        s.contact_nodes[0],
+        s.contact_nodes[1],
+        s.radius,
+        (s.radius / a).round(),
+        a,
+        s.elements_per_half_width,
+        s.e_star,
+        s.poisson,
+        s.friction
+    );
+    println!(
+        "   calibration: trial approach {:.4e} ({} iterations) -> approach {:.4e} (Hertz load for a)",
+        run.calibration.trial_approach, run.calibration.iterations, run.calibration.approach
+    );
+    let mut head = format!(
+        "   {:>3} {:>5} {:>9} {:>7} | {:>3} {:>4} {:>4} | {:>10} {:>8} {:>8} {:>8} {:>8} | {:>7}",
+        "inc",
+        "phase",
+        "approach",
+        "slide/a",
+        "it",
+        "act",
+        "slip",
+        "P",
+        "a-aH",
+        "p0-p0H",
+        "L2 mult",
+        "L2 force",
+        "Q/P"
+    );
+    if friction {
+        head += &format!(
+            " {:>7} {:>8} {:>6} {:>6} {:>7}",
+            "Q/muP", "L2 shear", "c/a", "cCM/a", "dc/a"
+        );
+    }
+    head += &format!(" | {:>9}", "time");
+    println!("{head}");
+    for inc in &run.increments {
+        let h = &inc.hertz;
+        let phase = match inc.phase {
+            examples::Phase::Press => "press",
+            examples::Phase::Slide => "slide",
+        };
+        let mut row = format!(
+            "   {:>3} {:>5} {:>9.3e} {:>7.3} | {:>3} {:>4} {:>4} | {:>10.4e} {:>8} {:>8} {:>8} {:>8} | {:>+7.4}",
+            inc.number,
+            phase,
+            inc.approach,
+            inc.slide / a,
+            inc.iterations,
+            inc.active,
+            inc.slip,
+            inc.load,
+            pct(h.half_width_error),
+            pct(h.peak_error),
+            format!("{:.2}%", 100.0 * h.l2_error),
+            format!("{:.2}%", 100.0 * h.l2_error_forces),
+            inc.q_over_p
+        );
+        if friction {
+            let ratio = inc.q_over_mu_p.map_or("-".into(), |r| format!("{r:.4}"));
+            let shear = inc
+                .shear_l2_error
+                .map_or("-".into(), |e| format!("{:.2}%", 100.0 * e));
+            let (c, ccm, dc) = inc
+                .stick_zone
+                .map_or(("-".into(), "-".into(), "-".into()), |z| {
+                    (
+                        format!("{:.3}", z.measured / a),
+                        format!("{:.3}", z.predicted / a),
+                        format!("{:+.3}", z.error),
+                    )
+                });
+            row += &format!(" {ratio:>7} {shear:>8} {c:>6} {ccm:>6} {dc:>7}");
+        }
+        row += &format!(" | {:>7.4} s", inc.seconds);
+        println!("{row}");
+    }
+    let t = &run.timings;
+    println!(
+        "   time: assembly {:.3} s, factorization {:.3} s ({}x), flexibility {:.3} s, load solves \
+         {:.3} s, iterations {:.3} s, recovery {:.3} s; total {:.3} s over {} increments \
+         (calibration included)",
+        t.assembly,
+        t.factorization,
+        t.factorizations,
+        t.flexibility,
+        t.load_solves,
+        t.iterations,
+        t.recovery,
+        t.total,
+        t.increments
+    );
+    println!(
+        "         = {:.1} x a linear analysis of the same model (assembly + factorization + one \
+         solve, timed separately: {:.3} s, of which the solve {:.4} s)",
+        t.ratio, t.linear, t.one_solve
+    );
+}
+
+/// One line per run: the worst errors and the cost.
+fn print_overview(all: &[Example], seconds: f64) {
+    println!();
+    println!("== overview (worst increment of each run; ratio = analysis / linear analysis)");
+    println!(
+        "   {:<18} {:<28} {:>4} {:>5} {:>8} {:>8} {:>8} {:>8} {:>9} {:>8} {:>6}",
+        "example",
+        "run",
+        "inc",
+        "iters",
+        "a-aH",
+        "p0-p0H",
+        "L2 mult",
+        "L2 force",
+        "max|dc|/a",
+        "time",
+        "ratio"
+    );
+    for example in all {
+        for run in &example.runs {
+            let worst = |f: &dyn Fn(&examples::Increment) -> f64| {
+                run.increments.iter().map(f).fold(
+                    0.0f64,
+                    |m, v| {
+                        if v.abs() > m.abs() { v } else { m }
+                    },
+                )
+            };
+            let dc = run
+                .increments
+                .iter()
+                .filter_map(|i| i.stick_zone.map(|z| z.error.abs()))
+                .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+            println!(
+                "   {:<18} {:<28} {:>4} {:>5} {:>8} {:>8} {:>8} {:>8} {:>9} {:>7.3}s {:>6.1}",
+                example.name,
+                run.label,
+                run.increments.len(),
+                run.increments.iter().map(|i| i.iterations).sum::<usize>(),
+                pct(worst(&|i| i.hertz.half_width_error)),
+                pct(worst(&|i| i.hertz.peak_error)),
+                format!("{:.2}%", 100.0 * worst(&|i| i.hertz.l2_error)),
+                format!("{:.2}%", 100.0 * worst(&|i| i.hertz.l2_error_forces)),
+                dc.map_or("-".into(), |d| format!("{d:.3}")),
+                run.timings.total,
+                run.timings.ratio
+            );
+        }
+    }
+    println!("   all examples: {seconds:.2} s");
 }

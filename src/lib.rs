@@ -16,6 +16,7 @@
 //! * [`cases`]: reference problems (Cook's membrane, the Pian-Sumihara cantilever).
 //! * [`bench`](mod@bench): the measurements behind the README's performance figures.
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
+//! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]
 
@@ -29,6 +30,7 @@ pub mod ffi;
 pub mod material;
 pub mod mesh;
 pub mod model;
+pub mod report;
 pub mod solver;
 
 pub use error::{Error, Result, ShapeError};

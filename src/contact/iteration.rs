@@ -192,6 +192,74 @@ impl Timings {
     }
 }
 
+/// How one translation of a rigid plate is driven in an increment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PlateControl {
+    /// The plate's displacement in this direction (total).
+    Displacement(f64),
+    /// The force applied to the plate in this direction (total); its displacement is an
+    /// unknown of the contact system.
+    Force(f64),
+}
+
+/// A rigid loading plate: nodes of one body's face tied to two plate translations. Each
+/// direction is displacement- or force-controlled per increment.
+#[derive(Debug, Clone)]
+struct Plate {
+    /// Tied nodes (prescribed in both directions in the model).
+    nodes: Vec<usize>,
+    /// Contact-dof response to a unit plate translation in x and in y (no load, no contact).
+    response: [Vec<f64>; 2],
+    /// Plate stiffness `D`: the force the plate exerts on the body per unit translation.
+    stiffness: nalgebra::Matrix2<f64>,
+    /// Converged plate displacement and force.
+    displacement: [f64; 2],
+    force: [f64; 2],
+}
+
+impl Plate {
+    /// Record the converged plate state: its motion (prescribed, or `solved` for the
+    /// force-controlled directions) written into `prescribed` at the tied nodes, and the force
+    /// it exerts on the body, `force0 + D U_force - W^T f_c` (load, force-controlled motion and
+    /// contact parts).
+    fn settle(
+        &mut self,
+        control: [PlateControl; 2],
+        solved: Option<(&[usize], &[f64])>,
+        force0: [f64; 2],
+        contact_forces: &[f64],
+        prescribed: &mut [f64],
+    ) {
+        let mut motion = control.map(|c| match c {
+            PlateControl::Displacement(u) => u,
+            PlateControl::Force(_) => 0.0,
+        });
+        for (&d, &m) in solved.into_iter().flat_map(|(d, m)| d.iter().zip(m)) {
+            motion[d] = m;
+        }
+        for &node in &self.nodes {
+            prescribed[dof(node, 0)] = motion[0];
+            prescribed[dof(node, 1)] = motion[1];
+        }
+        let force_controlled = control.map(|c| matches!(c, PlateControl::Force(_)));
+        let mut force = force0;
+        for (d, out) in force.iter_mut().enumerate() {
+            for (e, &m) in motion.iter().enumerate() {
+                if force_controlled[e] {
+                    *out += self.stiffness[(d, e)] * m;
+                }
+            }
+            *out -= dot_dense(&self.response[d], contact_forces);
+        }
+        self.displacement = motion;
+        self.force = force;
+    }
+}
+
+fn dot_dense(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
 /// What the full field of a converged increment is recovered from.
 #[derive(Debug, Clone)]
 struct Converged {
@@ -208,6 +276,8 @@ struct LoadSolve {
     load: Vec<f64>,
     /// `u0` at the contact dofs.
     u0c: Vec<f64>,
+    /// The force the plate exerts on the body in the `u0` solution (zero without a plate).
+    plate_force: [f64; 2],
 }
 
 /// Coefficients `c` with `new = sum_i c_i old_i` to round-off (relative 1e-13), if the loads
@@ -277,6 +347,7 @@ pub struct ContactAnalysis {
     increment: usize,
     records: Vec<IterationRecord>,
     timings: Timings,
+    plate: Option<Plate>,
 }
 
 impl ContactAnalysis {
@@ -343,7 +414,100 @@ impl ContactAnalysis {
             increment: 0,
             records: Vec::new(),
             timings,
+            plate: None,
         })
+    }
+
+    /// As [`ContactAnalysis::new`], with the nodes `plate` (prescribed in both directions in
+    /// the model, none of them a contact node) tied to a rigid plate whose two translations are
+    /// displacement- or force-controlled in each increment
+    /// ([`increment_with_plate`](Self::increment_with_plate)). Under force control the plate
+    /// translation joins the small contact system as extra unknowns with the plate's force
+    /// balance as extra equations (a bordered system): a body held only by the plate and by
+    /// contact, like a pressed disk, then takes a prescribed load. Costs two solves.
+    pub fn with_plate(
+        model: Model,
+        pairs: Vec<ContactPair>,
+        options: ContactOptions,
+        plate: Vec<usize>,
+    ) -> Result<Self> {
+        let mut analysis = Self::new(model, pairs, options)?;
+        let n = 2 * analysis.model.mesh.n_nodes();
+        for &node in &plate {
+            let held = node < n / 2
+                && (0..2).all(|d| analysis.system.dofs().equation(dof(node, d)).is_none());
+            if !held || analysis.slot[dof(node, 0)] != usize::MAX {
+                return Err(Error::InvalidInput(format!(
+                    "plate node {node} must exist, be prescribed in x and y, and not be a \
+                     contact node"
+                )));
+            }
+        }
+        let zero = vec![0.0; n];
+        let mut response = [Vec::new(), Vec::new()];
+        let mut stiffness = nalgebra::Matrix2::zeros();
+        for d in 0..2 {
+            let mut qp = zero.clone();
+            for &node in &plate {
+                qp[dof(node, d)] = 1.0;
+            }
+            let q = analysis.system.solve_for(&analysis.model, &zero, &qp)?.q;
+            response[d] = analysis.dofs.iter().map(|&i| q[i]).collect();
+            let force = plate_force(&analysis.model, &plate, &q, &zero)?;
+            stiffness[(0, d)] = force[0];
+            stiffness[(1, d)] = force[1];
+        }
+        analysis.plate = Some(Plate {
+            nodes: plate,
+            response,
+            stiffness,
+            displacement: [0.0; 2],
+            force: [0.0; 2],
+        });
+        Ok(analysis)
+    }
+
+    /// The border of the small system for the force-controlled plate directions, if any.
+    fn border(&self, control: [PlateControl; 2], force0: [f64; 2]) -> Option<Border> {
+        let plate = self.plate.as_ref()?;
+        let mut directions = Vec::new();
+        let mut rhs = Vec::new();
+        for (d, c) in control.iter().enumerate() {
+            if let PlateControl::Force(f) = c {
+                directions.push(d);
+                rhs.push(f - force0[d]);
+            }
+        }
+        (!directions.is_empty()).then(|| Border {
+            directions,
+            response: plate.response.clone(),
+            stiffness: plate.stiffness,
+            rhs,
+        })
+    }
+
+    /// Close the covered A node with the smallest normal gap (the first support of a
+    /// force-controlled body).
+    fn close_nearest(&self, surfaces: &[ContactSurface], states: &mut [Vec<NodeState>]) {
+        let nearest = surfaces
+            .iter()
+            .enumerate()
+            .flat_map(|(p, s)| s.nodes.iter().enumerate().map(move |(k, n)| (p, k, n)))
+            .filter(|(_, _, n)| n.is_covered())
+            .min_by(|a, b| a.2.normal_gap.total_cmp(&b.2.normal_gap));
+        if let Some((p, k, _)) = nearest {
+            states[p][k] = if self.pairs[p].friction > 0.0 {
+                NodeState::Stick
+            } else {
+                NodeState::Slip { sign: 1 }
+            };
+        }
+    }
+
+    /// The converged plate displacement and the force it exerts on the body (`None` without a
+    /// plate).
+    pub fn plate(&self) -> Option<([f64; 2], [f64; 2])> {
+        self.plate.as_ref().map(|p| (p.displacement, p.force))
     }
 
     /// `F = E^T K^-1 E` over the contact dofs (zero rows and columns at prescribed ones), from
@@ -390,7 +554,7 @@ impl ContactAnalysis {
     /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
     /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
     /// superposed on a fixed approach, costs one or two solves in all).
-    fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+    fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<(Vec<f64>, [f64; 2])> {
         let n = f.len();
         if qp.len() != n || n != 2 * self.model.mesh.n_nodes() {
             return Err(Error::InvalidInput(format!(
@@ -414,15 +578,22 @@ impl ContactAnalysis {
             .collect();
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];
+            let mut force = [0.0; 2];
             for (ci, cached) in c.iter().zip(&self.loads) {
                 for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
                     *u += ci * v;
                 }
+                force[0] += ci * cached.plate_force[0];
+                force[1] += ci * cached.plate_force[1];
             }
-            return Ok(u0c);
+            return Ok((u0c, force));
         }
         let clock = std::time::Instant::now();
         let u0 = self.system.solve_for(&self.model, f, qp)?.q;
+        let plate_force = match &self.plate {
+            Some(p) => plate_force(&self.model, &p.nodes, &u0, f)?,
+            None => [0.0; 2],
+        };
         self.timings.load_solves += clock.elapsed().as_secs_f64();
         let u0c: Vec<f64> = self.dofs.iter().map(|&d| u0[d]).collect();
         if self.loads.len() == KEPT_LOADS {
@@ -431,8 +602,9 @@ impl ContactAnalysis {
         self.loads.push(LoadSolve {
             load,
             u0c: u0c.clone(),
+            plate_force,
         });
-        Ok(u0c)
+        Ok((u0c, plate_force))
     }
 
     /// Where the time went so far.
@@ -492,8 +664,56 @@ impl ContactAnalysis {
     /// values `qp` (both over all dofs; `qp` read at the prescribed dofs). On success the
     /// converged state advances; on failure it is left as it was and the error says why.
     pub fn increment(&mut self, f: &[f64], qp: &[f64]) -> Result<IncrementInfo> {
+        if self.plate.is_some() {
+            return Err(Error::InvalidInput(
+                "this analysis has a rigid plate: use increment_with_plate".into(),
+            ));
+        }
+        self.run_increment(f, qp, None)
+    }
+
+    /// One load increment of an analysis built [`with_plate`](Self::with_plate): as
+    /// [`increment`](Self::increment), with the plate's x and y translations driven by
+    /// `control` (the values `qp` holds at the plate nodes are ignored).
+    pub fn increment_with_plate(
+        &mut self,
+        f: &[f64],
+        qp: &[f64],
+        control: [PlateControl; 2],
+    ) -> Result<IncrementInfo> {
+        let Some(plate) = &self.plate else {
+            return Err(Error::InvalidInput(
+                "increment_with_plate needs an analysis built with_plate".into(),
+            ));
+        };
+        if control.iter().any(|c| match c {
+            PlateControl::Displacement(v) | PlateControl::Force(v) => !v.is_finite(),
+        }) {
+            return Err(Error::InvalidInput(format!(
+                "non-finite plate control {control:?}"
+            )));
+        }
+        let mut qp = qp.to_vec();
+        for &node in &plate.nodes {
+            for (d, c) in control.iter().enumerate() {
+                qp[dof(node, d)] = match c {
+                    PlateControl::Displacement(u) => *u,
+                    PlateControl::Force(_) => 0.0,
+                };
+            }
+        }
+        self.run_increment(f, &qp, Some(control))
+    }
+
+    fn run_increment(
+        &mut self,
+        f: &[f64],
+        qp: &[f64],
+        control: Option<[PlateControl; 2]>,
+    ) -> Result<IncrementInfo> {
         let number = self.increment + 1;
-        let u0c = self.load_solve(f, qp)?;
+        let (u0c, force0) = self.load_solve(f, qp)?;
+        let border = control.and_then(|c| self.border(c, force0));
         let clock = std::time::Instant::now();
         let mut states: Vec<Vec<NodeState>> = self
             .nodes
@@ -504,16 +724,27 @@ impl ContactAnalysis {
         let startc = self.qc.clone();
         let mut uc = startc.clone();
         let mut surfaces = self.surfaces(&self.positions(&uc))?;
+        if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
+            // a force-controlled body needs a support to start from: the nearest node
+            self.close_nearest(&surfaces, &mut states);
+        }
         let mut history: Vec<Vec<Vec<NodeState>>> = vec![states.clone()];
         let mut records = Vec::new();
         for iteration in 1..=self.options.max_iterations {
             let system = self.build_system(&surfaces, &states, &uc, &startc)?;
-            let tau = system.solve(&u0c, &self.flexibility)?;
+            let (tau, plate_motion) = system.solve(&u0c, &self.flexibility, border.as_ref())?;
             let forces = system.forces(&tau, self.dofs.len());
             let mut uc_new = u0c.clone();
             let df = &self.flexibility * DVector::from_column_slice(&forces);
             for (u, d) in uc_new.iter_mut().zip(df.iter()) {
                 *u += d;
+            }
+            if let Some(b) = &border {
+                for (&d, &m) in b.directions.iter().zip(&plate_motion) {
+                    for (u, w) in uc_new.iter_mut().zip(&b.response[d]) {
+                        *u += m * w;
+                    }
+                }
             }
             let x = self.positions(&uc_new);
             let new_surfaces = self.surfaces(&x)?;
@@ -535,14 +766,22 @@ impl ContactAnalysis {
             uc = uc_new;
             surfaces = new_surfaces;
             if changes == 0 && r <= self.options.tolerance {
+                uncovered(&surfaces, &states)?;
                 self.timings.iterations += clock.elapsed().as_secs_f64();
                 let mut total = f.to_vec();
                 for (&d, &v) in self.dofs.iter().zip(&forces) {
                     total[d] += v;
                 }
+                let mut prescribed = qp.to_vec();
+                if let (Some(plate), Some(control)) = (&mut self.plate, control) {
+                    let solved = border
+                        .as_ref()
+                        .map(|b| (b.directions.as_slice(), &plate_motion[..]));
+                    plate.settle(control, solved, force0, &forces, &mut prescribed);
+                }
                 let converged = Converged {
                     forces: total,
-                    prescribed: qp.to_vec(),
+                    prescribed,
                 };
                 return Ok(self.finish(
                     number, iteration, &states, &tractions, uc, converged, records,
@@ -579,6 +818,37 @@ impl ContactAnalysis {
     }
 }
 
+/// The force the tied nodes `plate` exert on the body in the field `q` under loads `f`: the sum
+/// of the reactions `K q - f` at their dofs.
+fn plate_force(model: &Model, plate: &[usize], q: &[f64], f: &[f64]) -> Result<[f64; 2]> {
+    let r = model.internal_forces(q)?;
+    let mut force = [0.0; 2];
+    for &node in plate {
+        for (d, out) in force.iter_mut().enumerate() {
+            *out += r[dof(node, d)] - f[dof(node, d)];
+        }
+    }
+    Ok(force)
+}
+
+/// Every active node of a converged state must have its support fully covered by the opposite
+/// surface (never integrate over a hole silently).
+fn uncovered(surfaces: &[ContactSurface], states: &[Vec<NodeState>]) -> Result<()> {
+    for (surface, states) in surfaces.iter().zip(states) {
+        for (node, state) in surface.nodes.iter().zip(states) {
+            if *state != NodeState::Open && node.coverage < 1.0 - 1e-9 {
+                return Err(Error::Contact(format!(
+                    "contact node {} is active but its support is only {:.1}% covered by the \
+                     opposite surface: extend the B polyline",
+                    node.node,
+                    100.0 * node.coverage
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// `R = |u_new - u_old| / |u_new - u_start|` over the contact dofs (0 when nothing moved).
 fn change_ratio(new: &[f64], old: &[f64], start: &[f64]) -> f64 {
     let num: f64 = new.iter().zip(old).map(|(a, b)| (a - b).powi(2)).sum();
@@ -599,6 +869,18 @@ fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
         .filter(|s| matches!(s, NodeState::Slip { .. }))
         .count();
     (stick + slip, stick, slip)
+}
+
+/// The plate's force-controlled translations as extra unknowns of the small system.
+struct Border {
+    /// Force-controlled directions (0 = x, 1 = y).
+    directions: Vec<usize>,
+    /// Contact-dof response to a unit plate translation, per direction.
+    response: [Vec<f64>; 2],
+    /// Plate stiffness.
+    stiffness: nalgebra::Matrix2<f64>,
+    /// `F_d - force0_d` per force-controlled direction.
+    rhs: Vec<f64>,
 }
 
 /// Which row of a node an unknown belongs to.
@@ -628,13 +910,21 @@ fn dot(v: &Sparse, u: &[f64]) -> f64 {
 }
 
 impl SmallSystem {
-    /// Solve `(rows^T F cols) tau = b - rows . u0` (LU with partial pivoting).
-    fn solve(&self, u0: &[f64], flex: &DMatrix<f64>) -> Result<Vec<f64>> {
+    /// Solve `(rows^T F cols) tau = b - rows . u0` (LU with partial pivoting); with a border,
+    /// also the plate translations `U` (contact rows gain `rows . w_e U_e`; each plate row
+    /// reads `-sum_j tau_j w_d . col_j + sum_e D_de U_e = F_d - force0_d`).
+    fn solve(
+        &self,
+        u0: &[f64],
+        flex: &DMatrix<f64>,
+        border: Option<&Border>,
+    ) -> Result<(Vec<f64>, Vec<f64>)> {
         let m = self.rows.len();
-        if m == 0 {
-            return Ok(Vec::new());
+        let k = border.map_or(0, |b| b.directions.len());
+        if m + k == 0 {
+            return Ok((Vec::new(), Vec::new()));
         }
-        let mut s = DMatrix::zeros(m, m);
+        let mut s = DMatrix::zeros(m + k, m + k);
         let mut fcol = vec![0.0; flex.nrows()];
         for (j, col) in self.cols.iter().enumerate() {
             fcol.iter_mut().for_each(|v| *v = 0.0);
@@ -647,13 +937,24 @@ impl SmallSystem {
                 s[(i, j)] = dot(row, &fcol);
             }
         }
-        let rhs = DVector::from_iterator(
-            m,
-            self.rows
-                .iter()
-                .zip(&self.b)
-                .map(|(row, b)| b - dot(row, u0)),
-        );
+        let mut rhs = DVector::zeros(m + k);
+        for (i, (row, b)) in self.rows.iter().zip(&self.b).enumerate() {
+            rhs[i] = b - dot(row, u0);
+        }
+        if let Some(b) = border {
+            for (a, &d) in b.directions.iter().enumerate() {
+                for (i, row) in self.rows.iter().enumerate() {
+                    s[(i, m + a)] = dot(row, &b.response[d]);
+                }
+                for (j, col) in self.cols.iter().enumerate() {
+                    s[(m + a, j)] = -dot(col, &b.response[d]);
+                }
+                for (c, &e) in b.directions.iter().enumerate() {
+                    s[(m + a, m + c)] = b.stiffness[(d, e)];
+                }
+                rhs[m + a] = b.rhs[a];
+            }
+        }
         let tau = s
             .lu()
             .solve(&rhs)
@@ -665,7 +966,10 @@ impl SmallSystem {
                         .into(),
                 )
             })?;
-        Ok(tau.iter().copied().collect())
+        Ok((
+            tau.iter().take(m).copied().collect(),
+            tau.iter().skip(m).copied().collect(),
+        ))
     }
 
     /// Contact forces on the contact dofs: `sum_j tau_j col_j`.
@@ -741,13 +1045,6 @@ impl ContactAnalysis {
                 if state == NodeState::Open {
                     continue;
                 }
-                if node.coverage < 1.0 - 1e-9 {
-                    return Err(Error::Contact(format!(
-                        "active contact node {} is not fully covered by the opposite surface \
-                         (coverage {:.3}): extend the B polyline",
-                        node.node, node.coverage
-                    )));
-                }
                 let normal = self.directed(&node.coupling, node.normal);
                 let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
                 let b = dot(&normal, uc) - rg;
@@ -814,16 +1111,10 @@ impl ContactAnalysis {
                     NodeState::Stick
                 }
             };
+            // coverage is checked on the converged state only: an intermediate iterate may
+            // move a node at the end of a surface a hair past the other's end
             let activate = |k: usize, new: &mut Vec<Vec<NodeState>>| -> Result<()> {
-                let node = &surface.nodes[k];
-                if node.coverage < 1.0 - 1e-9 {
-                    return Err(Error::Contact(format!(
-                        "contact reaches node {}, whose support is not fully covered by the \
-                         opposite surface: extend the B polyline",
-                        node.node
-                    )));
-                }
-                new[p][k] = closed(node);
+                new[p][k] = closed(&surface.nodes[k]);
                 Ok(())
             };
             for (k, node) in surface.nodes.iter().enumerate() {

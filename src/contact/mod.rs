@@ -5,7 +5,9 @@
 //!   `R_C`, coverage and the coupling rows.
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open).
 //! * [`scene`]: the reference disk-on-block scene and its comparison with Hertz.
+//! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 
+pub mod examples;
 pub mod geometry;
 pub mod iteration;
 pub mod scene;

@@ -193,6 +193,22 @@ impl Scene {
         qp
     }
 
+    /// The contact analysis with the disk's top face tied to a rigid plate, for force control
+    /// ([`ContactAnalysis::increment_with_plate`]).
+    pub fn plate_analysis(&self, options: ContactOptions) -> Result<ContactAnalysis> {
+        ContactAnalysis::with_plate(
+            self.model.clone(),
+            vec![self.pair.clone()],
+            options,
+            self.top.clone(),
+        )
+    }
+
+    /// The Hertz load `P = pi a^2 E* / (4 R)` per unit thickness of the target half-width.
+    pub fn hertz_load(&self) -> f64 {
+        std::f64::consts::PI * self.half_width.powi(2) * self.e_star / (4.0 * self.radius)
+    }
+
     /// The contact analysis of this scene (factors `K` and builds the flexibility).
     pub fn analysis(&self, options: ContactOptions) -> Result<ContactAnalysis> {
         ContactAnalysis::new(self.model.clone(), vec![self.pair.clone()], options)
@@ -212,8 +228,7 @@ impl Scene {
         if load <= 0.0 {
             return Err(Error::Contact("no contact at the trial approach".into()));
         }
-        let target = std::f64::consts::PI * a * a * self.e_star / (4.0 * radius);
-        Ok(trial * target / load)
+        Ok(trial * self.hertz_load() / load)
     }
 
     /// Compare the converged pressures of `analysis` with Hertz at the same load.

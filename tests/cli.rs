@@ -1,0 +1,295 @@
+//! The command-line program: the contact subcommands on small cases, their JSON, SVG and VTU
+//! output, and error handling.
+
+use hycon::contact::scene::DiskOnBlock;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn hycon(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hycon"))
+        .args(args)
+        .output()
+        .expect("run hycon")
+}
+
+/// A fresh scratch directory (removed on drop).
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Scratch {
+        let dir = std::env::temp_dir().join(format!("hycon-cli-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        Scratch(dir)
+    }
+    fn path(&self) -> &Path {
+        &self.0
+    }
+    fn arg(&self) -> &str {
+        self.0.to_str().expect("utf-8 temp dir")
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn finite(v: &Value, what: &str) -> f64 {
+    let x = v
+        .as_f64()
+        .unwrap_or_else(|| panic!("{what} is not a number: {v}"));
+    assert!(x.is_finite(), "{what} = {x}");
+    x
+}
+
+#[test]
+fn hertz_json_has_the_fields_and_finite_numbers() {
+    let dir = Scratch::new("hertz");
+    let out = hycon(&["hertz", "--n", "4", "--json", "--out", dir.arg()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: Value = serde_json::from_slice(&out.stdout).expect("stdout is JSON");
+    assert_eq!(json["name"], "hertz");
+    let runs = json["runs"].as_array().expect("runs");
+    assert_eq!(runs.len(), 3, "modulus ratios 1, 1e-2, 1e-4");
+    for run in runs {
+        let setup = &run["setup"];
+        assert_eq!(setup["elements_per_half_width"], 4);
+        assert!(finite(&setup["e_star"], "E*") > 0.0);
+        assert!(finite(&run["calibration"]["approach"], "approach") > 0.0);
+        let increments = run["increments"].as_array().expect("increments");
+        assert_eq!(increments.len(), 3);
+        for inc in increments {
+            assert!(inc["iterations"].as_u64().expect("iterations") >= 1);
+            assert!(inc["active"].as_u64().expect("active") >= 1);
+            assert!(finite(&inc["load"], "P") > 0.0);
+            for key in [
+                "half_width",
+                "peak",
+                "centre",
+                "measured_half_width",
+                "measured_peak",
+                "half_width_error",
+                "peak_error",
+                "l2_error",
+                "l2_error_forces",
+            ] {
+                finite(&inc["hertz"][key], key);
+            }
+            assert!(finite(&inc["hertz"]["l2_error"], "L2") < 0.5);
+            let nodes = inc["nodes"].as_array().expect("nodes");
+            assert!(!nodes.is_empty());
+            for node in nodes {
+                for key in ["x", "p", "p_forces", "q", "p_exact", "q_exact"] {
+                    finite(&node[key], key);
+                }
+                assert!(["open", "stick", "slip"].contains(&node["state"].as_str().unwrap()));
+            }
+        }
+        let t = &run["timings"];
+        for key in [
+            "assembly",
+            "factorization",
+            "flexibility",
+            "load_solves",
+            "iterations",
+            "recovery",
+            "linear",
+        ] {
+            assert!(finite(&t[key], key) >= 0.0);
+        }
+        assert!(finite(&t["total"], "total") > 0.0);
+    }
+}
+
+/// Minimal XML reading for the test: every element's name and attributes, and the text of
+/// each `DataArray` split into numbers; checks that tags nest.
+struct Xml {
+    elements: Vec<(String, Attributes)>,
+    arrays: Vec<(Attributes, Vec<f64>)>,
+}
+
+type Attributes = Vec<(String, String)>;
+
+fn parse_xml(text: &str) -> Xml {
+    let mut stack: Vec<String> = Vec::new();
+    let mut elements = Vec::new();
+    let mut arrays = Vec::new();
+    let mut rest = text;
+    let mut open_array: Option<Vec<(String, String)>> = None;
+    while let Some(start) = rest.find('<') {
+        let body = &rest[..start];
+        if let Some(attrs) = &open_array {
+            if !body.trim().is_empty() {
+                let values = body
+                    .split_whitespace()
+                    .map(|v| v.parse::<f64>().expect("number in DataArray"))
+                    .collect();
+                arrays.push((attrs.clone(), values));
+            }
+        } else {
+            assert!(body.trim().is_empty(), "stray text {body:?}");
+        }
+        let end = rest[start..].find('>').expect("unclosed tag") + start;
+        let tag = &rest[start + 1..end];
+        rest = &rest[end + 1..];
+        if tag.starts_with('?') {
+            continue;
+        }
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(stack.pop().as_deref(), Some(name.trim()), "tags nest");
+            if name.trim() == "DataArray" {
+                open_array = None;
+            }
+            continue;
+        }
+        let self_closing = tag.ends_with('/');
+        let tag = tag.trim_end_matches('/');
+        let mut parts = tag.splitn(2, char::is_whitespace);
+        let name = parts.next().expect("tag name").to_string();
+        let mut attrs = Vec::new();
+        let mut a = parts.next().unwrap_or("").trim();
+        while !a.is_empty() {
+            let eq = a.find('=').expect("attribute =");
+            let key = a[..eq].trim().to_string();
+            let after = &a[eq + 1..];
+            assert!(after.starts_with('"'), "quoted attribute");
+            let close = after[1..].find('"').expect("closing quote") + 1;
+            attrs.push((key, after[1..close].to_string()));
+            a = after[close + 1..].trim();
+        }
+        if name == "DataArray" && !self_closing {
+            open_array = Some(attrs.clone());
+        }
+        elements.push((name.clone(), attrs));
+        if !self_closing {
+            stack.push(name);
+        }
+    }
+    assert!(rest.trim().is_empty());
+    assert!(stack.is_empty(), "unclosed elements {stack:?}");
+    Xml { elements, arrays }
+}
+
+fn attr<'a>(attrs: &'a [(String, String)], key: &str) -> &'a str {
+    attrs
+        .iter()
+        .find(|(k, _)| k == key)
+        .map(|(_, v)| v.as_str())
+        .unwrap_or_else(|| panic!("no attribute {key}"))
+}
+
+#[test]
+fn slide_writes_an_svg_and_a_vtu_that_parses_back() {
+    let dir = Scratch::new("slide");
+    let out = hycon(&["slide", "--n", "4", "--increments", "2", "--out", dir.arg()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("slide-frictionless"), "{stdout}");
+    assert!(stdout.contains("written to"), "{stdout}");
+
+    let svg = std::fs::read_to_string(dir.path().join("slide-frictionless.svg")).expect("svg");
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
+    assert!(
+        svg.contains("x / a") && svg.contains("p / p0"),
+        "axes labelled"
+    );
+
+    let scene = DiskOnBlock {
+        elements_per_half_width: 4,
+        travel: 2.5,
+        ..Default::default()
+    }
+    .build()
+    .unwrap();
+    let mesh = &scene.model.mesh;
+    let (n_points, n_cells) = (mesh.n_nodes(), mesh.n_elements());
+
+    let text = std::fs::read_to_string(dir.path().join("slide-frictionless.vtu")).expect("vtu");
+    let xml = parse_xml(&text);
+    let root = &xml.elements[0];
+    assert_eq!(root.0, "VTKFile");
+    assert_eq!(attr(&root.1, "type"), "UnstructuredGrid");
+    let piece = xml.elements.iter().find(|e| e.0 == "Piece").expect("Piece");
+    assert_eq!(attr(&piece.1, "NumberOfPoints"), n_points.to_string());
+    assert_eq!(attr(&piece.1, "NumberOfCells"), n_cells.to_string());
+    let array = |name: &str| {
+        xml.arrays
+            .iter()
+            .find(|(a, _)| attr(a, "Name") == name)
+            .map(|(_, v)| v)
+            .unwrap_or_else(|| panic!("no DataArray {name}"))
+    };
+    assert_eq!(array("Points").len(), 3 * n_points);
+    assert_eq!(array("displacement").len(), 3 * n_points);
+    for name in ["sx", "sy", "txy", "von_mises", "body", "offsets", "types"] {
+        assert_eq!(array(name).len(), n_cells, "{name}");
+    }
+    assert!(array("displacement").iter().all(|v| v.is_finite()));
+    assert!(
+        array("von_mises")
+            .iter()
+            .all(|v| v.is_finite() && *v >= 0.0)
+    );
+    let connectivity = array("connectivity");
+    assert_eq!(
+        *array("offsets").last().unwrap() as usize,
+        connectivity.len()
+    );
+    assert!(connectivity.iter().all(|&i| (i as usize) < n_points));
+    for (e, t) in array("types").iter().enumerate() {
+        let expected = if mesh.element(e).len() == 4 { 9.0 } else { 7.0 };
+        assert_eq!(*t, expected, "cell type of element {e}");
+    }
+    let bodies = array("body");
+    assert!(
+        bodies.contains(&0.0) && bodies.contains(&1.0),
+        "both bodies"
+    );
+    // the disk was pushed down: its top moved by -approach
+    let top = scene.top[0];
+    assert!(array("displacement")[3 * top + 1] < 0.0);
+}
+
+#[test]
+fn no_files_writes_nothing() {
+    let dir = Scratch::new("nofiles");
+    let out = hycon(&["cattaneo", "--n", "4", "--no-files", "--out", dir.arg()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("Q/muP"), "{stdout}");
+    assert!(!dir.path().exists());
+}
+
+#[test]
+fn bad_options_fail_with_a_readable_message() {
+    let out = hycon(&["slide", "--bogus"]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("--bogus"), "{stderr}");
+
+    let out = hycon(&["hertz", "--n", "3", "--no-files"]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("hycon:") && stderr.contains("power of two"),
+        "{stderr}"
+    );
+
+    let out = hycon(&["cattaneo", "--n", "4", "--friction", "0", "--no-files"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("friction"));
+}
