@@ -197,7 +197,25 @@ fn hertz_force_control() {
             h,
         );
     }
+    // the B side (disk): equal and opposite total force, and its pressures (over the projected
+    // overlap) agree with A's peak to 1%
+    let b = analysis.b_node_results(0).unwrap();
+    let b_vertical: f64 = b.iter().map(|r| r.force[1]).sum();
+    assert!(
+        (b_vertical - p).abs() < 1e-6 * p,
+        "force on the disk {b_vertical} vs {p}"
+    );
+    let b_peak = b.iter().map(|r| r.pressure).fold(0.0, f64::max);
     let last = scene.compare(&analysis).unwrap();
+    println!(
+        "B-side peak pressure {b_peak:.6e}, A-side {:.6e}",
+        last.peak
+    );
+    assert!(
+        (b_peak / last.peak - 1.0).abs() < 0.01,
+        "B peak {b_peak} vs {}",
+        last.peak
+    );
     assert!(
         (last.half_width / last.hertz.half_width - 1.0).abs() < 0.01,
         "{last:?}"
@@ -217,4 +235,56 @@ fn hertz_force_control() {
         last.load
     );
     assert!((other.peak / last.peak - 1.0).abs() < 1e-5);
+}
+
+/// Node-to-node meshes (the block's top nodes face the disk's arc nodes in the contact zone,
+/// which the scene checks and this test re-checks): the same tolerances as node-to-internode
+/// from 16 elements per half-width, L2 decreasing with refinement.
+#[test]
+fn hertz_node_to_node() {
+    let mut errors = Vec::new();
+    for n in [8, 16, 32] {
+        let def = DiskOnBlock {
+            elements_per_half_width: n,
+            node_to_node: true,
+            ..Default::default()
+        };
+        let scene = def.build().unwrap();
+        let mesh = &scene.model.mesh;
+        let h = def.target_half_width() / n as f64;
+        let facing = scene
+            .pair
+            .a
+            .iter()
+            .filter(|&&i| mesh.nodes[i][0].abs() < 1.5 * def.target_half_width())
+            .all(|&i| {
+                scene
+                    .pair
+                    .b
+                    .iter()
+                    .any(|&j| mesh.nodes[j][0] == mesh.nodes[i][0])
+            });
+        assert!(
+            facing,
+            "n = {n}: every A node in the contact zone faces a B node"
+        );
+        let results = run(def);
+        for (step, (c, it)) in results.iter().enumerate() {
+            print(
+                &format!("node-to-node n = {n}, incr. {}", step + 1),
+                c,
+                *it,
+                h,
+            );
+        }
+        let last = &results.last().unwrap().0;
+        if n >= 16 {
+            check_final(last);
+        }
+        errors.push(last.l2_error);
+    }
+    assert!(
+        errors.windows(2).all(|w| w[1] < w[0]),
+        "L2 errors {errors:?} must decrease"
+    );
 }

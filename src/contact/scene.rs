@@ -44,6 +44,9 @@ pub struct DiskOnBlock {
     /// How far (in target half-widths) the contact zone travels to the right: the fine zone and
     /// the contact candidates extend that far.
     pub travel: f64,
+    /// Node-to-node meshes: the block's top nodes face the disk's arc nodes in the contact zone
+    /// (otherwise node-to-internode). See [`DiskOnBlock::build`].
+    pub node_to_node: bool,
 }
 
 impl Default for DiskOnBlock {
@@ -57,6 +60,7 @@ impl Default for DiskOnBlock {
             friction: 0.0,
             formulation: Formulation::Hybrid,
             travel: 0.0,
+            node_to_node: false,
         }
     }
 }
@@ -105,9 +109,29 @@ pub struct Scene {
 }
 
 impl DiskOnBlock {
-    /// Target half-width `a = R / 64`.
+    /// Target half-width `a`: `R / 64` for node-to-internode meshes; for node-to-node meshes
+    /// the largest `n h` not above `R / 64` with `h` the block's cell size (see
+    /// [`DiskOnBlock::build`]).
     pub fn target_half_width(&self) -> f64 {
-        self.radius / 64.0
+        self.radius * self.unit_geometry().0
+    }
+
+    /// `(a, h, W)` for `R = 1`: target half-width, element size at the contact, block
+    /// half-width (the block is `[-W, W] x [-W_depth, 0]`, root cells of size `W`).
+    fn unit_geometry(&self) -> (f64, f64, f64) {
+        let n = self.elements_per_half_width.max(1) as f64;
+        if self.node_to_node {
+            // the disk's arc cells at the contact are (pi / 8) / 2^k long (45-degree O-grid
+            // patches of 2 root cells): a block of root size 2 pi has cells of the same length
+            let w = 2.0 * std::f64::consts::PI;
+            let mut h = w;
+            while n * h > 1.0 / 64.0 {
+                h /= 2.0;
+            }
+            (n * h, h, w)
+        } else {
+            (1.0 / 64.0, 1.0 / (64.0 * n), 4.0)
+        }
     }
 
     /// Build the meshes, materials, boundary conditions and contact pair.
@@ -121,24 +145,31 @@ impl DiskOnBlock {
         // meshes and candidate sets are built for R = 1 and then scaled, so that every mesh
         // decision (grading thresholds, set membership) is the same in any unit system
         let r = 1.0;
-        let a = r / 64.0;
-        let h = a / n as f64;
+        let (a, h, w) = self.unit_geometry();
         // fine zone: the contact zone, where it travels, and a margin
         let (x0, x1) = (-1.5 * a, (1.5 + self.travel) * a);
-        let block = generate::graded_rectangle(
-            -4.0 * r,
-            -4.0 * r,
-            8.0 * r,
-            4.0 * r,
+        let mut block = generate::graded_rectangle(
+            -w,
+            -w,
+            2.0 * w,
+            w,
             2,
             1,
             &Grading::toward_line([x0, 0.0], [x1, 0.0], h, 8),
         );
         let disk_zone = 1.5 * a + self.travel * a;
+        // node-to-node: the disk's arc cells must stop at length h; their longest edge is the
+        // radial one, about 1.2 h at the contact, hence the 1.3
+        let disk_size = if self.node_to_node { 1.3 * h } else { h };
         let disk = generate::half_disk(
             r,
-            &Grading::toward_line([-disk_zone, 0.0], [disk_zone, 0.0], h, 8),
+            &Grading::toward_line([-disk_zone, 0.0], [disk_zone, 0.0], disk_size, 8),
         );
+        if self.node_to_node {
+            // only where the block's cells are all of size h (within 4 h of the graded line,
+            // so no transition element's straight edge is bent by the move)
+            face_nodes(&mut block, &disk, x0 - 2.0 * h, x1 + 2.0 * h, h)?;
+        }
         let block_material =
             Material::new(self.block_modulus, self.poisson, 1.0, Analysis::PlaneStrain)?;
         let disk_material = Material::new(
@@ -180,6 +211,37 @@ impl DiskOnBlock {
             radius: self.radius,
         })
     }
+}
+
+/// Move the block's top nodes in `[lo, hi]` horizontally onto the x of the disk's arc nodes they
+/// face (node-to-node meshes; outside `[lo, hi]`, beyond the contact zone, the meshes stay
+/// node-to-internode). Every such node must have a disk node within 5% of `h` (the arc
+/// nodes sit at `sin(theta)`, off a uniform grid by `x^3 / 6`, 1% of `h` at the edge of the
+/// zone), else the meshes are not node-to-node and this says so.
+fn face_nodes(block: &mut Mesh, disk: &Mesh, lo: f64, hi: f64, h: f64) -> Result<()> {
+    let arc: Vec<f64> = disk.node_sets["arc"]
+        .iter()
+        .map(|&i| disk.nodes[i][0])
+        .collect();
+    for &i in &block.node_sets["top"] {
+        let x = block.nodes[i][0];
+        if !(lo..=hi).contains(&x) {
+            continue;
+        }
+        let nearest = arc
+            .iter()
+            .copied()
+            .min_by(|p, q| (p - x).abs().total_cmp(&(q - x).abs()))
+            .unwrap_or(f64::INFINITY);
+        if (nearest - x).abs() > 0.05 * h {
+            return Err(Error::InvalidInput(format!(
+                "node-to-node meshes: no disk node faces the block node at x = {x:.6} (nearest \
+                 {nearest:.6}, h = {h:.3e})"
+            )));
+        }
+        block.nodes[i][0] = nearest;
+    }
+    Ok(())
 }
 
 impl Scene {
