@@ -742,6 +742,8 @@ impl ContactAnalysis {
             self.close_nearest(&surfaces, &mut states);
         }
         let mut history: Vec<Vec<Vec<NodeState>>> = vec![states.clone()];
+        let mut locked: Vec<(usize, usize)> = Vec::new();
+        let mut lock_rounds = 0;
         let mut records = Vec::new();
         for iteration in 1..=self.options.max_iterations {
             let system = self.build_system(&surfaces, &states, &uc, &startc)?;
@@ -762,8 +764,17 @@ impl ContactAnalysis {
             let x = self.positions(&uc_new);
             let new_surfaces = self.surfaces(&x)?;
             let tractions = system.tractions(&tau, &states, &self.pairs);
-            let (new_states, changes) =
+            let (mut new_states, mut changes) =
                 self.update_states(&states, &tractions, &new_surfaces, &x, &uc_new, &startc)?;
+            // a node locked in slip does not return to stick in this increment
+            for (p, k) in locked.iter().copied() {
+                if matches!(states[p][k], NodeState::Slip { .. })
+                    && new_states[p][k] == NodeState::Stick
+                {
+                    new_states[p][k] = states[p][k];
+                    changes -= 1;
+                }
+            }
             let r = change_ratio(&uc_new, &uc, &startc);
             let (active, stick, slip) = count(&states);
             let record = IterationRecord {
@@ -802,6 +813,21 @@ impl ContactAnalysis {
             }
             if changes > 0 {
                 if let Some(j) = history.iter().position(|h| *h == new_states) {
+                    // a node at the edge of the friction cone can alternate between stick
+                    // (which violates the cone) and slip (whose slip reverses): it sits on the
+                    // cone with a vanishing slip, so it is locked in slip and the search
+                    // goes on (at most LOCK_ROUNDS times per increment)
+                    let flips = stick_slip_flips(&history[j], &states);
+                    if !flips.is_empty() && lock_rounds < LOCK_ROUNDS {
+                        lock_rounds += 1;
+                        for &(p, k, slip) in &flips {
+                            locked.push((p, k));
+                            new_states[p][k] = slip;
+                        }
+                        history = vec![new_states.clone()];
+                        states = new_states;
+                        continue;
+                    }
                     let node = self.flipping_node(&history[j], &states);
                     return Err(Error::Contact(format!(
                         "increment {number}: the contact set cycles (iteration {iteration} \
@@ -860,6 +886,25 @@ fn uncovered(surfaces: &[ContactSurface], states: &[Vec<NodeState>]) -> Result<(
         }
     }
     Ok(())
+}
+
+/// How many times per increment nodes may be locked in slip to break a stick/slip cycle.
+const LOCK_ROUNDS: usize = 3;
+
+/// `(pair, node, the slip state)` of the nodes that are stick in one state set and slip in the
+/// other.
+fn stick_slip_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, usize, NodeState)> {
+    let mut flips = Vec::new();
+    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
+        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
+            match (x, y) {
+                (NodeState::Stick, slip @ NodeState::Slip { .. })
+                | (slip @ NodeState::Slip { .. }, NodeState::Stick) => flips.push((p, k, slip)),
+                _ => {}
+            }
+        }
+    }
+    flips
 }
 
 /// `R = |u_new - u_old| / |u_new - u_start|` over the contact dofs (0 when nothing moved).
