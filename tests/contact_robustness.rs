@@ -30,7 +30,10 @@ fn frictional_pressing_on_a_fine_mesh_converges() {
     for n in &nodes {
         match n.state {
             NodeState::Slip { .. } => {
-                assert!((n.ts.abs() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max, "{n:?}")
+                assert!(
+                    (n.ts.abs() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max,
+                    "{n:?}"
+                )
             }
             NodeState::Stick => assert!(n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9), "{n:?}"),
             NodeState::Open => assert_eq!((n.tn, n.ts), (0.0, 0.0)),

@@ -405,7 +405,7 @@ pub struct TimeSplit {
     pub assembly: f64,
     /// Factorization of `K` (once).
     pub factorization: f64,
-    /// Contact-boundary flexibility (batched solves, once).
+    /// Contact-boundary flexibility (read off the factor, once).
     pub flexibility: f64,
     /// Load solves `K^-1 (f - K_fp q_p)` (at most one per increment).
     pub load_solves: f64,

@@ -23,9 +23,11 @@
 //!
 //! Columns of `Gc` live on the contact nodes' dofs only, so `K^-1` is needed only there: the
 //! contact-boundary flexibility `F = E^T K^-1 E` (`E` selects the free dofs of the contact
-//! nodes) is built once per analysis with batched solves, and every iteration is small dense
-//! algebra: `S t = rows . (b - u0)` with `S = rows^T F cols`. The full displacement field is
-//! recovered once per converged increment (one more solve).
+//! nodes) is read off the factor once per analysis: with those dofs eliminated last,
+//! `F = (L22 L22^T)^-1` from the trailing block of `L` (no solves), and every iteration is
+//! small dense algebra: `S t = rows . (b - u0)` with `S = rows^T F cols`. The load solve
+//! `u0` is reused when a load is a combination of earlier ones, and the full displacement
+//! field is recovered only when asked for (one solve).
 //!
 //! # The iteration (per increment)
 //! Start from the last converged states; each iteration solves the small system, re-evaluates
@@ -183,7 +185,7 @@ pub struct Timings {
     pub assembly: f64,
     /// Symbolic analysis and numeric factorization of `K` (once per analysis).
     pub factorization: f64,
-    /// Contact-boundary flexibility `F` (batched solves, once per analysis).
+    /// Contact-boundary flexibility `F`, read off the factor's trailing block (once per analysis).
     pub flexibility: f64,
     /// The load solves `u0 = K^-1 (f - K_fp q_p)`, one per increment.
     pub load_solves: f64,
