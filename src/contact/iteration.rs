@@ -65,7 +65,8 @@ pub struct ContactOptions {
     pub tolerance: f64,
     /// Iteration cap per increment.
     pub max_iterations: usize,
-    /// Penetration tolerance, relative to the mean A segment length.
+    /// Penetration tolerance, relative to the increment's displacement scale (the largest
+    /// motion of a contact dof, bounded by the mean A segment length).
     pub gap_tolerance: f64,
     /// Tension tolerance, relative to the largest `|tn|`.
     pub tension_tolerance: f64,
@@ -496,11 +497,18 @@ impl ContactAnalysis {
                 rhs.push(f - force0[d]);
             }
         }
+        let stiffness_scale = self
+            .model
+            .materials
+            .iter()
+            .map(|m| m.youngs * m.thickness)
+            .fold(0.0, f64::max);
         (!directions.is_empty()).then(|| Border {
             directions,
             response: plate.response.clone(),
             stiffness: plate.stiffness,
             rhs,
+            stiffness_scale,
         })
     }
 
@@ -973,6 +981,25 @@ struct Border {
     stiffness: nalgebra::Matrix2<f64>,
     /// `F_d - force0_d` per force-controlled direction.
     rhs: Vec<f64>,
+    /// Stiffness scale of the bodies (largest `E t`), against which `D` counts as zero.
+    stiffness_scale: f64,
+}
+
+impl Border {
+    /// A force-controlled direction is held only if the plate's own stiffness holds it or an
+    /// active constraint row sees the plate's motion in it (relative to the sizes of the row
+    /// and of the motion); otherwise the bordered system is singular whatever its round-off.
+    fn unheld(&self, rows: &[Sparse]) -> Option<usize> {
+        self.directions.iter().copied().find(|&d| {
+            let w = &self.response[d];
+            let w_norm = dot_dense(w, w).sqrt();
+            let seen = rows.iter().any(|row| {
+                let row_norm = row.iter().map(|(_, v)| v * v).sum::<f64>().sqrt();
+                dot(row, w).abs() > 1e-9 * row_norm * w_norm
+            });
+            !seen && self.stiffness[(d, d)].abs() <= 1e-10 * self.stiffness_scale
+        })
+    }
 }
 
 /// Which row of a node an unknown belongs to.
@@ -1034,6 +1061,14 @@ impl SmallSystem {
             rhs[i] = b - dot(row, u0);
         }
         if let Some(b) = border {
+            if let Some(d) = b.unheld(&self.rows) {
+                return Err(Error::Singular(format!(
+                    "the plate's {} translation is force-controlled but nothing holds it: \
+                     frictionless contact cannot resist tangential motion; control it by \
+                     displacement or add friction",
+                    ["x", "y"][d]
+                )));
+            }
             for (a, &d) in b.directions.iter().enumerate() {
                 for (i, row) in self.rows.iter().enumerate() {
                     s[(i, m + a)] = dot(row, &b.response[d]);
@@ -1054,7 +1089,10 @@ impl SmallSystem {
                     .into(),
             )
         };
-        let condition = condition_estimate(&s).ok_or_else(singular)?;
+        // beyond this the solution has fewer than 3 correct digits: treat it as singular
+        let condition = condition_estimate(&s)
+            .filter(|&c| c < 1e-3 / f64::EPSILON)
+            .ok_or_else(singular)?;
         let tau = s
             .lu()
             .solve(&rhs)
@@ -1183,9 +1221,16 @@ impl ContactAnalysis {
         startc: &[f64],
     ) -> Result<(Vec<Vec<NodeState>>, usize)> {
         let mut new = states.to_vec();
+        // penetration is judged against the increment's own displacement scale (bounded by the
+        // segment length), so that tiny loads still close the contact
+        let motion = uc
+            .iter()
+            .zip(startc)
+            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
         for (p, surface) in surfaces.iter().enumerate() {
             let mu = self.pairs[p].friction;
             let h = self.mean_segment(p, x);
+            let gap_tolerance = self.options.gap_tolerance * motion.clamp(1e-12 * h, h);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
             // tangential slip of A relative to B since the increment began, per unit length
             let slip_since_start = |node: &geometry::ContactNode| {
@@ -1216,7 +1261,7 @@ impl ContactAnalysis {
                 let (tn, ts) = tractions[p][k];
                 match states[p][k] {
                     NodeState::Open => {
-                        if node.normal_gap < -self.options.gap_tolerance * h {
+                        if node.normal_gap < -gap_tolerance {
                             activate(k, &mut new)?;
                         }
                     }
@@ -1258,15 +1303,23 @@ impl ContactAnalysis {
                     let r = [x[j][0] - s0[0], x[j][1] - s0[1]];
                     let xi = (r[0] * d[0] + r[1] * d[1]) / len2;
                     let g = r[0] * n[0] + r[1] * n[1];
-                    let tol = self.options.gap_tolerance * h;
                     // a B node facing an A node (node-to-node) is that node's weighted gap's
                     // business: only B nodes strictly inside the segment are checked here
-                    if (1e-3..=1.0 - 1e-3).contains(&xi)
-                        && g < -tol
-                        && g > -self.options.search_distance * h
-                    {
-                        activate(if xi < 0.5 { k } else { k + 1 }, &mut new)?;
+                    if !(1e-3..=1.0 - 1e-3).contains(&xi) || g >= -gap_tolerance {
+                        continue;
                     }
+                    if g <= -self.options.search_distance * h {
+                        return Err(Error::Contact(format!(
+                            "B node {j} penetrates A segment {} -> {} by {:.3e}, more than the \
+                             search distance ({:.3e}): reduce the load step or widen \
+                             search_distance",
+                            w[0],
+                            w[1],
+                            -g,
+                            self.options.search_distance * h
+                        )));
+                    }
+                    activate(if xi < 0.5 { k } else { k + 1 }, &mut new)?;
                 }
             }
         }
