@@ -58,6 +58,9 @@ stage=$build/stage
 step "cargo build --release --locked"
 cargo build --release --locked
 
+step "regression guard: accuracy at fixed meshes against docs/bench/guard.csv"
+cargo run --release --locked --quiet -- bench guard
+
 step "cargo test --locked (unit, integration, C API, header freshness, C examples via cc)"
 log=$(mktemp)
 cargo test --locked 2>&1 | tee "$log"

@@ -202,3 +202,53 @@ pub fn contact_run(n: usize) -> Result<ContactRun> {
         iterations: analysis.records().len(),
     })
 }
+
+/// One accuracy figure watched by the regression guard: its name and value (an error: smaller
+/// is better).
+#[derive(Debug, Clone, PartialEq)]
+pub struct GuardValue {
+    /// What it measures.
+    pub name: String,
+    /// The error (relative, dimensionless).
+    pub value: f64,
+}
+
+/// The accuracy figures the regression guard watches (`hycon bench guard`): the Hertz scene at
+/// 8 and 16 elements per half-width (final-increment L2 error of the multiplier pressure and
+/// the absolute relative errors of half-width and peak) and the 7-beta element on Cook's
+/// membrane at 8 x 8. About a second in release.
+pub fn guard_values() -> Result<Vec<GuardValue>> {
+    use crate::contact::iteration::ContactOptions;
+    use crate::contact::scene::DiskOnBlock;
+    let mut values = Vec::new();
+    for n in [8, 16] {
+        let scene = DiskOnBlock {
+            elements_per_half_width: n,
+            ..Default::default()
+        }
+        .build()?;
+        let mut analysis = scene.analysis(ContactOptions::default())?;
+        let approach = scene.calibrated_approach(&mut analysis)?;
+        let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+        analysis.increment(&f, &scene.prescribed(approach, 0.0))?;
+        let c = scene.compare(&analysis)?;
+        let mut push = |what: &str, value: f64| {
+            values.push(GuardValue {
+                name: format!("hertz n={n} {what}"),
+                value,
+            })
+        };
+        push("L2 pressure error", c.l2_error);
+        push(
+            "half-width error",
+            (c.half_width / c.hertz.half_width - 1.0).abs(),
+        );
+        push("peak error", (c.peak / c.hertz.peak - 1.0).abs());
+    }
+    let cook = crate::cases::cook_membrane(Formulation::Hybrid, 8)?;
+    values.push(GuardValue {
+        name: "cook 8x8 hybrid error".into(),
+        value: ((cook - crate::cases::COOK_CONVERGED) / crate::cases::COOK_CONVERGED).abs(),
+    });
+    Ok(values)
+}

@@ -170,6 +170,16 @@ enum Bench {
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
         n: Vec<usize>,
     },
+    /// The regression guard: accuracy at fixed meshes against the committed values; fails
+    /// (exit 1) when an error got worse. Timings are printed, never checked.
+    Guard {
+        /// The committed values (`name,value` lines).
+        #[arg(long, default_value = "docs/bench/guard.csv")]
+        reference: PathBuf,
+        /// Write the current values to the reference file instead of checking.
+        #[arg(long)]
+        write: bool,
+    },
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -376,6 +386,7 @@ fn bench(what: Bench) -> AnyResult {
                 println!("  {:<26} {:>8.0} ns/element", k.kind, k.nanoseconds);
             }
         }
+        Bench::Guard { reference, write } => guard(&reference, write)?,
         Bench::Contact { n } => {
             println!(
                 "{:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",
@@ -779,4 +790,53 @@ fn print_overview(all: &[Example], seconds: f64) {
         }
     }
     println!("   all examples: {seconds:.2} s");
+}
+
+/// Compare the guard values with the committed ones (worse by more than 1e-6 relative fails:
+/// round-off across machines stays far below that) or write them.
+fn guard(reference: &Path, write: bool) -> AnyResult {
+    let clock = Instant::now();
+    let values = hycon::bench::guard_values()?;
+    println!(
+        "regression guard computed in {:.2} s (printed, not checked)",
+        clock.elapsed().as_secs_f64()
+    );
+    if write {
+        let text: String = values
+            .iter()
+            .map(|v| format!("{},{:.17e}\n", v.name, v.value))
+            .collect();
+        std::fs::write(reference, text)?;
+        println!("written: {}", reference.display());
+        return Ok(());
+    }
+    let committed = std::fs::read_to_string(reference)
+        .map_err(|e| format!("cannot read {}: {e}", reference.display()))?;
+    let mut worse = Vec::new();
+    for v in &values {
+        let old: f64 = committed
+            .lines()
+            .find_map(|l| l.strip_prefix(&format!("{},", v.name)))
+            .ok_or_else(|| format!("{} has no value for {:?}", reference.display(), v.name))?
+            .trim()
+            .parse()?;
+        let verdict = if v.value > old * (1.0 + 1e-6) + 1e-15 {
+            "WORSE"
+        } else {
+            "ok"
+        };
+        println!(
+            "  {:<32} committed {old:.6e}  now {:.6e}  {verdict}",
+            v.name, v.value
+        );
+        if verdict == "WORSE" {
+            worse.push(v.name.clone());
+        }
+    }
+    if worse.is_empty() {
+        println!("regression guard: {} values, none worse", values.len());
+        Ok(())
+    } else {
+        Err(format!("regression guard: worse than committed: {worse:?}").into())
+    }
 }
