@@ -1,6 +1,6 @@
-//! The committed C header `include/hycon.h` must be what cbindgen generates from `src/ffi.rs`
-//! with `cbindgen.toml`. Regenerate with `HYCON_BLESS=1 cargo test --test header_fresh` (or the
-//! cbindgen 0.29.4 CLI: `cbindgen --config cbindgen.toml --output include/hycon.h src/ffi.rs`).
+//! The committed C header `include/hycon.h` must be what cbindgen generates for the crate with
+//! `cbindgen.toml`. Regenerate with `HYCON_BLESS=1 cargo test --test header_fresh` (or the
+//! cbindgen 0.29.4 CLI: `cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`).
 
 use std::path::Path;
 
@@ -11,9 +11,9 @@ fn generate() -> Vec<u8> {
     let mut fresh = Vec::new();
     cbindgen::Builder::new()
         .with_config(config)
-        .with_src(dir.join("src/ffi.rs"))
+        .with_crate(dir)
         .generate()
-        .expect("cbindgen failed on src/ffi.rs")
+        .expect("cbindgen failed on the crate")
         .write(&mut fresh);
     fresh
 }
