@@ -53,11 +53,89 @@
 // Largest number of stress parameters of one element.
 #define HYCON_MAX_BETA 12
 
+// Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
+#define HYCON_FIXED -1
+
+// A contact analysis: `K` factored once (or the host's solver), the converged state, the
+// records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
+// `hycon_contact_free`. Thread safety: a `HyconContact` may be moved between threads but must
+// not be used from two threads at once (no internal locking); distinct handles share nothing
+// and may run concurrently. Callbacks run on the calling thread.
+typedef struct HyconContact HyconContact;
+
+// A host's contact description (host-assembly API): its contact polylines and its stiffness
+// (CSR) or solve callback. Create with `hycon_host_new`, free with `hycon_host_free`.
+// Thread safety: as `HyconModel`.
+typedef struct HyconHost HyconHost;
+
+// A model being described (model API): mesh, materials, prescribed directions, contact
+// pairs, optional rigid plate. Create with `hycon_model_new`, free with `hycon_model_free`.
+// Thread safety: a `HyconModel` may be used from any thread, but not from two at once;
+// distinct models are independent.
+typedef struct HyconModel HyconModel;
+
 // Result of every status-returning function: `0` OK, `< 0` error, `> 0` warning.
 typedef int32_t HyconStatus;
 
-// Element formulation selector, one of the `HYCON_ELEMENT_*` values.
-typedef int32_t HyconElementKind;
+// Sparse Cholesky library that factors `K`, one of `HYCON_BACKEND_*`.
+typedef int32_t HyconBackend;
+
+// What happened in one iteration of the contact search (also passed to the monitor).
+typedef struct HyconIterationRecord {
+    // Increment number (1-based).
+    size_t increment;
+    // Iteration within the increment (1-based).
+    size_t iteration;
+    // Active (stick + slip) A nodes in this iteration's solve.
+    size_t active;
+    // Stick nodes among them.
+    size_t stick;
+    // Slip nodes among them.
+    size_t slip;
+    // State changes decided after the solve.
+    size_t changes;
+    // Convergence measure `R = |dU(i+1) - dU(i)| / |dU(i+1)|` over the contact dofs.
+    double r;
+    // Estimated 1-norm condition number of the small contact system (1 when empty).
+    double condition;
+} HyconIterationRecord;
+
+// Called with every iteration record; return 0 to go on, nonzero to stop the increment (it
+// then fails with `HYCON_ERROR_CALLBACK` and the last converged state is kept). Called on the
+// thread that called `hycon_contact_increment*`. Must not unwind (no C++ exceptions, no
+// longjmp) through hycon.
+typedef int32_t (*HyconMonitorFn)(void *user_data, const struct HyconIterationRecord *record);
+
+// Parameters of the contact iteration. Get the defaults with `hycon_contact_options_default`,
+// then override fields. Tolerances are relative (see each field), so results do not change
+// when units are rescaled.
+typedef struct HyconContactOptions {
+    // Convergence tolerance on `R` (default 1e-6; the paper used 0.01).
+    double tolerance;
+    // Penetration tolerance, relative to the increment's displacement scale (default 1e-9).
+    double gap_tolerance;
+    // Tension tolerance, relative to the largest `|tn|` (default 1e-9).
+    double tension_tolerance;
+    // Friction-cone tolerance, relative to `mu |tn|` (default 1e-9).
+    double friction_tolerance;
+    // Slip reversal tolerance, relative to the mean A segment length (default 1e-6).
+    double slip_tolerance;
+    // B segments farther than this from an A segment, relative to the mean A segment length,
+    // are not paired with it (default 4).
+    double search_distance;
+    // Iteration cap per increment (default 60).
+    uint32_t max_iterations;
+    // Cycle policy: how many times per increment nodes alternating between stick and slip are
+    // locked in slip before a cycling contact set fails the increment (default 3; 0 fails at
+    // the first cycle).
+    uint32_t lock_rounds;
+    // Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`).
+    HyconBackend backend;
+    // Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
+    HyconMonitorFn monitor;
+    // Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.
+    void *monitor_data;
+} HyconContactOptions;
 
 // Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`.
 typedef int32_t HyconAnalysis;
@@ -73,6 +151,135 @@ typedef struct HyconMaterial {
     // `HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS`.
     HyconAnalysis analysis;
 } HyconMaterial;
+
+// Element formulation selector, one of the `HYCON_ELEMENT_*` values.
+typedef int32_t HyconElementKind;
+
+// Directions of a prescribed displacement, a bit mask.
+typedef int32_t HyconDirections;
+
+// Which part of a symmetric CSR matrix is given, one of `HYCON_CSR_*`.
+typedef int32_t HyconTriangle;
+
+// The host's linear solver: solve `K x_j = rhs_j` for `nrhs` right-hand sides, `rhs` and `x`
+// both `n x nrhs` column-major (`rhs` is read-only, `x` is written; they never overlap).
+// Return 0 on success, nonzero on failure (the hycon call then fails with
+// `HYCON_ERROR_CALLBACK`). hycon calls it with many columns at once: at contact setup with unit
+// right-hand sides (at most 64 columns per call) to build the boundary flexibility, and with one
+// column per new load and per displacement recovery. Called on the thread that calls into the
+// `HyconContact`. Must not unwind through hycon.
+typedef int32_t (*HyconSolveFn)(void *user_data, size_t n, size_t nrhs, const double *rhs, double *x);
+
+// Summary of a converged increment.
+typedef struct HyconIncrementInfo {
+    // Increment number (1-based).
+    size_t increment;
+    // Iterations used.
+    size_t iterations;
+    // Active (stick + slip) A nodes at convergence.
+    size_t active;
+    // Slip nodes at convergence.
+    size_t slip;
+} HyconIncrementInfo;
+
+// How a plate translation is driven in an increment, one of `HYCON_PLATE_*`.
+typedef int32_t HyconPlateControl;
+
+// State of an A node, one of `HYCON_NODE_*`.
+typedef int32_t HyconNodeState;
+
+// Converged results at one A node (multiplier side).
+typedef struct HyconNodeResult {
+    // Node id (the caller's numbering).
+    size_t node;
+    // `HYCON_NODE_OPEN`, `HYCON_NODE_STICK` or `HYCON_NODE_SLIP`.
+    HyconNodeState state;
+    // Slip direction along `tangent` of A relative to B (+1 or -1) for a slip node, else 0.
+    int32_t slip_sign;
+    // Normal traction on A (the multiplier; `< 0` compression, pressure `p = -tn`).
+    double tn;
+    // Tangential traction on A along `tangent`.
+    double ts;
+    // Nodal normal (A's outward), converged configuration.
+    double normal[2];
+    // Nodal tangent `(n_y, -n_x)`.
+    double tangent[2];
+    // Current position.
+    double position[2];
+    // Tributary length `integral M_k ds`.
+    double weight;
+    // Weighted normal gap per unit length (`< 0` penetration).
+    double gap;
+    // Equivalent nodal contact force on A, `sum_k F^A_kj t_k` (x, y).
+    double force[2];
+} HyconNodeResult;
+
+// Converged results at one B node (the opposite side).
+typedef struct HyconBNodeResult {
+    // Node id (the caller's numbering).
+    size_t node;
+    // `integral L^B_j ds` over the projected overlap (0 outside it).
+    double weight;
+    // Equivalent nodal contact force on B (x, y).
+    double force[2];
+    // Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
+    double pressure;
+} HyconBNodeResult;
+
+// Where the time of an analysis went (wall-clock seconds, accumulated).
+typedef struct HyconTimings {
+    // Sparse assembly of `K` (model API).
+    double assembly;
+    // Symbolic analysis and numeric factorization of `K` (once per analysis).
+    double factorization;
+    // Contact-boundary flexibility (from the factor, or from host solves).
+    double flexibility;
+    // Load solves.
+    double load_solves;
+    // The contact iterations.
+    double iterations;
+    // Displacement recovery.
+    double recovery;
+} HyconTimings;
+
+// Contact-element quantities of one A node in the converged configuration (the reference one
+// before the first increment), for hosts that assemble the mixed system themselves.
+typedef struct HyconContactNode {
+    // Node id (the caller's numbering).
+    size_t node;
+    // `integral M_k ds` over the node's support.
+    double weight;
+    // Fraction of the support covered by B, in [0, 1].
+    double coverage;
+    // Nodal normal `n_k` (A's outward).
+    double normal[2];
+    // Nodal tangent `s_k = (n_y, -n_x)`.
+    double tangent[2];
+    // Weighted gap vector `R_C,k = integral M_k (x^A - x^B) ds` (x, y).
+    double gap[2];
+    // `-n_k . R_C,k / covered weight`: normal gap as a length (`< 0` penetration; infinite
+    // when nothing is covered).
+    double normal_gap;
+} HyconContactNode;
+
+// Which body a coupling entry belongs to, one of `HYCON_SIDE_*`.
+typedef int32_t HyconSide;
+
+// One entry of the contact-element matrices: `F^A_kj = integral M_k L^A_j ds` or
+// `F^B_kj = integral M_k L^B_j(x^B) ds` (both >= 0). The constraint row of A node `k` is
+// `sum_j F^A_kj u_j - sum_j F^B_kj u_j` (per component).
+typedef struct HyconCouplingEntry {
+    // Index `k` of the A node within the pair's A polyline.
+    size_t row;
+    // Node id `j` (the caller's numbering).
+    size_t node;
+    // `HYCON_SIDE_A` or `HYCON_SIDE_B`.
+    HyconSide side;
+    // The value.
+    double value;
+} HyconCouplingEntry;
+
+
 
 
 
@@ -108,6 +315,10 @@ typedef struct HyconMaterial {
 // of a surface); the last converged state is kept.
 #define HYCON_ERROR_CONTACT -8
 
+// A caller-supplied callback (solve or monitor) returned a nonzero status or non-finite
+// values; the last converged state is kept.
+#define HYCON_ERROR_CALLBACK -9
+
 // Internal error: a Rust panic was caught at the boundary. Please report it with the message.
 #define HYCON_ERROR_PANIC -99
 
@@ -125,6 +336,51 @@ typedef struct HyconMaterial {
 
 // Plane stress (`sigma_z = 0`).
 #define HYCON_PLANE_STRESS 2
+
+// faer (always available; the default).
+#define HYCON_BACKEND_FAER 1
+
+// CHOLMOD from SuiteSparse (only when hycon was built with the `suitesparse` feature).
+#define HYCON_BACKEND_CHOLMOD 2
+
+// x only.
+#define HYCON_X 1
+
+// y only.
+#define HYCON_Y 2
+
+// x and y.
+#define HYCON_XY 3
+
+// Not in contact.
+#define HYCON_NODE_OPEN 1
+
+// In contact, no slip since the increment began.
+#define HYCON_NODE_STICK 2
+
+// In contact and sliding (`ts = mu sign tn`).
+#define HYCON_NODE_SLIP 3
+
+// The multiplier side A: the entry is `F^A_kj`.
+#define HYCON_SIDE_A 1
+
+// The opposite side B: the entry is `F^B_kj`.
+#define HYCON_SIDE_B 2
+
+// Every entry (checked to be symmetric to 1e-10 of the largest entry).
+#define HYCON_CSR_FULL 1
+
+// Entries with column <= row.
+#define HYCON_CSR_LOWER 2
+
+// Entries with column >= row.
+#define HYCON_CSR_UPPER 3
+
+// The value is the plate's total displacement in that direction.
+#define HYCON_PLATE_DISPLACEMENT 1
+
+// The value is the total force on the plate in that direction (its motion is solved for).
+#define HYCON_PLATE_FORCE 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -155,6 +411,368 @@ size_t hycon_last_error_message(char *buf, size_t len);
 // ..., `"HYCON_WARNING"` for any positive value, `"HYCON_ERROR_UNKNOWN"` otherwise). The
 // string is owned by the library and valid for the life of the process; do not free it.
 const char *hycon_status_name(HyconStatus status);
+
+// For tests only: panics inside the boundary and so returns `HYCON_ERROR_PANIC`, with the
+// panic message in the last error message. Proves that panics never cross into the host and
+// are not printed to its stderr. Do not call it in production code.
+HyconStatus hycon_debug_panic(void);
+
+// Fill `out` with the default options (the values documented per field, no monitor).
+//
+// # Safety
+// `out` must be NULL or point to a writable `HyconContactOptions`.
+HyconStatus hycon_contact_options_default(struct HyconContactOptions *out);
+
+// Create a model from its mesh and materials.
+//
+// * `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`;
+// * elements in compressed form: element `e` has the nodes
+//   `element_nodes[element_offsets[e] .. element_offsets[e + 1]]` (4 to 6 node ids,
+//   counter-clockwise: corners plus mid-side nodes of transition elements, in boundary
+//   order); `element_offsets` has `n_elements + 1` entries starting at 0;
+// * `element_materials`: `n_elements` indices into `materials`, or NULL (all use material 0);
+// * `kind`: the formulation of every element (`HYCON_ELEMENT_*`; Pian-Sumihara and Q4 take
+//   4-node elements only).
+//
+// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT`
+// (lengths, unknown node ids, non-finite coordinates, unknown kind),
+// `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex
+// element, named by index).
+//
+// # Safety
+// `out` must point to a writable pointer; each array must be NULL or hold the stated number of
+// readable values.
+HyconStatus hycon_model_new(struct HyconModel **out,
+                            const double *coords,
+                            size_t n_nodes,
+                            const size_t *element_offsets,
+                            const size_t *element_nodes,
+                            size_t n_elements,
+                            const size_t *element_materials,
+                            const struct HyconMaterial *materials,
+                            size_t n_materials,
+                            HyconElementKind kind);
+
+// Free a model (NULL is a no-op). Analyses made from it keep their own copy.
+//
+// # Safety
+// `model` must be NULL or a live handle from `hycon_model_new`, not used afterwards.
+void hycon_model_free(struct HyconModel *model);
+
+// Prescribe the displacement of `nodes` in `directions` (`HYCON_X`, `HYCON_Y` or `HYCON_XY`).
+// The values are given per increment (`prescribed` of `hycon_contact_increment`). Contact
+// nodes may be prescribed too.
+//
+// # Safety
+// `model` must be a live handle; `nodes` NULL or `n` readable ids.
+HyconStatus hycon_model_prescribe(struct HyconModel *model,
+                                  const size_t *nodes,
+                                  size_t n,
+                                  HyconDirections directions);
+
+// Add a contact pair: the multiplier-side polyline `a` and the opposite polyline `b` (node
+// ids, each ordered with its body on the left: consecutive nodes must be the two ends of an
+// element edge of that body, in the element's counter-clockwise order) and the Coulomb
+// friction coefficient `friction >= 0` (0: frictionless). The pair's index (0, 1, ...) is
+// written to `index` unless it is NULL.
+//
+// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for unknown node ids, fewer than 2 nodes, repeated
+// nodes, a node in both polylines, consecutive nodes that are not an element edge with the
+// body on the left (naming the segment), a bad friction coefficient.
+//
+// # Safety
+// `model` must be a live handle; `a`, `b` NULL or holding `n_a`, `n_b` ids.
+HyconStatus hycon_model_add_pair(struct HyconModel *model,
+                                 const size_t *a,
+                                 size_t n_a,
+                                 const size_t *b,
+                                 size_t n_b,
+                                 double friction,
+                                 size_t *index);
+
+// Tie `nodes` (a face of one body, none of them a contact node) to a rigid plate whose x and
+// y translations are driven per increment by `hycon_contact_increment_plate`, each by
+// displacement or by force. The nodes are prescribed in x and y by this call. A body held only
+// by the plate and by contact (a pressed disk) then takes a prescribed force.
+//
+// # Safety
+// `model` must be a live handle; `nodes` NULL or `n` readable ids.
+HyconStatus hycon_model_set_plate(struct HyconModel *model, const size_t *nodes, size_t n);
+
+// Start a contact analysis of a model (copied: the model may be freed or changed afterwards):
+// validate, assemble, factor `K` once with the contact dofs last and read the contact-boundary
+// flexibility off the factor. `options` NULL means the defaults.
+//
+// Errors: `HYCON_ERROR_SINGULAR` (a body not held against rigid motion: the message names it),
+// `HYCON_ERROR_BAD_ELEMENT`, `HYCON_ERROR_INVALID_ARGUMENT` (no contact pair, bad options),
+// `HYCON_ERROR_SOLVER`.
+//
+// # Safety
+// `out` must point to a writable pointer, `model` be a live handle, `options` NULL or
+// readable.
+HyconStatus hycon_contact_new(struct HyconContact **out,
+                              const struct HyconModel *model,
+                              const struct HyconContactOptions *options);
+
+// Create a host description for a system of `n_equations` equations (the host's `K` after its
+// boundary conditions: symmetric positive definite).
+//
+// # Safety
+// `out` must point to a writable pointer.
+HyconStatus hycon_host_new(struct HyconHost **out, size_t n_equations);
+
+// Free a host description (NULL is a no-op). Analyses made from it are independent of it.
+//
+// # Safety
+// `host` must be NULL or a live handle from `hycon_host_new`, not used afterwards.
+void hycon_host_free(struct HyconHost *host);
+
+// Add a contact pair in the host's numbering: for each polyline (A, the multiplier side, and
+// B), `n` node ids, their `2 n` reference coordinates `x0 y0 x1 y1 ...` and `2 n` equation
+// numbers (`u_x`, `u_y` per node; `HYCON_FIXED` for a dof the host holds at zero). Each
+// polyline is ordered with its body on the left. A node in several pairs must be given the
+// same coordinates and equations each time. `friction >= 0` is the Coulomb coefficient. The
+// pair's index is written to `index` unless it is NULL. The arrays are copied.
+//
+// # Safety
+// `host` must be a live handle; every array NULL or holding the stated number of values.
+HyconStatus hycon_host_add_pair(struct HyconHost *host,
+                                const size_t *a_nodes,
+                                const double *a_coords,
+                                const int64_t *a_equations,
+                                size_t n_a,
+                                const size_t *b_nodes,
+                                const double *b_coords,
+                                const int64_t *b_equations,
+                                size_t n_b,
+                                double friction,
+                                size_t *index);
+
+// Give the host's stiffness as a CSR matrix over its `n_equations` equations (copied):
+// `row_ptr` has `n_equations + 1` entries starting at 0, `columns` and `values` have
+// `row_ptr[n_equations]`; `triangle` says which part is stored (`HYCON_CSR_FULL`, checked
+// symmetric; `HYCON_CSR_LOWER`; `HYCON_CSR_UPPER`). hycon factors it once (faer, or the
+// options' backend) when the analysis starts. Replaces an earlier matrix or solver.
+//
+// # Safety
+// `host` must be a live handle; the arrays NULL or of the stated lengths.
+HyconStatus hycon_host_set_csr(struct HyconHost *host,
+                               const size_t *row_ptr,
+                               const size_t *columns,
+                               const double *values,
+                               HyconTriangle triangle);
+
+// Let the host solve with its own factorization: `solve(user_data, n, nrhs, rhs, x)` (see
+// `HyconSolveFn`). The function pointer and `user_data` are kept by this description and by
+// every analysis made from it, and called during `hycon_contact_new_host`, the increments and
+// displacement recovery; `user_data` (the host's factor) must outlive them. Replaces an
+// earlier matrix or solver. This is the path for distributed hosts (e.g. PETSc over MPI): hycon
+// only ever asks for solves and works on the contact dofs, which every rank can hold.
+//
+// # Safety
+// `host` must be a live handle; `solve` a valid function as documented.
+HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, void *user_data);
+
+// Start a contact analysis of a host's system: factor its CSR matrix once (the contact
+// equations last) and read the flexibility off the factor, or build the flexibility from
+// batched solves through its callback. `options` NULL means the defaults.
+//
+// Errors: `HYCON_ERROR_INVALID_ARGUMENT` (no pair, no stiffness or solver given),
+// `HYCON_ERROR_SINGULAR` (the CSR matrix is not positive definite: a body not held),
+// `HYCON_ERROR_CALLBACK` (the solver failed or returned non-finite values).
+//
+// # Safety
+// `out` must point to a writable pointer, `host` be a live handle, `options` NULL or
+// readable.
+HyconStatus hycon_contact_new_host(struct HyconContact **out,
+                                   const struct HyconHost *host,
+                                   const struct HyconContactOptions *options);
+
+// Free an analysis (NULL is a no-op).
+//
+// # Safety
+// `contact` must be NULL or a live handle, not used afterwards.
+void hycon_contact_free(struct HyconContact *contact);
+
+// Length of the load and displacement vectors: `2 * n_nodes` (model API) or `n_equations`
+// (host API).
+//
+// # Safety
+// `contact` must be a live handle, `n` writable.
+HyconStatus hycon_contact_field_len(const struct HyconContact *contact, size_t *n);
+
+// Apply one load increment with **total** values (from the reference state):
+// * model API: `load` = external nodal forces over all `2 * n_nodes` dofs (`u0 v0 u1 v1 ...`),
+//   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (others
+//   ignored);
+// * host API: `load` = the host's right-hand side over its equations (including the effect of
+//   its prescribed displacements), `prescribed` = (NULL, 0).
+//
+// On success the converged state advances and `info` (unless NULL) gets the summary. On
+// failure the last converged state is kept and the status says why: `HYCON_ERROR_CONTACT` (no
+// convergence, cycling contact set with the node named, penetration beyond the search
+// distance, contact reaching the end of a surface), `HYCON_ERROR_SINGULAR` (a body held only
+// by frictionless contact), `HYCON_ERROR_CALLBACK` (solver or monitor),
+// `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values, a plate analysis).
+//
+// # Safety
+// `contact` must be a live handle; arrays NULL or of the stated lengths; `info` NULL or
+// writable.
+HyconStatus hycon_contact_increment(struct HyconContact *contact,
+                                    const double *load,
+                                    size_t load_len,
+                                    const double *prescribed,
+                                    size_t prescribed_len,
+                                    struct HyconIncrementInfo *info);
+
+// As `hycon_contact_increment` for a model with a plate (`hycon_model_set_plate`): `control`
+// and `value` (2 entries each, x then y) drive the plate's translations
+// (`HYCON_PLATE_DISPLACEMENT`: total displacement; `HYCON_PLATE_FORCE`: total force on the
+// plate, its motion solved for).
+//
+// # Safety
+// As `hycon_contact_increment`; `control` and `value` must hold 2 values each.
+HyconStatus hycon_contact_increment_plate(struct HyconContact *contact,
+                                          const double *load,
+                                          size_t load_len,
+                                          const double *prescribed,
+                                          size_t prescribed_len,
+                                          const HyconPlateControl *control,
+                                          const double *value,
+                                          struct HyconIncrementInfo *info);
+
+// The converged plate displacement and the force the plate exerts on the body (2 values each,
+// x then y).
+//
+// # Safety
+// `contact` must be a live handle; `displacement` and `force` must hold 2 writable doubles.
+HyconStatus hycon_contact_plate(const struct HyconContact *contact,
+                                double *displacement,
+                                double *force);
+
+// The displacement of the last converged increment (total, from the reference state; zero
+// before the first) over the field (`hycon_contact_field_len` values): all dofs of a model,
+// the host's equations. Costs one solve on the first call after an increment.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable doubles.
+HyconStatus hycon_contact_displacement(struct HyconContact *contact, double *out, size_t len);
+
+// The contact forces of the last converged increment over the field (zero at a host's fixed
+// dofs): adding them to the load gives the right-hand side whose solution is the displacement
+// (`K u = load + forces`), for hosts that recover displacements and stresses themselves.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable doubles.
+HyconStatus hycon_contact_forces(const struct HyconContact *contact, double *out, size_t len);
+
+// Sizes of pair `pair`: nodes of its A and B polylines (either output may be NULL).
+//
+// # Safety
+// `contact` must be a live handle; outputs NULL or writable.
+HyconStatus hycon_contact_pair_size(const struct HyconContact *contact,
+                                    size_t pair,
+                                    size_t *n_a,
+                                    size_t *n_b);
+
+// Tractions way (b), the multipliers: converged results at the A nodes of `pair` (states,
+// `tn`, `ts`, frames, gaps, nodal forces); `out` needs the A node count.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs.
+HyconStatus hycon_contact_node_results(const struct HyconContact *contact,
+                                       size_t pair,
+                                       struct HyconNodeResult *out,
+                                       size_t len);
+
+// Tractions way (c), the B side: nodal forces, weights and pressures at the B nodes of `pair`;
+// `out` needs the B node count.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs.
+HyconStatus hycon_contact_b_node_results(const struct HyconContact *contact,
+                                         size_t pair,
+                                         struct HyconBNodeResult *out,
+                                         size_t len);
+
+// Tractions way (a), from the element stresses of body A (model API only: a host has its own
+// elements): `tn ts` per A node of `pair` in its nodal frame, `2 * n_a` doubles. Costs the
+// displacement recovery (one solve) if not done yet.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable doubles.
+HyconStatus hycon_contact_stress_tractions(struct HyconContact *contact,
+                                           size_t pair,
+                                           double *out,
+                                           size_t len);
+
+// Number of iteration records so far (all increments, failed ones excluded).
+//
+// # Safety
+// `contact` must be a live handle; `count` writable.
+HyconStatus hycon_contact_record_count(const struct HyconContact *contact, size_t *count);
+
+// Copy the iteration records `first .. first + len` into `out` (`first + len` must not exceed
+// `hycon_contact_record_count`).
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs.
+HyconStatus hycon_contact_records(const struct HyconContact *contact,
+                                  size_t first,
+                                  struct HyconIterationRecord *out,
+                                  size_t len);
+
+// Where the time went so far, and the number of numeric factorizations of `K` done by hycon
+// (1 per analysis; 0 when a host solves itself); either output may be NULL.
+//
+// # Safety
+// `contact` must be a live handle; outputs NULL or writable.
+HyconStatus hycon_contact_timings(struct HyconContact *contact,
+                                  struct HyconTimings *timings,
+                                  size_t *factorizations);
+
+// Contact-element quantities of the A nodes of `pair` in the converged configuration (the
+// reference one before the first increment): weights, frames, weighted gaps `R_C`, coverage.
+// `out` needs the A node count.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs.
+HyconStatus hycon_contact_element_nodes(const struct HyconContact *contact,
+                                        size_t pair,
+                                        struct HyconContactNode *out,
+                                        size_t len);
+
+// The contact-element matrices `F^A` and `F^B` of `pair` (converged configuration) as a list
+// of entries (row `k`, node `j`, side, value). Call with `out` NULL and `len` 0 to get the
+// entry count in `count`; then with a buffer of at least that many.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `count` writable.
+HyconStatus hycon_contact_coupling(const struct HyconContact *contact,
+                                   size_t pair,
+                                   struct HyconCouplingEntry *out,
+                                   size_t len,
+                                   size_t *count);
+
+// The constraint matrix `Kc` of `pair` (converged configuration) in CSR form: `2 n_a` rows,
+// row `2k` the normal constraint `n_k . (sum_j F^A_kj u_j - sum_j F^B_kj u_j)` and row `2k + 1`
+// the tangential one with `s_k`; columns are field indices (model dofs `2 node + direction`,
+// or host equations; a host's fixed dofs are left out). The mixed system of a host that
+// assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]` with the active rows.
+// Call with `columns` and `values` NULL and `capacity` 0 to get the entry count in `nnz`;
+// then with buffers of at least that many and `row_ptr` of `2 n_a + 1` entries.
+//
+// # Safety
+// `contact` must be a live handle; `row_ptr` NULL or `row_ptr_len` writable; `columns` and
+// `values` NULL or `capacity` writable each; `nnz` writable.
+HyconStatus hycon_contact_kc(const struct HyconContact *contact,
+                             size_t pair,
+                             size_t *row_ptr,
+                             size_t row_ptr_len,
+                             size_t *columns,
+                             double *values,
+                             size_t capacity,
+                             size_t *nnz);
 
 // Check one element's shape for a formulation: node count, finite coordinates, positive area,
 // counter-clockwise order, convexity (tolerances relative to the element size).
@@ -252,11 +870,6 @@ HyconStatus hycon_element_edge_traction(HyconElementKind kind,
                                         size_t edge,
                                         double s,
                                         double *out);
-
-// For tests only: panics inside the boundary and so returns `HYCON_ERROR_PANIC`, with the
-// panic message in the last error message. Proves that panics never cross into the host and
-// are not printed to its stderr. Do not call it in production code.
-HyconStatus hycon_debug_panic(void);
 
 #ifdef __cplusplus
 }  // extern "C"

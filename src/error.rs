@@ -62,6 +62,10 @@ pub enum Error {
     /// end of a surface); the last converged state is kept.
     #[error("contact: {0}")]
     Contact(String),
+    /// A caller-supplied callback (a host's solver, an iteration monitor) failed or asked to
+    /// stop; the last converged state is kept.
+    #[error("callback: {0}")]
+    Callback(String),
 }
 
 fn fmt_index(e: Option<usize>) -> String {

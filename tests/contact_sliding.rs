@@ -291,7 +291,7 @@ fn assert_hertzian(what: &str, k: usize, p: &Pressure) {
 /// Sum over `nodes` of `K q - f` (x, y): the force the rest of the model exerts on them.
 fn resultant(analysis: &mut ContactAnalysis, nodes: &[usize]) -> [f64; 2] {
     let q = analysis.displacement().unwrap().to_vec();
-    let model = analysis.model();
+    let model = analysis.model().unwrap();
     let kq = model.internal_forces(&q).unwrap();
     let f = model.external_forces();
     nodes.iter().fold([0.0, 0.0], |s, &n| {

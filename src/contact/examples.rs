@@ -438,10 +438,10 @@ fn time_split(
 ) -> Result<TimeSplit> {
     let t = analysis.timings();
     let clock = Instant::now();
-    let mut system = LinearSystem::new(analysis.model())?;
+    let mut system = LinearSystem::new(analysis.model()?)?;
     let setup = clock.elapsed().as_secs_f64();
     let clock = Instant::now();
-    system.solve_for(analysis.model(), f, qp)?;
+    system.solve_for(analysis.model()?, f, qp)?;
     let one_solve = clock.elapsed().as_secs_f64();
     let linear = setup + one_solve;
     Ok(TimeSplit {
@@ -602,7 +602,7 @@ impl Path {
             calibration: self.calibration,
             increments: self.increments,
             timings,
-            model: self.analysis.model().clone(),
+            model: self.analysis.model()?.clone(),
         })
     }
 }

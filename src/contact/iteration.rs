@@ -40,11 +40,14 @@
 //! stops the increment with an error naming the node; so does the iteration cap. A failed
 //! increment leaves the last converged state untouched.
 
+use super::bodies::{Bodies, HostSystem};
 use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
 use crate::error::{Error, Result};
-use crate::model::{LinearSystem, Model};
+use crate::model::Model;
 use nalgebra::{DMatrix, DVector};
+
+mod results;
 
 /// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
 /// with its body on the left), and the Coulomb friction coefficient between them.
@@ -78,6 +81,10 @@ pub struct ContactOptions {
     /// Distance within which B segments are paired with an A segment, relative to the mean A
     /// segment length.
     pub search_distance: f64,
+    /// Cycle policy: how many times per increment nodes alternating between stick and slip
+    /// (a node on the edge of the friction cone) are locked in slip before a cycling contact
+    /// set is reported as an error. 0: report the first cycle.
+    pub lock_rounds: usize,
 }
 
 impl Default for ContactOptions {
@@ -90,6 +97,7 @@ impl Default for ContactOptions {
             friction_tolerance: 1e-9,
             slip_tolerance: 1e-6,
             search_distance: 4.0,
+            lock_rounds: 3,
         }
     }
 }
@@ -282,11 +290,17 @@ fn dot_dense(a: &[f64], b: &[f64]) -> f64 {
 /// What the full field of a converged increment is recovered from.
 #[derive(Debug, Clone)]
 struct Converged {
-    /// External forces plus contact forces, over all dofs.
-    forces: Vec<f64>,
-    /// Prescribed values.
+    /// External loads over the field.
+    load: Vec<f64>,
+    /// Prescribed values (empty for a host).
     prescribed: Vec<f64>,
+    /// Contact forces at the contact dofs (`dofs` order).
+    contact: Vec<f64>,
 }
+
+/// A caller's function that sees every iteration record; returning `false` stops the increment
+/// (the last converged state is kept).
+pub type Monitor = Box<dyn FnMut(&IterationRecord) -> bool + Send>;
 
 /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs for one load `(f, q_p)`.
 #[derive(Debug, Clone)]
@@ -341,10 +355,9 @@ struct NodeData {
 
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
 /// contact-boundary flexibility, and the last converged state.
-#[derive(Debug)]
 pub struct ContactAnalysis {
-    model: Model,
-    system: LinearSystem,
+    bodies: Bodies,
+    /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
     pairs: Vec<ContactPair>,
     options: ContactOptions,
     /// Global dofs of the contact nodes (A and B of every pair), sorted.
@@ -367,6 +380,18 @@ pub struct ContactAnalysis {
     records: Vec<IterationRecord>,
     timings: Timings,
     plate: Option<Plate>,
+    monitor: Option<Monitor>,
+}
+
+impl std::fmt::Debug for ContactAnalysis {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ContactAnalysis")
+            .field("bodies", &self.bodies)
+            .field("pairs", &self.pairs.len())
+            .field("contact dofs", &self.dofs.len())
+            .field("increment", &self.increment)
+            .finish()
+    }
 }
 
 impl ContactAnalysis {
@@ -374,19 +399,7 @@ impl ContactAnalysis {
     /// contact-boundary flexibility `F` off the factor's trailing block.
     pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
         let n_nodes = model.mesh.n_nodes();
-        for (i, p) in pairs.iter().enumerate() {
-            if !(p.friction.is_finite() && p.friction >= 0.0) {
-                return Err(Error::InvalidInput(format!(
-                    "contact pair {i}: friction must be finite and >= 0, got {}",
-                    p.friction
-                )));
-            }
-            if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| n >= n_nodes) {
-                return Err(Error::InvalidInput(format!(
-                    "contact pair {i}: unknown node {n} (mesh has {n_nodes} nodes)"
-                )));
-            }
-        }
+        check_pairs(&pairs, |n| (n < n_nodes).then_some(n), n_nodes)?;
         let mut dofs: Vec<usize> = pairs
             .iter()
             .flat_map(|p| p.a.iter().chain(&p.b))
@@ -394,15 +407,57 @@ impl ContactAnalysis {
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
-        let mut slot = vec![usize::MAX; 2 * n_nodes];
+        let bodies = Bodies::model(model, &dofs)?;
+        Self::setup(bodies, pairs, dofs, options)
+    }
+
+    /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
+    /// the pairs use), and its stiffness, as a CSR matrix that is factored here (once, the
+    /// contact equations last) or as a solve callback (`F` is then built from batched solves
+    /// with unit right-hand sides). Loads are the host's right-hand sides
+    /// ([`increment`](Self::increment) with empty `qp`), displacements its equations.
+    pub fn host(
+        system: HostSystem,
+        pairs: Vec<ContactPair>,
+        options: ContactOptions,
+    ) -> Result<Self> {
+        let clock = std::time::Instant::now();
+        let bodies = Bodies::host(system)?;
+        let seconds = clock.elapsed().as_secs_f64();
+        let n_nodes = bodies.positions().len();
+        check_pairs(&pairs, |n| bodies.local(n), usize::MAX)?;
+        let pairs = pairs
+            .into_iter()
+            .map(|p| {
+                let local = |ids: &[usize]| ids.iter().filter_map(|&n| bodies.local(n)).collect();
+                ContactPair {
+                    a: local(&p.a),
+                    b: local(&p.b),
+                    friction: p.friction,
+                }
+            })
+            .collect();
+        let dofs = (0..2 * n_nodes).collect();
+        let mut analysis = Self::setup(bodies, pairs, dofs, options)?;
+        analysis.timings.factorization = seconds;
+        Ok(analysis)
+    }
+
+    /// The common part of the constructors: slots, `F`, node data.
+    fn setup(
+        mut bodies: Bodies,
+        pairs: Vec<ContactPair>,
+        dofs: Vec<usize>,
+        options: ContactOptions,
+    ) -> Result<Self> {
+        let mut slot = vec![usize::MAX; 2 * bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = i;
         }
-        let system = LinearSystem::with_trailing(&model, &dofs)?;
         let mut timings = Timings::default();
-        [timings.assembly, timings.factorization] = system.setup_seconds();
+        [timings.assembly, timings.factorization] = bodies.setup_seconds();
         let clock = std::time::Instant::now();
-        let flexibility = Self::flexibility(&system, &dofs)?;
+        let flexibility = bodies.flexibility(&dofs)?;
         timings.flexibility = clock.elapsed().as_secs_f64();
         let nodes = pairs
             .iter()
@@ -422,8 +477,7 @@ impl ContactAnalysis {
             converged: None,
             field: None,
             loads: Vec::new(),
-            model,
-            system,
+            bodies,
             pairs,
             options,
             flexibility,
@@ -434,7 +488,15 @@ impl ContactAnalysis {
             records: Vec::new(),
             timings,
             plate: None,
+            monitor: None,
         })
+    }
+
+    /// Call `monitor` with every iteration record from now on (`None` removes it). When it
+    /// returns `false` the increment stops with [`Error::Callback`] and the last converged
+    /// state is kept.
+    pub fn set_monitor(&mut self, monitor: Option<Monitor>) {
+        self.monitor = monitor;
     }
 
     /// As [`ContactAnalysis::new`], with the nodes `plate` (prescribed in both directions in
@@ -451,10 +513,9 @@ impl ContactAnalysis {
         plate: Vec<usize>,
     ) -> Result<Self> {
         let mut analysis = Self::new(model, pairs, options)?;
-        let n = 2 * analysis.model.mesh.n_nodes();
+        let n = analysis.bodies.field_len();
         for &node in &plate {
-            let held = node < n / 2
-                && (0..2).all(|d| analysis.system.dofs().equation(dof(node, d)).is_none());
+            let held = node < n / 2 && (0..2).all(|d| !analysis.bodies.is_free(dof(node, d)));
             if !held || analysis.slot[dof(node, 0)] != usize::MAX {
                 return Err(Error::InvalidInput(format!(
                     "plate node {node} must exist, be prescribed in x and y, and not be a \
@@ -470,9 +531,9 @@ impl ContactAnalysis {
             for &node in &plate {
                 qp[dof(node, d)] = 1.0;
             }
-            let q = analysis.system.solve_for(&analysis.model, &zero, &qp)?.q;
+            let q = analysis.bodies.solve(&zero, &qp)?;
             response[d] = analysis.dofs.iter().map(|&i| q[i]).collect();
-            let force = plate_force(&analysis.model, &plate, &q, &zero)?;
+            let force = plate_force(analysis.model()?, &plate, &q, &zero)?;
             stiffness[(0, d)] = force[0];
             stiffness[(1, d)] = force[1];
         }
@@ -498,7 +559,8 @@ impl ContactAnalysis {
             }
         }
         let stiffness_scale = self
-            .model
+            .bodies
+            .as_model()?
             .materials
             .iter()
             .map(|m| m.youngs * m.thickness)
@@ -536,40 +598,27 @@ impl ContactAnalysis {
         self.plate.as_ref().map(|p| (p.displacement, p.force))
     }
 
-    /// `F = E^T K^-1 E` over the contact dofs (zero rows and columns at prescribed ones), from
-    /// the condensed flexibility of the free contact dofs.
-    fn flexibility(system: &LinearSystem, dofs: &[usize]) -> Result<DMatrix<f64>> {
-        let condensed = system.condensed_flexibility()?;
-        let free: Vec<usize> = (0..dofs.len())
-            .filter(|&i| system.dofs().equation(dofs[i]).is_some())
-            .collect();
-        let mut flex = DMatrix::zeros(dofs.len(), dofs.len());
-        for (a, &i) in free.iter().enumerate() {
-            for (b, &j) in free.iter().enumerate() {
-                flex[(i, j)] = condensed[(a, b)];
-            }
-        }
-        Ok(flex)
+    /// The model (mesh, materials, boundary conditions); an error for a host's system.
+    pub fn model(&self) -> Result<&Model> {
+        self.bodies.as_model().ok_or_else(|| {
+            Error::InvalidInput(
+                "this analysis runs on a host's system: hycon has no model of it".into(),
+            )
+        })
     }
 
-    /// The model (mesh, materials, boundary conditions).
-    pub fn model(&self) -> &Model {
-        &self.model
-    }
-
-    /// The displacement field of the last converged increment over all dofs (zero before the
-    /// first). Recovered on the first call after an increment (one solve), then kept: the
-    /// iteration itself needs only the contact dofs.
+    /// The displacement field of the last converged increment (zero before the first): over
+    /// all dofs of a model, over the equations of a host. Recovered on the first call after an
+    /// increment (one solve), then kept: the iteration itself needs only the contact dofs.
     pub fn displacement(&mut self) -> Result<&[f64]> {
         if self.field.is_none() {
             let clock = std::time::Instant::now();
             let q = match &self.converged {
                 Some(c) => {
-                    self.system
-                        .solve_for(&self.model, &c.forces, &c.prescribed)?
-                        .q
+                    let total = self.total_load(c);
+                    self.bodies.solve(&total, &c.prescribed)?
                 }
-                None => vec![0.0; 2 * self.model.mesh.n_nodes()],
+                None => vec![0.0; self.bodies.field_len()],
             };
             self.timings.recovery += clock.elapsed().as_secs_f64();
             self.field = Some(q);
@@ -577,31 +626,63 @@ impl ContactAnalysis {
         Ok(self.field.as_deref().unwrap_or_default())
     }
 
+    /// Length of load and displacement vectors: `2 n_nodes` for a model, the host's equation
+    /// count for a host.
+    pub fn field_len(&self) -> usize {
+        self.bodies.field_len()
+    }
+
+    /// The contact forces of the last converged increment over the field (zero before the
+    /// first; zero at a host's fixed dofs): what the host adds to its right-hand side to
+    /// recover the displacement with its own solver.
+    pub fn contact_forces(&self) -> Vec<f64> {
+        let mut out = vec![0.0; self.bodies.field_len()];
+        if let Some(c) = &self.converged {
+            self.scatter(&c.contact, &mut out);
+        }
+        out
+    }
+
+    /// Add forces given at the contact dofs into a field vector.
+    fn scatter(&self, forces: &[f64], out: &mut [f64]) {
+        for (&d, &v) in self.dofs.iter().zip(forces) {
+            if let Some(i) = self.bodies.field_index(d) {
+                out[i] += v;
+            }
+        }
+    }
+
+    /// External loads plus contact forces of a converged increment.
+    fn total_load(&self, c: &Converged) -> Vec<f64> {
+        let mut total = c.load.clone();
+        self.scatter(&c.contact, &mut total);
+        total
+    }
+
     /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
     /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
     /// superposed on a fixed approach, costs one or two solves in all).
     fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<(Vec<f64>, [f64; 2])> {
-        let n = f.len();
-        if qp.len() != n || n != 2 * self.model.mesh.n_nodes() {
+        let n = self.bodies.field_len();
+        let n_qp = if self.bodies.as_model().is_some() {
+            n
+        } else {
+            0
+        };
+        if f.len() != n || qp.len() != n_qp {
             return Err(Error::InvalidInput(format!(
-                "force and prescribed vectors need {} entries, got {} and {}",
-                2 * self.model.mesh.n_nodes(),
-                n,
+                "the load vector needs {n} entries and the prescribed vector {n_qp}, got {} and \
+                 {}",
+                f.len(),
                 qp.len()
             )));
         }
-        let dofs = self.system.dofs();
-        let load: Vec<f64> = f
-            .iter()
-            .copied()
-            .chain((0..n).map(|d| {
-                if dofs.equation(d).is_some() {
-                    0.0
-                } else {
-                    qp[d]
-                }
-            }))
-            .collect();
+        if let Some(i) = f.iter().chain(qp).position(|v| !v.is_finite()) {
+            return Err(Error::InvalidInput(format!(
+                "entry {i} of the loads and prescribed values is not finite"
+            )));
+        }
+        let load = self.bodies.load_key(f, qp);
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];
             let mut force = [0.0; 2];
@@ -615,13 +696,17 @@ impl ContactAnalysis {
             return Ok((u0c, force));
         }
         let clock = std::time::Instant::now();
-        let u0 = self.system.solve_for(&self.model, f, qp)?.q;
+        let u0 = self.bodies.solve(f, qp)?;
         let plate_force = match &self.plate {
-            Some(p) => plate_force(&self.model, &p.nodes, &u0, f)?,
+            Some(p) => plate_force(self.model()?, &p.nodes, &u0, f)?,
             None => [0.0; 2],
         };
         self.timings.load_solves += clock.elapsed().as_secs_f64();
-        let u0c: Vec<f64> = self.dofs.iter().map(|&d| u0[d]).collect();
+        let u0c: Vec<f64> = self
+            .dofs
+            .iter()
+            .map(|&d| self.bodies.field_index(d).map_or(0.0, |i| u0[i]))
+            .collect();
         if self.loads.len() == KEPT_LOADS {
             self.loads.remove(0);
         }
@@ -643,9 +728,10 @@ impl ContactAnalysis {
         &self.records
     }
 
-    /// Number of numeric factorizations of `K` performed (1 per analysis).
+    /// Number of numeric factorizations of `K` performed by hycon (1 per analysis; 0 when a
+    /// host solves with its own solver).
     pub fn factorizations(&mut self) -> usize {
-        self.system.cholesky().factorizations()
+        self.bodies.factorizations()
     }
 
     /// Mean A segment length of pair `p` in the current configuration (the length scale of
@@ -665,7 +751,7 @@ impl ContactAnalysis {
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
     /// nodes keep their reference positions: the contact geometry never reads them).
     fn positions(&self, uc: &[f64]) -> Vec<[f64; 2]> {
-        let mut x = self.model.mesh.nodes.clone();
+        let mut x = self.bodies.positions().to_vec();
         for (&d, &u) in self.dofs.iter().zip(uc) {
             x[d / 2][d % 2] += u;
         }
@@ -802,15 +888,19 @@ impl ContactAnalysis {
                 condition,
             };
             records.push(record);
+            if let Some(monitor) = &mut self.monitor
+                && !monitor(&record)
+            {
+                return Err(Error::Callback(format!(
+                    "increment {number}: the monitor stopped the iteration at iteration \
+                     {iteration}"
+                )));
+            }
             uc = uc_new;
             surfaces = new_surfaces;
             if changes == 0 && r <= self.options.tolerance {
-                uncovered(&surfaces, &states)?;
+                self.uncovered(&surfaces, &states)?;
                 self.timings.iterations += clock.elapsed().as_secs_f64();
-                let mut total = f.to_vec();
-                for (&d, &v) in self.dofs.iter().zip(&forces) {
-                    total[d] += v;
-                }
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
                     let solved = border
@@ -819,8 +909,9 @@ impl ContactAnalysis {
                     plate.settle(control, solved, force0, &forces, &mut prescribed);
                 }
                 let converged = Converged {
-                    forces: total,
+                    load: f.to_vec(),
                     prescribed,
+                    contact: forces,
                 };
                 return Ok(self.finish(
                     number, iteration, &states, &tractions, uc, converged, records,
@@ -831,9 +922,9 @@ impl ContactAnalysis {
                     // a node at the edge of the friction cone can alternate between stick
                     // (which violates the cone) and slip (whose slip reverses): it sits on the
                     // cone with a vanishing slip, so it is locked in slip and the search
-                    // goes on (at most LOCK_ROUNDS times per increment)
+                    // goes on (at most `lock_rounds` times per increment)
                     let flips = stick_slip_flips(&history[j], &states);
-                    if !flips.is_empty() && lock_rounds < LOCK_ROUNDS {
+                    if !flips.is_empty() && lock_rounds < self.options.lock_rounds {
                         lock_rounds += 1;
                         for &(p, k, slip) in &flips {
                             locked.push((p, k));
@@ -861,15 +952,61 @@ impl ContactAnalysis {
         )))
     }
 
-    /// A node whose state differs between two state sets (for messages).
+    /// A node whose state differs between two state sets (for messages; the caller's id).
     fn flipping_node(&self, a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> usize {
         for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
             if let Some(k) = sa.iter().zip(sb).position(|(x, y)| x != y) {
-                return self.pairs[p].a[k];
+                return self.bodies.external(self.pairs[p].a[k]);
             }
         }
         usize::MAX
     }
+
+    /// Every active node of a converged state must have its support fully covered by the
+    /// opposite surface (never integrate over a hole silently).
+    fn uncovered(&self, surfaces: &[ContactSurface], states: &[Vec<NodeState>]) -> Result<()> {
+        for (surface, states) in surfaces.iter().zip(states) {
+            for (node, state) in surface.nodes.iter().zip(states) {
+                if *state != NodeState::Open && node.coverage < 1.0 - 1e-9 {
+                    return Err(Error::Contact(format!(
+                        "contact node {} is active but its support is only {:.1}% covered by \
+                         the opposite surface: extend the B polyline",
+                        self.bodies.external(node.node),
+                        100.0 * node.coverage
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Check the pairs: finite friction `>= 0`, known node ids (`known` maps a caller's id to the
+/// iteration's; `n_nodes` for messages, `usize::MAX` when not meaningful).
+fn check_pairs(
+    pairs: &[ContactPair],
+    known: impl Fn(usize) -> Option<usize>,
+    n_nodes: usize,
+) -> Result<()> {
+    for (i, p) in pairs.iter().enumerate() {
+        if !(p.friction.is_finite() && p.friction >= 0.0) {
+            return Err(Error::InvalidInput(format!(
+                "contact pair {i}: friction must be finite and >= 0, got {}",
+                p.friction
+            )));
+        }
+        if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| known(n).is_none()) {
+            let what = if n_nodes == usize::MAX {
+                "it is not one of the contact nodes".to_string()
+            } else {
+                format!("mesh has {n_nodes} nodes")
+            };
+            return Err(Error::InvalidInput(format!(
+                "contact pair {i}: unknown node {n} ({what})"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The force the tied nodes `plate` exert on the body in the field `q` under loads `f`: the sum
@@ -883,24 +1020,6 @@ fn plate_force(model: &Model, plate: &[usize], q: &[f64], f: &[f64]) -> Result<[
         }
     }
     Ok(force)
-}
-
-/// Every active node of a converged state must have its support fully covered by the opposite
-/// surface (never integrate over a hole silently).
-fn uncovered(surfaces: &[ContactSurface], states: &[Vec<NodeState>]) -> Result<()> {
-    for (surface, states) in surfaces.iter().zip(states) {
-        for (node, state) in surface.nodes.iter().zip(states) {
-            if *state != NodeState::Open && node.coverage < 1.0 - 1e-9 {
-                return Err(Error::Contact(format!(
-                    "contact node {} is active but its support is only {:.1}% covered by the \
-                     opposite surface: extend the B polyline",
-                    node.node,
-                    100.0 * node.coverage
-                )));
-            }
-        }
-    }
-    Ok(())
 }
 
 /// `||A||_1 ||A^-1||_1` with `||A^-1||_1` estimated by Hager's method (a few solves with `A`
@@ -929,9 +1048,6 @@ fn condition_estimate(a: &DMatrix<f64>) -> Option<f64> {
     let condition = a_norm * estimate;
     condition.is_finite().then_some(condition)
 }
-
-/// How many times per increment nodes may be locked in slip to break a stick/slip cycle.
-const LOCK_ROUNDS: usize = 3;
 
 /// `(pair, node, the slip state)` of the nodes that are stick in one state set and slip in the
 /// other.
@@ -1310,11 +1426,12 @@ impl ContactAnalysis {
                     }
                     if g <= -self.options.search_distance * h {
                         return Err(Error::Contact(format!(
-                            "B node {j} penetrates A segment {} -> {} by {:.3e}, more than the \
+                            "B node {} penetrates A segment {} -> {} by {:.3e}, more than the \
                              search distance ({:.3e}): reduce the load step or widen \
                              search_distance",
-                            w[0],
-                            w[1],
+                            self.bodies.external(j),
+                            self.bodies.external(w[0]),
+                            self.bodies.external(w[1]),
                             -g,
                             self.options.search_distance * h
                         )));
@@ -1363,148 +1480,6 @@ impl ContactAnalysis {
             active,
             slip,
         }
-    }
-
-    /// Contact tractions at the A nodes of pair `p` from the element stresses of body A (the
-    /// paper's way (a)): at each node, `t = sigma n` of the element owning each adjacent A
-    /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
-    /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
-    pub fn stress_tractions(&mut self, p: usize) -> Result<Vec<(f64, f64)>> {
-        let frames = self.node_results(p)?;
-        let q = self.displacement()?.to_vec();
-        let model = &self.model;
-        let mut edges = std::collections::HashMap::new();
-        for e in 0..model.mesh.n_elements() {
-            let nodes = model.mesh.element(e);
-            for i in 0..nodes.len() {
-                edges.insert((nodes[i], nodes[(i + 1) % nodes.len()]), (e, i));
-            }
-        }
-        let solution = crate::model::Solution { q };
-        let a = &self.pairs[p].a;
-        let mut sums = vec![([0.0; 2], 0.0); a.len()];
-        for (k, w) in a.windows(2).enumerate() {
-            let &(e, edge) = edges.get(&(w[0], w[1])).ok_or_else(|| {
-                Error::InvalidInput(format!(
-                    "A segment {} -> {} is not an element edge with its body on the left",
-                    w[0], w[1]
-                ))
-            })?;
-            let field = solution.stress_field(model, e)?;
-            for (node, at) in [(k, 0.0), (k + 1, 1.0)] {
-                let t = field.edge_traction(edge, at);
-                sums[node].0[0] += t[0];
-                sums[node].0[1] += t[1];
-                sums[node].1 += 1.0;
-            }
-        }
-        Ok(sums
-            .iter()
-            .zip(&frames)
-            .map(|((t, count), r)| {
-                let t = [t[0] / count, t[1] / count];
-                (
-                    t[0] * r.normal[0] + t[1] * r.normal[1],
-                    t[0] * r.tangent[0] + t[1] * r.tangent[1],
-                )
-            })
-            .collect())
-    }
-
-    /// Contact results on the B side of pair `p`, per B node: the equivalent nodal force on B `f_j = -sum_k F^B_kj t_k` (the traction on B is
-    /// `-t`), its weight over the projected overlap `w_j = sum_k F^B_kj = integral over the
-    /// overlap of L^B_j ds`, and the pressure `p_j = -f_j . n_j / w_j` (`n_j` B's outward nodal
-    /// normal, the average of its segments'). Nodes outside the overlap have weight 0 and
-    /// pressure 0.
-    pub fn b_node_results(&self, p: usize) -> Result<Vec<BNodeResult>> {
-        let a_nodes = self.node_results(p)?;
-        let x = self.positions(&self.qc);
-        let pair = &self.pairs[p];
-        let h = self.mean_segment(p, &x);
-        let surface = geometry::evaluate(&pair.a, &pair.b, &x, self.options.search_distance * h)?;
-        let index = |j: usize| pair.b.iter().position(|&b| b == j);
-        let mut weight = vec![0.0; pair.b.len()];
-        let mut force = vec![[0.0; 2]; pair.b.len()];
-        for (node, r) in surface.nodes.iter().zip(&a_nodes) {
-            let t = [
-                r.tn * r.normal[0] + r.ts * r.tangent[0],
-                r.tn * r.normal[1] + r.ts * r.tangent[1],
-            ];
-            for &(j, c) in &node.coupling {
-                if let Some(i) = index(j) {
-                    // the coupling holds -F^B at B nodes
-                    weight[i] -= c;
-                    force[i][0] += c * t[0];
-                    force[i][1] += c * t[1];
-                }
-            }
-        }
-        Ok(pair
-            .b
-            .iter()
-            .enumerate()
-            .map(|(i, &j)| {
-                let (prev, next) = (
-                    pair.b[i.saturating_sub(1)],
-                    pair.b[(i + 1).min(pair.b.len() - 1)],
-                );
-                let d = [x[next][0] - x[prev][0], x[next][1] - x[prev][1]];
-                let len = d[0].hypot(d[1]);
-                let n = [d[1] / len, -d[0] / len];
-                let pressure = if weight[i] > 0.0 {
-                    -(force[i][0] * n[0] + force[i][1] * n[1]) / weight[i]
-                } else {
-                    0.0
-                };
-                BNodeResult {
-                    node: j,
-                    weight: weight[i],
-                    force: force[i],
-                    pressure,
-                }
-            })
-            .collect())
-    }
-
-    /// Converged results at the A nodes of pair `p`: states, tractions (multipliers),
-    /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
-    pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
-        let x = self.positions(&self.qc);
-        let h = self.mean_segment(p, &x);
-        let pair = &self.pairs[p];
-        let surface = geometry::evaluate(&pair.a, &pair.b, &x, self.options.search_distance * h)?;
-        let data = &self.nodes[p];
-        // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
-        let mut force = vec![[0.0; 2]; pair.a.len()];
-        for (k, node) in surface.nodes.iter().enumerate() {
-            let t = [
-                data[k].tn * node.normal[0] + data[k].ts * node.tangent[0],
-                data[k].tn * node.normal[1] + data[k].ts * node.tangent[1],
-            ];
-            for &(j, c) in &node.coupling {
-                if let Some(i) = pair.a.iter().position(|&a| a == j) {
-                    force[i][0] += c * t[0];
-                    force[i][1] += c * t[1];
-                }
-            }
-        }
-        Ok(surface
-            .nodes
-            .iter()
-            .enumerate()
-            .map(|(k, node)| NodeResult {
-                node: node.node,
-                state: data[k].state,
-                tn: data[k].tn,
-                ts: data[k].ts,
-                normal: node.normal,
-                tangent: node.tangent,
-                position: x[node.node],
-                weight: node.weight,
-                gap: node.normal_gap,
-                force: force[k],
-            })
-            .collect())
     }
 }
 

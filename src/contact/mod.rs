@@ -3,10 +3,14 @@
 //! * [`geometry`]: pure contact-element kernels of one contact pair in the current
 //!   configuration: nodal frames, weights, the mortar matrices `F^A` and `F^B`, the weighted gap
 //!   `R_C`, coverage and the coupling rows.
-//! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open).
+//! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
+//!   FE code's system (its stiffness in CSR, or its own solver through a callback).
+//! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
+//!   its results.
 //! * [`scene`]: the reference disk-on-block scene and its comparison with Hertz.
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 
+pub mod bodies;
 pub mod examples;
 pub mod geometry;
 pub mod iteration;

@@ -1,0 +1,510 @@
+//! The elastic bodies as the contact iteration sees them: the reference positions of the
+//! contact nodes, where their dofs sit in the linear system, and solves with the stiffness.
+//!
+//! Two sources:
+//! * [`Bodies::Model`]: hycon's own [`Model`], assembled and factored by hycon;
+//! * [`Bodies::Host`]: a host FE code's system ([`HostSystem`]): its contact nodes (positions
+//!   and equation numbers in its numbering) and either its stiffness in CSR, factored here, or a
+//!   solve callback ([`HostSolve`]) so that the host factors `K` with its own solver.
+//!
+//! Either way the iteration needs three things, all linear in the loads:
+//! * the contact-boundary flexibility `F = E^T K^-1 E` (`E` picks the contact dofs),
+//! * `u0 = K^-1 f` for a load `f`, read at the contact dofs,
+//! * the whole field `K^-1 (f + f_c)` with the converged contact forces `f_c`, on request.
+//!
+//! Vectors of loads and displacements live in the *field* space: all `2 n_nodes` dofs of a
+//! model (`f` external forces, `qp` prescribed values), or the host's `n` equations (`f` its
+//! right-hand side, which already holds the effect of its prescribed displacements; no `qp`).
+
+use crate::error::{Error, Result};
+use crate::model::{LinearSystem, Model};
+use crate::solver::SparseCholesky;
+use faer::Mat;
+use faer::sparse::{SparseColMat, Triplet};
+use nalgebra::DMatrix;
+
+/// A host's linear solver: `K X = B` for many right-hand sides at once.
+pub trait HostSolve: Send {
+    /// Solve `K x_j = b_j` for the `nrhs` columns of `rhs` (`n x nrhs`, column-major), writing
+    /// `x` (same layout). A failure is reported as [`Error::Callback`].
+    fn solve(&mut self, nrhs: usize, rhs: &[f64], x: &mut [f64]) -> Result<()>;
+}
+
+/// Which triangle of a symmetric matrix a CSR array holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Triangle {
+    /// Every entry (checked to be symmetric).
+    Full,
+    /// Entries with column <= row.
+    Lower,
+    /// Entries with column >= row.
+    Upper,
+}
+
+/// A symmetric positive definite stiffness in compressed sparse row form, over the host's
+/// equations (boundary conditions already applied).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Csr {
+    /// Order `n`.
+    pub n: usize,
+    /// Row starts, `n + 1` nondecreasing offsets into `columns` and `values`.
+    pub row_ptr: Vec<usize>,
+    /// Column of each entry.
+    pub columns: Vec<usize>,
+    /// Value of each entry.
+    pub values: Vec<f64>,
+    /// Which part of the matrix is stored.
+    pub triangle: Triangle,
+}
+
+impl Csr {
+    /// The lower triangle in compressed-column form (duplicates summed), after checking the
+    /// structure, finiteness and, for [`Triangle::Full`], symmetry (relative `1e-10` of the
+    /// largest entry).
+    pub fn lower(&self) -> Result<SparseColMat<usize, f64>> {
+        let n = self.n;
+        if self.row_ptr.len() != n + 1 || self.row_ptr[0] != 0 {
+            return Err(Error::InvalidInput(format!(
+                "CSR row_ptr needs {} entries starting at 0",
+                n + 1
+            )));
+        }
+        let nnz = self.row_ptr[n];
+        if self.row_ptr.windows(2).any(|w| w[0] > w[1])
+            || self.columns.len() != nnz
+            || self.values.len() != nnz
+        {
+            return Err(Error::InvalidInput(format!(
+                "CSR row_ptr must be nondecreasing and end at the entry count ({} columns, {} \
+                 values, row_ptr[n] = {nnz})",
+                self.columns.len(),
+                self.values.len()
+            )));
+        }
+        let scale = self.values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let mut lower = Vec::with_capacity(nnz);
+        let mut upper = Vec::new();
+        for i in 0..n {
+            for e in self.row_ptr[i]..self.row_ptr[i + 1] {
+                let (j, v) = (self.columns[e], self.values[e]);
+                if j >= n {
+                    return Err(Error::InvalidInput(format!(
+                        "CSR entry ({i}, {j}): column out of range (order {n})"
+                    )));
+                }
+                if !v.is_finite() {
+                    return Err(Error::InvalidInput(format!(
+                        "CSR entry ({i}, {j}) = {v} is not finite"
+                    )));
+                }
+                match (self.triangle, j.cmp(&i)) {
+                    (Triangle::Lower, std::cmp::Ordering::Greater)
+                    | (Triangle::Upper, std::cmp::Ordering::Less) => {
+                        return Err(Error::InvalidInput(format!(
+                            "CSR entry ({i}, {j}) lies outside the declared {:?} triangle",
+                            self.triangle
+                        )));
+                    }
+                    (Triangle::Upper, _) => lower.push(Triplet::new(j, i, v)),
+                    (Triangle::Full, std::cmp::Ordering::Greater) => {
+                        upper.push(Triplet::new(j, i, v))
+                    }
+                    _ => lower.push(Triplet::new(i, j, v)),
+                }
+            }
+        }
+        let matrix = SparseColMat::try_new_from_triplets(n, n, &lower)
+            .map_err(|e| Error::InvalidInput(format!("CSR matrix: {e:?}")))?;
+        if self.triangle == Triangle::Full {
+            let mirror = SparseColMat::try_new_from_triplets(n, n, &upper)
+                .map_err(|e| Error::InvalidInput(format!("CSR matrix: {e:?}")))?;
+            check_symmetric(&matrix, &mirror, scale)?;
+        }
+        Ok(matrix)
+    }
+}
+
+/// `lower` (entries on and below the diagonal) against `mirror` (the transposed strict upper
+/// part): equal off the diagonal to `1e-10 scale`.
+fn check_symmetric(
+    lower: &SparseColMat<usize, f64>,
+    mirror: &SparseColMat<usize, f64>,
+    scale: f64,
+) -> Result<()> {
+    let dense = |m: &SparseColMat<usize, f64>, j: usize| -> Vec<(usize, f64)> {
+        let (rows, vals) = (m.row_idx_of_col(j), m.val_of_col(j));
+        rows.zip(vals.iter().copied())
+            .filter(|&(i, _)| i != j)
+            .collect()
+    };
+    for j in 0..lower.ncols() {
+        let (a, b) = (dense(lower, j), dense(mirror, j));
+        let mut merged: std::collections::BTreeMap<usize, f64> = a.into_iter().collect();
+        for (i, v) in b {
+            *merged.entry(i).or_insert(0.0) -= v;
+        }
+        if let Some((&i, &d)) = merged.iter().find(|(_, d)| d.abs() > 1e-10 * scale) {
+            return Err(Error::InvalidInput(format!(
+                "CSR matrix declared full is not symmetric: K[{i}][{j}] - K[{j}][{i}] = {d:e}"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// How the host's stiffness reaches the iteration.
+pub enum HostStiffness {
+    /// The matrix, factored here (fill-reducing order with the contact equations last).
+    Csr(Csr),
+    /// The host's own solver.
+    Solver(Box<dyn HostSolve>),
+}
+
+impl std::fmt::Debug for HostStiffness {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            HostStiffness::Csr(c) => write!(f, "Csr(n = {}, nnz = {})", c.n, c.values.len()),
+            HostStiffness::Solver(_) => f.write_str("Solver(..)"),
+        }
+    }
+}
+
+/// One contact node of a host: its id in the host's numbering, reference position, and the
+/// host equation of each displacement component (`None`: held fixed at zero by the host).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HostNode {
+    /// Node id in the host's numbering (as used in the contact pairs).
+    pub id: usize,
+    /// Reference position.
+    pub position: [f64; 2],
+    /// Host equations of `u_x`, `u_y`.
+    pub equations: [Option<usize>; 2],
+}
+
+/// A host's linear system as the contact iteration needs it.
+#[derive(Debug)]
+pub struct HostSystem {
+    /// Number of host equations `n`.
+    pub equations: usize,
+    /// Every node of every contact pair, each once.
+    pub nodes: Vec<HostNode>,
+    /// The stiffness over the `n` equations.
+    pub stiffness: HostStiffness,
+}
+
+/// The host's system after setup: nodes renumbered `0..m` (local ids) in `nodes` order.
+struct Host {
+    equations: usize,
+    nodes: Vec<HostNode>,
+    positions: Vec<[f64; 2]>,
+    solver: HostSolver,
+}
+
+enum HostSolver {
+    Factor(SparseCholesky),
+    Callback(Box<dyn HostSolve>),
+}
+
+/// The bodies of a contact analysis (see the [module docs](self)).
+pub struct Bodies(Kind);
+
+enum Kind {
+    /// hycon's own model and `K_ff`, factored with the contact dofs last.
+    Model {
+        model: Box<Model>,
+        system: LinearSystem,
+    },
+    /// A host's system.
+    Host(Host),
+}
+
+impl std::fmt::Debug for Bodies {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.0 {
+            Kind::Model { system, .. } => write!(f, "Bodies::Model({system:?})"),
+            Kind::Host(h) => write!(
+                f,
+                "Bodies::Host({} equations, {} contact nodes)",
+                h.equations,
+                h.nodes.len()
+            ),
+        }
+    }
+}
+
+/// Batch size of flexibility solves through a host callback: at most this many columns, and
+/// at most about 32 MB of right-hand sides per call.
+const CALLBACK_BATCH: usize = 64;
+
+impl Bodies {
+    /// hycon's model, factored with the global dofs `trailing` eliminated last.
+    pub fn model(model: Model, trailing: &[usize]) -> Result<Self> {
+        let system = LinearSystem::with_trailing(&model, trailing)?;
+        Ok(Bodies(Kind::Model {
+            model: Box::new(model),
+            system,
+        }))
+    }
+
+    /// A host's system: checks the nodes (unique ids, finite positions, equations in range and
+    /// used once) and factors a CSR stiffness (the contact equations last).
+    pub fn host(system: HostSystem) -> Result<Self> {
+        let HostSystem {
+            equations,
+            nodes,
+            stiffness,
+        } = system;
+        let mut seen_ids = std::collections::HashSet::new();
+        let mut seen_eqs = std::collections::HashSet::new();
+        for node in &nodes {
+            if !seen_ids.insert(node.id) {
+                return Err(Error::InvalidInput(format!(
+                    "contact node {} is listed twice",
+                    node.id
+                )));
+            }
+            if !node.position.iter().all(|v| v.is_finite()) {
+                return Err(Error::InvalidInput(format!(
+                    "contact node {}: position {:?} is not finite",
+                    node.id, node.position
+                )));
+            }
+            for e in node.equations.iter().flatten() {
+                if *e >= equations || !seen_eqs.insert(*e) {
+                    return Err(Error::InvalidInput(format!(
+                        "contact node {}: equation {e} is out of range (n = {equations}) or \
+                         used by another contact dof",
+                        node.id
+                    )));
+                }
+            }
+        }
+        let solver = match stiffness {
+            HostStiffness::Csr(csr) => {
+                if csr.n != equations {
+                    return Err(Error::InvalidInput(format!(
+                        "the CSR matrix has order {}, the host {equations} equations",
+                        csr.n
+                    )));
+                }
+                let lower = csr.lower()?;
+                let trailing: Vec<usize> = nodes
+                    .iter()
+                    .flat_map(|n| n.equations.into_iter().flatten())
+                    .collect();
+                let mut factor =
+                    SparseCholesky::analyze_with_trailing(lower.symbolic(), &trailing)?;
+                factor.factorize(lower.as_ref())?;
+                HostSolver::Factor(factor)
+            }
+            HostStiffness::Solver(s) => HostSolver::Callback(s),
+        };
+        let positions = nodes.iter().map(|n| n.position).collect();
+        Ok(Bodies(Kind::Host(Host {
+            equations,
+            nodes,
+            positions,
+            solver,
+        })))
+    }
+
+    /// Translate a node id of the caller's numbering into the iteration's (identity for a
+    /// model; the position in the node list for a host).
+    pub fn local(&self, id: usize) -> Option<usize> {
+        match &self.0 {
+            Kind::Model { model, .. } => (id < model.mesh.n_nodes()).then_some(id),
+            Kind::Host(h) => h.nodes.iter().position(|n| n.id == id),
+        }
+    }
+
+    /// The caller's id of a node of the iteration's numbering.
+    pub fn external(&self, local: usize) -> usize {
+        match &self.0 {
+            Kind::Model { .. } => local,
+            Kind::Host(h) => h.nodes.get(local).map_or(usize::MAX, |n| n.id),
+        }
+    }
+
+    /// Reference positions, indexed by the iteration's node ids.
+    pub fn positions(&self) -> &[[f64; 2]] {
+        match &self.0 {
+            Kind::Model { model, .. } => &model.mesh.nodes,
+            Kind::Host(h) => &h.positions,
+        }
+    }
+
+    /// Length of load and displacement vectors (`2 n_nodes` or the host's `n`).
+    pub fn field_len(&self) -> usize {
+        match &self.0 {
+            Kind::Model { model, .. } => 2 * model.mesh.n_nodes(),
+            Kind::Host(h) => h.equations,
+        }
+    }
+
+    /// Where dof `d` (`2 node + direction`, iteration numbering) sits in the field (`None`:
+    /// held fixed at zero by a host).
+    pub fn field_index(&self, d: usize) -> Option<usize> {
+        match &self.0 {
+            Kind::Model { .. } => Some(d),
+            Kind::Host(h) => h.nodes.get(d / 2).and_then(|n| n.equations[d % 2]),
+        }
+    }
+
+    /// Whether dof `d` is free (an unknown of `K`).
+    pub fn is_free(&self, d: usize) -> bool {
+        match &self.0 {
+            Kind::Model { system, .. } => system.dofs().equation(d).is_some(),
+            Kind::Host(_) => self.field_index(d).is_some(),
+        }
+    }
+
+    /// The model, if these are hycon's own bodies.
+    pub fn as_model(&self) -> Option<&Model> {
+        match &self.0 {
+            Kind::Model { model, .. } => Some(model),
+            Kind::Host(_) => None,
+        }
+    }
+
+    /// `F = E^T K^-1 E` over the dofs `dofs` (iteration numbering, sorted; in the order given
+    /// to the factorization as trailing unknowns): read off the factor, or assembled from
+    /// batched host solves with unit right-hand sides. Zero rows and columns at fixed dofs.
+    pub fn flexibility(&mut self, dofs: &[usize]) -> Result<DMatrix<f64>> {
+        let free: Vec<usize> = (0..dofs.len()).filter(|&i| self.is_free(dofs[i])).collect();
+        let condensed = match &mut self.0 {
+            Kind::Model { system, .. } => system.condensed_flexibility()?,
+            Kind::Host(h) => match &mut h.solver {
+                HostSolver::Factor(f) => f.condensed_inverse()?,
+                HostSolver::Callback(s) => {
+                    let eqs: Vec<usize> = free
+                        .iter()
+                        .filter_map(|&i| h.nodes[dofs[i] / 2].equations[dofs[i] % 2])
+                        .collect();
+                    callback_flexibility(s.as_mut(), h.equations, &eqs)?
+                }
+            },
+        };
+        let mut flex = DMatrix::zeros(dofs.len(), dofs.len());
+        for (a, &i) in free.iter().enumerate() {
+            for (b, &j) in free.iter().enumerate() {
+                flex[(i, j)] = condensed[(a, b)];
+            }
+        }
+        Ok(flex)
+    }
+
+    /// The displacement field for loads `f` (and, for a model, prescribed values `qp`, read at
+    /// the prescribed dofs): one solve.
+    pub fn solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+        let n = self.field_len();
+        match &mut self.0 {
+            Kind::Model { model, system } => Ok(system.solve_for(model, f, qp)?.q),
+            Kind::Host(h) => {
+                if f.len() != n || !qp.is_empty() {
+                    return Err(Error::InvalidInput(format!(
+                        "a host system takes a right-hand side of {n} entries and no \
+                         prescribed values, got {} and {}",
+                        f.len(),
+                        qp.len()
+                    )));
+                }
+                let mut x = vec![0.0; n];
+                match &mut h.solver {
+                    HostSolver::Factor(factor) => {
+                        let mut rhs = Mat::from_fn(n, 1, |i, _| f[i]);
+                        factor.solve_in_place(rhs.as_mut())?;
+                        for (i, v) in x.iter_mut().enumerate() {
+                            *v = rhs[(i, 0)];
+                        }
+                    }
+                    HostSolver::Callback(s) => checked_solve(s.as_mut(), 1, f, &mut x)?,
+                }
+                Ok(x)
+            }
+        }
+    }
+
+    /// The load as the reuse of load solves compares it: `f`, followed for a model by `qp` at
+    /// the prescribed dofs (zero elsewhere).
+    pub fn load_key(&self, f: &[f64], qp: &[f64]) -> Vec<f64> {
+        match &self.0 {
+            Kind::Model { system, .. } => {
+                let dofs = system.dofs();
+                f.iter()
+                    .copied()
+                    .chain(
+                        qp.iter().enumerate().map(
+                            |(d, &v)| {
+                                if dofs.equation(d).is_some() { 0.0 } else { v }
+                            },
+                        ),
+                    )
+                    .collect()
+            }
+            Kind::Host(_) => f.to_vec(),
+        }
+    }
+
+    /// Numeric factorizations of `K` done by hycon (0 for a host that solves itself).
+    pub fn factorizations(&mut self) -> usize {
+        match &mut self.0 {
+            Kind::Model { system, .. } => system.cholesky().factorizations(),
+            Kind::Host(h) => match &h.solver {
+                HostSolver::Factor(f) => f.factorizations(),
+                HostSolver::Callback(_) => 0,
+            },
+        }
+    }
+
+    /// Seconds spent on `[assembly, analysis + factorization]` when the bodies were set up.
+    pub fn setup_seconds(&self) -> [f64; 2] {
+        match &self.0 {
+            Kind::Model { system, .. } => system.setup_seconds(),
+            Kind::Host(_) => [0.0; 2],
+        }
+    }
+}
+
+/// A host solve with its output checked for finiteness.
+fn checked_solve(s: &mut dyn HostSolve, nrhs: usize, rhs: &[f64], x: &mut [f64]) -> Result<()> {
+    s.solve(nrhs, rhs, x)?;
+    match x.iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(i) => Err(Error::Callback(format!(
+            "the solve callback returned a non-finite value at entry {i} of {nrhs} right-hand \
+             side(s)"
+        ))),
+    }
+}
+
+/// `(K^-1)` between the equations `eqs`, from host solves with unit right-hand sides, in
+/// batches (each call gets at most `CALLBACK_BATCH` columns and about 32 MB).
+fn callback_flexibility(s: &mut dyn HostSolve, n: usize, eqs: &[usize]) -> Result<Mat<f64>> {
+    let m = eqs.len();
+    let batch = CALLBACK_BATCH.min((4 << 20) / n.max(1)).max(1);
+    let mut out = Mat::zeros(m, m);
+    let mut rhs = vec![0.0; n * batch];
+    let mut x = vec![0.0; n * batch];
+    for start in (0..m).step_by(batch) {
+        let cols = batch.min(m - start);
+        rhs.iter_mut().for_each(|v| *v = 0.0);
+        for c in 0..cols {
+            rhs[c * n + eqs[start + c]] = 1.0;
+        }
+        checked_solve(s, cols, &rhs[..n * cols], &mut x[..n * cols])?;
+        for c in 0..cols {
+            for (a, &e) in eqs.iter().enumerate() {
+                out[(a, start + c)] = x[c * n + e];
+            }
+        }
+    }
+    // K^-1 is symmetric; average out the host solver's round-off
+    for a in 0..m {
+        for b in 0..a {
+            let v = 0.5 * (out[(a, b)] + out[(b, a)]);
+            out[(a, b)] = v;
+            out[(b, a)] = v;
+        }
+    }
+    Ok(out)
+}

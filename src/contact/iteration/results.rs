@@ -1,0 +1,227 @@
+//! Results of a contact analysis: tractions three ways (multipliers at the A nodes, nodal
+//! forces and pressures on the B side, element stresses of body A), and the contact-element
+//! matrices for hosts that assemble the mixed system themselves.
+
+use super::{BNodeResult, ContactAnalysis, NodeResult};
+use crate::contact::geometry::{self, ContactSurface};
+use crate::error::{Error, Result};
+
+/// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `2k` (normal,
+/// `n_k . sum_j c_kj u_j`) and `2k + 1` (tangential, `s_k . sum_j c_kj u_j`) for the A nodes
+/// `k`, columns over the field (model dofs or host equations; a host's fixed dofs are
+/// dropped).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConstraintRows {
+    /// `2 n_A + 1` row starts.
+    pub row_ptr: Vec<usize>,
+    /// Column (field index) of each entry.
+    pub columns: Vec<usize>,
+    /// Value of each entry.
+    pub values: Vec<f64>,
+}
+
+impl ContactAnalysis {
+    /// Check a pair index.
+    fn pair(&self, p: usize) -> Result<&super::ContactPair> {
+        self.pairs.get(p).ok_or_else(|| {
+            Error::InvalidInput(format!(
+                "contact pair {p} does not exist ({} pairs)",
+                self.pairs.len()
+            ))
+        })
+    }
+
+    /// The contact quantities of pair `p` in the converged configuration (the reference one
+    /// before the first increment), iteration numbering.
+    fn converged_surface(&self, p: usize) -> Result<(ContactSurface, Vec<[f64; 2]>)> {
+        let pair = self.pair(p)?;
+        let x = self.positions(&self.qc);
+        let h = self.mean_segment(p, &x);
+        let surface = geometry::evaluate(&pair.a, &pair.b, &x, self.options.search_distance * h)?;
+        Ok((surface, x))
+    }
+
+    /// The contact-element quantities of pair `p` in the converged configuration, node ids in
+    /// the caller's numbering: per A node the weight, frame, weighted gap `R_C` and the
+    /// coupling row `c_kj` (`+F^A_kj` at A nodes, `-F^B_kj` at B nodes).
+    pub fn surface(&self, p: usize) -> Result<ContactSurface> {
+        let (mut surface, _) = self.converged_surface(p)?;
+        for node in &mut surface.nodes {
+            node.node = self.bodies.external(node.node);
+            for entry in &mut node.coupling {
+                entry.0 = self.bodies.external(entry.0);
+            }
+        }
+        Ok(surface)
+    }
+
+    /// The constraint matrix `Kc` of pair `p` in the converged configuration (see
+    /// [`ConstraintRows`]).
+    pub fn constraint_rows(&self, p: usize) -> Result<ConstraintRows> {
+        let (surface, _) = self.converged_surface(p)?;
+        let mut rows = ConstraintRows {
+            row_ptr: vec![0],
+            columns: Vec::new(),
+            values: Vec::new(),
+        };
+        for node in &surface.nodes {
+            for direction in [node.normal, node.tangent] {
+                for &(j, c) in &node.coupling {
+                    for (d, component) in direction.iter().enumerate() {
+                        let field = self.bodies.field_index(crate::assembly::dof(j, d));
+                        if let Some(i) = field.filter(|_| *component != 0.0) {
+                            rows.columns.push(i);
+                            rows.values.push(c * component);
+                        }
+                    }
+                }
+                rows.row_ptr.push(rows.columns.len());
+            }
+        }
+        Ok(rows)
+    }
+
+    /// Contact tractions at the A nodes of pair `p` from the element stresses of body A (the
+    /// paper's way (a)): at each node, `t = sigma n` of the element owning each adjacent A
+    /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
+    /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
+    pub fn stress_tractions(&mut self, p: usize) -> Result<Vec<(f64, f64)>> {
+        let frames = self.node_results(p)?;
+        let q = self.displacement()?.to_vec();
+        let model = self.bodies.as_model().ok_or_else(|| {
+            Error::InvalidInput(
+                "tractions from element stresses need hycon's elements: a host computes sigma n \
+                 from its own element stresses (the model API provides them)"
+                    .into(),
+            )
+        })?;
+        let mut edges = std::collections::HashMap::new();
+        for e in 0..model.mesh.n_elements() {
+            let nodes = model.mesh.element(e);
+            for i in 0..nodes.len() {
+                edges.insert((nodes[i], nodes[(i + 1) % nodes.len()]), (e, i));
+            }
+        }
+        let solution = crate::model::Solution { q };
+        let a = &self.pairs[p].a;
+        let mut sums = vec![([0.0; 2], 0.0); a.len()];
+        for (k, w) in a.windows(2).enumerate() {
+            let &(e, edge) = edges.get(&(w[0], w[1])).ok_or_else(|| {
+                Error::InvalidInput(format!(
+                    "A segment {} -> {} is not an element edge with its body on the left",
+                    w[0], w[1]
+                ))
+            })?;
+            let field = solution.stress_field(model, e)?;
+            for (node, at) in [(k, 0.0), (k + 1, 1.0)] {
+                let t = field.edge_traction(edge, at);
+                sums[node].0[0] += t[0];
+                sums[node].0[1] += t[1];
+                sums[node].1 += 1.0;
+            }
+        }
+        Ok(sums
+            .iter()
+            .zip(&frames)
+            .map(|((t, count), r)| {
+                let t = [t[0] / count, t[1] / count];
+                (
+                    t[0] * r.normal[0] + t[1] * r.normal[1],
+                    t[0] * r.tangent[0] + t[1] * r.tangent[1],
+                )
+            })
+            .collect())
+    }
+
+    /// Contact results on the B side of pair `p`, per B node: the equivalent nodal force on B `f_j = -sum_k F^B_kj t_k` (the traction on B is
+    /// `-t`), its weight over the projected overlap `w_j = sum_k F^B_kj = integral over the
+    /// overlap of L^B_j ds`, and the pressure `p_j = -f_j . n_j / w_j` (`n_j` B's outward nodal
+    /// normal, the average of its segments'). Nodes outside the overlap have weight 0 and
+    /// pressure 0.
+    pub fn b_node_results(&self, p: usize) -> Result<Vec<BNodeResult>> {
+        let a_nodes = self.node_results(p)?;
+        let (surface, x) = self.converged_surface(p)?;
+        let pair = &self.pairs[p];
+        let index = |j: usize| pair.b.iter().position(|&b| b == j);
+        let mut weight = vec![0.0; pair.b.len()];
+        let mut force = vec![[0.0; 2]; pair.b.len()];
+        for (node, r) in surface.nodes.iter().zip(&a_nodes) {
+            let t = [
+                r.tn * r.normal[0] + r.ts * r.tangent[0],
+                r.tn * r.normal[1] + r.ts * r.tangent[1],
+            ];
+            for &(j, c) in &node.coupling {
+                if let Some(i) = index(j) {
+                    // the coupling holds -F^B at B nodes
+                    weight[i] -= c;
+                    force[i][0] += c * t[0];
+                    force[i][1] += c * t[1];
+                }
+            }
+        }
+        Ok(pair
+            .b
+            .iter()
+            .enumerate()
+            .map(|(i, &j)| {
+                let (prev, next) = (
+                    pair.b[i.saturating_sub(1)],
+                    pair.b[(i + 1).min(pair.b.len() - 1)],
+                );
+                let d = [x[next][0] - x[prev][0], x[next][1] - x[prev][1]];
+                let len = d[0].hypot(d[1]);
+                let n = [d[1] / len, -d[0] / len];
+                let pressure = if weight[i] > 0.0 {
+                    -(force[i][0] * n[0] + force[i][1] * n[1]) / weight[i]
+                } else {
+                    0.0
+                };
+                BNodeResult {
+                    node: self.bodies.external(j),
+                    weight: weight[i],
+                    force: force[i],
+                    pressure,
+                }
+            })
+            .collect())
+    }
+
+    /// Converged results at the A nodes of pair `p`: states, tractions (multipliers),
+    /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
+    pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
+        let (surface, x) = self.converged_surface(p)?;
+        let pair = &self.pairs[p];
+        let data = &self.nodes[p];
+        // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
+        let mut force = vec![[0.0; 2]; pair.a.len()];
+        for (k, node) in surface.nodes.iter().enumerate() {
+            let t = [
+                data[k].tn * node.normal[0] + data[k].ts * node.tangent[0],
+                data[k].tn * node.normal[1] + data[k].ts * node.tangent[1],
+            ];
+            for &(j, c) in &node.coupling {
+                if let Some(i) = pair.a.iter().position(|&a| a == j) {
+                    force[i][0] += c * t[0];
+                    force[i][1] += c * t[1];
+                }
+            }
+        }
+        Ok(surface
+            .nodes
+            .iter()
+            .enumerate()
+            .map(|(k, node)| NodeResult {
+                node: self.bodies.external(node.node),
+                state: data[k].state,
+                tn: data[k].tn,
+                ts: data[k].ts,
+                normal: node.normal,
+                tangent: node.tangent,
+                position: x[node.node],
+                weight: node.weight,
+                gap: node.normal_gap,
+                force: force[k],
+            })
+            .collect())
+    }
+}
