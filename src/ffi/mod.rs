@@ -1,9 +1,12 @@
-//! The C ABI: a thin checked layer over [`crate::element`] and [`crate::material`].
+//! The C ABI: a thin checked layer over the safe Rust core.
 //!
 //! No mathematics lives here. Every exported function checks its inputs (pointers, lengths,
 //! enums, finite values, element shape), calls the safe Rust API, and copies the result into
-//! the caller's buffers. The header `include/hycon.h` is generated from this file by cbindgen
-//! (`cbindgen --config cbindgen.toml --output include/hycon.h src/ffi.rs`, or
+//! the caller's buffers. This module holds the conventions, status codes and the checked
+//! boundary; `elements` exports the element routines ([`crate::element`]) and `contact` the
+//! contact analysis ([`crate::contact`]: model API and host-assembly API). The header
+//! `include/hycon.h` is generated from the crate by cbindgen
+//! (`cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`, or
 //! `HYCON_BLESS=1 cargo test --test header_fresh`) and committed; `tests/header_fresh.rs` fails
 //! when it is stale.
 //!
@@ -17,10 +20,12 @@
 //! * Arrays are (pointer, length) pairs, or a pointer whose length is fixed by other arguments
 //!   (stated per function). `(NULL, 0)` is an empty array.
 //! * Outputs are written only on success: on an error, every output buffer is left untouched.
-//! * Inputs are read during the call only; the caller keeps ownership of all memory and nothing
-//!   is retained after a call returns. Input and output buffers may overlap.
-//! * Thread safety: every function is reentrant and may be called from several threads at once.
-//!   The last error message is thread-local.
+//! * Inputs are read during the call only; the caller keeps ownership of all memory. The only
+//!   pointers kept are a solve callback's and a monitor's user data (documented there).
+//! * Thread safety: the element functions are reentrant and may be called from several threads
+//!   at once; a handle (`HyconModel`, `HyconHost`, `HyconContact`) is used by one thread at a
+//!   time (it may move between threads), distinct handles are independent. The last error
+//!   message is thread-local.
 //! * Doubles must be finite (no NaN, no infinity); this is checked.
 //! * Rust panics never cross the boundary: an internal error becomes
 //!   [`HYCON_ERROR_PANIC`], and the panic message goes to the last error message, not to
