@@ -27,14 +27,24 @@ fn readme_c_examples_compile() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
     let blocks = c_blocks(&readme);
-    assert!(blocks.len() >= 3, "expected the element, model and host examples");
+    assert!(
+        blocks.len() >= 3,
+        "expected the element, model and host examples"
+    );
     let dir = std::env::temp_dir().join(format!("hycon-readme-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     for (i, block) in blocks.iter().enumerate() {
         let file = dir.join(format!("block{i}.c"));
         std::fs::write(&file, block).unwrap();
         let out = Command::new("cc")
-            .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-fsyntax-only"])
+            .args([
+                "-std=c99",
+                "-Wall",
+                "-Wextra",
+                "-Werror",
+                "-pedantic",
+                "-fsyntax-only",
+            ])
             .arg("-I")
             .arg(root.join("include"))
             .arg(&file)
