@@ -12,7 +12,7 @@ use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
 use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::mesh::Mesh;
-use crate::solver::SparseCholesky;
+use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
 
 /// A prescribed displacement component.
@@ -213,6 +213,13 @@ impl LinearSystem {
     /// last, so that [`LinearSystem::condensed_flexibility`] can read their flexibility off the
     /// factor.
     pub fn with_trailing(model: &Model, trailing: &[usize]) -> Result<Self> {
+        Self::with_trailing_on(model, trailing, Backend::Faer)
+    }
+
+    /// As [`LinearSystem::with_trailing`], factoring with the given sparse Cholesky
+    /// [`Backend`] (an unavailable one is an error before any work is done).
+    pub fn with_trailing_on(model: &Model, trailing: &[usize], backend: Backend) -> Result<Self> {
+        backend.check_available()?;
         model.validate()?;
         check_rigid_body_support(model)?;
         let dofs = DofMap::new(
@@ -225,9 +232,9 @@ impl LinearSystem {
         let assembly = clock.elapsed().as_secs_f64();
         let trailing_free: Vec<usize> = trailing.iter().filter_map(|&d| dofs.equation(d)).collect();
         let mut cholesky = if trailing_free.is_empty() {
-            SparseCholesky::analyze(pattern.symbolic())?
+            SparseCholesky::analyze_on(backend, pattern.symbolic())?
         } else {
-            SparseCholesky::analyze_with_trailing(pattern.symbolic(), &trailing_free)?
+            SparseCholesky::analyze_with_trailing_on(backend, pattern.symbolic(), &trailing_free)?
         };
         cholesky.factorize(pattern.matrix())?;
         Ok(LinearSystem {

@@ -1,12 +1,24 @@
 //! Sparse Cholesky factorization of the stiffness with the symbolic analysis kept and reused.
 //!
 //! The contact method factors `K` once per analysis and then only solves with it, many
-//! right-hand sides at a time. [`SparseCholesky`] therefore separates the three phases of faer's
-//! low-level API: [`SparseCholesky::analyze`] (fill-reducing ordering and elimination tree, once
-//! per sparsity pattern), [`SparseCholesky::factorize`] (numeric values of `L`, into a buffer
-//! reused across refactorizations) and [`SparseCholesky::solve_in_place`] (batched right-hand
-//! sides). Everything runs sequentially (`Par::Seq`): on small machines faer's parallel solves are
-//! much slower. Factorizations are counted so callers and tests can see that none is repeated.
+//! right-hand sides at a time. [`SparseCholesky`] therefore separates three phases:
+//! [`SparseCholesky::analyze`] (fill-reducing ordering and elimination tree, once per sparsity
+//! pattern), [`SparseCholesky::factorize`] (numeric values of `L`, into storage reused across
+//! refactorizations) and [`SparseCholesky::solve_in_place`] (batched right-hand sides).
+//! Factorizations are counted so callers and tests can see that none is repeated.
+//!
+//! Two libraries can do the work, chosen at run time with [`Backend`]:
+//! * [`Backend::Faer`] (the default, always available): faer's low-level supernodal API, run
+//!   sequentially (`Par::Seq`): on small machines faer's parallel solves are much slower.
+//! * [`Backend::Cholmod`]: SuiteSparse's CHOLMOD through bindgen bindings, only when hycon is
+//!   built with the cargo feature `suitesparse` (needs libsuitesparse-dev and libclang).
+//!
+//! Both give the same answers to round-off, report a non-positive pivot as
+//! [`Error::Singular`] naming the original equation, and support trailing unknowns for
+//! [`SparseCholesky::condensed_inverse`].
+
+#[cfg(feature = "suitesparse")]
+mod cholmod;
 
 use crate::error::{Error, Result};
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
@@ -24,44 +36,141 @@ use faer::{Conj, Mat, MatMut, Par, Side};
 /// How many right-hand sides one internal solve call handles (bounds the workspace).
 const RHS_BATCH: usize = 64;
 
+/// Which sparse Cholesky library factors K.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Backend {
+    /// faer's supernodal Cholesky (pure Rust, always available).
+    #[default]
+    Faer,
+    /// SuiteSparse's CHOLMOD (supernodal, BLAS-based); needs the cargo feature `suitesparse`.
+    Cholmod,
+}
+
+impl Backend {
+    /// Whether this build of hycon can use the backend (CHOLMOD needs the feature
+    /// `suitesparse`).
+    pub fn available(self) -> bool {
+        match self {
+            Backend::Faer => true,
+            Backend::Cholmod => cfg!(feature = "suitesparse"),
+        }
+    }
+
+    /// Short lower-case name: `"faer"` or `"cholmod"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Backend::Faer => "faer",
+            Backend::Cholmod => "cholmod",
+        }
+    }
+
+    /// `Ok` when [`available`](Self::available), else the error every entry point returns.
+    pub(crate) fn check_available(self) -> Result<()> {
+        if self.available() {
+            Ok(())
+        } else {
+            Err(Error::Solver(
+                "hycon was built without the `suitesparse` feature: CHOLMOD is not available"
+                    .into(),
+            ))
+        }
+    }
+}
+
+impl std::fmt::Display for Backend {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// A sparse `L L^T` factorization of a symmetric positive definite matrix given by its lower
 /// triangle in compressed-column form.
+///
+/// `Send` and `Sync` with either backend: each object owns its own factor and workspaces (and,
+/// for CHOLMOD, its own `cholmod_common`), so distinct objects can be used on distinct threads.
 pub struct SparseCholesky {
-    symbolic: SymbolicCholesky<usize>,
-    l_values: Vec<f64>,
-    workspace: MemBuffer,
+    engine: Engine,
     factorizations: usize,
     factored: bool,
     /// Number of unknowns ordered last (see [`SparseCholesky::analyze_with_trailing`]).
     trailing: usize,
 }
 
+/// The library-specific part of [`SparseCholesky`].
+enum Engine {
+    /// Boxed: faer's symbolic structure is large, and `SparseCholesky` is kept in enums.
+    Faer(Box<FaerLlt>),
+    #[cfg(feature = "suitesparse")]
+    Cholmod(cholmod::CholmodLlt),
+}
+
+/// faer's symbolic factorization, the values of `L` and the workspace of factor and solve.
+struct FaerLlt {
+    symbolic: SymbolicCholesky<usize>,
+    l_values: Vec<f64>,
+    workspace: MemBuffer,
+}
+
 impl std::fmt::Debug for SparseCholesky {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("SparseCholesky")
+            .field("backend", &self.backend())
             .field("n", &self.n())
-            .field("nnz_l", &self.l_values.len())
+            .field("nnz_l", &self.nnz_l())
             .field("factorizations", &self.factorizations)
             .finish()
     }
 }
 
 impl SparseCholesky {
-    /// Symbolic analysis (AMD ordering, elimination tree, supernodes) of the lower-triangle pattern.
+    /// Symbolic analysis (AMD ordering, elimination tree, supernodes) of the lower-triangle
+    /// pattern, with faer.
     pub fn analyze(pattern: SymbolicSparseColMatRef<'_, usize>) -> Result<Self> {
-        Self::analyze_ordered(pattern, SymmetricOrdering::Amd, 0)
+        Self::analyze_on(Backend::Faer, pattern)
+    }
+
+    /// Symbolic analysis of the lower-triangle pattern with the given backend: faer's AMD, or
+    /// CHOLMOD's default strategy (AMD, METIS when AMD fills badly). An unavailable backend is
+    /// an [`Error::Solver`].
+    pub fn analyze_on(
+        backend: Backend,
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+    ) -> Result<Self> {
+        backend.check_available()?;
+        let engine = match backend {
+            Backend::Faer => {
+                Engine::Faer(Box::new(FaerLlt::analyze(pattern, SymmetricOrdering::Amd)?))
+            }
+            #[cfg(feature = "suitesparse")]
+            Backend::Cholmod => Engine::Cholmod(cholmod::CholmodLlt::analyze(pattern, None)?),
+            #[cfg(not(feature = "suitesparse"))]
+            Backend::Cholmod => unreachable!("checked by check_available"),
+        };
+        Ok(Self::with_engine(engine, 0))
     }
 
     /// Symbolic analysis with the unknowns `trailing` eliminated last, in the given order (the
-    /// others in AMD order). After [`factorize`](Self::factorize), the trailing block `L22` of
-    /// the factor gives the condensed (Schur complement) matrix of those unknowns,
-    /// `S = K22 - K21 K11^-1 K12 = L22 L22^T`: see [`condensed_inverse`](Self::condensed_inverse).
+    /// others in AMD order), with faer. After [`factorize`](Self::factorize), the trailing
+    /// block `L22` of the factor gives the condensed (Schur complement) matrix of those
+    /// unknowns, `S = K22 - K21 K11^-1 K12 = L22 L22^T`: see
+    /// [`condensed_inverse`](Self::condensed_inverse).
     pub fn analyze_with_trailing(
         pattern: SymbolicSparseColMatRef<'_, usize>,
         trailing: &[usize],
     ) -> Result<Self> {
+        Self::analyze_with_trailing_on(Backend::Faer, pattern, trailing)
+    }
+
+    /// [`analyze_with_trailing`](Self::analyze_with_trailing) with the given backend. The other
+    /// unknowns keep the backend's own fill-reducing order (with the trailing ones removed);
+    /// the trailing ones follow, in the order given.
+    pub fn analyze_with_trailing_on(
+        backend: Backend,
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+        trailing: &[usize],
+    ) -> Result<Self> {
+        backend.check_available()?;
         let n = pattern.nrows();
-        let amd = Self::analyze(pattern)?;
         let mut last = vec![false; n];
         for &t in trailing {
             if t >= n || std::mem::replace(&mut last[t], true) {
@@ -70,27 +179,152 @@ impl SparseCholesky {
                 )));
             }
         }
-        let amd_order: Vec<usize> = match amd.symbolic.perm() {
-            Some(p) => p.arrays().0.to_vec(),
-            None => (0..n).collect(),
+        // The backend's fill-reducing order with the trailing unknowns moved to the end.
+        let order = |own: &mut dyn Iterator<Item = usize>| -> Vec<usize> {
+            own.filter(|&i| !last[i])
+                .chain(trailing.iter().copied())
+                .collect()
         };
-        let fwd: Vec<usize> = amd_order
-            .into_iter()
-            .filter(|&i| !last[i])
-            .chain(trailing.iter().copied())
-            .collect();
-        let mut inv = vec![0; n];
-        for (new, &old) in fwd.iter().enumerate() {
-            inv[old] = new;
-        }
-        let perm = PermRef::new_checked(&fwd, &inv, n);
-        Self::analyze_ordered(pattern, SymmetricOrdering::Custom(perm), trailing.len())
+        let engine = match backend {
+            Backend::Faer => {
+                let amd = FaerLlt::analyze(pattern, SymmetricOrdering::Amd)?;
+                let fwd = match amd.symbolic.perm() {
+                    Some(p) => order(&mut p.arrays().0.iter().copied()),
+                    None => order(&mut (0..n)),
+                };
+                drop(amd);
+                let mut inv = vec![0; n];
+                for (new, &old) in fwd.iter().enumerate() {
+                    inv[old] = new;
+                }
+                let perm = PermRef::new_checked(&fwd, &inv, n);
+                Engine::Faer(Box::new(FaerLlt::analyze(
+                    pattern,
+                    SymmetricOrdering::Custom(perm),
+                )?))
+            }
+            #[cfg(feature = "suitesparse")]
+            Backend::Cholmod => {
+                let mut llt = cholmod::CholmodLlt::analyze(pattern, None)?;
+                let fwd = order(&mut llt.perm().iter().map(|&i| i as usize));
+                llt.reorder(&fwd)?;
+                Engine::Cholmod(llt)
+            }
+            #[cfg(not(feature = "suitesparse"))]
+            Backend::Cholmod => unreachable!("checked by check_available"),
+        };
+        Ok(Self::with_engine(engine, trailing.len()))
     }
 
-    fn analyze_ordered(
+    fn with_engine(engine: Engine, trailing: usize) -> Self {
+        SparseCholesky {
+            engine,
+            factorizations: 0,
+            factored: false,
+            trailing,
+        }
+    }
+
+    /// The library doing the work.
+    pub fn backend(&self) -> Backend {
+        match self.engine {
+            Engine::Faer(_) => Backend::Faer,
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(_) => Backend::Cholmod,
+        }
+    }
+
+    /// The inverse of the condensed matrix of the trailing unknowns (in the order given to
+    /// [`analyze_with_trailing`](Self::analyze_with_trailing)): `S^-1 = (K^-1)_22`, the
+    /// flexibility of those unknowns with all others free and unloaded. Computed from the
+    /// factor's trailing block, `S^-1 = L22^-T L22^-1`: no solves with `K`.
+    pub fn condensed_inverse(&self) -> Result<Mat<f64>> {
+        if !self.factored {
+            return Err(Error::Solver(
+                "condensation requested before a successful factorization".into(),
+            ));
+        }
+        let l22 = match &self.engine {
+            Engine::Faer(f) => f.trailing_block(self.trailing),
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.trailing_block(self.trailing)?,
+        };
+        let m = self.trailing;
+        let mut x = Mat::<f64>::identity(m, m);
+        faer::linalg::triangular_solve::solve_lower_triangular_in_place(
+            l22.as_ref(),
+            x.as_mut(),
+            Par::Seq,
+        );
+        Ok(x.transpose() * &x)
+    }
+
+    /// Order of the matrix.
+    pub fn n(&self) -> usize {
+        match &self.engine {
+            Engine::Faer(f) => f.symbolic.nrows(),
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.n(),
+        }
+    }
+
+    /// Number of stored entries of `L` (for supernodal factors, the dense supernode blocks).
+    pub fn nnz_l(&self) -> usize {
+        match &self.engine {
+            Engine::Faer(f) => f.l_values.len(),
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.nnz_l(),
+        }
+    }
+
+    /// Numeric factorization `A = L L^T` of a matrix with the analysed pattern (lower triangle
+    /// read). A non-positive pivot is reported with the original (unpermuted) row index.
+    pub fn factorize(&mut self, a: SparseColMatRef<'_, usize, f64>) -> Result<()> {
+        self.factored = false;
+        match &mut self.engine {
+            Engine::Faer(f) => f.factorize(a)?,
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.factorize(a)?,
+        }
+        self.factorizations += 1;
+        self.factored = true;
+        Ok(())
+    }
+
+    /// Overwrite each column `b` of `rhs` with `A^-1 b`, in batches of right-hand sides.
+    pub fn solve_in_place(&mut self, rhs: MatMut<'_, f64>) -> Result<()> {
+        if !self.factored {
+            return Err(Error::Solver(
+                "solve requested before a successful factorization".into(),
+            ));
+        }
+        if rhs.nrows() != self.n() {
+            return Err(Error::InvalidInput(format!(
+                "right-hand side has {} rows, the matrix has order {}",
+                rhs.nrows(),
+                self.n()
+            )));
+        }
+        match &mut self.engine {
+            Engine::Faer(f) => {
+                f.solve_in_place(rhs);
+                Ok(())
+            }
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.solve_in_place(rhs),
+        }
+    }
+
+    /// How many numeric factorizations this object has performed.
+    pub fn factorizations(&self) -> usize {
+        self.factorizations
+    }
+}
+
+impl FaerLlt {
+    fn analyze(
         pattern: SymbolicSparseColMatRef<'_, usize>,
         ordering: SymmetricOrdering<'_, usize>,
-        trailing: usize,
     ) -> Result<Self> {
         let symbolic = factorize_symbolic_cholesky(
             pattern,
@@ -104,40 +338,62 @@ impl SparseCholesky {
             symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()),
             symbolic.solve_in_place_scratch::<f64>(RHS_BATCH, par),
         ]);
-        Ok(SparseCholesky {
+        Ok(FaerLlt {
             l_values: vec![0.0; symbolic.len_val()],
             symbolic,
             workspace: MemBuffer::new(req),
-            factorizations: 0,
-            factored: false,
-            trailing,
         })
     }
 
-    /// The inverse of the condensed matrix of the trailing unknowns (in the order given to
-    /// [`analyze_with_trailing`](Self::analyze_with_trailing)): `S^-1 = (K^-1)_22`, the
-    /// flexibility of those unknowns with all others free and unloaded. Computed from the
-    /// factor's trailing block, `S^-1 = L22^-T L22^-1`: no solves with `K`.
-    pub fn condensed_inverse(&self) -> Result<Mat<f64>> {
-        if !self.factored {
-            return Err(Error::Solver(
-                "condensation requested before a successful factorization".into(),
-            ));
-        }
-        let l22 = self.trailing_block();
-        let m = self.trailing;
-        let mut x = Mat::<f64>::identity(m, m);
-        faer::linalg::triangular_solve::solve_lower_triangular_in_place(
-            l22.as_ref(),
-            x.as_mut(),
+    fn n(&self) -> usize {
+        self.symbolic.nrows()
+    }
+
+    fn factorize(&mut self, a: SparseColMatRef<'_, usize, f64>) -> Result<()> {
+        let result = self.symbolic.factorize_numeric_llt::<f64>(
+            &mut self.l_values,
+            a,
+            Side::Lower,
+            LltRegularization::default(),
             Par::Seq,
+            MemStack::new(&mut self.workspace),
+            Default::default(),
         );
-        Ok(x.transpose() * &x)
+        match result {
+            Ok(_) => Ok(()),
+            Err(LltError::NonPositivePivot { index }) => {
+                // faer reports the pivot in the permuted order (and may report n for the last
+                // supernode); translate it back to the caller's numbering when it is in range.
+                let row = match self.symbolic.perm() {
+                    Some(p) if index < self.n() => p.arrays().0[index],
+                    _ => index.min(self.n().saturating_sub(1)),
+                };
+                Err(Error::Singular(format!(
+                    "non-positive pivot near equation {row}: the matrix is not positive definite"
+                )))
+            }
+        }
+    }
+
+    fn solve_in_place(&mut self, mut rhs: MatMut<'_, f64>) {
+        let llt = LltRef::<usize, f64>::new(&self.symbolic, &self.l_values);
+        let ncols = rhs.ncols();
+        let mut j = 0;
+        while j < ncols {
+            let k = RHS_BATCH.min(ncols - j);
+            llt.solve_in_place_with_conj(
+                Conj::No,
+                rhs.as_mut().subcols_mut(j, k),
+                Par::Seq,
+                MemStack::new(&mut self.workspace),
+            );
+            j += k;
+        }
     }
 
     /// The trailing `m x m` block of `L` (dense, lower triangular).
-    fn trailing_block(&self) -> Mat<f64> {
-        let (n, m) = (self.n(), self.trailing);
+    fn trailing_block(&self, m: usize) -> Mat<f64> {
+        let n = self.n();
         let first = n - m;
         let mut l = Mat::<f64>::zeros(m, m);
         match self.symbolic.raw() {
@@ -170,84 +426,6 @@ impl SparseCholesky {
             }
         }
         l
-    }
-
-    /// Order of the matrix.
-    pub fn n(&self) -> usize {
-        self.symbolic.nrows()
-    }
-
-    /// Number of stored entries of `L`.
-    pub fn nnz_l(&self) -> usize {
-        self.l_values.len()
-    }
-
-    /// Numeric factorization `A = L L^T` of a matrix with the analysed pattern (lower triangle
-    /// read). A non-positive pivot is reported with the original (unpermuted) row index.
-    pub fn factorize(&mut self, a: SparseColMatRef<'_, usize, f64>) -> Result<()> {
-        self.factored = false;
-        let result = self.symbolic.factorize_numeric_llt::<f64>(
-            &mut self.l_values,
-            a,
-            Side::Lower,
-            LltRegularization::default(),
-            Par::Seq,
-            MemStack::new(&mut self.workspace),
-            Default::default(),
-        );
-        match result {
-            Ok(_) => {
-                self.factorizations += 1;
-                self.factored = true;
-                Ok(())
-            }
-            Err(LltError::NonPositivePivot { index }) => {
-                // faer reports the pivot in the permuted order (and may report n for the last
-                // supernode); translate it back to the caller's numbering when it is in range.
-                let row = match self.symbolic.perm() {
-                    Some(p) if index < self.n() => p.arrays().0[index],
-                    _ => index.min(self.n().saturating_sub(1)),
-                };
-                Err(Error::Singular(format!(
-                    "non-positive pivot near equation {row}: the matrix is not positive definite"
-                )))
-            }
-        }
-    }
-
-    /// Overwrite each column `b` of `rhs` with `A^-1 b`, in batches of right-hand sides.
-    pub fn solve_in_place(&mut self, mut rhs: MatMut<'_, f64>) -> Result<()> {
-        if !self.factored {
-            return Err(Error::Solver(
-                "solve requested before a successful factorization".into(),
-            ));
-        }
-        if rhs.nrows() != self.n() {
-            return Err(Error::InvalidInput(format!(
-                "right-hand side has {} rows, the matrix has order {}",
-                rhs.nrows(),
-                self.n()
-            )));
-        }
-        let llt = LltRef::<usize, f64>::new(&self.symbolic, &self.l_values);
-        let ncols = rhs.ncols();
-        let mut j = 0;
-        while j < ncols {
-            let k = RHS_BATCH.min(ncols - j);
-            llt.solve_in_place_with_conj(
-                Conj::No,
-                rhs.as_mut().subcols_mut(j, k),
-                Par::Seq,
-                MemStack::new(&mut self.workspace),
-            );
-            j += k;
-        }
-        Ok(())
-    }
-
-    /// How many numeric factorizations this object has performed.
-    pub fn factorizations(&self) -> usize {
-        self.factorizations
     }
 }
 
@@ -306,7 +484,11 @@ mod tests {
             let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &t).unwrap();
             let trailing: Vec<usize> = vec![n / 2, 3, n - 1, n / 3, 7];
             let mut chol = SparseCholesky::analyze_with_trailing(a.symbolic(), &trailing).unwrap();
-            let supernodal = matches!(chol.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_));
+            #[allow(irrefutable_let_patterns)] // irrefutable without the CHOLMOD variant
+            let Engine::Faer(f) = &chol.engine else {
+                panic!("analyze_with_trailing must use faer")
+            };
+            let supernodal = matches!(f.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_));
             assert_eq!(
                 supernodal,
                 n > 100,
@@ -340,5 +522,139 @@ mod tests {
         assert!(matches!(err, Error::Singular(_)), "{err}");
         let mut x = Mat::<f64>::zeros(2, 1);
         assert!(chol.solve_in_place(x.as_mut()).is_err());
+    }
+
+    #[test]
+    fn send_and_sync() {
+        fn check<T: Send + Sync>() {}
+        check::<SparseCholesky>();
+    }
+
+    #[test]
+    fn backend_names_and_default() {
+        assert_eq!(Backend::default(), Backend::Faer);
+        assert!(Backend::Faer.available());
+        assert_eq!(Backend::Faer.name(), "faer");
+        assert_eq!(Backend::Cholmod.to_string(), "cholmod");
+        assert_eq!(Backend::Cholmod.available(), cfg!(feature = "suitesparse"));
+    }
+
+    /// Without the feature, every CHOLMOD entry point is an error, not a panic.
+    #[cfg(not(feature = "suitesparse"))]
+    #[test]
+    fn cholmod_without_feature_is_an_error() {
+        let (a, _) = laplacian(5);
+        let expected = Error::Solver(
+            "hycon was built without the `suitesparse` feature: CHOLMOD is not available".into(),
+        );
+        let err = SparseCholesky::analyze_on(Backend::Cholmod, a.symbolic()).unwrap_err();
+        assert_eq!(err, expected);
+        let err = SparseCholesky::analyze_with_trailing_on(Backend::Cholmod, a.symbolic(), &[1])
+            .unwrap_err();
+        assert_eq!(err, expected);
+    }
+
+    /// Both backends, same small problems: solves, condensed inverse (both storage sizes on
+    /// the faer side), an empty matrix, a changed pattern, a repeated trailing unknown.
+    #[cfg(feature = "suitesparse")]
+    #[test]
+    fn cholmod_matches_faer_on_small_matrices() {
+        for n in [1, 30, 2_000] {
+            let (a, full) = laplacian(n);
+            let b = Mat::<f64>::from_fn(n, 70, |i, j| ((i * 5 + j * 3) % 13) as f64 - 6.0);
+            let trailing: Vec<usize> = [n / 2, 0, n - 1]
+                .into_iter()
+                .collect::<std::collections::BTreeSet<_>>()
+                .into_iter()
+                .rev()
+                .collect();
+            let mut results = Vec::new();
+            for backend in [Backend::Faer, Backend::Cholmod] {
+                let mut chol =
+                    SparseCholesky::analyze_with_trailing_on(backend, a.symbolic(), &trailing)
+                        .unwrap();
+                assert_eq!(chol.backend(), backend);
+                assert_eq!(chol.n(), n);
+                chol.factorize(a.as_ref()).unwrap();
+                chol.factorize(a.as_ref()).unwrap();
+                assert_eq!(chol.factorizations(), 2);
+                let mut x = b.clone();
+                chol.solve_in_place(x.as_mut()).unwrap();
+                let r = &full * &x - &b;
+                assert!(
+                    r.norm_max() < 1e-12 * (n * n) as f64,
+                    "{backend}: {}",
+                    r.norm_max()
+                );
+                results.push((x, chol.condensed_inverse().unwrap()));
+            }
+            let (xf, sf) = &results[0];
+            let (xc, sc) = &results[1];
+            assert!((xf - xc).norm_max() <= 1e-12 * xf.norm_max(), "n = {n}");
+            assert!((sf - sc).norm_max() <= 1e-12 * sf.norm_max(), "n = {n}");
+        }
+        let empty = SparseColMat::<usize, f64>::try_new_from_triplets(0, 0, &[]).unwrap();
+        let mut chol = SparseCholesky::analyze_on(Backend::Cholmod, empty.symbolic()).unwrap();
+        chol.factorize(empty.as_ref()).unwrap();
+        chol.solve_in_place(Mat::<f64>::zeros(0, 3).as_mut())
+            .unwrap();
+        assert_eq!(chol.condensed_inverse().unwrap().nrows(), 0);
+
+        let (a, _) = laplacian(4);
+        let mut chol = SparseCholesky::analyze_on(Backend::Cholmod, a.symbolic()).unwrap();
+        let (other, _) = laplacian(5);
+        assert!(matches!(
+            chol.factorize(other.as_ref()),
+            Err(Error::InvalidInput(_))
+        ));
+        let diag = SparseColMat::<usize, f64>::try_new_from_triplets(
+            4,
+            4,
+            &(0..4).map(|i| Triplet::new(i, i, 1.0)).collect::<Vec<_>>(),
+        )
+        .unwrap();
+        assert!(matches!(
+            chol.factorize(diag.as_ref()),
+            Err(Error::InvalidInput(_))
+        ));
+        assert!(matches!(
+            SparseCholesky::analyze_with_trailing_on(Backend::Cholmod, a.symbolic(), &[1, 1]),
+            Err(Error::InvalidInput(_))
+        ));
+    }
+
+    /// The same indefinite matrix gives the same error, with the same equation, on both.
+    #[cfg(feature = "suitesparse")]
+    #[test]
+    fn cholmod_reports_indefinite_matrix_like_faer() {
+        // SPD leading 3 x 3 block, then a row that makes the 4th pivot negative.
+        let t = [
+            Triplet::new(0, 0, 4.0),
+            Triplet::new(1, 1, 4.0),
+            Triplet::new(2, 2, 4.0),
+            Triplet::new(3, 3, 1.0),
+            Triplet::new(3, 0, 2.0),
+            Triplet::new(3, 2, 2.0),
+        ];
+        let a = SparseColMat::<usize, f64>::try_new_from_triplets(4, 4, &t).unwrap();
+        let errs: Vec<Error> = [Backend::Faer, Backend::Cholmod]
+            .into_iter()
+            .map(|backend| {
+                let mut chol = SparseCholesky::analyze_on(backend, a.symbolic()).unwrap();
+                let err = chol.factorize(a.as_ref()).unwrap_err();
+                assert_eq!(chol.factorizations(), 0);
+                assert!(
+                    chol.solve_in_place(Mat::<f64>::zeros(4, 1).as_mut())
+                        .is_err()
+                );
+                err
+            })
+            .collect();
+        for e in &errs {
+            assert!(
+                matches!(e, Error::Singular(m) if m.contains("not positive definite")),
+                "{e}"
+            );
+        }
     }
 }
