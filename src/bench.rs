@@ -4,9 +4,9 @@
 
 use crate::assembly::{DofMap, SparsePattern, dof};
 use crate::element::{self, ElementMatrix, Formulation};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
-use crate::mesh::generate;
+use crate::mesh::generate::{self, Transition};
 use crate::solver::SparseCholesky;
 use faer::Mat;
 use std::time::Instant;
@@ -251,4 +251,754 @@ pub fn guard_values() -> Result<Vec<GuardValue>> {
         value: ((cook - crate::cases::COOK_CONVERGED) / crate::cases::COOK_CONVERGED).abs(),
     });
     Ok(values)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Run time against error: the Hertz sweep (`hycon bench sweep`)
+
+/// Sparse backend of a sweep run, as named on the command line (`faer`, `cholmod`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SweepBackend {
+    /// faer's supernodal Cholesky (always available).
+    #[default]
+    Faer,
+    /// SuiteSparse's CHOLMOD (the `suitesparse` feature).
+    Cholmod,
+}
+
+impl SweepBackend {
+    /// Both backends, in the order tables list them.
+    pub const ALL: [SweepBackend; 2] = [SweepBackend::Faer, SweepBackend::Cholmod];
+
+    /// `"faer"` or `"cholmod"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SweepBackend::Faer => "faer",
+            SweepBackend::Cholmod => "cholmod",
+        }
+    }
+
+    /// Whether a contact analysis of this build can run on the backend.
+    pub fn available(self) -> bool {
+        match self {
+            SweepBackend::Faer => true,
+            // not yet selectable in ContactOptions
+            SweepBackend::Cholmod => false,
+        }
+    }
+
+    /// Parse a name given by [`SweepBackend::name`].
+    pub fn parse(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|b| b.name() == name)
+    }
+}
+
+/// Whether the contact analysis can re-factor `K` and rebuild the flexibility every iteration
+/// (the variant compared with the factor-once design).
+pub fn refactor_available() -> bool {
+    false
+}
+
+/// Name of a mesh variant in the sweep's tables and CSV: `"transition"` (5- and 6-node
+/// transition elements, the reference scene) or `"quads"` (4-node quadrilaterals only).
+pub fn mesh_name(t: Transition) -> &'static str {
+    match t {
+        Transition::Elements => "transition",
+        Transition::Quads => "quads",
+    }
+}
+
+/// Parse a name given by [`mesh_name`].
+pub fn parse_mesh(name: &str) -> Option<Transition> {
+    [Transition::Elements, Transition::Quads]
+        .into_iter()
+        .find(|&t| mesh_name(t) == name)
+}
+
+/// Parse an element name given by [`Formulation::name`].
+pub fn parse_formulation(name: &str) -> Option<Formulation> {
+    Formulation::ALL.into_iter().find(|f| f.name() == name)
+}
+
+/// One run of the sweep: the reference Hertz scene (frictionless, `a = R/64`, `E_disk =
+/// E_block`) with one element, mesh variant, refinement and backend.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SweepCase {
+    /// Element formulation.
+    pub formulation: Formulation,
+    /// Mesh variant.
+    pub transition: Transition,
+    /// Elements per target half-width (a power of two).
+    pub n: usize,
+    /// Sparse backend.
+    pub backend: SweepBackend,
+    /// Re-factor `K` and rebuild the flexibility every iteration (instead of once).
+    pub refactor: bool,
+    /// Element size cap everywhere, in radii ([`DiskOnBlock::max_element_size`]).
+    ///
+    /// [`DiskOnBlock::max_element_size`]: crate::contact::scene::DiskOnBlock::max_element_size
+    pub max_element_size: Option<f64>,
+}
+
+impl SweepCase {
+    /// The case on the reference scene: hybrid elements, transition mesh, faer, factor once.
+    pub fn reference(n: usize) -> Self {
+        SweepCase {
+            formulation: Formulation::Hybrid,
+            transition: Transition::Elements,
+            n,
+            backend: SweepBackend::Faer,
+            refactor: false,
+            max_element_size: None,
+        }
+    }
+
+    /// `element/mesh`, e.g. `hybrid/transition`.
+    pub fn config(&self) -> String {
+        format!("{}/{}", self.formulation.name(), mesh_name(self.transition))
+    }
+
+    /// The arguments of the hidden single-run subcommand that runs this case.
+    pub fn cli_args(&self) -> Vec<String> {
+        let mut args: Vec<String> = [
+            "bench",
+            "sweep-one",
+            "--element",
+            self.formulation.name(),
+            "--mesh",
+            mesh_name(self.transition),
+            "--backend",
+            self.backend.name(),
+        ]
+        .map(String::from)
+        .into();
+        args.extend(["--n".into(), self.n.to_string()]);
+        if self.refactor {
+            args.push("--refactor".into());
+        }
+        if let Some(c) = self.max_element_size {
+            args.extend(["--max-element-size".into(), format!("{c:e}")]);
+        }
+        args
+    }
+}
+
+/// What one sweep run measured. Times in seconds (wall clock), memory in MiB.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepRun {
+    /// The case.
+    pub case: SweepCase,
+    /// Free dofs (both bodies).
+    pub dofs: usize,
+    /// Elements.
+    pub elements: usize,
+    /// Dofs of the contact candidates (the condensed boundary).
+    pub contact_dofs: usize,
+    /// A nodes in contact at the end.
+    pub active: usize,
+    /// Contact iterations over both increments (calibration and final).
+    pub iterations: usize,
+    /// Numeric factorizations of `K`.
+    pub factorizations: usize,
+    /// Mesh generation and model set-up ([`DiskOnBlock::build`]).
+    ///
+    /// [`DiskOnBlock::build`]: crate::contact::scene::DiskOnBlock::build
+    pub mesh: f64,
+    /// The contact analysis' own split.
+    pub timings: crate::contact::iteration::Timings,
+    /// Everything from mesh generation to the recovered displacement field.
+    pub total: f64,
+    /// Peak resident memory of the process running the case (`VmHWM`), MiB (NaN if unknown).
+    pub peak_rss: f64,
+    /// Resident memory of that process before the case started (`VmRSS`), MiB.
+    pub start_rss: f64,
+    /// L2 error of the multiplier pressure against Hertz (relative).
+    pub l2_error: f64,
+    /// Same, pressures from the equivalent nodal forces.
+    pub l2_error_forces: f64,
+    /// `a / a_Hertz - 1` (half-width from the second moment of the pressure).
+    pub half_width_error: f64,
+    /// `p(0) / p0_Hertz - 1`.
+    pub peak_error: f64,
+}
+
+/// Header of the sweep CSV (the order of [`SweepRun::csv_row`]).
+pub const SWEEP_CSV_HEADER: &str = "element,mesh,backend,refactor,n,max_element_size,dofs,\
+elements,contact_dofs,active_nodes,iterations,factorizations,mesh_s,assembly_s,\
+factorization_s,flexibility_s,load_solves_s,iterations_s,recovery_s,total_s,peak_rss_mib,\
+start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error";
+
+impl SweepRun {
+    /// Memory of the run itself: peak minus the process' memory before it started, MiB.
+    pub fn memory(&self) -> f64 {
+        self.peak_rss - self.start_rss
+    }
+
+    /// One CSV line (no newline), columns as [`SWEEP_CSV_HEADER`].
+    pub fn csv_row(&self) -> String {
+        let c = &self.case;
+        let t = &self.timings;
+        let cap = c
+            .max_element_size
+            .map_or(String::new(), |v| format!("{v:e}"));
+        format!(
+            "{},{},{},{},{},{cap},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},\
+             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e}",
+            c.formulation.name(),
+            mesh_name(c.transition),
+            c.backend.name(),
+            c.refactor,
+            c.n,
+            self.dofs,
+            self.elements,
+            self.contact_dofs,
+            self.active,
+            self.iterations,
+            self.factorizations,
+            self.mesh,
+            t.assembly,
+            t.factorization,
+            t.flexibility,
+            t.load_solves,
+            t.iterations,
+            t.recovery,
+            self.total,
+            self.peak_rss,
+            self.start_rss,
+            self.l2_error,
+            self.l2_error_forces,
+            self.half_width_error,
+            self.peak_error,
+        )
+    }
+
+    /// Parse a line written by [`SweepRun::csv_row`].
+    pub fn from_csv_row(line: &str) -> Result<SweepRun> {
+        let bad = |what: &str| Error::InvalidInput(format!("sweep CSV row {line:?}: {what}"));
+        let f: Vec<&str> = line.trim().split(',').collect();
+        if f.len() != SWEEP_CSV_HEADER.split(',').count() {
+            return Err(bad("wrong number of columns"));
+        }
+        let num = |i: usize| -> Result<f64> { f[i].parse().map_err(|_| bad(f[i])) };
+        let int = |i: usize| -> Result<usize> { f[i].parse().map_err(|_| bad(f[i])) };
+        let case = SweepCase {
+            formulation: parse_formulation(f[0]).ok_or_else(|| bad(f[0]))?,
+            transition: parse_mesh(f[1]).ok_or_else(|| bad(f[1]))?,
+            backend: SweepBackend::parse(f[2]).ok_or_else(|| bad(f[2]))?,
+            refactor: f[3].parse().map_err(|_| bad(f[3]))?,
+            n: int(4)?,
+            max_element_size: if f[5].is_empty() { None } else { Some(num(5)?) },
+        };
+        Ok(SweepRun {
+            case,
+            dofs: int(6)?,
+            elements: int(7)?,
+            contact_dofs: int(8)?,
+            active: int(9)?,
+            iterations: int(10)?,
+            factorizations: int(11)?,
+            mesh: num(12)?,
+            timings: crate::contact::iteration::Timings {
+                assembly: num(13)?,
+                factorization: num(14)?,
+                flexibility: num(15)?,
+                load_solves: num(16)?,
+                iterations: num(17)?,
+                recovery: num(18)?,
+            },
+            total: num(19)?,
+            peak_rss: num(20)?,
+            start_rss: num(21)?,
+            l2_error: num(22)?,
+            l2_error_forces: num(23)?,
+            half_width_error: num(24)?,
+            peak_error: num(25)?,
+        })
+    }
+}
+
+/// Resident memory of this process now (Linux `VmRSS`), in bytes.
+pub fn current_memory() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
+/// Run one sweep case in this process: build the scene (timed as `mesh`), factor and condense
+/// (`ContactAnalysis::new`), one calibration increment at a trial approach, the final
+/// increment at the calibrated approach (the Hertz load of `a = R/64`), and the full
+/// displacement field (one recovery solve); errors from the final increment. Peak memory is
+/// the process' `VmHWM`: run each case in a fresh process (`hycon bench sweep` does) for it to
+/// be the case's own.
+pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
+    use crate::contact::iteration::ContactOptions;
+    use crate::contact::scene::DiskOnBlock;
+    if !case.backend.available() {
+        return Err(Error::InvalidInput(format!(
+            "backend {} is not available in this build",
+            case.backend.name()
+        )));
+    }
+    if case.refactor && !refactor_available() {
+        return Err(Error::InvalidInput(
+            "re-factoring every iteration is not available in this build".into(),
+        ));
+    }
+    let mib = |b: Option<u64>| b.map_or(f64::NAN, |b| b as f64 / 1048576.0);
+    let start_rss = mib(current_memory());
+    let clock = Instant::now();
+    let scene = DiskOnBlock {
+        elements_per_half_width: case.n,
+        formulation: case.formulation,
+        transition: case.transition,
+        max_element_size: case.max_element_size,
+        ..Default::default()
+    }
+    .build()?;
+    let mesh = clock.elapsed().as_secs_f64();
+    let model = &scene.model;
+    let prescribed: std::collections::HashSet<(usize, usize)> =
+        model.prescribed.iter().map(|p| (p.node, p.dir)).collect();
+    let dofs = 2 * model.mesh.n_nodes() - prescribed.len();
+    let elements = model.mesh.n_elements();
+    let mut contact_nodes: Vec<usize> = scene.pair.a.iter().chain(&scene.pair.b).copied().collect();
+    contact_nodes.sort_unstable();
+    contact_nodes.dedup();
+    let options = ContactOptions::default();
+    let mut analysis = scene.analysis(options)?;
+    let approach = scene.calibrated_approach(&mut analysis)?;
+    let f = vec![0.0; 2 * model.mesh.n_nodes()];
+    analysis.increment(&f, &scene.prescribed(approach, 0.0))?;
+    analysis.displacement()?;
+    let total = clock.elapsed().as_secs_f64();
+    let c = scene.compare(&analysis)?;
+    Ok(SweepRun {
+        case: *case,
+        dofs,
+        elements,
+        contact_dofs: 2 * contact_nodes.len(),
+        active: c.active,
+        iterations: analysis.records().len(),
+        factorizations: analysis.factorizations(),
+        mesh,
+        timings: analysis.timings(),
+        total,
+        peak_rss: mib(peak_memory()),
+        start_rss,
+        l2_error: c.l2_error,
+        l2_error_forces: c.l2_error_forces,
+        half_width_error: c.half_width / c.hertz.half_width - 1.0,
+        peak_error: c.peak / c.hertz.peak - 1.0,
+    })
+}
+
+/// Run `case` in a fresh child process of the executable `exe` (the hidden subcommand `bench
+/// sweep-one`, which prints one CSV row), so that the peak memory is the case's own.
+pub fn sweep_run_in_child(exe: &std::path::Path, case: &SweepCase) -> Result<SweepRun> {
+    let out = std::process::Command::new(exe)
+        .args(case.cli_args())
+        .output()
+        .map_err(|e| Error::InvalidInput(format!("cannot run {}: {e}", exe.display())))?;
+    if !out.status.success() {
+        return Err(Error::InvalidInput(format!(
+            "{} {}: {}",
+            case.config(),
+            case.n,
+            String::from_utf8_lossy(&out.stderr).trim()
+        )));
+    }
+    let text = String::from_utf8_lossy(&out.stdout);
+    let row = text
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .ok_or_else(|| Error::InvalidInput("sweep-one printed nothing".into()))?;
+    SweepRun::from_csv_row(row)
+}
+
+/// The whole CSV text of `runs` (header first).
+pub fn sweep_csv(runs: &[SweepRun]) -> String {
+    let mut text = String::from(SWEEP_CSV_HEADER);
+    text.push('\n');
+    for r in runs {
+        text.push_str(&r.csv_row());
+        text.push('\n');
+    }
+    text
+}
+
+/// Parse a CSV written by [`sweep_csv`].
+pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
+    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+    match lines.next() {
+        Some(h) if h.trim() == SWEEP_CSV_HEADER => {}
+        _ => {
+            return Err(Error::InvalidInput(
+                "not a sweep CSV (header differs)".into(),
+            ));
+        }
+    }
+    lines.map(SweepRun::from_csv_row).collect()
+}
+
+/// Series key: element, mesh, backend, refactor (one line in the plots).
+fn series_key(c: &SweepCase) -> (usize, u8, usize, bool) {
+    let f = Formulation::ALL
+        .iter()
+        .position(|&g| g == c.formulation)
+        .unwrap_or(0);
+    let m = match c.transition {
+        Transition::Elements => 0,
+        Transition::Quads => 1,
+    };
+    let b = SweepBackend::ALL
+        .iter()
+        .position(|&g| g == c.backend)
+        .unwrap_or(0);
+    (f, m, b, c.refactor)
+}
+
+/// Name of a series: `element/mesh backend` (and `, re-factor each iteration`).
+pub fn series_name(c: &SweepCase) -> String {
+    let mut s = format!("{} {}", c.config(), c.backend.name());
+    if c.refactor {
+        s += ", refactor each iteration";
+    }
+    s
+}
+
+/// The plotted and summarised runs: without an element-size cap, one per series and `n` (the
+/// fastest of repeated runs, the usual estimate on a noisy machine), grouped by series and
+/// sorted by `n`.
+pub fn sweep_series(runs: &[SweepRun]) -> Vec<Vec<SweepRun>> {
+    let mut best: std::collections::BTreeMap<_, SweepRun> = std::collections::BTreeMap::new();
+    for r in runs.iter().filter(|r| r.case.max_element_size.is_none()) {
+        let key = (series_key(&r.case), r.case.n);
+        match best.get(&key) {
+            Some(b) if b.total <= r.total => {}
+            _ => {
+                best.insert(key, r.clone());
+            }
+        }
+    }
+    let mut series: Vec<Vec<SweepRun>> = Vec::new();
+    for ((key, _), r) in best {
+        match series.last_mut() {
+            Some(s) if series_key(&s[0].case) == key => s.push(r),
+            _ => series.push(vec![r]),
+        }
+    }
+    series
+}
+
+/// Least-squares fit of `y = c x^p` on log-log axes: `(p, c, r^2)`; `None` with fewer than two
+/// distinct positive points.
+pub fn fit_power(points: &[(f64, f64)]) -> Option<(f64, f64, f64)> {
+    let logs: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(x, y)| *x > 0.0 && *y > 0.0 && x.is_finite() && y.is_finite())
+        .map(|(x, y)| (x.ln(), y.ln()))
+        .collect();
+    let n = logs.len() as f64;
+    if logs.len() < 2 {
+        return None;
+    }
+    let (mx, my) = (
+        logs.iter().map(|p| p.0).sum::<f64>() / n,
+        logs.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = logs.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = logs.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let syy: f64 = logs.iter().map(|p| (p.1 - my).powi(2)).sum();
+    if sxx <= 0.0 {
+        return None;
+    }
+    let p = sxy / sxx;
+    let r2 = if syy > 0.0 {
+        sxy * sxy / (sxx * syy)
+    } else {
+        1.0
+    };
+    Some((p, (my - p * mx).exp(), r2))
+}
+
+/// The markdown summary of a sweep: per series the fastest run reaching 1% and 0.5% L2
+/// error, the ranking at each threshold, growth exponents of time and memory against dofs
+/// fitted over the runs with `n >= fit_min_n`, and the re-factor ratios.
+pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
+    use std::fmt::Write;
+    let series = sweep_series(runs);
+    let plain: Vec<&Vec<SweepRun>> = series.iter().filter(|s| !s[0].case.refactor).collect();
+    let mut md = String::new();
+    for threshold in [0.01, 0.005] {
+        let _ = writeln!(
+            md,
+            "\n### Fastest to L2 error <= {}%\n\n| rank | configuration | n | dofs | L2 | total s |\n|---|---|---|---|---|---|",
+            100.0 * threshold
+        );
+        let mut reached: Vec<&SweepRun> = plain
+            .iter()
+            .filter_map(|s| {
+                s.iter()
+                    .filter(|r| r.l2_error <= threshold)
+                    .min_by(|a, b| a.total.total_cmp(&b.total))
+            })
+            .collect();
+        reached.sort_by(|a, b| a.total.total_cmp(&b.total));
+        for (k, r) in reached.iter().enumerate() {
+            let _ = writeln!(
+                md,
+                "| {} | {} | {} | {} | {:.3}% | {:.4} |",
+                k + 1,
+                series_name(&r.case),
+                r.case.n,
+                r.dofs,
+                100.0 * r.l2_error,
+                r.total
+            );
+        }
+        for s in &plain {
+            if s.iter().all(|r| r.l2_error > threshold) {
+                let best = s
+                    .iter()
+                    .min_by(|a, b| a.l2_error.total_cmp(&b.l2_error))
+                    .expect("non-empty series");
+                let _ = writeln!(
+                    md,
+                    "| - | {} (not reached; best {:.3}% at n = {}) | | | | |",
+                    series_name(&s[0].case),
+                    100.0 * best.l2_error,
+                    best.case.n
+                );
+            }
+        }
+    }
+    let _ = writeln!(
+        md,
+        "\n### Growth against dofs (least squares on log-log, runs with n >= {fit_min_n})\n\n\
+         | configuration | points | dofs | time exponent (r^2) | memory exponent (r^2) |\n|---|---|---|---|---|"
+    );
+    for s in &plain {
+        let big: Vec<&SweepRun> = s.iter().filter(|r| r.case.n >= fit_min_n).collect();
+        let time: Vec<(f64, f64)> = big.iter().map(|r| (r.dofs as f64, r.total)).collect();
+        let mem: Vec<(f64, f64)> = big.iter().map(|r| (r.dofs as f64, r.memory())).collect();
+        let show = |f: Option<(f64, f64, f64)>| {
+            f.map_or("-".into(), |(p, _, r2)| format!("{p:.2} ({r2:.3})"))
+        };
+        let range = match (big.first(), big.last()) {
+            (Some(a), Some(b)) => format!("{} - {}", a.dofs, b.dofs),
+            _ => "-".into(),
+        };
+        let _ = writeln!(
+            md,
+            "| {} | {} | {range} | {} | {} |",
+            series_name(&s[0].case),
+            big.len(),
+            show(fit_power(&time)),
+            show(fit_power(&mem))
+        );
+    }
+    let refactor: Vec<&Vec<SweepRun>> = series.iter().filter(|s| s[0].case.refactor).collect();
+    if !refactor.is_empty() {
+        let _ = writeln!(
+            md,
+            "\n### Re-factor every iteration against factor once\n\n\
+             | configuration | n | factorizations | iterations | total s (re-factor) | total s (once) | ratio |\n|---|---|---|---|---|---|---|"
+        );
+        for s in refactor {
+            for r in s {
+                let once = plain
+                    .iter()
+                    .find(|p| {
+                        let c = &p[0].case;
+                        c.formulation == r.case.formulation
+                            && c.transition == r.case.transition
+                            && c.backend == r.case.backend
+                    })
+                    .and_then(|p| p.iter().find(|o| o.case.n == r.case.n));
+                let (t1, ratio) = once.map_or(("-".into(), "-".into()), |o| {
+                    (
+                        format!("{:.4}", o.total),
+                        format!("{:.2}", r.total / o.total),
+                    )
+                });
+                let _ = writeln!(
+                    md,
+                    "| {} | {} | {} | {} | {:.4} | {t1} | {ratio} |",
+                    r.case.config(),
+                    r.case.n,
+                    r.factorizations,
+                    r.iterations,
+                    r.total
+                );
+            }
+        }
+    }
+    md
+}
+
+// ---------------------------------------------------------------------------------------------
+// Plots of the sweep (plotters, SVG backend; the house style of `report::svg`)
+
+type Plot<T> = std::result::Result<T, Box<dyn std::error::Error>>;
+
+const FONT: &str = "sans-serif";
+
+/// Colour of a series: one hue per element and mesh, darker for CHOLMOD.
+fn series_colour(c: &SweepCase) -> plotters::style::RGBColor {
+    use plotters::style::RGBColor;
+    let base = match (c.formulation, c.transition) {
+        (Formulation::Hybrid, Transition::Elements) => RGBColor(31, 90, 200),
+        (Formulation::Hybrid, Transition::Quads) => RGBColor(0, 160, 190),
+        (Formulation::PianSumihara, _) => RGBColor(40, 150, 40),
+        (Formulation::Q4, _) => RGBColor(210, 50, 40),
+    };
+    match c.backend {
+        SweepBackend::Faer => base,
+        SweepBackend::Cholmod => RGBColor(base.0 / 2, base.1 / 2, base.2 / 2),
+    }
+}
+
+/// Logarithmic axis range around positive values (a factor `pad` of margin each side).
+fn log_range(values: impl Iterator<Item = f64>, pad: f64) -> std::ops::Range<f64> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    if lo.is_finite() && hi > 0.0 {
+        lo / pad..hi * pad
+    } else {
+        0.1..10.0
+    }
+}
+
+/// One log-log panel: a line with dots per series, `n` written beside each dot.
+fn log_panel<DB: plotters::prelude::DrawingBackend>(
+    area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    title: &str,
+    (x_desc, y_desc): (&str, &str),
+    series: &[Vec<SweepRun>],
+    point: &dyn Fn(&SweepRun) -> (f64, f64),
+    guides: &[(f64, &str)],
+) -> Plot<()>
+where
+    DB::ErrorType: 'static,
+{
+    use plotters::prelude::*;
+    let all: Vec<(f64, f64)> = series.iter().flatten().map(point).collect();
+    let xr = log_range(all.iter().map(|p| p.0), 1.3);
+    let yr = log_range(
+        all.iter().map(|p| p.1).chain(guides.iter().map(|g| g.0)),
+        1.3,
+    );
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, (FONT, 14))
+        .margin(10)
+        .x_label_area_size(36)
+        .y_label_area_size(60)
+        .build_cartesian_2d(xr.clone().log_scale(), yr.log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style((FONT, 12))
+        .draw()?;
+    for &(y, name) in guides {
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(xr.start, y), (xr.end, y)],
+                5,
+                4,
+                BLACK.mix(0.45).stroke_width(1),
+            ))?
+            .label(name)
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], BLACK.mix(0.45)));
+    }
+    for s in series {
+        let c = series_colour(&s[0].case);
+        let pts: Vec<(f64, f64)> = s.iter().map(point).collect();
+        chart
+            .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))?
+            .label(series_name(&s[0].case))
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2)));
+        chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled())))?;
+        chart.draw_series(s.iter().zip(&pts).map(|(r, &p)| {
+            Text::new(
+                format!("{}", r.case.n),
+                p,
+                (FONT, 10).into_font().color(&c.mix(0.9)),
+            )
+        }))?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK.mix(0.4))
+        .label_font((FONT, 11))
+        .draw()?;
+    Ok(())
+}
+
+/// SVG: L2 pressure error against total run time, one line per element / mesh / backend
+/// (numbers beside the dots: elements per half-width), dashed lines at 1% and 0.5%.
+pub fn sweep_error_time_svg(runs: &[SweepRun]) -> Plot<String> {
+    use plotters::prelude::*;
+    let series: Vec<Vec<SweepRun>> = sweep_series(runs)
+        .into_iter()
+        .filter(|s| !s[0].case.refactor)
+        .collect();
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 640)).into_drawing_area();
+        root.fill(&WHITE)?;
+        log_panel(
+            &root,
+            "Hertz scene: L2 pressure error against total run time (dots labelled n = a/h)",
+            (
+                "total time per analysis, s",
+                "L2 error of the contact pressure, %",
+            ),
+            &series,
+            &|r| (r.total, 100.0 * r.l2_error),
+            &[(1.0, "1%"), (0.5, "0.5%")],
+        )?;
+        root.present()?;
+    }
+    Ok(svg)
+}
+
+/// SVG, two panels: total run time and the run's own peak memory against free dofs.
+pub fn sweep_time_dofs_svg(runs: &[SweepRun]) -> Plot<String> {
+    use plotters::prelude::*;
+    let series: Vec<Vec<SweepRun>> = sweep_series(runs)
+        .into_iter()
+        .filter(|s| !s[0].case.refactor)
+        .collect();
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1300, 560)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let panels = root.split_evenly((1, 2));
+        log_panel(
+            &panels[0],
+            "total time against dofs",
+            ("free dofs", "total time, s"),
+            &series,
+            &|r| (r.dofs as f64, r.total),
+            &[],
+        )?;
+        log_panel(
+            &panels[1],
+            "peak memory of the run (VmHWM - VmRSS at start) against dofs",
+            ("free dofs", "memory, MiB"),
+            &series,
+            &|r| (r.dofs as f64, r.memory()),
+            &[],
+        )?;
+        root.present()?;
+    }
+    Ok(svg)
 }

@@ -170,6 +170,80 @@ enum Bench {
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
         n: Vec<usize>,
     },
+    /// Run time against error: the reference Hertz scene (frictionless, a = R/64, calibration
+    /// increment + final increment + full-field recovery) for each element / mesh variant /
+    /// backend and n = min, 2 min, ..., max elements per half-width, each run in a fresh child
+    /// process (its own peak memory). Writes sweep.csv, sweep_error_time.svg,
+    /// sweep_time_dofs.svg and sweep_summary.md to --out [default: docs/bench].
+    Sweep {
+        /// Smallest elements per half-width (a power of two).
+        #[arg(long, default_value_t = 4)]
+        min: usize,
+        /// Largest elements per half-width (a power of two, at most 256).
+        #[arg(long, default_value_t = 256)]
+        max: usize,
+        /// Element/mesh configurations: hybrid, pian-sumihara or q4 / transition (5- and
+        /// 6-node transition elements, hybrid only) or quads (4-node quadrilaterals only).
+        #[arg(
+            long,
+            value_delimiter = ',',
+            default_values = ["hybrid/transition", "hybrid/quads", "pian-sumihara/quads", "q4/quads"]
+        )]
+        configs: Vec<String>,
+        /// Sparse backend(s).
+        #[arg(long, value_enum, default_value_t = BackendChoice::Faer)]
+        backend: BackendChoice,
+        /// Extra runs that re-factor K and rebuild the flexibility every iteration, at these n
+        /// (comma separated; empty: none). Skipped when this build cannot.
+        #[arg(long, value_delimiter = ',', default_values_t = [8, 16, 32])]
+        refactor_n: Vec<usize>,
+        /// Runs per case (the plots and the summary take the fastest).
+        #[arg(long, default_value_t = 1)]
+        repeats: usize,
+        /// Growth exponents are fitted over the runs with at least this n.
+        #[arg(long, default_value_t = 16)]
+        fit_min_n: usize,
+        /// Do not run anything: re-read this sweep CSV and rewrite the plots and the summary.
+        #[arg(long, value_name = "CSV")]
+        from_csv: Option<PathBuf>,
+    },
+    /// One sweep case in this process; prints one CSV row (used by `bench sweep`).
+    #[command(hide = true)]
+    SweepOne {
+        #[arg(long, value_enum, default_value_t = Element::Hybrid)]
+        element: Element,
+        #[arg(long, value_enum, default_value_t = MeshChoice::Transition)]
+        mesh: MeshChoice,
+        #[arg(long, default_value_t = 16)]
+        n: usize,
+        #[arg(long, default_value = "faer")]
+        backend: String,
+        #[arg(long)]
+        refactor: bool,
+        #[arg(long)]
+        max_element_size: Option<f64>,
+        /// Also print the CSV header.
+        #[arg(long)]
+        header: bool,
+    },
+    /// Cost against size: one configuration at fixed n with the element size capped at
+    /// 2^-k radii for each k (uniformly finer far fields, up to and past 1M dofs), each in a
+    /// fresh child process; fits time and memory against dofs. Writes contact_scale.csv and
+    /// contact_scale.md to --out [default: docs/bench].
+    ContactScale {
+        /// Elements per half-width.
+        #[arg(long, default_value_t = 16)]
+        n: usize,
+        /// Element/mesh configuration (as for `sweep`).
+        #[arg(long, default_value = "hybrid/transition")]
+        config: String,
+        /// Exponents k of the caps 2^-k (radii); k = 7 gives about 1.1M dofs.
+        #[arg(long, value_delimiter = ',', default_values_t = [3, 4, 5, 6, 7])]
+        levels: Vec<i32>,
+        /// Sparse backend.
+        #[arg(long, default_value = "faer")]
+        backend: String,
+    },
     /// The regression guard: accuracy at fixed meshes against the committed values; fails
     /// (exit 1) when an error got worse. Timings are printed, never checked.
     Guard {
@@ -180,6 +254,30 @@ enum Bench {
         #[arg(long)]
         write: bool,
     },
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum BackendChoice {
+    Faer,
+    Cholmod,
+    All,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum MeshChoice {
+    /// 5- and 6-node transition elements (the reference scene; hybrid only).
+    Transition,
+    /// 4-node quadrilaterals only.
+    Quads,
+}
+
+impl From<MeshChoice> for hycon::mesh::generate::Transition {
+    fn from(m: MeshChoice) -> Self {
+        match m {
+            MeshChoice::Transition => Self::Elements,
+            MeshChoice::Quads => Self::Quads,
+        }
+    }
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -300,7 +398,7 @@ pub fn main() -> ExitCode {
             nu,
             plane_strain,
         } => beam(element.into(), load, nx, ny, distortion, nu, plane_strain),
-        Command::Bench { what } => bench(what),
+        Command::Bench { what } => bench(what, out.as_deref()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -378,8 +476,59 @@ fn beam(
     Ok(())
 }
 
-fn bench(what: Bench) -> AnyResult {
+fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
+    let out = out.unwrap_or(Path::new("docs/bench"));
     match what {
+        Bench::Sweep {
+            min,
+            max,
+            configs,
+            backend,
+            refactor_n,
+            repeats,
+            fit_min_n,
+            from_csv,
+        } => {
+            let plan = SweepPlan {
+                min,
+                max,
+                configs,
+                backend,
+                refactor_n,
+                repeats,
+            };
+            sweep(&plan, fit_min_n, from_csv.as_deref(), out)?
+        }
+        Bench::SweepOne {
+            element,
+            mesh,
+            n,
+            backend,
+            refactor,
+            max_element_size,
+            header,
+        } => {
+            let case = hycon::bench::SweepCase {
+                formulation: element.into(),
+                transition: mesh.into(),
+                n,
+                backend: hycon::bench::SweepBackend::parse(&backend)
+                    .ok_or_else(|| format!("unknown backend {backend:?}"))?,
+                refactor,
+                max_element_size,
+            };
+            let run = hycon::bench::sweep_run(&case)?;
+            if header {
+                println!("{}", hycon::bench::SWEEP_CSV_HEADER);
+            }
+            println!("{}", run.csv_row());
+        }
+        Bench::ContactScale {
+            n,
+            config,
+            levels,
+            backend,
+        } => contact_scale(n, &config, &levels, &backend, out)?,
         Bench::Kernels { repeats } => {
             println!("element stiffness kernel, {repeats} evaluations each:");
             for k in hycon::bench::kernel_times(repeats)? {
@@ -839,4 +988,302 @@ fn guard(reference: &Path, write: bool) -> AnyResult {
     } else {
         Err(format!("regression guard: worse than committed: {worse:?}").into())
     }
+}
+
+/// What `hycon bench sweep` runs.
+struct SweepPlan {
+    min: usize,
+    max: usize,
+    configs: Vec<String>,
+    backend: BackendChoice,
+    refactor_n: Vec<usize>,
+    repeats: usize,
+}
+
+/// Parse `element/mesh` into a case at `n` (faer, factor once).
+fn parse_config(config: &str, n: usize) -> AnyResult<hycon::bench::SweepCase> {
+    let (e, m) = config
+        .split_once('/')
+        .ok_or_else(|| format!("configuration {config:?} is not element/mesh"))?;
+    Ok(hycon::bench::SweepCase {
+        formulation: hycon::bench::parse_formulation(e)
+            .ok_or_else(|| format!("unknown element {e:?} (hybrid, pian-sumihara, q4)"))?,
+        transition: hycon::bench::parse_mesh(m)
+            .ok_or_else(|| format!("unknown mesh {m:?} (transition, quads)"))?,
+        ..hycon::bench::SweepCase::reference(n)
+    })
+}
+
+/// The sweep's cases, in run order (by n, then configuration, backend; re-factor runs last).
+fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
+    use hycon::bench::SweepBackend;
+    for n in [plan.min, plan.max] {
+        if n == 0 || !n.is_power_of_two() || n > 256 {
+            return Err(format!("--min/--max must be powers of two in 1..=256, got {n}").into());
+        }
+    }
+    let backends: Vec<SweepBackend> = match plan.backend {
+        BackendChoice::Faer => vec![SweepBackend::Faer],
+        BackendChoice::Cholmod => vec![SweepBackend::Cholmod],
+        BackendChoice::All => SweepBackend::ALL.to_vec(),
+    };
+    let mut usable = Vec::new();
+    for b in backends {
+        if b.available() {
+            usable.push(b);
+        } else {
+            eprintln!(
+                "note: backend {} is not available in this build (CHOLMOD needs --features suitesparse); skipped",
+                b.name()
+            );
+        }
+    }
+    if usable.is_empty() {
+        return Err("no available backend to run".into());
+    }
+    let mut ns = Vec::new();
+    let mut n = plan.min;
+    while n <= plan.max {
+        ns.push(n);
+        n *= 2;
+    }
+    let mut cases = Vec::new();
+    for &n in &ns {
+        for config in &plan.configs {
+            for &backend in &usable {
+                cases.push(hycon::bench::SweepCase {
+                    backend,
+                    ..parse_config(config, n)?
+                });
+            }
+        }
+    }
+    if !plan.refactor_n.is_empty() && !hycon::bench::refactor_available() {
+        eprintln!("note: this build cannot re-factor every iteration; --refactor-n runs skipped");
+    } else {
+        for &n in &plan.refactor_n {
+            for config in &plan.configs {
+                cases.push(hycon::bench::SweepCase {
+                    refactor: true,
+                    ..parse_config(config, n)?
+                });
+            }
+        }
+    }
+    Ok(cases)
+}
+
+/// `hycon bench sweep`: run the cases in child processes (or re-read a CSV), write the CSV,
+/// the plots and the summary.
+fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path) -> AnyResult {
+    let mut failed = Vec::new();
+    let runs = match from_csv {
+        Some(path) => hycon::bench::parse_sweep_csv(&std::fs::read_to_string(path)?)?,
+        None => {
+            let cases = sweep_cases(plan)?;
+            let exe = std::env::current_exe()?;
+            let clock = Instant::now();
+            println!(
+                "{:<34} {:>4} {:>8} {:>6} {:>5} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>7} {:>8} {:>8}",
+                "configuration",
+                "n",
+                "dofs",
+                "cand.",
+                "iters",
+                "mesh",
+                "assembly",
+                "factor",
+                "flexib.",
+                "iter.",
+                "recov.",
+                "total s",
+                "MiB",
+                "L2",
+                "a-aH"
+            );
+            let mut runs = Vec::new();
+            for case in &cases {
+                for _ in 0..plan.repeats.max(1) {
+                    match hycon::bench::sweep_run_in_child(&exe, case) {
+                        Ok(r) => {
+                            let t = r.timings;
+                            println!(
+                                "{:<34} {:>4} {:>8} {:>6} {:>5} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>7.1} {:>7.3}% {:>+7.3}%",
+                                hycon::bench::series_name(case),
+                                case.n,
+                                r.dofs,
+                                r.contact_dofs,
+                                r.iterations,
+                                r.mesh,
+                                t.assembly,
+                                t.factorization,
+                                t.flexibility,
+                                t.iterations,
+                                t.recovery,
+                                r.total,
+                                r.memory(),
+                                100.0 * r.l2_error,
+                                100.0 * r.half_width_error
+                            );
+                            runs.push(r);
+                        }
+                        Err(e) => {
+                            eprintln!("FAILED: {e}");
+                            failed.push(format!(
+                                "{} n={}: {e}",
+                                hycon::bench::series_name(case),
+                                case.n
+                            ));
+                        }
+                    }
+                }
+            }
+            println!(
+                "{} runs in {:.1} s, {} failed",
+                runs.len(),
+                clock.elapsed().as_secs_f64(),
+                failed.len()
+            );
+            for f in &failed {
+                println!("  failed: {f}");
+            }
+            runs
+        }
+    };
+    std::fs::create_dir_all(out)?;
+    let write = |name: &str, text: &str| -> AnyResult {
+        let path = out.join(name);
+        std::fs::write(&path, text)?;
+        println!("written: {}", path.display());
+        Ok(())
+    };
+    if from_csv.is_none() {
+        write("sweep.csv", &hycon::bench::sweep_csv(&runs))?;
+    }
+    write(
+        "sweep_error_time.svg",
+        &hycon::bench::sweep_error_time_svg(&runs)?,
+    )?;
+    write(
+        "sweep_time_dofs.svg",
+        &hycon::bench::sweep_time_dofs_svg(&runs)?,
+    )?;
+    let summary = hycon::bench::sweep_summary(&runs, fit_min_n);
+    println!("{summary}");
+    write("sweep_summary.md", &summary)?;
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "{} sweep runs failed (the files hold the others)",
+            failed.len()
+        )
+        .into())
+    }
+}
+
+/// `hycon bench contact-scale`: one configuration at fixed n, element size capped at 2^-k.
+fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Path) -> AnyResult {
+    use std::fmt::Write as _;
+    let backend = hycon::bench::SweepBackend::parse(backend)
+        .ok_or_else(|| format!("unknown backend {backend:?}"))?;
+    let exe = std::env::current_exe()?;
+    let mut runs = Vec::new();
+    println!(
+        "{:<28} {:>3} {:>9} {:>6} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} {:>7}",
+        "configuration",
+        "k",
+        "dofs",
+        "cand.",
+        "mesh",
+        "assembly",
+        "factor",
+        "flexib.",
+        "loads",
+        "iter.",
+        "recov.",
+        "total s",
+        "MiB",
+        "L2"
+    );
+    for &k in levels {
+        let case = hycon::bench::SweepCase {
+            backend,
+            max_element_size: Some(2f64.powi(-k)),
+            ..parse_config(config, n)?
+        };
+        let r = hycon::bench::sweep_run_in_child(&exe, &case)?;
+        let t = r.timings;
+        println!(
+            "{:<28} {:>3} {:>9} {:>6} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.1} {:>6.3}%",
+            hycon::bench::series_name(&case),
+            k,
+            r.dofs,
+            r.contact_dofs,
+            r.mesh,
+            t.assembly,
+            t.factorization,
+            t.flexibility,
+            t.load_solves,
+            t.iterations,
+            t.recovery,
+            r.total,
+            r.peak_rss,
+            100.0 * r.l2_error
+        );
+        runs.push(r);
+    }
+    std::fs::create_dir_all(out)?;
+    let csv = out.join("contact_scale.csv");
+    std::fs::write(&csv, hycon::bench::sweep_csv(&runs))?;
+    println!("written: {}", csv.display());
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "### Cost against size: {config}, n = {n}, element size capped at 2^-k radii
+
+         | k | dofs | elements | mesh s | assembly s | factorization s | flexibility s | load solves s | iterations s | recovery s | total s | peak RSS MiB | L2 |
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|"
+    );
+    for (r, k) in runs.iter().zip(levels) {
+        let t = r.timings;
+        let _ = writeln!(
+            md,
+            "| {k} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.0} | {:.3}% |",
+            r.dofs,
+            r.elements,
+            r.mesh,
+            t.assembly,
+            t.factorization,
+            t.flexibility,
+            t.load_solves,
+            t.iterations,
+            t.recovery,
+            r.total,
+            r.peak_rss,
+            100.0 * r.l2_error
+        );
+    }
+    let big = &runs[runs.len().min(1)..];
+    let fit = |y: &dyn Fn(&hycon::bench::SweepRun) -> f64| {
+        let pts: Vec<(f64, f64)> = big.iter().map(|r| (r.dofs as f64, y(r))).collect();
+        hycon::bench::fit_power(&pts)
+            .map_or("-".into(), |(p, _, r2)| format!("{p:.2} (r^2 {r2:.3})"))
+    };
+    let _ = writeln!(
+        md,
+        "
+Growth against dofs (least squares on log-log over the {} largest runs): total time {},          factorization {}, assembly {}, mesh {}, peak memory (VmHWM - VmRSS at start) {}.",
+        big.len(),
+        fit(&|r| r.total),
+        fit(&|r| r.timings.factorization),
+        fit(&|r| r.timings.assembly),
+        fit(&|r| r.mesh),
+        fit(&|r| r.memory())
+    );
+    println!("{md}");
+    let path = out.join("contact_scale.md");
+    std::fs::write(&path, md)?;
+    println!("written: {}", path.display());
+    Ok(())
 }

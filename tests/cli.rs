@@ -293,3 +293,83 @@ fn bad_options_fail_with_a_readable_message() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("friction"));
 }
+
+#[test]
+fn bench_sweep_runs_at_tiny_sizes_and_writes_the_csv_and_plots() {
+    let dir = Scratch::new("sweep");
+    let out = hycon(&[
+        "bench",
+        "sweep",
+        "--min",
+        "2",
+        "--max",
+        "4",
+        "--configs",
+        "hybrid/transition,pian-sumihara/quads",
+        "--refactor-n",
+        "2",
+        "--out",
+        dir.arg(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = std::fs::read_to_string(dir.path().join("sweep.csv")).expect("sweep.csv");
+    let runs = hycon::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
+    let plain: Vec<_> = runs.iter().filter(|r| !r.case.refactor).collect();
+    assert_eq!(plain.len(), 4, "2 configurations x n = 2, 4:\n{csv}");
+    for r in &runs {
+        assert!(
+            r.dofs > 0 && r.contact_dofs > 0 && r.iterations > 0,
+            "{csv}"
+        );
+        assert!(
+            r.total > 0.0 && r.l2_error.is_finite() && r.l2_error > 0.0,
+            "{csv}"
+        );
+        assert!(r.total >= r.timings.total() - 1e-9, "{csv}");
+    }
+    for name in [
+        "sweep_error_time.svg",
+        "sweep_time_dofs.svg",
+        "sweep_summary.md",
+    ] {
+        let text = std::fs::read_to_string(dir.path().join(name)).expect(name);
+        assert!(!text.is_empty(), "{name}");
+    }
+    // re-plotting from the CSV runs nothing and gives the same summary
+    let again = hycon(&[
+        "bench",
+        "sweep",
+        "--from-csv",
+        dir.path().join("sweep.csv").to_str().expect("utf-8"),
+        "--out",
+        dir.arg(),
+    ]);
+    assert!(again.status.success());
+}
+
+#[test]
+fn bench_sweep_rejects_a_transition_mesh_for_q4() {
+    let dir = Scratch::new("sweep-bad");
+    let out = hycon(&[
+        "bench",
+        "sweep",
+        "--min",
+        "2",
+        "--max",
+        "2",
+        "--configs",
+        "q4/transition",
+        "--out",
+        dir.arg(),
+    ]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("4-node quadrilaterals only") && stderr.contains("1 sweep runs failed"),
+        "{stderr}"
+    );
+}

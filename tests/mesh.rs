@@ -6,7 +6,7 @@
 
 use hycon::element::{self, Formulation};
 use hycon::mesh::Mesh;
-use hycon::mesh::generate::{self, Grading, Target};
+use hycon::mesh::generate::{self, Grading, Target, Transition};
 use hycon::mesh::quality::{self, QualityReport};
 use std::collections::{HashMap, HashSet};
 use std::f64::consts::PI;
@@ -420,7 +420,7 @@ fn check_half_disk(
     r: f64,
     min_size: f64,
     target: &[[f64; 2]],
-    six: bool,
+    six: Option<bool>,
 ) -> QualityReport {
     check_elements(mesh);
     check_conformity(mesh, &["arc", "top"]);
@@ -484,10 +484,13 @@ fn check_half_disk(
     }
     assert!(max_size(mesh) > 10.0 * min_size);
     let q = quality::quality(mesh);
-    assert!(
-        q.n_by_node_count[1] > 0 && (q.n_by_node_count[2] > 0) == six,
-        "{q}"
-    );
+    match six {
+        Some(six) => assert!(
+            q.n_by_node_count[1] > 0 && (q.n_by_node_count[2] > 0) == six,
+            "{q}"
+        ),
+        None => assert_eq!(q.n_by_node_count, [q.n_elements, 0, 0], "quads only: {q}"),
+    }
     assert!(rel(q.total_area, area) < TOL);
     q
 }
@@ -498,7 +501,7 @@ fn half_disk_toward_contact_point() {
         let min_size = r / 100.0;
         let g = Grading::toward_point([0.0, 0.0], min_size, 3);
         let mesh = generate::half_disk(r, &g);
-        let q = check_half_disk(&mesh, r, min_size, &[[0.0, 0.0]], true);
+        let q = check_half_disk(&mesh, r, min_size, &[[0.0, 0.0]], Some(true));
         println!(
             "half disk R = {r}, toward the contact point: {q}, {} nodes",
             mesh.n_nodes()
@@ -525,7 +528,7 @@ fn half_disk_toward_contact_zone() {
         .filter(|p| !elements_at(&mesh, *p).is_empty())
         .collect();
     assert!(!samples.is_empty());
-    let q = check_half_disk(&mesh, r, min_size, &samples, false);
+    let q = check_half_disk(&mesh, r, min_size, &samples, Some(false));
     println!(
         "half disk toward the contact zone: {q}, {} nodes",
         mesh.n_nodes()
@@ -575,4 +578,152 @@ fn cell_with_three_or_four_finer_neighbours_is_split() {
             .iter()
             .all(|&e| rel(size(&coords(&mesh, e)), 0.5) < TOL)
     );
+}
+
+// ---------------------------------------------------------------------------------------------
+// Quad-only graded meshes (Transition::Quads)
+
+/// Every element a strictly convex counter-clockwise 4-node quadrilateral that Q4 and
+/// Pian-Sumihara accept.
+fn check_quads_only(mesh: &Mesh) {
+    check_elements(mesh);
+    for e in 0..mesh.n_elements() {
+        let c = coords(mesh, e);
+        assert_eq!(c.len(), 4, "element {e}");
+        for f in [
+            Formulation::Q4,
+            Formulation::PianSumihara,
+            Formulation::Hybrid,
+        ] {
+            element::check_shape(f, &c)
+                .unwrap_or_else(|err| panic!("element {e} rejected by {f:?}: {err} {c:?}"));
+        }
+    }
+}
+
+#[test]
+fn quad_only_block_toward_a_line() {
+    let (a, b) = ([0.3, 0.7], [5.1, 3.3]);
+    let min = 2.0 / 64.0;
+    let g = Grading::toward_line(a, b, min, 6);
+    let mesh =
+        generate::graded_rectangle_with(-1.0, 0.0, [8.0, 4.0], [4, 2], &[g], Transition::Quads);
+    check_quads_only(&mesh);
+    let sides = ["left", "right", "top", "bottom"];
+    check_conformity(&mesh, &sides);
+    for s in sides {
+        check_chain(&mesh, s);
+    }
+    assert!(rel(area_sum(&mesh), 32.0) < TOL);
+    // element size min at the target, growing away from it
+    for k in 0..=50 {
+        let t = k as f64 / 50.0;
+        let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+        for e in elements_at(&mesh, p) {
+            assert!(
+                rel(size(&coords(&mesh, e)), min) < TOL,
+                "element {e} at the target"
+            );
+        }
+    }
+    assert!(max_size(&mesh) >= 16.0 * min * (1.0 - TOL));
+    // square leaves: the templates' corner angles are 45, 90 and 135 degrees, aspect at most 2
+    let q = quality::quality(&mesh);
+    println!(
+        "quad-only block toward a line: {q}, {} nodes",
+        mesh.n_nodes()
+    );
+    assert!(
+        q.min_angle_deg > 45.0 - 1e-9 && q.max_angle_deg < 135.0 + 1e-9,
+        "{q}"
+    );
+    assert!(q.max_aspect <= 2.0 + 1e-9, "{q}");
+    assert_eq!(
+        mesh,
+        generate::graded_rectangle_with(-1.0, 0.0, [8.0, 4.0], [4, 2], &[g], Transition::Quads),
+        "deterministic"
+    );
+    // the same grading with transition elements: same element size at the target and about
+    // the same band widths, so a comparable number of nodes
+    let reference = generate::graded_rectangle(-1.0, 0.0, 8.0, 4.0, 4, 2, &g);
+    let ratio = mesh.n_nodes() as f64 / reference.n_nodes() as f64;
+    println!(
+        "nodes: quads only {} / transition {} = {ratio:.2}",
+        mesh.n_nodes(),
+        reference.n_nodes()
+    );
+    assert!((0.7..2.0).contains(&ratio), "{ratio}");
+}
+
+#[test]
+fn quad_only_templates_for_every_neighbour_pattern() {
+    // 3 x 3 unit roots; refining the centre root's four edge-neighbours makes the corner roots
+    // carry two adjacent fine edges; a column of 1 x 3 roots refined at both ends makes the
+    // middle root carry two opposite fine edges; single fine edges appear along the bands
+    let targets = [[1.5, 0.5], [0.5, 1.5], [2.5, 1.5], [1.5, 2.5]];
+    let gradings: Vec<Grading> = targets
+        .iter()
+        .map(|&p| Grading::toward_point(p, 0.25, 2))
+        .collect();
+    let mesh = generate::graded_mapped_with(
+        3,
+        3,
+        |[u, v]| [3.0 * u, 3.0 * v],
+        &gradings,
+        Transition::Quads,
+    );
+    check_quads_only(&mesh);
+    check_conformity(&mesh, &["left", "right", "top", "bottom"]);
+    assert!(rel(area_sum(&mesh), 9.0) < TOL);
+    let column = [[0.5, 0.5], [0.5, 2.5]].map(|p| Grading::toward_point(p, 0.25, 2));
+    // a sheared map: elements are parallelograms' images, still conforming
+    let mesh = generate::graded_mapped_with(
+        1,
+        3,
+        |[u, v]| [u + 0.3 * v, 3.0 * v],
+        &column,
+        Transition::Quads,
+    );
+    check_quads_only(&mesh);
+    check_conformity(&mesh, &["left", "right", "top", "bottom"]);
+    assert!(rel(area_sum(&mesh), 3.0) < TOL);
+}
+
+#[test]
+fn quad_only_half_disk_toward_contact_zone() {
+    let (r, min_size) = (2.0, 0.04);
+    let (a, b) = ([-0.6, 0.0], [0.6, 0.0]);
+    let g = Grading::toward_line(a, b, min_size, 4);
+    let mesh = generate::half_disk_with(r, &[g], Transition::Quads);
+    check_quads_only(&mesh);
+    let samples: Vec<[f64; 2]> = (0..=20)
+        .map(|k| [-0.58 + 1.16 * k as f64 / 20.0, 0.0])
+        .filter(|p| !elements_at(&mesh, *p).is_empty())
+        .collect();
+    assert!(!samples.is_empty());
+    let q = check_half_disk(&mesh, r, min_size, &samples, None);
+    println!(
+        "quad-only half disk toward the contact zone: {q}, {} nodes",
+        mesh.n_nodes()
+    );
+    // the templates' 45 / 135 degree corners on top of the O-grid's own distortion (135
+    // degrees where three patches meet): measured 29.1 to 154.2 degrees, aspect 3.14
+    assert!(
+        q.min_angle_deg > 25.0 && q.max_angle_deg < 160.0 && q.max_aspect < 4.0,
+        "{q}"
+    );
+}
+
+#[test]
+fn element_size_cap_refines_everywhere() {
+    let cap = Grading {
+        target: Target::Point([0.0, 0.0]),
+        min_size: 0.5,
+        layers: usize::MAX / 4,
+    };
+    for t in [Transition::Elements, Transition::Quads] {
+        let mesh = generate::graded_rectangle_with(0.0, 0.0, [8.0, 4.0], [2, 1], &[cap], t);
+        assert_eq!(mesh.n_elements(), 16 * 8, "{t:?}");
+        assert!(rel(max_size(&mesh), 0.5) < TOL);
+    }
 }

@@ -10,6 +10,14 @@
 //! the block's root cells and the meshes are exactly graded. Both meshes are graded 2:1 toward
 //! the contact zone with 8 cells per size band.
 //!
+//! Mesh variants: [`DiskOnBlock::transition`] `Transition::Elements` (the reference scene: one
+//! element per quadtree leaf, 5- and 6-node transition elements, hybrid elements only) or
+//! `Transition::Quads` (4-node quadrilaterals only, the same grading joined by templates, see
+//! [`generate::graded_layout_with`]; needed by Pian-Sumihara and Q4, and run with the hybrid
+//! element too, to separate element effects from mesh effects). Both have element size `h` at
+//! the contact and 8 elements per size band. [`DiskOnBlock::max_element_size`] caps the element
+//! size everywhere (a uniformly finer far field: large models with the same contact zone).
+//!
 //! Why `a / R = 1/64`: the contact geometry is evaluated in the current configuration, so the
 //! comparison with (linear) Hertz carries an offset of order `a / R` (the deformed surfaces
 //! tilt by about `p0 / E*`): measured at 16 elements per half-width, the half-width is low by
@@ -21,7 +29,7 @@ use crate::element::Formulation;
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
-use crate::mesh::generate::{self, Grading};
+use crate::mesh::generate::{self, Grading, Target, Transition};
 use crate::model::Model;
 
 /// The disk-on-block scene.
@@ -47,6 +55,13 @@ pub struct DiskOnBlock {
     /// Node-to-node meshes: the block's top nodes face the disk's arc nodes in the contact zone
     /// (otherwise node-to-internode). See [`DiskOnBlock::build`].
     pub node_to_node: bool,
+    /// How the graded meshes join fine and coarse cells: transition elements (the reference
+    /// scene; hybrid elements only) or 4-node quadrilaterals only (any element).
+    pub transition: Transition,
+    /// Largest element size anywhere, in radii (`None`: no cap, the graded meshes coarsen to
+    /// their root cells). A cap refines the far field uniformly: large models with the same
+    /// contact zone.
+    pub max_element_size: Option<f64>,
 }
 
 impl Default for DiskOnBlock {
@@ -61,6 +76,8 @@ impl Default for DiskOnBlock {
             formulation: Formulation::Hybrid,
             travel: 0.0,
             node_to_node: false,
+            transition: Transition::Elements,
+            max_element_size: None,
         }
     }
 }
@@ -142,29 +159,57 @@ impl DiskOnBlock {
                 "elements per half-width must be a power of two in 1..=256, got {n}"
             )));
         }
+        if self.transition == Transition::Elements && self.formulation != Formulation::Hybrid {
+            return Err(Error::InvalidInput(format!(
+                "the {} element takes 4-node quadrilaterals only: use transition = Quads",
+                self.formulation.name()
+            )));
+        }
+        if let Some(cap) = self.max_element_size
+            && !(cap.is_finite() && cap > 0.0)
+        {
+            return Err(Error::InvalidInput(format!(
+                "max_element_size must be positive and finite, got {cap}"
+            )));
+        }
         // meshes and candidate sets are built for R = 1 and then scaled, so that every mesh
         // decision (grading thresholds, set membership) is the same in any unit system
         let r = 1.0;
         let (a, h, w) = self.unit_geometry();
+        // a cap refines every cell above it (whatever its distance from the target)
+        let cap = self.max_element_size.map(|c| Grading {
+            target: Target::Point([0.0, 0.0]),
+            min_size: c,
+            layers: usize::MAX / 4,
+        });
         // fine zone: the contact zone, where it travels, and a margin
         let (x0, x1) = (-1.5 * a, (1.5 + self.travel) * a);
-        let mut block = generate::graded_rectangle(
+        let block_gradings: Vec<Grading> = [Grading::toward_line([x0, 0.0], [x1, 0.0], h, 8)]
+            .into_iter()
+            .chain(cap)
+            .collect();
+        let mut block = generate::graded_rectangle_with(
             -w,
             -w,
-            2.0 * w,
-            w,
-            2,
-            1,
-            &Grading::toward_line([x0, 0.0], [x1, 0.0], h, 8),
+            [2.0 * w, w],
+            [2, 1],
+            &block_gradings,
+            self.transition,
         );
         let disk_zone = 1.5 * a + self.travel * a;
         // node-to-node: the disk's arc cells must stop at length h; their longest edge is the
         // radial one, about 1.2 h at the contact, hence the 1.3
         let disk_size = if self.node_to_node { 1.3 * h } else { h };
-        let disk = generate::half_disk(
-            r,
-            &Grading::toward_line([-disk_zone, 0.0], [disk_zone, 0.0], disk_size, 8),
-        );
+        let disk_gradings: Vec<Grading> = [Grading::toward_line(
+            [-disk_zone, 0.0],
+            [disk_zone, 0.0],
+            disk_size,
+            8,
+        )]
+        .into_iter()
+        .chain(cap)
+        .collect();
+        let disk = generate::half_disk_with(r, &disk_gradings, self.transition);
         if self.node_to_node {
             // only where the block's cells are all of size h (within 4 h of the graded line,
             // so no transition element's straight edge is bent by the move)

@@ -1,9 +1,10 @@
 //! Mesh generators: the benchmark geometries (Cook's membrane, the Pian-Sumihara beam) and graded
 //! 2:1 quadtree meshes with 5- and 6-node transition elements (a block, a half disk, or any
-//! user layout of mapped quadrilateral patches).
+//! user layout of mapped quadrilateral patches), or the same grading with 4-node
+//! quadrilaterals only ([`Transition::Quads`], for elements that take nothing else).
 //!
 //! This module owns the whole generation pipeline; every public generator is a thin wrapper over
-//! [`graded_layout`].
+//! [`graded_layout_with`].
 //!
 //! # Layout
 //! A [`Layout`] is a coarse conforming mesh of quadrilateral *patches*. Each patch has four
@@ -283,6 +284,61 @@ pub fn graded_layout<F>(layout: &Layout, map: F, gradings: &[Grading]) -> Mesh
 where
     F: Fn(usize, [f64; 2]) -> [f64; 2],
 {
+    graded_layout_with(layout, map, gradings, Transition::Elements)
+}
+
+/// How a graded mesh joins cells of different sizes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Transition {
+    /// One element per leaf cell, with 5- and 6-node transition elements next to finer cells
+    /// (the hybrid element's meshes; see the module documentation).
+    #[default]
+    Elements,
+    /// 4-node quadrilaterals only (for elements that take nothing else, such as Pian-Sumihara
+    /// and Q4): the balanced leaf cells are graded at twice the wanted element size, then every
+    /// leaf is split into its four quadrants and each quadrant is meshed by a template, see
+    /// [`graded_layout_with`]. Element sizes and band widths match those of
+    /// [`Transition::Elements`] with the same gradings.
+    Quads,
+}
+
+/// [`graded_layout`] with a choice of [`Transition`].
+///
+/// # Quad-only meshes (`Transition::Quads`)
+/// Each grading is applied to the leaf cells with twice its `min_size` and half its `layers`
+/// (at least 1), so the elements, half a leaf in size, come out as with
+/// `Transition::Elements`. After the 2:1 balance every leaf is split into its four quadrants
+/// (lower-left, lower-right, upper-right, upper-left). A leaf edge with a finer neighbour is
+/// split at its quarter points (the fine neighbour's quadrant corners), any other leaf edge at
+/// its midpoint. The four inner half-lines from the leaf centre to its edge midpoints are split
+/// at their midpoints or not, chosen so that every quadrant has an even number of split sides
+/// (always possible: the parities add up), with the fewest splits. A quadrant is then meshed by
+/// one of three templates (no node inside the leaf other than lattice points at quarter
+/// spacing, so every node is shared exactly through its lattice key and the mesh is
+/// conforming without constraints):
+/// * no split side: the quadrant itself;
+/// * two opposite split sides: two quadrilaterals joined along the line between the two
+///   midpoints;
+/// * two adjacent split sides: three quadrilaterals around the quadrant centre (the corner
+///   square between the two midpoints and two trapezoids with corner angles 45 and 135
+///   degrees);
+/// * four split sides: the four quarters.
+///
+/// No constraint equations and no hanging nodes: every element edge is shared with exactly one
+/// other element or lies on the boundary. Nodes are mapped directly (no straightening is
+/// needed, since no node hangs).
+///
+/// # Panics
+/// As [`graded_layout`].
+pub fn graded_layout_with<F>(
+    layout: &Layout,
+    map: F,
+    gradings: &[Grading],
+    transition: Transition,
+) -> Mesh
+where
+    F: Fn(usize, [f64; 2]) -> [f64; 2],
+{
     layout.check();
     for g in gradings {
         assert!(
@@ -291,19 +347,36 @@ where
         );
         assert!(g.layers >= 1, "grading needs at least one layer");
     }
+    let (gradings, max_level): (Vec<Grading>, u8) = match transition {
+        Transition::Elements => (gradings.to_vec(), MAX_LEVEL),
+        Transition::Quads => (
+            gradings
+                .iter()
+                .map(|g| Grading {
+                    min_size: 2.0 * g.min_size,
+                    layers: (g.layers / 2).max(1),
+                    ..*g
+                })
+                .collect(),
+            MAX_LEVEL - 2,
+        ),
+    };
     let place = |p: usize, x: [u64; 2]| map(p, layout.local(p, x));
     let quad = |c: &Cell| c.corners().map(|x| place(c.patch, x));
     let mut leaves = BTreeSet::new();
     let mut todo: Vec<Cell> = roots(layout);
     while let Some(cell) = todo.pop() {
-        if cell.level < MAX_LEVEL && gradings.iter().any(|g| g.splits(&quad(&cell))) {
+        if cell.level < max_level && gradings.iter().any(|g| g.splits(&quad(&cell))) {
             todo.extend(cell.children());
         } else {
             leaves.insert(cell);
         }
     }
     let corner_keys = balance(layout, &mut leaves);
-    build(layout, &leaves, &corner_keys, place)
+    match transition {
+        Transition::Elements => build(layout, &leaves, &corner_keys, place),
+        Transition::Quads => build_quads(layout, &leaves, &corner_keys, place),
+    }
 }
 
 /// The root cells of every patch.
@@ -411,6 +484,137 @@ where
     mesh
 }
 
+/// Quad-only elements from the balanced leaves (see [`graded_layout_with`]).
+fn build_quads<P>(
+    layout: &Layout,
+    leaves: &BTreeSet<Cell>,
+    corners: &HashSet<Key>,
+    place: P,
+) -> Mesh
+where
+    P: Fn(usize, [u64; 2]) -> [f64; 2],
+{
+    let mut order: Vec<&Cell> = leaves.iter().collect();
+    order.sort_by_key(|c| {
+        let x = c.corners()[0];
+        (c.patch, x[1], x[0])
+    });
+    let mut mesh = Mesh::new();
+    let mut ids: HashMap<Key, usize> = HashMap::new();
+    let mut sides: BTreeMap<String, Vec<[usize; 2]>> = BTreeMap::new();
+    for cell in order {
+        let s = (ROOT >> cell.level) / 4;
+        let [x0, y0] = cell.corners()[0];
+        // node at quarter-lattice point (a, b) of the leaf, a, b in 0..=4
+        let mut node = |mesh: &mut Mesh, [a, b]: [u64; 2]| {
+            let x = [x0 + a * s, y0 + b * s];
+            *ids.entry(layout.key(cell.patch, x))
+                .or_insert_with(|| mesh.push_node(place(cell.patch, x)))
+        };
+        let fine: [bool; 4] = std::array::from_fn(|k| hangs(layout, corners, cell, k));
+        for quad in leaf_template(fine) {
+            let element = quad.map(|p| node(&mut mesh, p));
+            mesh.push_element(&element, layout.patches[cell.patch].material);
+        }
+        // boundary edges (a leaf edge on a named patch side), split as the template splits it
+        const CORNER: [[u64; 2]; 4] = [[0, 0], [4, 0], [4, 4], [0, 4]];
+        for k in 0..4 {
+            let (true, Some(name)) = (
+                layout.on_side(cell, k),
+                &layout.patches[cell.patch].sides[k],
+            ) else {
+                continue;
+            };
+            let (a, b) = (CORNER[k], CORNER[(k + 1) % 4]);
+            let steps: u64 = if fine[k] { 4 } else { 2 };
+            let point = |i: u64| {
+                let t = |p: u64, q: u64| (p * (steps - i) + q * i) / steps;
+                [t(a[0], b[0]), t(a[1], b[1])]
+            };
+            for i in 0..steps {
+                let edge = [node(&mut mesh, point(i)), node(&mut mesh, point(i + 1))];
+                sides.entry(name.clone()).or_default().push(edge);
+            }
+        }
+    }
+    for (name, edges) in sides {
+        let edges = chain(edges);
+        mesh.node_sets.insert(name.clone(), chain_nodes(&edges));
+        mesh.edge_sets.insert(name, edges);
+    }
+    mesh
+}
+
+/// The quadrilaterals of one leaf, in quarter-lattice coordinates of the leaf (0..=4 along each
+/// axis), counter-clockwise; `fine[k]`: leaf edge `k` has a finer neighbour (split at its
+/// quarter points). See [`graded_layout_with`].
+fn leaf_template(fine: [bool; 4]) -> Vec<[[u64; 2]; 4]> {
+    // quadrants q = 0..4 (lower-left, lower-right, upper-right, upper-left); quadrant side j
+    // (bottom, right, top, left) is split when it lies on a fine leaf edge or is a split inner
+    // half-line. Inner half-lines: 0 between quadrants 0 and 1 (x = 2, lower), 1 between 1
+    // and 2 (y = 2, right), 2 between 2 and 3 (x = 2, upper), 3 between 3 and 0 (y = 2, left).
+    let outer = |q: usize| u8::from(fine[q]) + u8::from(fine[(q + 3) % 4]);
+    // quadrant q's sides on leaf edges: edges q and q + 3 (mod 4); its inner half-lines: q
+    // (to the next quadrant) and q + 3 (to the previous one)
+    let solve = |first: bool| {
+        let mut inner = [first, false, false, false];
+        for q in 1..4 {
+            // quadrant q has inner half-lines q - 1 and q
+            inner[q] = (outer(q) + u8::from(inner[q - 1])) % 2 == 1;
+        }
+        inner
+    };
+    let inner = [solve(false), solve(true)]
+        .into_iter()
+        .min_by_key(|i| i.iter().filter(|&&b| b).count())
+        .expect("two candidates");
+    debug_assert_eq!((outer(0) + u8::from(inner[0]) + u8::from(inner[3])) % 2, 0);
+    const ORIGIN: [[u64; 2]; 4] = [[0, 0], [2, 0], [2, 2], [0, 2]];
+    let mut quads = Vec::with_capacity(12);
+    for (q, o) in ORIGIN.into_iter().enumerate() {
+        // which of the quadrant's own sides (bottom, right, top, left) lie on leaf edges and
+        // which on inner half-lines
+        let split: [bool; 4] = match q {
+            0 => [fine[0], inner[0], inner[3], fine[3]],
+            1 => [fine[0], fine[1], inner[1], inner[0]],
+            2 => [inner[1], fine[1], fine[2], inner[2]],
+            _ => [inner[3], inner[2], fine[2], fine[3]],
+        };
+        let at = |dx: u64, dy: u64| [o[0] + dx, o[1] + dy];
+        let c = [at(0, 0), at(2, 0), at(2, 2), at(0, 2)];
+        let m = [at(1, 0), at(2, 1), at(1, 2), at(0, 1)];
+        let p = at(1, 1);
+        match split {
+            [false, false, false, false] => quads.push(c),
+            [true, true, true, true] => {
+                for k in 0..4 {
+                    quads.push([c[k], m[k], p, m[(k + 3) % 4]]);
+                }
+            }
+            [true, false, true, false] => {
+                quads.push([c[0], m[0], m[2], c[3]]);
+                quads.push([m[0], c[1], c[2], m[2]]);
+            }
+            [false, true, false, true] => {
+                quads.push([c[0], c[1], m[1], m[3]]);
+                quads.push([m[3], m[1], c[2], c[3]]);
+            }
+            _ => {
+                // two adjacent split sides j and j + 1, sharing corner j + 1
+                let j = (0..4)
+                    .find(|&j| split[j] && split[(j + 1) % 4])
+                    .expect("an even number of split sides");
+                let r = |k: usize| c[(j + k) % 4];
+                let (ma, mb) = (m[j], m[(j + 1) % 4]);
+                quads.push([r(0), ma, p, r(3)]);
+                quads.push([ma, r(1), mb, p]);
+                quads.push([p, mb, r(2), r(3)]);
+            }
+        }
+    }
+    quads
+}
+
 /// Order directed edges into chains (each edge followed by the one starting at its end);
 /// chains are listed in the order of their first edge in the input.
 fn chain(edges: Vec<[usize; 2]>) -> Vec<[usize; 2]> {
@@ -453,6 +657,20 @@ pub fn graded_mapped<F>(nx0: usize, ny0: usize, map: F, gradings: &[Grading]) ->
 where
     F: Fn([f64; 2]) -> [f64; 2],
 {
+    graded_mapped_with(nx0, ny0, map, gradings, Transition::Elements)
+}
+
+/// [`graded_mapped`] with a choice of [`Transition`].
+pub fn graded_mapped_with<F>(
+    nx0: usize,
+    ny0: usize,
+    map: F,
+    gradings: &[Grading],
+    transition: Transition,
+) -> Mesh
+where
+    F: Fn([f64; 2]) -> [f64; 2],
+{
     let names = ["bottom", "right", "top", "left"].map(|s| Some(s.to_string()));
     let layout = Layout {
         patches: vec![Patch {
@@ -462,7 +680,7 @@ where
             sides: names,
         }],
     };
-    graded_layout(&layout, |_, uv| map(uv), gradings)
+    graded_layout_with(&layout, |_, uv| map(uv), gradings, transition)
 }
 
 /// The rectangle `[x0, x0 + width] x [y0, y0 + height]` with `nx0 x ny0` root cells, graded by
@@ -477,11 +695,32 @@ pub fn graded_rectangle(
     ny0: usize,
     grading: &Grading,
 ) -> Mesh {
-    graded_mapped(
-        nx0,
-        ny0,
-        |[u, v]| [x0 + u * width, y0 + v * height],
+    graded_rectangle_with(
+        x0,
+        y0,
+        [width, height],
+        [nx0, ny0],
         std::slice::from_ref(grading),
+        Transition::Elements,
+    )
+}
+
+/// [`graded_rectangle`] with several gradings and a choice of [`Transition`]: the rectangle
+/// `[x0, x0 + size[0]] x [y0, y0 + size[1]]` with `roots[0] x roots[1]` root cells.
+pub fn graded_rectangle_with(
+    x0: f64,
+    y0: f64,
+    size: [f64; 2],
+    roots: [usize; 2],
+    gradings: &[Grading],
+    transition: Transition,
+) -> Mesh {
+    graded_mapped_with(
+        roots[0],
+        roots[1],
+        |[u, v]| [x0 + u * size[0], y0 + v * size[1]],
+        gradings,
+        transition,
     )
 }
 
@@ -635,16 +874,29 @@ fn half_disk_map(layout: &Layout, v: &[[f64; 2]; 11], p: usize, [x, y]: [f64; 2]
 /// Sets: edge and node sets `"arc"` (left to right along the bottom, body on the left),
 /// `"top"` (the flat face, right to left), node set `"bottom"` (the lowest node).
 pub fn half_disk(radius: f64, grading: &Grading) -> Mesh {
+    half_disk_with(radius, std::slice::from_ref(grading), Transition::Elements)
+}
+
+/// [`half_disk`] with several gradings and a choice of [`Transition`].
+pub fn half_disk_with(radius: f64, gradings: &[Grading], transition: Transition) -> Mesh {
     let (layout, v) = half_disk_layout();
-    let unit = Grading {
-        target: match grading.target {
-            Target::Point(p) => Target::Point(p.map(|c| c / radius)),
-            Target::Line(a, b) => Target::Line(a.map(|c| c / radius), b.map(|c| c / radius)),
-        },
-        min_size: grading.min_size / radius,
-        layers: grading.layers,
-    };
-    let mut mesh = graded_layout(&layout, |p, uv| half_disk_map(&layout, &v, p, uv), &[unit]);
+    let unit: Vec<Grading> = gradings
+        .iter()
+        .map(|g| Grading {
+            target: match g.target {
+                Target::Point(p) => Target::Point(p.map(|c| c / radius)),
+                Target::Line(a, b) => Target::Line(a.map(|c| c / radius), b.map(|c| c / radius)),
+            },
+            min_size: g.min_size / radius,
+            layers: g.layers,
+        })
+        .collect();
+    let mut mesh = graded_layout_with(
+        &layout,
+        |p, uv| half_disk_map(&layout, &v, p, uv),
+        &unit,
+        transition,
+    );
     for p in &mut mesh.nodes {
         *p = p.map(|c| c * radius);
     }
@@ -730,6 +982,61 @@ mod tests {
         let edges = chain(vec![[3, 4], [1, 2], [2, 3]]);
         assert_eq!(edges, vec![[1, 2], [2, 3], [3, 4]]);
         assert_eq!(chain_nodes(&edges), vec![1, 2, 3, 4]);
+    }
+
+    #[test]
+    fn leaf_templates_tile_the_leaf_conformingly() {
+        // every pattern of fine edges, also 3 and 4 (which balancing avoids)
+        for bits in 0..16u8 {
+            let fine: [bool; 4] = std::array::from_fn(|k| bits & (1 << k) != 0);
+            let quads = leaf_template(fine);
+            let mut area2 = 0i64;
+            let mut segments: HashMap<[[u64; 2]; 2], usize> = HashMap::new();
+            for q in &quads {
+                let p = q.map(|[x, y]| [x as i64, y as i64]);
+                let a2: i64 = (0..4)
+                    .map(|k| {
+                        let (a, b) = (p[k], p[(k + 1) % 4]);
+                        a[0] * b[1] - a[1] * b[0]
+                    })
+                    .sum();
+                area2 += a2;
+                for k in 0..4 {
+                    // strictly convex, counter-clockwise
+                    let (a, b, c) = (p[k], p[(k + 1) % 4], p[(k + 2) % 4]);
+                    let cross = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+                    assert!(cross > 0, "pattern {fine:?}: quad {q:?} not convex");
+                    *segments.entry([q[k], q[(k + 1) % 4]]).or_default() += 1;
+                }
+            }
+            assert_eq!(
+                area2,
+                2 * 16,
+                "pattern {fine:?}: quads do not tile the leaf"
+            );
+            // interior segments are matched by their reverse; boundary segments split the leaf
+            // edges at quarter points where fine, at the midpoint elsewhere
+            let mut boundary = [0usize; 4];
+            for (&[a, b], &count) in &segments {
+                assert_eq!(count, 1);
+                let on_edge = |k: usize, p: [u64; 2]| match k {
+                    0 => p[1] == 0,
+                    1 => p[0] == 4,
+                    2 => p[1] == 4,
+                    _ => p[0] == 0,
+                };
+                match (0..4).find(|&k| on_edge(k, a) && on_edge(k, b)) {
+                    Some(k) => {
+                        boundary[k] += 1;
+                        let len = a[0].abs_diff(b[0]) + a[1].abs_diff(b[1]);
+                        assert_eq!(len, if fine[k] { 1 } else { 2 }, "pattern {fine:?}");
+                    }
+                    None => assert!(segments.contains_key(&[b, a]), "pattern {fine:?}"),
+                }
+            }
+            let expected = fine.map(|f| if f { 4 } else { 2 });
+            assert_eq!(boundary, expected, "pattern {fine:?}");
+        }
     }
 
     #[test]
