@@ -519,9 +519,10 @@ HyconStatus hycon_model_set_plate(struct HyconModel *model, const size_t *nodes,
 // validate, assemble, factor `K` once with the contact dofs last and read the contact-boundary
 // flexibility off the factor. `options` NULL means the defaults.
 //
+// A model without contact pairs is allowed: its increments are plain linear solves.
+//
 // Errors: `HYCON_ERROR_SINGULAR` (a body not held against rigid motion: the message names it),
-// `HYCON_ERROR_BAD_ELEMENT`, `HYCON_ERROR_INVALID_ARGUMENT` (no contact pair, bad options),
-// `HYCON_ERROR_SOLVER`.
+// `HYCON_ERROR_BAD_ELEMENT`, `HYCON_ERROR_INVALID_ARGUMENT` (bad options), `HYCON_ERROR_SOLVER`.
 //
 // # Safety
 // `out` must point to a writable pointer, `model` be a live handle, `options` NULL or
@@ -673,6 +674,16 @@ HyconStatus hycon_contact_plate(const struct HyconContact *contact,
 // # Safety
 // `contact` must be a live handle; `out` NULL or `len` writable doubles.
 HyconStatus hycon_contact_displacement(struct HyconContact *contact, double *out, size_t len);
+
+// The displacement increment of the last converged increment (its total displacement minus
+// the previous increment's; the total at the first), same layout as
+// `hycon_contact_displacement`. One solve per call.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable doubles.
+HyconStatus hycon_contact_displacement_increment(struct HyconContact *contact,
+                                                 double *out,
+                                                 size_t len);
 
 // The contact forces of the last converged increment over the field (zero at a host's fixed
 // dofs): adding them to the load gives the right-hand side whose solution is the displacement

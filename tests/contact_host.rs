@@ -280,3 +280,35 @@ fn host_errors_name_the_problem() {
     .unwrap_err();
     assert!(matches!(err, hycon::Error::Callback(_)), "{err}");
 }
+
+/// The displacement increment is the difference of two consecutive converged fields, on both
+/// paths.
+#[test]
+fn displacement_increment_is_the_difference_of_totals() {
+    let scene = scene();
+    let model = &scene.model;
+    let host = HostSide::new(model);
+    let options = ContactOptions::default();
+    let mut analysis = ContactAnalysis::host(
+        host.system(model, &scene.pair, HostStiffness::Csr(host.csr())),
+        vec![shifted(&scene.pair)],
+        options,
+    )
+    .unwrap();
+    let approach = scene.half_width.powi(2) / scene.radius;
+    let mut previous = vec![0.0; host.dofs.n_free()];
+    for step in [0.5, 1.0, 1.5] {
+        let rhs = host.rhs(model, &scene.prescribed(step * approach, 0.0));
+        analysis.increment(&rhs, &[]).unwrap();
+        let total = analysis.displacement().unwrap().to_vec();
+        let du = analysis.displacement_increment().unwrap();
+        let scale = total.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for i in 0..total.len() {
+            assert!(
+                (total[i] - previous[i] - du[i]).abs() <= 1e-10 * scale,
+                "equation {i}"
+            );
+        }
+        previous = total;
+    }
+}

@@ -370,6 +370,8 @@ pub struct ContactAnalysis {
     qc: Vec<f64>,
     /// Loads and contact forces of the last converged increment, for the full field.
     converged: Option<Converged>,
+    /// The same for the increment before it (for displacement increments).
+    previous: Option<Converged>,
     /// The full displacement field of the last converged increment, once asked for.
     field: Option<Vec<f64>>,
     /// Recent load solves, reused when a new load is a combination of their loads.
@@ -475,6 +477,7 @@ impl ContactAnalysis {
         Ok(ContactAnalysis {
             qc: vec![0.0; dofs.len()],
             converged: None,
+            previous: None,
             field: None,
             loads: Vec::new(),
             bodies,
@@ -650,6 +653,30 @@ impl ContactAnalysis {
                 out[i] += v;
             }
         }
+    }
+
+    /// The displacement increment of the last converged increment (its field minus the one
+    /// before; the whole field at the first increment), same layout as
+    /// [`displacement`](Self::displacement). One solve, with the difference of the two
+    /// increments' loads (the response is linear in them).
+    pub fn displacement_increment(&mut self) -> Result<Vec<f64>> {
+        let Some(c) = &self.converged else {
+            return Ok(vec![0.0; self.bodies.field_len()]);
+        };
+        let mut load = self.total_load(c);
+        let mut prescribed = c.prescribed.clone();
+        if let Some(p) = &self.previous {
+            for (l, v) in load.iter_mut().zip(self.total_load(p)) {
+                *l -= v;
+            }
+            for (q, v) in prescribed.iter_mut().zip(&p.prescribed) {
+                *q -= v;
+            }
+        }
+        let clock = std::time::Instant::now();
+        let du = self.bodies.solve(&load, &prescribed)?;
+        self.timings.recovery += clock.elapsed().as_secs_f64();
+        Ok(du)
     }
 
     /// External loads plus contact forces of a converged increment.
@@ -1463,7 +1490,7 @@ impl ContactAnalysis {
         records: Vec<IterationRecord>,
     ) -> IncrementInfo {
         self.qc = uc;
-        self.converged = Some(converged);
+        self.previous = self.converged.replace(converged);
         self.field = None;
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {

@@ -861,9 +861,10 @@ pub unsafe extern "C" fn hycon_model_set_plate(
 /// validate, assemble, factor `K` once with the contact dofs last and read the contact-boundary
 /// flexibility off the factor. `options` NULL means the defaults.
 ///
+/// A model without contact pairs is allowed: its increments are plain linear solves.
+///
 /// Errors: `HYCON_ERROR_SINGULAR` (a body not held against rigid motion: the message names it),
-/// `HYCON_ERROR_BAD_ELEMENT`, `HYCON_ERROR_INVALID_ARGUMENT` (no contact pair, bad options),
-/// `HYCON_ERROR_SOLVER`.
+/// `HYCON_ERROR_BAD_ELEMENT`, `HYCON_ERROR_INVALID_ARGUMENT` (bad options), `HYCON_ERROR_SOLVER`.
 ///
 /// # Safety
 /// `out` must point to a writable pointer, `model` be a live handle, `options` NULL or
@@ -878,11 +879,6 @@ pub unsafe extern "C" fn hycon_contact_new(
         // SAFETY: the caller's contract.
         let m = unsafe { handle(model, "model")? };
         let (opts, monitor) = unsafe { read_options(options)? };
-        if m.pairs.is_empty() {
-            return Err(Fail::invalid(
-                "the model has no contact pair (hycon_model_add_pair)",
-            ));
-        }
         let mut analysis = match &m.plate {
             Some(plate) => {
                 ContactAnalysis::with_plate(m.model.clone(), m.pairs.clone(), opts, plate.clone())?
@@ -1354,6 +1350,27 @@ pub unsafe extern "C" fn hycon_contact_displacement(
         check_output(out, len, needed, "out")?;
         let q = c.analysis.displacement()?;
         unsafe { write_all(out, len, q, "out") }
+    })
+}
+
+/// The displacement increment of the last converged increment (its total displacement minus
+/// the previous increment's; the total at the first), same layout as
+/// `hycon_contact_displacement`. One solve per call.
+///
+/// # Safety
+/// `contact` must be a live handle; `out` NULL or `len` writable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_contact_displacement_increment(
+    contact: *mut HyconContact,
+    out: *mut f64,
+    len: usize,
+) -> HyconStatus {
+    boundary("hycon_contact_displacement_increment", || {
+        // SAFETY (all): the caller's contract.
+        let c = unsafe { handle_mut(contact, "contact")? };
+        check_output(out, len, c.analysis.field_len(), "out")?;
+        let du = c.analysis.displacement_increment()?;
+        unsafe { write_all(out, len, &du, "out") }
     })
 }
 
