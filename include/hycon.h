@@ -72,6 +72,9 @@
 // Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
 #define HYCON_FIXED -1
 
+// Which sparse Cholesky library factors K.
+typedef struct Backend Backend;
+
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
 // `hycon_contact_free`. Thread safety: a `HyconContact` may be moved between threads but must
@@ -145,7 +148,9 @@ typedef struct HyconContactOptions {
     // locked in slip before a cycling contact set fails the increment (default 3; 0 fails at
     // the first cycle).
     uint32_t lock_rounds;
-    // Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`).
+    // Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`;
+    // `HYCON_BACKEND_CHOLMOD` fails with `HYCON_ERROR_SOLVER` unless hycon was built with the
+    // `suitesparse` feature).
     HyconBackend backend;
     // Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
     HyconMonitorFn monitor;

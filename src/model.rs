@@ -245,6 +245,15 @@ impl LinearSystem {
         })
     }
 
+    /// Assemble and factor `K_ff` again, reusing the pattern and the symbolic analysis (what a
+    /// design that does not keep its factor pays per solve; the contact benchmark's
+    /// refactor-every-iteration variant).
+    pub fn refactorize(&mut self, model: &Model) -> Result<()> {
+        self.pattern
+            .assemble(&model.mesh, &model.materials, model.formulation, &self.dofs)?;
+        self.cholesky.factorize(self.pattern.matrix())
+    }
+
     /// The flexibility `(K^-1)` between the free dofs among the `trailing` dofs given to
     /// [`LinearSystem::with_trailing`] (in that order, prescribed ones skipped), read off the
     /// factor: no solves.

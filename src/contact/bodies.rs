@@ -18,7 +18,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::{LinearSystem, Model};
-use crate::solver::SparseCholesky;
+use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
 use faer::sparse::{SparseColMat, Triplet};
 use nalgebra::DMatrix;
@@ -201,7 +201,11 @@ struct Host {
 }
 
 enum HostSolver {
-    Factor(SparseCholesky),
+    /// hycon's factor of the host's matrix (kept for refactorization).
+    Factor {
+        factor: SparseCholesky,
+        lower: SparseColMat<usize, f64>,
+    },
     Callback(Box<dyn HostSolve>),
 }
 
@@ -238,8 +242,8 @@ const CALLBACK_BATCH: usize = 64;
 
 impl Bodies {
     /// hycon's model, factored with the global dofs `trailing` eliminated last.
-    pub fn model(model: Model, trailing: &[usize]) -> Result<Self> {
-        let system = LinearSystem::with_trailing(&model, trailing)?;
+    pub fn model(model: Model, trailing: &[usize], backend: Backend) -> Result<Self> {
+        let system = LinearSystem::with_trailing_on(&model, trailing, backend)?;
         Ok(Bodies(Kind::Model {
             model: Box::new(model),
             system,
@@ -248,7 +252,7 @@ impl Bodies {
 
     /// A host's system: checks the nodes (unique ids, finite positions, equations in range and
     /// used once) and factors a CSR stiffness (the contact equations last).
-    pub fn host(system: HostSystem) -> Result<Self> {
+    pub fn host(system: HostSystem, backend: Backend) -> Result<Self> {
         let HostSystem {
             equations,
             nodes,
@@ -293,9 +297,9 @@ impl Bodies {
                     .flat_map(|n| n.equations.into_iter().flatten())
                     .collect();
                 let mut factor =
-                    SparseCholesky::analyze_with_trailing(lower.symbolic(), &trailing)?;
+                    SparseCholesky::analyze_with_trailing_on(backend, lower.symbolic(), &trailing)?;
                 factor.factorize(lower.as_ref())?;
-                HostSolver::Factor(factor)
+                HostSolver::Factor { factor, lower }
             }
             HostStiffness::Solver(s) => HostSolver::Callback(s),
         };
@@ -374,7 +378,7 @@ impl Bodies {
         let condensed = match &mut self.0 {
             Kind::Model { system, .. } => system.condensed_flexibility()?,
             Kind::Host(h) => match &mut h.solver {
-                HostSolver::Factor(f) => f.condensed_inverse()?,
+                HostSolver::Factor { factor, .. } => factor.condensed_inverse()?,
                 HostSolver::Callback(s) => {
                     let eqs: Vec<usize> = free
                         .iter()
@@ -410,7 +414,7 @@ impl Bodies {
                 }
                 let mut x = vec![0.0; n];
                 match &mut h.solver {
-                    HostSolver::Factor(factor) => {
+                    HostSolver::Factor { factor, .. } => {
                         let mut rhs = Mat::from_fn(n, 1, |i, _| f[i]);
                         factor.solve_in_place(rhs.as_mut())?;
                         for (i, v) in x.iter_mut().enumerate() {
@@ -450,8 +454,20 @@ impl Bodies {
         match &mut self.0 {
             Kind::Model { system, .. } => system.cholesky().factorizations(),
             Kind::Host(h) => match &h.solver {
-                HostSolver::Factor(f) => f.factorizations(),
+                HostSolver::Factor { factor, .. } => factor.factorizations(),
                 HostSolver::Callback(_) => 0,
+            },
+        }
+    }
+
+    /// Factor `K` again (assembling it again for a model); a host's own solver keeps its
+    /// factor. Only the benchmark's refactor-every-iteration variant does this.
+    pub fn refactorize(&mut self) -> Result<()> {
+        match &mut self.0 {
+            Kind::Model { model, system } => system.refactorize(model),
+            Kind::Host(h) => match &mut h.solver {
+                HostSolver::Factor { factor, lower } => factor.factorize(lower.as_ref()),
+                HostSolver::Callback(_) => Ok(()),
             },
         }
     }

@@ -45,6 +45,7 @@ use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
 use crate::error::{Error, Result};
 use crate::model::Model;
+use crate::solver::Backend;
 use nalgebra::{DMatrix, DVector};
 
 mod results;
@@ -85,6 +86,12 @@ pub struct ContactOptions {
     /// (a node on the edge of the friction cone) are locked in slip before a cycling contact
     /// set is reported as an error. 0: report the first cycle.
     pub lock_rounds: usize,
+    /// Sparse Cholesky library for hycon's factorizations of `K`.
+    pub backend: Backend,
+    /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
+    /// analysis: never needed (`K` does not change), it exists so that the benchmark can show
+    /// what factoring once saves.
+    pub refactor_each_iteration: bool,
 }
 
 impl Default for ContactOptions {
@@ -98,6 +105,8 @@ impl Default for ContactOptions {
             slip_tolerance: 1e-6,
             search_distance: 4.0,
             lock_rounds: 3,
+            backend: Backend::Faer,
+            refactor_each_iteration: false,
         }
     }
 }
@@ -409,7 +418,7 @@ impl ContactAnalysis {
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
-        let bodies = Bodies::model(model, &dofs)?;
+        let bodies = Bodies::model(model, &dofs, options.backend)?;
         Self::setup(bodies, pairs, dofs, options)
     }
 
@@ -424,7 +433,7 @@ impl ContactAnalysis {
         options: ContactOptions,
     ) -> Result<Self> {
         let clock = std::time::Instant::now();
-        let bodies = Bodies::host(system)?;
+        let bodies = Bodies::host(system, options.backend)?;
         let seconds = clock.elapsed().as_secs_f64();
         let n_nodes = bodies.positions().len();
         check_pairs(&pairs, |n| bodies.local(n), usize::MAX)?;
@@ -872,6 +881,12 @@ impl ContactAnalysis {
         let mut lock_rounds = 0;
         let mut records = Vec::new();
         for iteration in 1..=self.options.max_iterations {
+            if self.options.refactor_each_iteration && iteration > 1 {
+                let clock = std::time::Instant::now();
+                self.bodies.refactorize()?;
+                self.flexibility = self.bodies.flexibility(&self.dofs)?;
+                self.timings.factorization += clock.elapsed().as_secs_f64();
+            }
             let system = self.build_system(&surfaces, &states, &uc, &startc)?;
             let (tau, plate_motion, condition) =
                 system.solve(&u0c, &self.flexibility, border.as_ref())?;

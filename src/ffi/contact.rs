@@ -23,6 +23,7 @@ use crate::contact::iteration::{
 };
 use crate::mesh::Mesh;
 use crate::model::Model;
+use crate::solver::Backend;
 use std::ffi::c_void;
 
 // ------------------------------------------------------------------------------------------
@@ -154,7 +155,9 @@ pub struct HyconContactOptions {
     /// locked in slip before a cycling contact set fails the increment (default 3; 0 fails at
     /// the first cycle).
     pub lock_rounds: u32,
-    /// Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`).
+    /// Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`;
+    /// `HYCON_BACKEND_CHOLMOD` fails with `HYCON_ERROR_SOLVER` unless hycon was built with the
+    /// `suitesparse` feature).
     pub backend: HyconBackend,
     /// Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
     pub monitor: HyconMonitorFn,
@@ -535,21 +538,16 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
     if o.max_iterations == 0 {
         return Err(Fail::invalid("options.max_iterations must be at least 1"));
     }
-    match o.backend {
-        HYCON_BACKEND_FAER => {}
-        HYCON_BACKEND_CHOLMOD => {
-            return Err(Fail::new(
-                HYCON_ERROR_SOLVER,
-                "options.backend: HYCON_BACKEND_CHOLMOD is not available in this build",
-            ));
-        }
+    let backend = match o.backend {
+        HYCON_BACKEND_FAER => Backend::Faer,
+        HYCON_BACKEND_CHOLMOD => Backend::Cholmod,
         b => {
             return Err(Fail::invalid(format!(
                 "options.backend = {b} is unknown (HYCON_BACKEND_FAER = 1, \
                  HYCON_BACKEND_CHOLMOD = 2)"
             )));
         }
-    }
+    };
     let options = ContactOptions {
         tolerance: o.tolerance,
         max_iterations: o.max_iterations as usize,
@@ -559,6 +557,8 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
         slip_tolerance: o.slip_tolerance,
         search_distance: o.search_distance,
         lock_rounds: o.lock_rounds as usize,
+        backend,
+        refactor_each_iteration: false,
     };
     let monitor = o.monitor.map(|monitor| {
         MonitorCall {
