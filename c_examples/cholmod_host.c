@@ -1,0 +1,539 @@
+/* A host FE code in C99 with its own elements, its own equation numbering and CHOLMOD as its
+ * linear solver, running hycon's contact iteration through the host-assembly API.
+ *
+ * The problem is the Hertz scene of hertz_model.c (disk_mesh.h: a half disk of radius R on a
+ * block, plane strain, E = 1, nu = 0.3, target half-width a = R/32, n elements per half-width),
+ * displacement-controlled: the block's bottom face is held, the disk's flat top face is moved
+ * down by the approach delta (and held in x). The host
+ *   - numbers the free dofs itself (the held ones eliminated) and assembles K with its own
+ *     4-node bilinear element (Q4, 2x2 Gauss; compared once with hycon_element_stiffness),
+ *     and the right-hand side of its prescribed displacements, rhs = -K_fp q_p;
+ *   - factors K with CHOLMOD (cholmod_analyze, cholmod_factorize) and hands hycon a solve
+ *     callback (hycon_host_set_solver) that solves for many right-hand sides at once;
+ *   - describes its contact pair in its numbering (hycon_host_add_pair: node ids, reference
+ *     coordinates, equation numbers) and runs the increments with hycon_contact_increment.
+ * Two increments: a trial approach a^2 / R, then the approach scaled to the Hertz load of the
+ * target half-width (the load is nearly linear in the approach).
+ *
+ * The same increments are run two more ways and compared with the callback path:
+ *   - CSR path: the same K given as CSR (hycon_host_set_csr), factored by hycon;
+ *   - model API: the same mesh and prescribed values through hycon_model_new with
+ *     HYCON_ELEMENT_Q4 (hycon assembles and factors).
+ * Checked at every increment: the A nodes' states are identical and their tractions (tn, ts) and
+ * the displacements of all contact nodes agree to 1e-7 relative (to the largest |tn| and the
+ * largest contact-node displacement). The three paths solve the same linear systems with
+ * different orderings and factorizations, so they differ by round-off (about 1e-10 measured)
+ * amplified by the contact iteration; 1e-7 leaves a wide margin over that yet is far below
+ * anything a real mismatch gives (a wrong equation number, element or load: 1e-3 and more).
+ * The contact iteration itself converges to R < 1e-6, but all paths take the same contact sets,
+ * and within a set the converged state is the exact solution of a linear system.
+ * The Hertz comparison (multipliers and B side) is printed for information (Q4, not checked).
+ *
+ * Finally a solve made to fail (as a CHOLMOD failure would) must fail the next increment with
+ * HYCON_ERROR_CALLBACK and leave the last converged state untouched; the same increment then
+ * succeeds.
+ *
+ * Usage: cholmod_host [n]   (elements per half-width, 4..32, default 12). Prints OK on success;
+ * FAILED or "wrong value" and exit code 1 otherwise.
+ */
+#include "disk_mesh.h"
+
+#include <cholmod.h>
+#include <string.h>
+#include <time.h>
+
+/* ------------------------------------------------------------------------------------------ */
+/* The host's element: bilinear quadrilateral, 2x2 Gauss, plane strain, thickness t */
+
+/* Element stiffness (8 x 8, row-major, dofs u0 v0 u1 v1 ...). Returns 0, or -1 if det J <= 0. */
+static int q4_stiffness(const double xy[8], double youngs, double poisson, double thickness,
+                        double k[64]) {
+    static const double xi_n[4] = {-1.0, 1.0, 1.0, -1.0}, eta_n[4] = {-1.0, -1.0, 1.0, 1.0};
+    const double g = 1.0 / sqrt(3.0);
+    const double c = youngs / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+    const double d11 = c * (1.0 - poisson), d12 = c * poisson, d33 = youngs / (2.0 * (1.0 + poisson));
+    size_t p, i, j;
+    memset(k, 0, 64 * sizeof *k);
+    for (p = 0; p < 4; ++p) {
+        double xi = g * xi_n[p], eta = g * eta_n[p];
+        double dxi[4], deta[4], dx[4], dy[4], j11 = 0, j12 = 0, j21 = 0, j22 = 0, det, w;
+        double b[3][8];
+        for (i = 0; i < 4; ++i) {
+            dxi[i] = 0.25 * xi_n[i] * (1.0 + eta_n[i] * eta);
+            deta[i] = 0.25 * eta_n[i] * (1.0 + xi_n[i] * xi);
+            j11 += dxi[i] * xy[2 * i];
+            j12 += dxi[i] * xy[2 * i + 1];
+            j21 += deta[i] * xy[2 * i];
+            j22 += deta[i] * xy[2 * i + 1];
+        }
+        det = j11 * j22 - j12 * j21;
+        if (!(det > 0.0)) return -1;
+        for (i = 0; i < 4; ++i) {
+            dx[i] = (j22 * dxi[i] - j12 * deta[i]) / det;
+            dy[i] = (-j21 * dxi[i] + j11 * deta[i]) / det;
+            b[0][2 * i] = dx[i], b[0][2 * i + 1] = 0.0;
+            b[1][2 * i] = 0.0, b[1][2 * i + 1] = dy[i];
+            b[2][2 * i] = dy[i], b[2][2 * i + 1] = dx[i];
+        }
+        w = det * thickness; /* Gauss weights 1 */
+        for (i = 0; i < 8; ++i) {
+            double db0 = d11 * b[0][i] + d12 * b[1][i], db1 = d12 * b[0][i] + d11 * b[1][i];
+            double db2 = d33 * b[2][i];
+            for (j = 0; j < 8; ++j)
+                k[i * 8 + j] += w * (b[0][j] * db0 + b[1][j] * db1 + b[2][j] * db2);
+        }
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* CHOLMOD as the host's solver */
+
+typedef struct CholmodState {
+    cholmod_common common;
+    cholmod_factor *factor;
+    size_t n;
+    size_t calls, columns, max_nrhs, failures;
+    double seconds;    /* CPU time in the solves */
+    int fail_next;     /* test: fail the next call as a CHOLMOD failure would */
+} CholmodState;
+
+/* hycon's HyconSolveFn: K x_j = rhs_j for nrhs column-major right-hand sides. Never unwinds:
+ * every CHOLMOD failure becomes a nonzero return (hycon then reports HYCON_ERROR_CALLBACK). */
+static int32_t cholmod_solve_cb(void *user_data, size_t n, size_t nrhs, const double *rhs,
+                                double *x) {
+    CholmodState *s = user_data;
+    cholmod_dense *b, *sol;
+    clock_t start = clock();
+    size_t j;
+    if (s == NULL || s->factor == NULL || n != s->n || rhs == NULL || x == NULL) return 1;
+    if (nrhs == 0) return 0;
+    if (s->fail_next) {
+        s->fail_next = 0;
+        return 4;
+    }
+    b = cholmod_allocate_dense(n, nrhs, n, CHOLMOD_REAL, &s->common);
+    if (b == NULL) {
+        ++s->failures;
+        return 2;
+    }
+    memcpy(b->x, rhs, n * nrhs * sizeof *rhs);
+    sol = cholmod_solve(CHOLMOD_A, s->factor, b, &s->common);
+    cholmod_free_dense(&b, &s->common);
+    if (sol == NULL || s->common.status != CHOLMOD_OK) {
+        cholmod_free_dense(&sol, &s->common);
+        ++s->failures;
+        return 3;
+    }
+    for (j = 0; j < nrhs; ++j)
+        memcpy(x + j * n, (const double *)sol->x + j * sol->d, n * sizeof *x);
+    cholmod_free_dense(&sol, &s->common);
+    ++s->calls;
+    s->columns += nrhs;
+    if (nrhs > s->max_nrhs) s->max_nrhs = nrhs;
+    s->seconds += (double)(clock() - start) / CLOCKS_PER_SEC;
+    return 0;
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* Comparison of two analyses */
+
+typedef struct Snapshot {
+    HyconNodeResult *nodes; /* n_a */
+    double *u;              /* 2 n_nodes: displacement at every node (prescribed values too) */
+} Snapshot;
+
+/* Read the A-node results and the nodal displacements of an analysis. `eq` maps the host's dofs
+ * to equations (NULL: a model, whose field is the dofs); `qp` holds the prescribed values. */
+static void snapshot(HyconContact *c, const DiskMesh *m, const long *eq, const double *qp,
+                     double *field, size_t n_field, Snapshot *s) {
+    size_t k;
+    CHECK(hycon_contact_node_results(c, 0, s->nodes, m->n_a));
+    CHECK(hycon_contact_displacement(c, field, n_field));
+    for (k = 0; k < 2 * m->n_nodes; ++k)
+        s->u[k] = eq == NULL ? field[k] : eq[k] >= 0 ? field[eq[k]] : qp[k];
+}
+
+/* Differences of `x` against the reference `ref`; prints them and returns the failures. */
+static int compare(const char *label, const DiskMesh *m, const Snapshot *x, const Snapshot *ref,
+                   double tolerance) {
+    double tn_max = 0.0, u_max = 0.0, dtn = 0.0, dts = 0.0, du = 0.0;
+    size_t k, d, states = 0;
+    int failures = 0;
+    for (k = 0; k < m->n_a; ++k) {
+        const HyconNodeResult *p = &x->nodes[k], *q = &ref->nodes[k];
+        if (fabs(q->tn) > tn_max) tn_max = fabs(q->tn);
+        if (fabs(p->tn - q->tn) > dtn) dtn = fabs(p->tn - q->tn);
+        if (fabs(p->ts - q->ts) > dts) dts = fabs(p->ts - q->ts);
+        if (p->state != q->state || p->node != q->node) ++states;
+    }
+    for (k = 0; k < m->n_a + m->n_b; ++k) {
+        size_t id = k < m->n_a ? m->a[k] : m->b[k - m->n_a];
+        for (d = 0; d < 2; ++d) {
+            double v = ref->u[2 * id + d], e = fabs(x->u[2 * id + d] - v);
+            if (fabs(v) > u_max) u_max = fabs(v);
+            if (e > du) du = e;
+        }
+    }
+    dtn /= tn_max, dts /= tn_max, du /= u_max;
+    printf("  %-22s tn %.2e, ts %.2e (of max |tn| %.3e), contact-node displacement %.2e (of "
+           "%.3e), states differing %lu\n",
+           label, dtn, dts, tn_max, du, u_max, (unsigned long)states);
+    if (states != 0) {
+        printf("wrong value: %s: %lu A nodes in another state\n", label, (unsigned long)states);
+        ++failures;
+    }
+    if (!(dtn <= tolerance && dts <= tolerance && du <= tolerance)) {
+        printf("wrong value: %s differs by more than %.0e\n", label, tolerance);
+        ++failures;
+    }
+    return failures;
+}
+
+static void print_timings(const char *label, HyconContact *c, size_t expected, int *failures) {
+    HyconTimings t;
+    size_t factorizations;
+    CHECK(hycon_contact_timings(c, &t, &factorizations));
+    printf("  %-12s assembly %.3f, factorization %.3f, flexibility %.3f, load solves %.3f, "
+           "iterations %.3f, recovery %.3f s; %lu factorization(s) by hycon\n",
+           label, t.assembly, t.factorization, t.flexibility, t.load_solves, t.iterations,
+           t.recovery, (unsigned long)factorizations);
+    if (factorizations != expected) {
+        printf("wrong value: %s: %lu factorizations, expected %lu\n", label,
+               (unsigned long)factorizations, (unsigned long)expected);
+        ++*failures;
+    }
+}
+
+int main(int argc, char **argv) {
+    const double youngs = 1.0, poisson = 0.3, radius = 1.0, target = 1.0 / 32.0;
+    const double tolerance = 1e-7;
+    const double e_star = youngs / (2.0 * (1.0 - poisson * poisson));
+    size_t n = argc > 1 ? (size_t)strtoul(argv[1], NULL, 10) : 12;
+    DiskMeshParams params;
+    DiskMesh m;
+    CholmodState *chol;
+    cholmod_triplet *triplets;
+    cholmod_sparse *kff;
+    HyconMaterial materials[2];
+    HyconModel *model = NULL;
+    HyconHost *host_cb = NULL, *host_csr = NULL;
+    HyconContact *c_cb = NULL, *c_csr = NULL, *c_model = NULL;
+    HyconContactOptions options;
+    Snapshot s_cb, s_csr, s_model;
+    long *eq;
+    int64_t *a_eq, *b_eq;
+    double *a_xy, *b_xy, *rhs_unit, *rhs, *qp, *field_host, *field_model, *zero;
+    size_t *row_ptr, *columns;
+    double deltas[2], k_max = 0.0, k_diff = 0.0;
+    size_t n_eq = 0, k, e, i, j, step, n_model_field;
+    int failures = 0;
+    clock_t start;
+
+    if (n < 4 || n > 32) {
+        fprintf(stderr, "usage: cholmod_host [n], 4 <= n <= 32\n");
+        return EXIT_FAILURE;
+    }
+    params.radius = radius;
+    params.half_width = target * radius;
+    params.per_half_width = n;
+    params.growth = 1.1;
+    params.block_half_width = 2.0 * radius;
+    params.block_depth = 2.0 * radius;
+    m = disk_mesh_build(&params);
+
+    /* the host's equations: block bottom and disk top held (eliminated), the rest numbered */
+    eq = xcalloc(2 * m.n_nodes, sizeof *eq);
+    for (k = 0; k < m.n_bottom; ++k) eq[2 * m.bottom[k]] = eq[2 * m.bottom[k] + 1] = -1;
+    for (k = 0; k < m.n_top; ++k) eq[2 * m.top[k]] = eq[2 * m.top[k] + 1] = -1;
+    for (k = 0; k < 2 * m.n_nodes; ++k) eq[k] = eq[k] < 0 ? -1 : (long)n_eq++;
+    printf("Hertz disk on block, host with CHOLMOD: h = a/%lu, %lu nodes, %lu Q4 elements, %lu "
+           "equations, %lu A nodes, %lu B nodes\n",
+           (unsigned long)n, (unsigned long)m.n_nodes, (unsigned long)m.n_elements,
+           (unsigned long)n_eq, (unsigned long)m.n_a, (unsigned long)m.n_b);
+
+    /* prescribed values of a unit approach: top face v = -1 */
+    qp = xcalloc(2 * m.n_nodes, sizeof *qp);
+    for (k = 0; k < m.n_top; ++k) qp[2 * m.top[k] + 1] = -1.0;
+
+    /* assembly: upper triangle of K_ff as triplets, rhs_unit = -K_fp q_p(unit approach) */
+    chol = xcalloc(1, sizeof *chol);
+    cholmod_start(&chol->common);
+    chol->n = n_eq;
+    triplets = cholmod_allocate_triplet(n_eq, n_eq, 36 * m.n_elements, 1, CHOLMOD_REAL,
+                                        &chol->common);
+    rhs_unit = xcalloc(n_eq, sizeof *rhs_unit);
+    if (triplets == NULL) {
+        printf("FAILED: cholmod_allocate_triplet\n");
+        return EXIT_FAILURE;
+    }
+    for (k = 0; k < 2; ++k) {
+        materials[k].youngs = youngs;
+        materials[k].poisson = poisson;
+        materials[k].thickness = 1.0;
+        materials[k].analysis = HYCON_PLANE_STRAIN;
+    }
+    start = clock();
+    for (e = 0; e < m.n_elements; ++e) {
+        const size_t *en = &m.nodes[m.offsets[e]];
+        double xy[8], ke[64], kh[64];
+        for (i = 0; i < 4; ++i) {
+            xy[2 * i] = m.coords[2 * en[i]];
+            xy[2 * i + 1] = m.coords[2 * en[i] + 1];
+        }
+        if (q4_stiffness(xy, youngs, poisson, 1.0, ke) != 0) {
+            printf("FAILED: element %lu is inverted or degenerate\n", (unsigned long)e);
+            return EXIT_FAILURE;
+        }
+        /* the host's element is the textbook Q4: it must equal hycon's to round-off */
+        CHECK(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, xy, &materials[m.materials[e]], kh,
+                                      64));
+        for (i = 0; i < 64; ++i) {
+            if (fabs(kh[i]) > k_max) k_max = fabs(kh[i]);
+            if (fabs(kh[i] - ke[i]) > k_diff) k_diff = fabs(kh[i] - ke[i]);
+        }
+        for (i = 0; i < 8; ++i) {
+            long r = eq[2 * en[i / 2] + i % 2];
+            if (r < 0) continue;
+            for (j = 0; j < 8; ++j) {
+                long col = eq[2 * en[j / 2] + j % 2];
+                if (col < 0) {
+                    rhs_unit[r] -= ke[i * 8 + j] * qp[2 * en[j / 2] + j % 2];
+                } else if (r <= col) {
+                    size_t t = triplets->nnz++;
+                    ((int *)triplets->i)[t] = (int)r;
+                    ((int *)triplets->j)[t] = (int)col;
+                    ((double *)triplets->x)[t] = ke[i * 8 + j];
+                }
+            }
+        }
+    }
+    kff = cholmod_triplet_to_sparse(triplets, 0, &chol->common);
+    cholmod_free_triplet(&triplets, &chol->common);
+    printf("host assembly %.3f s; host Q4 vs hycon_element_stiffness(HYCON_ELEMENT_Q4): max "
+           "difference %.2e of max entry %.3e\n",
+           (double)(clock() - start) / CLOCKS_PER_SEC, k_diff, k_max);
+    if (!(k_diff <= 1e-12 * k_max)) {
+        printf("wrong value: the host's Q4 differs from hycon's\n");
+        ++failures;
+    }
+    if (kff == NULL) {
+        printf("FAILED: cholmod_triplet_to_sparse (status %d)\n", chol->common.status);
+        return EXIT_FAILURE;
+    }
+    start = clock();
+    chol->factor = cholmod_analyze(kff, &chol->common);
+    if (chol->factor == NULL || !cholmod_factorize(kff, chol->factor, &chol->common) ||
+        chol->common.status != CHOLMOD_OK || chol->factor->minor != n_eq) {
+        printf("FAILED: CHOLMOD could not factor K (status %d)\n", chol->common.status);
+        return EXIT_FAILURE;
+    }
+    printf("CHOLMOD: %lu nonzeros in the upper triangle of K, analyze + factorize %.3f s "
+           "(%s, nnz(L) = %.0f)\n",
+           (unsigned long)((int *)kff->p)[n_eq], (double)(clock() - start) / CLOCKS_PER_SEC,
+           chol->factor->is_super ? "supernodal" : "simplicial", chol->common.lnz);
+
+    /* the contact pair in the host's numbering */
+    a_xy = xcalloc(2 * m.n_a, sizeof *a_xy);
+    a_eq = xcalloc(2 * m.n_a, sizeof *a_eq);
+    b_xy = xcalloc(2 * m.n_b, sizeof *b_xy);
+    b_eq = xcalloc(2 * m.n_b, sizeof *b_eq);
+    for (k = 0; k < 2 * m.n_a; ++k) {
+        a_xy[k] = m.coords[2 * m.a[k / 2] + k % 2];
+        a_eq[k] = eq[2 * m.a[k / 2] + k % 2] < 0 ? HYCON_FIXED : eq[2 * m.a[k / 2] + k % 2];
+    }
+    for (k = 0; k < 2 * m.n_b; ++k) {
+        b_xy[k] = m.coords[2 * m.b[k / 2] + k % 2];
+        b_eq[k] = eq[2 * m.b[k / 2] + k % 2] < 0 ? HYCON_FIXED : eq[2 * m.b[k / 2] + k % 2];
+    }
+    CHECK(hycon_contact_options_default(&options));
+
+    /* path 1: the solve callback (CHOLMOD) */
+    CHECK(hycon_host_new(&host_cb, n_eq));
+    CHECK(hycon_host_add_pair(host_cb, m.a, a_xy, a_eq, m.n_a, m.b, b_xy, b_eq, m.n_b, 0.0,
+                              NULL));
+    CHECK(hycon_host_set_solver(host_cb, cholmod_solve_cb, chol));
+    CHECK(hycon_contact_new_host(&c_cb, host_cb, &options));
+    hycon_host_free(host_cb); /* the analysis is independent of the description */
+
+    /* path 2: the same K as CSR, factored by hycon. CHOLMOD's upper triangle by columns is the
+     * lower triangle by rows. */
+    row_ptr = xcalloc(n_eq + 1, sizeof *row_ptr);
+    columns = xcalloc((size_t)((int *)kff->p)[n_eq], sizeof *columns);
+    for (k = 0; k <= n_eq; ++k) row_ptr[k] = (size_t)((int *)kff->p)[k];
+    for (k = 0; k < row_ptr[n_eq]; ++k) columns[k] = (size_t)((int *)kff->i)[k];
+    CHECK(hycon_host_new(&host_csr, n_eq));
+    CHECK(hycon_host_add_pair(host_csr, m.a, a_xy, a_eq, m.n_a, m.b, b_xy, b_eq, m.n_b, 0.0,
+                              NULL));
+    CHECK(hycon_host_set_csr(host_csr, row_ptr, columns, (const double *)kff->x,
+                             HYCON_CSR_LOWER));
+    CHECK(hycon_contact_new_host(&c_csr, host_csr, &options));
+    hycon_host_free(host_csr);
+    free(row_ptr);
+    free(columns);
+
+    /* path 3: the model API, HYCON_ELEMENT_Q4 on the same mesh */
+    CHECK(hycon_model_new(&model, m.coords, m.n_nodes, m.offsets, m.nodes, m.n_elements,
+                          m.materials, materials, 2, HYCON_ELEMENT_Q4));
+    CHECK(hycon_model_prescribe(model, m.bottom, m.n_bottom, HYCON_XY));
+    CHECK(hycon_model_prescribe(model, m.top, m.n_top, HYCON_XY));
+    CHECK(hycon_model_add_pair(model, m.a, m.n_a, m.b, m.n_b, 0.0, NULL));
+    CHECK(hycon_contact_new(&c_model, model, &options));
+    hycon_model_free(model);
+    CHECK(hycon_contact_field_len(c_model, &n_model_field));
+    if (n_model_field != 2 * m.n_nodes) {
+        printf("wrong value: model field length %lu\n", (unsigned long)n_model_field);
+        ++failures;
+    }
+
+    rhs = xcalloc(n_eq, sizeof *rhs);
+    field_host = xcalloc(n_eq, sizeof *field_host);
+    field_model = xcalloc(2 * m.n_nodes, sizeof *field_model);
+    zero = xcalloc(2 * m.n_nodes, sizeof *zero);
+    s_cb.nodes = xcalloc(m.n_a, sizeof *s_cb.nodes);
+    s_csr.nodes = xcalloc(m.n_a, sizeof *s_csr.nodes);
+    s_model.nodes = xcalloc(m.n_a, sizeof *s_model.nodes);
+    s_cb.u = xcalloc(2 * m.n_nodes, sizeof *s_cb.u);
+    s_csr.u = xcalloc(2 * m.n_nodes, sizeof *s_csr.u);
+    s_model.u = xcalloc(2 * m.n_nodes, sizeof *s_model.u);
+
+    deltas[0] = params.half_width * params.half_width / radius; /* trial approach */
+    for (step = 0; step < 2; ++step) {
+        HyconIncrementInfo info_cb, info_csr, info_model;
+        double delta, load = 0.0, p_target, *qp_now = xcalloc(2 * m.n_nodes, sizeof *qp_now);
+        if (step == 1) { /* scale the approach to the Hertz load of the target half-width */
+            for (k = 0; k < m.n_a; ++k)
+                load -= s_cb.nodes[k].normal[0] * s_cb.nodes[k].force[0] +
+                        s_cb.nodes[k].normal[1] * s_cb.nodes[k].force[1];
+            p_target = DISK_PI * params.half_width * params.half_width * e_star / (4.0 * radius);
+            deltas[1] = deltas[0] * p_target / load;
+        }
+        delta = deltas[step];
+        for (k = 0; k < n_eq; ++k) rhs[k] = delta * rhs_unit[k];
+        for (k = 0; k < 2 * m.n_nodes; ++k) qp_now[k] = delta * qp[k];
+        printf("increment %lu: approach %.6e\n", (unsigned long)step + 1, delta);
+        CHECK(hycon_contact_increment(c_cb, rhs, n_eq, NULL, 0, &info_cb));
+        CHECK(hycon_contact_increment(c_csr, rhs, n_eq, NULL, 0, &info_csr));
+        CHECK(hycon_contact_increment(c_model, zero, 2 * m.n_nodes, qp_now, 2 * m.n_nodes,
+                                      &info_model));
+        printf("  iterations %lu / %lu / %lu, active nodes %lu / %lu / %lu (callback / CSR / "
+               "model)\n",
+               (unsigned long)info_cb.iterations, (unsigned long)info_csr.iterations,
+               (unsigned long)info_model.iterations, (unsigned long)info_cb.active,
+               (unsigned long)info_csr.active, (unsigned long)info_model.active);
+        snapshot(c_cb, &m, eq, qp_now, field_host, n_eq, &s_cb);
+        snapshot(c_csr, &m, eq, qp_now, field_host, n_eq, &s_csr);
+        snapshot(c_model, &m, NULL, qp_now, field_model, 2 * m.n_nodes, &s_model);
+        printf("  differences from the model API:\n");
+        failures += compare("callback (CHOLMOD)", &m, &s_cb, &s_model, tolerance);
+        failures += compare("CSR (hycon factors)", &m, &s_csr, &s_model, tolerance);
+        {
+            /* Hertz, for information: Q4 on this mesh, multipliers and B side */
+            HyconBNodeResult *bn = xcalloc(m.n_b, sizeof *bn);
+            double *x = xcalloc(m.n_a + m.n_b, sizeof *x), *p = xcalloc(m.n_a + m.n_b, sizeof *p);
+            double wsum = 0.0, wx = 0.0, centre;
+            HertzFit fa, fb;
+            load = 0.0;
+            for (k = 0; k < m.n_a; ++k) {
+                const HyconNodeResult *r = &s_cb.nodes[k];
+                load -= r->normal[0] * r->force[0] + r->normal[1] * r->force[1];
+                wsum -= r->tn * r->weight;
+                wx -= r->tn * r->weight * r->position[0];
+            }
+            centre = wx / wsum;
+            for (k = 0; k < m.n_a; ++k) {
+                x[k] = s_cb.nodes[k].position[0] - centre;
+                p[k] = -s_cb.nodes[k].tn;
+            }
+            fa = hertz_compare(x, p, m.n_a, load, radius, e_star);
+            CHECK(hycon_contact_b_node_results(c_cb, 0, bn, m.n_b));
+            for (k = 0; k < m.n_b; ++k) {
+                x[k] = m.coords[2 * bn[k].node] + s_cb.u[2 * bn[k].node] - centre;
+                p[k] = bn[k].pressure;
+            }
+            fb = hertz_compare(x, p, m.n_b, load, radius, e_star);
+            printf("  Hertz at the contact load P = %.6e (information; Q4): a = %.6e (a/h = "
+                   "%.2f), p0 = %.6e\n",
+                   load, fa.a, fa.a / m.h, fa.p0);
+            hertz_print("multipliers (A nodes)", &fa);
+            hertz_print("B side (disk nodes)", &fb);
+            free(bn);
+            free(x);
+            free(p);
+        }
+        free(qp_now);
+    }
+
+    /* a failing solve: the increment fails with HYCON_ERROR_CALLBACK, the state is kept */
+    {
+        HyconNodeResult *before = xcalloc(m.n_a, sizeof *before);
+        char message[256];
+        HyconStatus status;
+        CHECK(hycon_contact_node_results(c_cb, 0, before, m.n_a));
+        /* a load that is not a combination of earlier ones (those hycon answers without a
+         * solve): 10 % more approach and a small force at equation 0, in the block */
+        for (k = 0; k < n_eq; ++k) rhs[k] = 1.1 * deltas[1] * rhs_unit[k];
+        rhs[0] += 1e-6 * fabs(rhs[n_eq - 1]) + 1e-12;
+        chol->fail_next = 1;
+        status = hycon_contact_increment(c_cb, rhs, n_eq, NULL, 0, NULL);
+        hycon_last_error_message(message, sizeof message);
+        printf("a solve that fails (returns 4): %s, \"%s\"\n", hycon_status_name(status),
+               message);
+        CHECK(hycon_contact_node_results(c_cb, 0, s_cb.nodes, m.n_a));
+        if (status != HYCON_ERROR_CALLBACK ||
+            memcmp(before, s_cb.nodes, m.n_a * sizeof *before) != 0) {
+            printf("wrong value: a failing solve must give HYCON_ERROR_CALLBACK and keep the "
+                   "converged state\n");
+            ++failures;
+        }
+        /* and the analysis goes on from there */
+        CHECK(hycon_contact_increment(c_cb, rhs, n_eq, NULL, 0, NULL));
+        free(before);
+    }
+
+    printf("solve callback: %lu calls, %lu right-hand sides (at most %lu per call), %.3f s in "
+           "CHOLMOD solves\n",
+           (unsigned long)chol->calls, (unsigned long)chol->columns,
+           (unsigned long)chol->max_nrhs, chol->seconds);
+    if (chol->max_nrhs < 2 || chol->failures != 0) {
+        printf("wrong value: the callback never got several right-hand sides at once, or "
+               "failed\n");
+        ++failures;
+    }
+    printf("timings:\n");
+    print_timings("callback", c_cb, 0, &failures);
+    print_timings("CSR", c_csr, 1, &failures);
+    print_timings("model", c_model, 1, &failures);
+
+    hycon_contact_free(c_cb);
+    hycon_contact_free(c_csr);
+    hycon_contact_free(c_model);
+    cholmod_free_factor(&chol->factor, &chol->common);
+    cholmod_free_sparse(&kff, &chol->common);
+    cholmod_finish(&chol->common);
+    free(chol);
+    free(eq);
+    free(a_eq);
+    free(b_eq);
+    free(a_xy);
+    free(b_xy);
+    free(rhs_unit);
+    free(rhs);
+    free(qp);
+    free(field_host);
+    free(field_model);
+    free(zero);
+    free(s_cb.nodes);
+    free(s_csr.nodes);
+    free(s_model.nodes);
+    free(s_cb.u);
+    free(s_csr.u);
+    free(s_model.u);
+    disk_mesh_free(&m);
+    if (failures != 0) {
+        printf("FAILED: %d check(s)\n", failures);
+        return EXIT_FAILURE;
+    }
+    printf("OK\n");
+    return EXIT_SUCCESS;
+}
