@@ -187,7 +187,9 @@ typedef int32_t HyconTriangle;
 // Return 0 on success, nonzero on failure (the hycon call then fails with
 // `HYCON_ERROR_CALLBACK`). hycon calls it with many columns at once: at contact setup with unit
 // right-hand sides (at most 64 columns per call) to build the boundary flexibility, and with one
-// column per new load and per displacement recovery. Called on the thread that calls into the
+// column per new load and per displacement recovery. A load that is a combination of the
+// last few loads (proportional loading, say) is not solved again: its response is combined
+// from theirs, so such an increment makes no call at all. Called on the thread that calls into the
 // `HyconContact`. Must not unwind through hycon.
 typedef int32_t (*HyconSolveFn)(void *user_data, size_t n, size_t nrhs, const double *rhs, double *x);
 
@@ -245,6 +247,8 @@ typedef struct HyconBNodeResult {
     double force[2];
     // Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
     double pressure;
+    // Current position.
+    double position[2];
 } HyconBNodeResult;
 
 // Where the time of an analysis went (wall-clock seconds, accumulated).

@@ -162,6 +162,8 @@ pub struct BNodeResult {
     pub force: [f64; 2],
     /// Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
     pub pressure: f64,
+    /// Current position of the node.
+    pub position: [f64; 2],
 }
 
 /// What happened in one iteration.

@@ -118,7 +118,9 @@ pub type HyconMonitorFn = Option<
 /// Return 0 on success, nonzero on failure (the hycon call then fails with
 /// `HYCON_ERROR_CALLBACK`). hycon calls it with many columns at once: at contact setup with unit
 /// right-hand sides (at most 64 columns per call) to build the boundary flexibility, and with one
-/// column per new load and per displacement recovery. Called on the thread that calls into the
+/// column per new load and per displacement recovery. A load that is a combination of the
+/// last few loads (proportional loading, say) is not solved again: its response is combined
+/// from theirs, so such an increment makes no call at all. Called on the thread that calls into the
 /// `HyconContact`. Must not unwind through hycon.
 pub type HyconSolveFn = Option<
     unsafe extern "C" fn(
@@ -219,6 +221,8 @@ pub struct HyconBNodeResult {
     pub force: [f64; 2],
     /// Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
     pub pressure: f64,
+    /// Current position.
+    pub position: [f64; 2],
 }
 
 /// Contact-element quantities of one A node in the converged configuration (the reference one
@@ -1485,6 +1489,7 @@ pub unsafe extern "C" fn hycon_contact_b_node_results(
                 weight: r.weight,
                 force: r.force,
                 pressure: r.pressure,
+                position: r.position,
             })
             .collect();
         unsafe { write_all(out, len, &results, "out") }

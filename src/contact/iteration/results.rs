@@ -181,6 +181,7 @@ impl ContactAnalysis {
                     weight: weight[i],
                     force: force[i],
                     pressure,
+                    position: x[j],
                 }
             })
             .collect())
