@@ -7,7 +7,7 @@ use crate::element::{self, ElementMatrix, Formulation};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
 use crate::mesh::generate::{self, Transition};
-use crate::solver::SparseCholesky;
+use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
 use std::time::Instant;
 
@@ -256,47 +256,13 @@ pub fn guard_values() -> Result<Vec<GuardValue>> {
 // ---------------------------------------------------------------------------------------------
 // Run time against error: the Hertz sweep (`hycon bench sweep`)
 
-/// Sparse backend of a sweep run, as named on the command line (`faer`, `cholmod`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum SweepBackend {
-    /// faer's supernodal Cholesky (always available).
-    #[default]
-    Faer,
-    /// SuiteSparse's CHOLMOD (the `suitesparse` feature).
-    Cholmod,
-}
+/// Both sparse backends, in the order tables list them (a build without the `suitesparse`
+/// feature cannot run CHOLMOD: [`Backend::available`]).
+pub const BACKENDS: [Backend; 2] = [Backend::Faer, Backend::Cholmod];
 
-impl SweepBackend {
-    /// Both backends, in the order tables list them.
-    pub const ALL: [SweepBackend; 2] = [SweepBackend::Faer, SweepBackend::Cholmod];
-
-    /// `"faer"` or `"cholmod"`.
-    pub fn name(self) -> &'static str {
-        match self {
-            SweepBackend::Faer => "faer",
-            SweepBackend::Cholmod => "cholmod",
-        }
-    }
-
-    /// Whether a contact analysis of this build can run on the backend.
-    pub fn available(self) -> bool {
-        match self {
-            SweepBackend::Faer => true,
-            // not yet selectable in ContactOptions
-            SweepBackend::Cholmod => false,
-        }
-    }
-
-    /// Parse a name given by [`SweepBackend::name`].
-    pub fn parse(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|b| b.name() == name)
-    }
-}
-
-/// Whether the contact analysis can re-factor `K` and rebuild the flexibility every iteration
-/// (the variant compared with the factor-once design).
-pub fn refactor_available() -> bool {
-    false
+/// Parse a backend name given by [`Backend::name`] (`faer`, `cholmod`).
+pub fn parse_backend(name: &str) -> Option<Backend> {
+    BACKENDS.into_iter().find(|b| b.name() == name)
 }
 
 /// Name of a mesh variant in the sweep's tables and CSV: `"transition"` (5- and 6-node
@@ -331,7 +297,7 @@ pub struct SweepCase {
     /// Elements per target half-width (a power of two).
     pub n: usize,
     /// Sparse backend.
-    pub backend: SweepBackend,
+    pub backend: Backend,
     /// Re-factor `K` and rebuild the flexibility every iteration (instead of once).
     pub refactor: bool,
     /// Element size cap everywhere, in radii ([`DiskOnBlock::max_element_size`]).
@@ -347,7 +313,7 @@ impl SweepCase {
             formulation: Formulation::Hybrid,
             transition: Transition::Elements,
             n,
-            backend: SweepBackend::Faer,
+            backend: Backend::Faer,
             refactor: false,
             max_element_size: None,
         }
@@ -484,7 +450,7 @@ impl SweepRun {
         let case = SweepCase {
             formulation: parse_formulation(f[0]).ok_or_else(|| bad(f[0]))?,
             transition: parse_mesh(f[1]).ok_or_else(|| bad(f[1]))?,
-            backend: SweepBackend::parse(f[2]).ok_or_else(|| bad(f[2]))?,
+            backend: parse_backend(f[2]).ok_or_else(|| bad(f[2]))?,
             refactor: f[3].parse().map_err(|_| bad(f[3]))?,
             n: int(4)?,
             max_element_size: if f[5].is_empty() { None } else { Some(num(5)?) },
@@ -540,11 +506,6 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
             case.backend.name()
         )));
     }
-    if case.refactor && !refactor_available() {
-        return Err(Error::InvalidInput(
-            "re-factoring every iteration is not available in this build".into(),
-        ));
-    }
     let mib = |b: Option<u64>| b.map_or(f64::NAN, |b| b as f64 / 1048576.0);
     let start_rss = mib(current_memory());
     let clock = Instant::now();
@@ -565,7 +526,11 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
     let mut contact_nodes: Vec<usize> = scene.pair.a.iter().chain(&scene.pair.b).copied().collect();
     contact_nodes.sort_unstable();
     contact_nodes.dedup();
-    let options = ContactOptions::default();
+    let options = ContactOptions {
+        backend: case.backend,
+        refactor_each_iteration: case.refactor,
+        ..Default::default()
+    };
     let mut analysis = scene.analysis(options)?;
     let approach = scene.calibrated_approach(&mut analysis)?;
     let f = vec![0.0; 2 * model.mesh.n_nodes()];
@@ -652,10 +617,7 @@ fn series_key(c: &SweepCase) -> (usize, u8, usize, bool) {
         Transition::Elements => 0,
         Transition::Quads => 1,
     };
-    let b = SweepBackend::ALL
-        .iter()
-        .position(|&g| g == c.backend)
-        .unwrap_or(0);
+    let b = BACKENDS.iter().position(|&g| g == c.backend).unwrap_or(0);
     (f, m, b, c.refactor)
 }
 
@@ -855,8 +817,8 @@ fn series_colour(c: &SweepCase) -> plotters::style::RGBColor {
         (Formulation::Q4, _) => RGBColor(210, 50, 40),
     };
     match c.backend {
-        SweepBackend::Faer => base,
-        SweepBackend::Cholmod => RGBColor(base.0 / 2, base.1 / 2, base.2 / 2),
+        Backend::Faer => base,
+        Backend::Cholmod => RGBColor(base.0 / 2, base.1 / 2, base.2 / 2),
     }
 }
 
@@ -874,6 +836,20 @@ fn log_range(values: impl Iterator<Item = f64>, pad: f64) -> std::ops::Range<f64
     }
 }
 
+/// An axis label: three significant digits, no trailing zeros.
+fn short_number(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let decimals = (2 - v.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{v:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
 /// One log-log panel: a line with dots per series, `n` written beside each dot.
 fn log_panel<DB: plotters::prelude::DrawingBackend>(
     area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
@@ -882,6 +858,7 @@ fn log_panel<DB: plotters::prelude::DrawingBackend>(
     series: &[Vec<SweepRun>],
     point: &dyn Fn(&SweepRun) -> (f64, f64),
     guides: &[(f64, &str)],
+    legend: plotters::chart::SeriesLabelPosition,
 ) -> Plot<()>
 where
     DB::ErrorType: 'static,
@@ -903,6 +880,9 @@ where
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
+        .x_label_formatter(&|v| short_number(*v))
+        .y_label_formatter(&|v| short_number(*v))
+        .light_line_style(BLACK.mix(0.03))
         .label_style((FONT, 12))
         .draw()?;
     for &(y, name) in guides {
@@ -934,7 +914,7 @@ where
     }
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
+        .position(legend)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK.mix(0.4))
         .label_font((FONT, 11))
@@ -964,6 +944,7 @@ pub fn sweep_error_time_svg(runs: &[SweepRun]) -> Plot<String> {
             &series,
             &|r| (r.total, 100.0 * r.l2_error),
             &[(1.0, "1%"), (0.5, "0.5%")],
+            SeriesLabelPosition::UpperRight,
         )?;
         root.present()?;
     }
@@ -989,6 +970,7 @@ pub fn sweep_time_dofs_svg(runs: &[SweepRun]) -> Plot<String> {
             &series,
             &|r| (r.dofs as f64, r.total),
             &[],
+            SeriesLabelPosition::UpperLeft,
         )?;
         log_panel(
             &panels[1],
@@ -997,6 +979,7 @@ pub fn sweep_time_dofs_svg(runs: &[SweepRun]) -> Plot<String> {
             &series,
             &|r| (r.dofs as f64, r.memory()),
             &[],
+            SeriesLabelPosition::UpperLeft,
         )?;
         root.present()?;
     }

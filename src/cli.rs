@@ -194,7 +194,7 @@ enum Bench {
         #[arg(long, value_enum, default_value_t = BackendChoice::Faer)]
         backend: BackendChoice,
         /// Extra runs that re-factor K and rebuild the flexibility every iteration, at these n
-        /// (comma separated; empty: none). Skipped when this build cannot.
+        /// (comma separated).
         #[arg(long, value_delimiter = ',', default_values_t = [8, 16, 32])]
         refactor_n: Vec<usize>,
         /// Runs per case (the plots and the summary take the fastest).
@@ -512,7 +512,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 formulation: element.into(),
                 transition: mesh.into(),
                 n,
-                backend: hycon::bench::SweepBackend::parse(&backend)
+                backend: hycon::bench::parse_backend(&backend)
                     .ok_or_else(|| format!("unknown backend {backend:?}"))?,
                 refactor,
                 max_element_size,
@@ -1016,16 +1016,16 @@ fn parse_config(config: &str, n: usize) -> AnyResult<hycon::bench::SweepCase> {
 
 /// The sweep's cases, in run order (by n, then configuration, backend; re-factor runs last).
 fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
-    use hycon::bench::SweepBackend;
+    use hycon::solver::Backend;
     for n in [plan.min, plan.max] {
         if n == 0 || !n.is_power_of_two() || n > 256 {
             return Err(format!("--min/--max must be powers of two in 1..=256, got {n}").into());
         }
     }
-    let backends: Vec<SweepBackend> = match plan.backend {
-        BackendChoice::Faer => vec![SweepBackend::Faer],
-        BackendChoice::Cholmod => vec![SweepBackend::Cholmod],
-        BackendChoice::All => SweepBackend::ALL.to_vec(),
+    let backends: Vec<Backend> = match plan.backend {
+        BackendChoice::Faer => vec![Backend::Faer],
+        BackendChoice::Cholmod => vec![Backend::Cholmod],
+        BackendChoice::All => hycon::bench::BACKENDS.to_vec(),
     };
     let mut usable = Vec::new();
     for b in backends {
@@ -1058,13 +1058,12 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
             }
         }
     }
-    if !plan.refactor_n.is_empty() && !hycon::bench::refactor_available() {
-        eprintln!("note: this build cannot re-factor every iteration; --refactor-n runs skipped");
-    } else {
-        for &n in &plan.refactor_n {
-            for config in &plan.configs {
+    for &n in &plan.refactor_n {
+        for config in &plan.configs {
+            for &backend in &usable {
                 cases.push(hycon::bench::SweepCase {
                     refactor: true,
+                    backend,
                     ..parse_config(config, n)?
                 });
             }
@@ -1185,7 +1184,7 @@ fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path
 /// `hycon bench contact-scale`: one configuration at fixed n, element size capped at 2^-k.
 fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Path) -> AnyResult {
     use std::fmt::Write as _;
-    let backend = hycon::bench::SweepBackend::parse(backend)
+    let backend = hycon::bench::parse_backend(backend)
         .ok_or_else(|| format!("unknown backend {backend:?}"))?;
     let exe = std::env::current_exe()?;
     let mut runs = Vec::new();
@@ -1240,9 +1239,9 @@ fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Pa
     let mut md = String::new();
     let _ = writeln!(
         md,
-        "### Cost against size: {config}, n = {n}, element size capped at 2^-k radii
-
-         | k | dofs | elements | mesh s | assembly s | factorization s | flexibility s | load solves s | iterations s | recovery s | total s | peak RSS MiB | L2 |
+        "### Cost against size: {config}, n = {n}, element size capped at 2^-k radii\n\n\
+         | k | dofs | elements | mesh s | assembly s | factorization s | flexibility s | load \
+         solves s | iterations s | recovery s | total s | peak RSS MiB | L2 |\n\
          |---|---|---|---|---|---|---|---|---|---|---|---|---|"
     );
     for (r, k) in runs.iter().zip(levels) {
@@ -1272,8 +1271,8 @@ fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Pa
     };
     let _ = writeln!(
         md,
-        "
-Growth against dofs (least squares on log-log over the {} largest runs): total time {},          factorization {}, assembly {}, mesh {}, peak memory (VmHWM - VmRSS at start) {}.",
+        "\nGrowth against dofs (least squares on log-log over the {} largest runs): total time \
+         {}, factorization {}, assembly {}, mesh {}, peak memory (VmHWM - VmRSS at start) {}.",
         big.len(),
         fit(&|r| r.total),
         fit(&|r| r.timings.factorization),

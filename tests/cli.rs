@@ -329,7 +329,11 @@ fn bench_sweep_runs_at_tiny_sizes_and_writes_the_csv_and_plots() {
             r.total > 0.0 && r.l2_error.is_finite() && r.l2_error > 0.0,
             "{csv}"
         );
-        assert!(r.total >= r.timings.total() - 1e-9, "{csv}");
+        if !r.case.refactor {
+            // (with re-factoring, the split counts the re-factorizations twice: in the
+            // factorization and in the iterations)
+            assert!(r.total >= r.timings.total() - 1e-9, "{csv}");
+        }
     }
     for name in [
         "sweep_error_time.svg",
@@ -363,13 +367,15 @@ fn bench_sweep_rejects_a_transition_mesh_for_q4() {
         "2",
         "--configs",
         "q4/transition",
+        "--refactor-n",
+        "2",
         "--out",
         dir.arg(),
     ]);
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
-        stderr.contains("4-node quadrilaterals only") && stderr.contains("1 sweep runs failed"),
+        stderr.contains("4-node quadrilaterals only") && stderr.contains("2 sweep runs failed"),
         "{stderr}"
     );
 }
