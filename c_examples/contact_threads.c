@@ -488,6 +488,10 @@ static bool same(double x, double y, double scale, Stats *st) {
         }                                                                                      \
     } while (0)
 
+/* strides of the result structs in doubles (both are arrays of 8-byte members) */
+#define A_STRIDE (sizeof(HyconNodeResult) / sizeof(double))
+#define B_STRIDE (sizeof(HyconBNodeResult) / sizeof(double))
+
 static bool same_run(const Run *x, const Run *y, const char *label, Stats *st) {
     size_t k, i, j;
     double su, sa_t, sa_f, sb_f, sb_w;
@@ -507,10 +511,10 @@ static bool same_run(const Run *x, const Run *y, const char *label, Stats *st) {
     }
     su = scale_of(x->u, x->increments * x->nfield, 1);
     for (i = 0; i < x->increments * x->nfield; ++i) SAME_DOUBLE(x->u[i], y->u[i], su, "u");
-    sa_t = fmax(scale_of(&x->a[0].tn, x->increments * x->na, sizeof x->a[0] / sizeof(double)),
-                scale_of(&x->a[0].ts, x->increments * x->na, sizeof x->a[0] / sizeof(double)));
-    sa_f = fmax(scale_of(&x->a[0].force[0], x->increments * x->na, sizeof x->a[0] / sizeof(double)),
-                scale_of(&x->a[0].force[1], x->increments * x->na, sizeof x->a[0] / sizeof(double)));
+    sa_t = fmax(scale_of(&x->a[0].tn, x->increments * x->na, A_STRIDE),
+                scale_of(&x->a[0].ts, x->increments * x->na, A_STRIDE));
+    sa_f = fmax(scale_of(&x->a[0].force[0], x->increments * x->na, A_STRIDE),
+                scale_of(&x->a[0].force[1], x->increments * x->na, A_STRIDE));
     for (i = 0; i < x->increments * x->na; ++i) {
         const HyconNodeResult *a = &x->a[i], *b = &y->a[i];
         SAME_INT(a->node, b->node, "A node");
@@ -527,9 +531,9 @@ static bool same_run(const Run *x, const Run *y, const char *label, Stats *st) {
             SAME_DOUBLE(a->force[j], b->force[j], sa_f, "A force");
         }
     }
-    sb_f = fmax(scale_of(&x->b[0].force[0], x->increments * x->nb, sizeof x->b[0] / sizeof(double)),
-                scale_of(&x->b[0].force[1], x->increments * x->nb, sizeof x->b[0] / sizeof(double)));
-    sb_w = scale_of(&x->b[0].pressure, x->increments * x->nb, sizeof x->b[0] / sizeof(double));
+    sb_f = fmax(scale_of(&x->b[0].force[0], x->increments * x->nb, B_STRIDE),
+                scale_of(&x->b[0].force[1], x->increments * x->nb, B_STRIDE));
+    sb_w = scale_of(&x->b[0].pressure, x->increments * x->nb, B_STRIDE);
     for (i = 0; i < x->increments * x->nb; ++i) {
         const HyconBNodeResult *a = &x->b[i], *b = &y->b[i];
         SAME_INT(a->node, b->node, "B node");
