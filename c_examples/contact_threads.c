@@ -452,10 +452,10 @@ typedef struct {
     double worst; /* largest difference relative to the quantity's scale */
 } Stats;
 
-static double scale_of(const double *v, size_t n, size_t stride) {
+static double scale_of(const double *v, size_t n) {
     double s = 0.0;
     size_t i;
-    for (i = 0; i < n; ++i) s = fmax(s, fabs(v[i * stride]));
+    for (i = 0; i < n; ++i) s = fmax(s, fabs(v[i]));
     return s > 0.0 ? s : 1.0;
 }
 
@@ -488,10 +488,6 @@ static bool same(double x, double y, double scale, Stats *st) {
         }                                                                                      \
     } while (0)
 
-/* strides of the result structs in doubles (both are arrays of 8-byte members) */
-#define A_STRIDE (sizeof(HyconNodeResult) / sizeof(double))
-#define B_STRIDE (sizeof(HyconBNodeResult) / sizeof(double))
-
 static bool same_run(const Run *x, const Run *y, const char *label, Stats *st) {
     size_t k, i, j;
     double su, sa_t, sa_f, sb_f, sb_w;
@@ -509,12 +505,21 @@ static bool same_run(const Run *x, const Run *y, const char *label, Stats *st) {
         SAME_INT(x->info[k].active, y->info[k].active, "info.active");
         SAME_INT(x->info[k].slip, y->info[k].slip, "info.slip");
     }
-    su = scale_of(x->u, x->increments * x->nfield, 1);
+    su = scale_of(x->u, x->increments * x->nfield);
     for (i = 0; i < x->increments * x->nfield; ++i) SAME_DOUBLE(x->u[i], y->u[i], su, "u");
-    sa_t = fmax(scale_of(&x->a[0].tn, x->increments * x->na, A_STRIDE),
-                scale_of(&x->a[0].ts, x->increments * x->na, A_STRIDE));
-    sa_f = fmax(scale_of(&x->a[0].force[0], x->increments * x->na, A_STRIDE),
-                scale_of(&x->a[0].force[1], x->increments * x->na, A_STRIDE));
+    sa_t = sa_f = sb_f = sb_w = 0.0;
+    for (i = 0; i < x->increments * x->na; ++i) {
+        sa_t = fmax(sa_t, fmax(fabs(x->a[i].tn), fabs(x->a[i].ts)));
+        sa_f = fmax(sa_f, fmax(fabs(x->a[i].force[0]), fabs(x->a[i].force[1])));
+    }
+    for (i = 0; i < x->increments * x->nb; ++i) {
+        sb_f = fmax(sb_f, fmax(fabs(x->b[i].force[0]), fabs(x->b[i].force[1])));
+        sb_w = fmax(sb_w, fabs(x->b[i].pressure));
+    }
+    sa_t = sa_t > 0.0 ? sa_t : 1.0;
+    sa_f = sa_f > 0.0 ? sa_f : 1.0;
+    sb_f = sb_f > 0.0 ? sb_f : 1.0;
+    sb_w = sb_w > 0.0 ? sb_w : 1.0;
     for (i = 0; i < x->increments * x->na; ++i) {
         const HyconNodeResult *a = &x->a[i], *b = &y->a[i];
         SAME_INT(a->node, b->node, "A node");
@@ -531,9 +536,6 @@ static bool same_run(const Run *x, const Run *y, const char *label, Stats *st) {
             SAME_DOUBLE(a->force[j], b->force[j], sa_f, "A force");
         }
     }
-    sb_f = fmax(scale_of(&x->b[0].force[0], x->increments * x->nb, B_STRIDE),
-                scale_of(&x->b[0].force[1], x->increments * x->nb, B_STRIDE));
-    sb_w = scale_of(&x->b[0].pressure, x->increments * x->nb, B_STRIDE);
     for (i = 0; i < x->increments * x->nb; ++i) {
         const HyconBNodeResult *a = &x->b[i], *b = &y->b[i];
         SAME_INT(a->node, b->node, "B node");
