@@ -27,6 +27,36 @@ static_assert(std::is_same_v<decltype(&hycon_element_stiffness),
                                              const HyconMaterial *, double *, std::size_t)>,
               "hycon_element_stiffness signature");
 
+// The contact API's structs are plain C data, and its function types are as documented.
+template <class... T>
+constexpr bool all_plain =
+    ((std::is_standard_layout_v<T> && std::is_trivially_copyable_v<T>) && ...);
+static_assert(all_plain<HyconIterationRecord, HyconContactOptions, HyconIncrementInfo,
+                        HyconNodeResult, HyconBNodeResult, HyconTimings, HyconContactNode,
+                        HyconCouplingEntry>,
+              "contact structs are plain data");
+static_assert(std::is_same_v<HyconMonitorFn,
+                             std::int32_t (*)(void *, const HyconIterationRecord *)>,
+              "HyconMonitorFn");
+static_assert(std::is_same_v<HyconSolveFn, std::int32_t (*)(void *, std::size_t, std::size_t,
+                                                           const double *, double *)>,
+              "HyconSolveFn");
+static_assert(std::is_same_v<decltype(&hycon_contact_increment_plate),
+                             HyconStatus (*)(HyconContact *, const double *, std::size_t,
+                                             const double *, std::size_t,
+                                             const HyconPlateControl *, const double *,
+                                             HyconIncrementInfo *)>,
+              "hycon_contact_increment_plate signature");
+static_assert(std::is_same_v<decltype(&hycon_contact_node_results),
+                             HyconStatus (*)(const HyconContact *, std::size_t, HyconNodeResult *,
+                                             std::size_t)>,
+              "hycon_contact_node_results signature");
+static_assert(std::is_same_v<decltype(&hycon_host_set_solver),
+                             HyconStatus (*)(HyconHost *, HyconSolveFn, void *)>,
+              "hycon_host_set_solver signature");
+static_assert(std::is_same_v<decltype(&hycon_contact_free), void (*)(HyconContact *)>,
+              "hycon_contact_free signature");
+
 int main() {
     std::int32_t v[3] = {-1, -1, -1};
     if (hycon_version(v) != HYCON_OK) {

@@ -1,0 +1,211 @@
+// Compile check and smoke test of include/hycon.hpp (issue 4d): the wrapper alone (it includes
+// hycon.h itself), included twice, clean C++17 under -Wall -Wextra -Werror -pedantic; built
+// twice by CMake, with and without -fno-exceptions (target header_hpp17_noexcept).
+//
+// At run time it exercises what the sliding example does not: the solve-callback adapter
+// (host-assembly API with a diagonal K solved by a C++ lambda), a monitor that stops the
+// increment (the state is kept), Status messages from the wrapper's own length checks and from
+// hycon, and, with exceptions enabled, a throwing callback that must not unwind into hycon.
+//
+// The host problem: body A's top face (nodes 0, 1 at y = 0) and body B's bottom face (nodes
+// 2, 3 at y = g = 0.01) over x in [0, 1], every dof on a unit spring to the ground (K = I,
+// 8 equations), B pushed down by 0.1 per node, frictionless. Matching segments close with equal
+// nodal forces f: 0.01 + (-0.1 + f) - (-f) = 0, so f = 0.045, v_A = -0.045, v_B = -0.055.
+#include "hycon.hpp"
+#include "hycon.hpp"  // twice on purpose: the include guard must hold
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+// ---- compile-time checks of the wrapper's types
+static_assert(!std::is_copy_constructible_v<hycon::Contact>, "handles are move-only");
+static_assert(!std::is_copy_assignable_v<hycon::Model>, "handles are move-only");
+static_assert(std::is_nothrow_move_constructible_v<hycon::Contact>, "handles move cheaply");
+static_assert(std::is_nothrow_move_assignable_v<hycon::Host>, "handles move cheaply");
+static_assert(sizeof(hycon::ContactPtr) == sizeof(HyconContact *), "empty deleters");
+static_assert(sizeof(hycon::ModelPtr) == sizeof(HyconModel *), "empty deleters");
+static_assert(sizeof(hycon::HostPtr) == sizeof(HyconHost *), "empty deleters");
+static_assert(std::is_same_v<decltype(std::declval<hycon::Contact &>().node_results(0)),
+                             hycon::Result<std::vector<HyconNodeResult>>>,
+              "node results come back as a vector");
+static_assert(std::is_convertible_v<std::vector<double>, hycon::View<double>>, "views");
+static_assert(std::is_convertible_v<double (&)[4], hycon::View<double>>, "views");
+static_assert(!std::is_convertible_v<std::vector<int>, hycon::View<double>>, "views are typed");
+
+// set_monitor and set_solver take lvalues only (the library keeps a pointer to the callable).
+template <class F, class = void>
+struct can_monitor : std::false_type {};
+template <class F>
+struct can_monitor<F, std::void_t<decltype(hycon::set_monitor(
+                          std::declval<HyconContactOptions &>(), std::declval<F>()))>>
+    : std::true_type {};
+struct MonitorObject {
+    bool operator()(const HyconIterationRecord &) const { return true; }
+};
+static_assert(can_monitor<MonitorObject &>::value, "an lvalue callable is accepted");
+static_assert(!can_monitor<MonitorObject>::value, "a temporary is refused");
+static_assert(!can_monitor<const MonitorObject>::value, "a const temporary is refused");
+
+namespace {
+
+int failures = 0;
+
+void expect(bool ok, const char *what) {
+    if (!ok) {
+        std::fprintf(stderr, "FAILED: %s\n", what);
+        ++failures;
+    }
+}
+
+// The host's polylines and its diagonal stiffness.
+constexpr double kGap = 0.01, kPush = 0.1;
+
+hycon::Result<hycon::Host> make_host() {
+    auto host = hycon::Host::create(8);
+    if (!host) return host;
+    const std::size_t a_nodes[2] = {0, 1}, b_nodes[2] = {2, 3};  // A right to left, B left to right
+    const double a_coords[4] = {1.0, 0.0, 0.0, 0.0}, b_coords[4] = {0.0, kGap, 1.0, kGap};
+    const std::int64_t a_eq[4] = {0, 1, 2, 3}, b_eq[4] = {4, 5, 6, 7};
+    const auto pair = host->add_pair(a_nodes, a_coords, a_eq, b_nodes, b_coords, b_eq, 0.0);
+    if (!pair) return hycon::Result<hycon::Host>(pair.status());
+    return host;
+}
+
+}  // namespace
+
+int main() {
+    // ---- version and defaults
+    const auto version = hycon::version();
+    expect(version && (*version)[0] == HYCON_VERSION_MAJOR &&
+               (*version)[1] == HYCON_VERSION_MINOR && (*version)[2] == HYCON_VERSION_PATCH,
+           "library version matches the header");
+    const HyconContactOptions defaults = hycon::default_options();
+    expect(defaults.tolerance > 0.0 && defaults.max_iterations > 0 && defaults.monitor == nullptr,
+           "default options");
+
+    // ---- errors: the wrapper's own length checks and hycon's messages
+    {
+        const std::vector<double> odd = {0.0, 0.0, 1.0};
+        const std::vector<std::size_t> offsets = {0, 4}, nodes = {0, 1, 2, 3};
+        const HyconMaterial material{1.0, 0.3, 1.0, HYCON_PLANE_STRAIN};
+        const HyconMaterial materials[1] = {material};
+        auto bad = hycon::Model::create(odd, offsets, nodes, materials, HYCON_ELEMENT_HYBRID);
+        expect(!bad && bad.code() == HYCON_ERROR_INVALID_ARGUMENT && !bad.message().empty() &&
+                   !bad.value(),
+               "odd coordinate count refused by the wrapper");
+        const std::vector<double> clockwise = {0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 0.0};
+        auto inverted =
+            hycon::Model::create(clockwise, offsets, nodes, materials, HYCON_ELEMENT_HYBRID);
+        expect(!inverted && inverted.code() == HYCON_ERROR_BAD_ELEMENT &&
+                   inverted.message().find("element 0") != std::string::npos,
+               "clockwise element refused by hycon, with its message");
+        std::printf("expected errors: %s: %s\n                 %s: %s\n", bad.status().name(),
+                    bad.message().c_str(), inverted.status().name(), inverted.message().c_str());
+        const hycon::Status ok;
+        expect(ok.ok() && ok.code() == HYCON_OK && ok.message().empty(), "default Status is OK");
+        expect(hycon::Status(1, "").ok(), "warnings count as success");
+        expect(!hycon::element_check(HYCON_ELEMENT_Q4, clockwise), "element_check");
+        const auto k = hycon::element_stiffness(
+            HYCON_ELEMENT_Q4, std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1}, material);
+        expect(k && k->size() == 64 && std::fabs((*k)[0] - (*k)[63]) < 1e-12 * std::fabs((*k)[0]),
+               "element_stiffness");
+    }
+
+    // ---- host-assembly API with the solve adapter and the monitor adapter
+    std::size_t solves = 0, columns = 0, records_seen = 0;
+    auto solve = [&](std::size_t n, std::size_t nrhs, const double *rhs, double *x) {
+        ++solves;
+        columns += nrhs;
+        for (std::size_t i = 0; i < n * nrhs; ++i) x[i] = rhs[i];  // K = I
+        return true;
+    };
+    bool keep_going = true;
+    auto monitor = [&](const HyconIterationRecord &) {
+        ++records_seen;
+        return keep_going;
+    };
+    auto host = make_host();
+    expect(static_cast<bool>(host), "host description");
+    expect(host->set_solver(solve).ok(), "set_solver from a lambda");
+    expect(host->set_csr(std::vector<std::size_t>{0, 1}, std::vector<std::size_t>{0},
+                         std::vector<double>{1.0}, HYCON_CSR_FULL)
+                   .code() == HYCON_ERROR_INVALID_ARGUMENT,
+           "set_csr checks the row_ptr length");
+    HyconContactOptions options = hycon::default_options();
+    hycon::set_monitor(options, monitor);
+    auto contact = hycon::Contact::create(*host, options);
+    host = hycon::Result<hycon::Host>(hycon::Host());  // the analysis keeps its own copy
+    expect(static_cast<bool>(contact), "contact analysis from the host");
+    expect(solves > 0 && columns >= 8, "the solve lambda built the flexibility");
+    std::vector<double> load(8, 0.0);
+    load[5] = load[7] = -kPush;
+
+    // a monitor that stops the increment: HYCON_ERROR_CALLBACK, the state is kept
+    keep_going = false;
+    const auto stopped = contact->increment(load);
+    expect(stopped.code() == HYCON_ERROR_CALLBACK && records_seen == 1,
+           "a monitor returning false stops the increment");
+    const auto before = contact->displacement();
+    expect(before && before->size() == 8 && (*before)[5] == 0.0, "state kept after the failure");
+
+    keep_going = true;
+    const auto info = contact->increment(load);
+    expect(info && info->active == 2, "the increment closes both A nodes");
+    const auto u = contact->displacement();
+    const auto du = contact->displacement_increment();  // the first increment: the total
+    expect(u && du && *u == *du, "displacement increment of the first increment");
+    const auto nodes = contact->node_results(0);
+    const auto records = contact->records();
+    const double f = 0.5 * (kPush - kGap);
+    bool close = u && u->size() == 8 && nodes && nodes->size() == 2;
+    if (close) {
+        const std::vector<double> &v = *u;
+        close = std::fabs(v[1] + f) < 1e-9 && std::fabs(v[3] + f) < 1e-9 &&  // A down by f
+                std::fabs(v[5] + kPush - f) < 1e-9 && std::fabs(v[7] + kPush - f) < 1e-9 &&
+                std::fabs(v[0]) + std::fabs(v[2]) + std::fabs(v[4]) + std::fabs(v[6]) < 1e-9;
+        double fy = 0.0;
+        for (const auto &n : *nodes) fy += n.force[1];
+        close = close && std::fabs(fy + 2.0 * f) < 1e-9;  // the force on A, downwards
+    }
+    expect(close, "displacements and contact forces of the host problem");
+    expect(records && records->size() + 1 == records_seen,
+           "records of converged increments only (the stopped one is excluded)");
+    const auto kc = contact->kc(0);
+    expect(kc && kc->row_ptr.size() == 5 && kc->values.size() == kc->row_ptr.back(), "Kc in CSR");
+    const auto coupling = contact->coupling(0);
+    expect(coupling && !coupling->empty(), "coupling entries");
+    std::printf("host problem: v_A = %.6f, v_B = %.6f (expected %.6f, %.6f); %zu solve calls "
+                "with %zu columns; %zu monitor calls\n",
+                u && u->size() == 8 ? (*u)[1] : 0.0, u && u->size() == 8 ? (*u)[5] : 0.0, -f,
+                -(kPush - f), solves, columns, records_seen);
+
+#if defined(__cpp_exceptions)
+    // a throwing solver must not unwind into hycon: the trampoline reports a failure
+    {
+        auto throwing = [](std::size_t, std::size_t, const double *, double *) -> bool {
+            throw std::string("host solver failure");
+        };
+        auto other = make_host();
+        expect(other && other->set_solver(throwing).ok(), "set_solver");
+        const auto failed = hycon::Contact::create(*other);
+        expect(failed.code() == HYCON_ERROR_CALLBACK,
+               "a throwing solver gives HYCON_ERROR_CALLBACK");
+        std::printf("exceptions enabled: a throwing solver gave %s: %s\n", failed.status().name(),
+                    failed.message().c_str());
+    }
+#else
+    std::printf("built without exceptions\n");
+#endif
+
+    if (failures != 0) {
+        std::fprintf(stderr, "%d check(s) FAILED\n", failures);
+        return EXIT_FAILURE;
+    }
+    std::printf("OK\n");
+    return EXIT_SUCCESS;
+}

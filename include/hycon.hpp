@@ -1,0 +1,639 @@
+// SPDX-License-Identifier: MIT
+/*
+ * hycon.hpp: a header-only C++17 RAII wrapper over the C API of hycon (include/hycon.h).
+ *
+ * What it adds to hycon.h, and nothing more:
+ * - Ownership: hycon::Model, hycon::Host and hycon::Contact own a HyconModel, HyconHost and
+ *   HyconContact through std::unique_ptr with deleters calling hycon_*_free (move-only; an
+ *   empty object holds no handle). The raw unique_ptr types are hycon::ModelPtr, HostPtr and
+ *   ContactPtr; get() gives the C handle for calls the wrapper does not cover.
+ * - Errors without exceptions: every call returns a [[nodiscard]] hycon::Status (the
+ *   HyconStatus and, on an error, the message of hycon_last_error_message) or a
+ *   hycon::Result<T> (a Status and a value). Nothing here throws except std::bad_alloc from
+ *   the standard containers, so it builds with -fno-exceptions. ok() is true for HYCON_OK and
+ *   for warnings (> 0), as in the C API. Length errors found by the wrapper itself (before any
+ *   C call) are HYCON_ERROR_INVALID_ARGUMENT with the wrapper's message; they leave the
+ *   thread's last error message alone.
+ * - Lengths: arrays go in as hycon::View<T> (a pointer and a length; made implicitly from a
+ *   std::vector, std::array or C array) and the wrapper checks the lengths the C
+ *   functions take on trust (coordinates pairs, element connectivity, CSR arrays, 2 n
+ *   coordinates and equations per host polyline). Results come back as std::vector.
+ * - Callbacks from C++ callables: hycon::set_monitor(options, callable) and
+ *   Host::set_solver(callable) install a trampoline and a pointer to the callable. The C
+ *   library keeps that pointer, so the callable must outlive every Contact that uses it
+ *   (temporaries are refused at compile time). No exception crosses into the C library: when
+ *   exceptions are enabled the trampoline catches everything and reports a failure, which
+ *   hycon turns into HYCON_ERROR_CALLBACK.
+ *
+ * Thread safety: as the C API's. One handle object (Model, Host, Contact) may be used by one
+ * thread at a time and may move between threads; distinct handles share nothing and may be
+ * used from different threads at once. The error message behind a Status is read from the
+ * calling thread's last error right after the failing call. Callbacks (monitor, solver) run on
+ * the thread that called into the Contact.
+ *
+ * Lifetimes: a Contact copies what it needs from its Model or Host (they may be destroyed
+ * first), except the callables given to set_monitor and set_solver.
+ *
+ * Example (model API):
+ *
+ *     auto model = hycon::Model::create(coords, offsets, nodes, materials, HYCON_ELEMENT_HYBRID);
+ *     if (!model) { std::fprintf(stderr, "%s\n", model.status().message().c_str()); return 1; }
+ *     ...
+ *     auto contact = hycon::Contact::create(model.value(), hycon::default_options());
+ *     auto info = contact->increment(load, prescribed);
+ *     auto nodes = contact->node_results(0);   // Result<std::vector<HyconNodeResult>>
+ */
+
+#ifndef HYCON_HPP
+#define HYCON_HPP
+
+#include "hycon.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace hycon {
+
+// ---------------------------------------------------------------------------------------------
+// Status and Result
+
+// This thread's last error message (empty after a successful call).
+inline std::string last_error_message() {
+    const std::size_t needed = hycon_last_error_message(nullptr, 0);  // with the NUL
+    if (needed <= 1) return std::string();
+    std::string message(needed, '\0');
+    (void)hycon_last_error_message(&message[0], message.size());
+    message.resize(needed - 1);  // drop the NUL
+    return message;
+}
+
+// The outcome of a call: its HyconStatus and, for an error, hycon's message.
+class [[nodiscard]] Status {
+  public:
+    // Success.
+    Status() noexcept = default;
+    Status(HyconStatus code, std::string message) noexcept
+        : code_(code), message_(std::move(message)) {}
+
+    // The status of a C call that just returned `code`: for an error, the message is read
+    // from this thread's last error.
+    static Status from(HyconStatus code) {
+        return code < 0 ? Status(code, last_error_message()) : Status(code, std::string());
+    }
+
+    // Success or a warning (the outputs were written).
+    bool ok() const noexcept { return code_ >= 0; }
+    explicit operator bool() const noexcept { return ok(); }
+    HyconStatus code() const noexcept { return code_; }
+    // The constant's name, e.g. "HYCON_ERROR_CONTACT" (a static string).
+    const char *name() const noexcept { return hycon_status_name(code_); }
+    // hycon's message for an error, empty otherwise.
+    const std::string &message() const noexcept { return message_; }
+
+  private:
+    HyconStatus code_ = HYCON_OK;
+    std::string message_;
+};
+
+// A value and the Status of the call that made it. On an error the value is
+// value-initialised (an empty vector, an empty handle, zeros).
+template <class T>
+class [[nodiscard]] Result {
+  public:
+    // Success.
+    Result(T value) : value_(std::move(value)) {}  // NOLINT: implicit on purpose
+    // A failure (or a value with a warning status).
+    Result(Status status, T value = T()) : status_(std::move(status)), value_(std::move(value)) {}
+
+    bool ok() const noexcept { return status_.ok(); }
+    explicit operator bool() const noexcept { return ok(); }
+    const Status &status() const noexcept { return status_; }
+    HyconStatus code() const noexcept { return status_.code(); }
+    const std::string &message() const noexcept { return status_.message(); }
+
+    T &value() & noexcept { return value_; }
+    const T &value() const & noexcept { return value_; }
+    T &&value() && noexcept { return std::move(value_); }
+    T &operator*() & noexcept { return value_; }
+    const T &operator*() const & noexcept { return value_; }
+    T &&operator*() && noexcept { return std::move(value_); }
+    T *operator->() noexcept { return &value_; }
+    const T *operator->() const noexcept { return &value_; }
+
+  private:
+    Status status_;
+    T value_;
+};
+
+namespace detail {
+
+inline Status invalid(const char *message) {
+    return Status(HYCON_ERROR_INVALID_ARGUMENT, message);
+}
+
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// View: a read-only (pointer, length) array argument
+
+template <class T>
+class View {
+  public:
+    constexpr View() noexcept = default;
+    constexpr View(const T *data, std::size_t size) noexcept : data_(data), size_(size) {}
+    // Any contiguous container or array of T: std::vector, std::array, T[N].
+    template <class C, class = std::enable_if_t<std::is_convertible_v<
+                           decltype(std::data(std::declval<const C &>())), const T *>>>
+    constexpr View(const C &c) noexcept  // NOLINT: implicit on purpose
+        : data_(std::data(c)), size_(std::size(c)) {}
+
+    // NULL for an empty view, as the C API takes (NULL, 0) for an empty array.
+    constexpr const T *data() const noexcept { return size_ == 0 ? nullptr : data_; }
+    constexpr std::size_t size() const noexcept { return size_; }
+    constexpr bool empty() const noexcept { return size_ == 0; }
+    constexpr const T &operator[](std::size_t i) const noexcept { return data_[i]; }
+    constexpr const T &back() const noexcept { return data_[size_ - 1]; }
+
+  private:
+    const T *data_ = nullptr;
+    std::size_t size_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Library-wide functions
+
+// The library's version {major, minor, patch} (compare with HYCON_VERSION_MAJOR etc.).
+inline Result<std::array<std::int32_t, 3>> version() {
+    std::array<std::int32_t, 3> v{};
+    const Status s = Status::from(hycon_version(v.data()));
+    return s.ok() ? Result<std::array<std::int32_t, 3>>(v) : Result<std::array<std::int32_t, 3>>(s);
+}
+
+// The default contact options (the values documented in hycon.h, no monitor).
+inline HyconContactOptions default_options() noexcept {
+    HyconContactOptions options{};
+    (void)hycon_contact_options_default(&options);  // cannot fail with a valid pointer
+    return options;
+}
+
+// Check one element's shape for a formulation (`coords`: x0 y0 x1 y1 ..., counter-clockwise).
+inline Status element_check(HyconElementKind kind, View<double> coords) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    return Status::from(hycon_element_check(kind, coords.size() / 2, coords.data()));
+}
+
+// Element stiffness matrix, (2n)^2 values row-major (n = coords.size() / 2 nodes).
+inline Result<std::vector<double>> element_stiffness(HyconElementKind kind, View<double> coords,
+                                                     const HyconMaterial &material) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    const std::size_t n = coords.size() / 2;
+    std::vector<double> k(4 * n * n);
+    const Status s = Status::from(
+        hycon_element_stiffness(kind, n, coords.data(), &material, k.data(), k.size()));
+    if (!s.ok()) return s;
+    return k;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Callback adapters
+
+namespace detail {
+
+// Calls `f(args...)`: a callable returning bool reports success with true, one returning void
+// always succeeds. Returns the C convention: 0 to go on / success, 1 otherwise.
+template <class F, class... Args>
+std::int32_t invoke_c(F &f, Args &&...args) noexcept {
+    using R = std::invoke_result_t<F &, Args...>;
+    static_assert(std::is_void_v<R> || std::is_same_v<R, bool>,
+                  "a hycon callback returns bool (true: go on / success) or void");
+#if defined(__cpp_exceptions)
+    try {
+#endif
+        if constexpr (std::is_void_v<R>) {
+            f(std::forward<Args>(args)...);
+            return 0;
+        } else {
+            return f(std::forward<Args>(args)...) ? 0 : 1;
+        }
+#if defined(__cpp_exceptions)
+    } catch (...) {
+        return 1;  // never unwind into hycon: it reports HYCON_ERROR_CALLBACK
+    }
+#endif
+}
+
+template <class F>
+std::int32_t monitor_trampoline(void *data, const HyconIterationRecord *record) noexcept {
+    if (data == nullptr || record == nullptr) return 1;
+    return invoke_c(*static_cast<F *>(data), *record);
+}
+
+template <class F>
+std::int32_t solve_trampoline(void *data, std::size_t n, std::size_t nrhs, const double *rhs,
+                              double *x) noexcept {
+    if (data == nullptr) return 1;
+    return invoke_c(*static_cast<F *>(data), n, nrhs, rhs, x);
+}
+
+template <class F>
+void *erase(F &f) noexcept {
+    static_assert(std::is_object_v<F>, "pass a callable object (lambda, functor), not a function");
+    return const_cast<void *>(static_cast<const void *>(std::addressof(f)));
+}
+
+}  // namespace detail
+
+// Make `monitor` the options' iteration monitor: it is called as `monitor(const
+// HyconIterationRecord &)` and returns bool (true: go on, false: stop the increment, which then
+// fails with HYCON_ERROR_CALLBACK) or void (always go on). Only a pointer to `monitor` is kept:
+// it must outlive every Contact created with these options.
+template <class F>
+void set_monitor(HyconContactOptions &options, F &monitor) noexcept {
+    options.monitor = &detail::monitor_trampoline<F>;
+    options.monitor_data = detail::erase(monitor);
+}
+// A temporary would be destroyed before the Contact calls it.
+template <class F>
+void set_monitor(HyconContactOptions &, const F &&) = delete;
+
+// ---------------------------------------------------------------------------------------------
+// Handles
+
+struct ModelDeleter {
+    void operator()(HyconModel *p) const noexcept { hycon_model_free(p); }
+};
+struct HostDeleter {
+    void operator()(HyconHost *p) const noexcept { hycon_host_free(p); }
+};
+struct ContactDeleter {
+    void operator()(HyconContact *p) const noexcept { hycon_contact_free(p); }
+};
+using ModelPtr = std::unique_ptr<HyconModel, ModelDeleter>;
+using HostPtr = std::unique_ptr<HyconHost, HostDeleter>;
+using ContactPtr = std::unique_ptr<HyconContact, ContactDeleter>;
+
+// A model being described (model API): mesh, materials, prescribed directions, contact pairs,
+// optional rigid plate.
+class Model {
+  public:
+    Model() noexcept = default;
+    explicit Model(ModelPtr handle) noexcept : handle_(std::move(handle)) {}
+
+    // Nodes `coords` (x0 y0 x1 y1 ...), elements in compressed form (element e has the nodes
+    // element_nodes[element_offsets[e] .. element_offsets[e + 1]], counter-clockwise),
+    // `materials`, and per element an index into them (`element_materials`; empty: all 0).
+    static Result<Model> create(View<double> coords, View<std::size_t> element_offsets,
+                                View<std::size_t> element_nodes, View<HyconMaterial> materials,
+                                HyconElementKind kind,
+                                View<std::size_t> element_materials = {}) {
+        if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+        if (element_offsets.size() < 2)
+            return detail::invalid("element_offsets needs n_elements + 1 >= 2 entries");
+        const std::size_t n_elements = element_offsets.size() - 1;
+        if (element_nodes.size() != element_offsets.back())
+            return detail::invalid("element_nodes must hold element_offsets.back() ids");
+        if (!element_materials.empty() && element_materials.size() != n_elements)
+            return detail::invalid("element_materials must be empty or hold one index per element");
+        HyconModel *raw = nullptr;
+        const Status s = Status::from(hycon_model_new(
+            &raw, coords.data(), coords.size() / 2, element_offsets.data(), element_nodes.data(),
+            n_elements, element_materials.data(), materials.data(), materials.size(), kind));
+        if (!s.ok()) return s;
+        return Model(ModelPtr(raw));
+    }
+
+    // Prescribe the displacement of `nodes` in `directions` (HYCON_X, HYCON_Y, HYCON_XY).
+    Status prescribe(View<std::size_t> nodes, HyconDirections directions) {
+        return Status::from(hycon_model_prescribe(get(), nodes.data(), nodes.size(), directions));
+    }
+
+    // Add a contact pair (A the multiplier side, each polyline with its body on the left);
+    // returns the pair's index.
+    Result<std::size_t> add_pair(View<std::size_t> a, View<std::size_t> b, double friction) {
+        std::size_t index = 0;
+        const Status s = Status::from(hycon_model_add_pair(get(), a.data(), a.size(), b.data(),
+                                                           b.size(), friction, &index));
+        return Result<std::size_t>(s, index);
+    }
+
+    // Tie `nodes` to a rigid plate driven by Contact::increment_plate.
+    Status set_plate(View<std::size_t> nodes) {
+        return Status::from(hycon_model_set_plate(get(), nodes.data(), nodes.size()));
+    }
+
+    HyconModel *get() const noexcept { return handle_.get(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
+    // Give up ownership (the caller then frees with hycon_model_free).
+    HyconModel *release() noexcept { return handle_.release(); }
+
+  private:
+    ModelPtr handle_;
+};
+
+// A host's contact description (host-assembly API): contact polylines in the host's numbering
+// and its stiffness (CSR) or solver.
+class Host {
+  public:
+    Host() noexcept = default;
+    Host(HostPtr handle, std::size_t n_equations) noexcept
+        : handle_(std::move(handle)), equations_(n_equations) {}
+
+    static Result<Host> create(std::size_t n_equations) {
+        HyconHost *raw = nullptr;
+        const Status s = Status::from(hycon_host_new(&raw, n_equations));
+        if (!s.ok()) return s;
+        return Host(HostPtr(raw), n_equations);
+    }
+
+    // Add a pair: per polyline, node ids, 2 n reference coordinates and 2 n equation numbers
+    // (HYCON_FIXED for a dof held at zero). Returns the pair's index.
+    Result<std::size_t> add_pair(View<std::size_t> a_nodes, View<double> a_coords,
+                                 View<std::int64_t> a_equations, View<std::size_t> b_nodes,
+                                 View<double> b_coords, View<std::int64_t> b_equations,
+                                 double friction) {
+        if (a_coords.size() != 2 * a_nodes.size() || a_equations.size() != 2 * a_nodes.size() ||
+            b_coords.size() != 2 * b_nodes.size() || b_equations.size() != 2 * b_nodes.size())
+            return detail::invalid("each polyline needs 2 coordinates and 2 equations per node");
+        std::size_t index = 0;
+        const Status s = Status::from(hycon_host_add_pair(
+            get(), a_nodes.data(), a_coords.data(), a_equations.data(), a_nodes.size(),
+            b_nodes.data(), b_coords.data(), b_equations.data(), b_nodes.size(), friction,
+            &index));
+        return Result<std::size_t>(s, index);
+    }
+
+    // The stiffness in CSR over the n_equations equations (copied).
+    Status set_csr(View<std::size_t> row_ptr, View<std::size_t> columns, View<double> values,
+                   HyconTriangle triangle) {
+        if (row_ptr.size() != equations_ + 1)
+            return detail::invalid("row_ptr must hold n_equations + 1 entries");
+        if (columns.size() < row_ptr.back() || values.size() < row_ptr.back())
+            return detail::invalid("columns and values must hold row_ptr[n_equations] entries");
+        return Status::from(
+            hycon_host_set_csr(get(), row_ptr.data(), columns.data(), values.data(), triangle));
+    }
+
+    // The host's own solver: `solve(std::size_t n, std::size_t nrhs, const double *rhs,
+    // double *x)` solves K x_j = rhs_j for nrhs column-major right-hand sides and returns bool
+    // (true: success) or void. Only a pointer to `solve` is kept: it must outlive this Host and
+    // every Contact created from it.
+    template <class F>
+    Status set_solver(F &solve) {
+        return set_solver(&detail::solve_trampoline<F>, detail::erase(solve));
+    }
+    template <class F>
+    Status set_solver(const F &&) = delete;  // a temporary would dangle
+    // The C form: a HyconSolveFn and its user data.
+    Status set_solver(HyconSolveFn solve, void *user_data) {
+        return Status::from(hycon_host_set_solver(get(), solve, user_data));
+    }
+
+    std::size_t equations() const noexcept { return equations_; }
+    HyconHost *get() const noexcept { return handle_.get(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
+    HyconHost *release() noexcept { return handle_.release(); }
+
+  private:
+    HostPtr handle_;
+    std::size_t equations_ = 0;
+};
+
+// How one plate translation is driven in an increment.
+struct PlateDrive {
+    HyconPlateControl control;
+    double value;
+};
+// The plate's total displacement in that direction.
+inline PlateDrive plate_displacement(double value) noexcept {
+    return {HYCON_PLATE_DISPLACEMENT, value};
+}
+// The total force on the plate in that direction (its motion is solved for).
+inline PlateDrive plate_force(double value) noexcept { return {HYCON_PLATE_FORCE, value}; }
+
+// The converged plate state: displacement and the force it exerts on the body (x, y).
+struct PlateState {
+    std::array<double, 2> displacement{};
+    std::array<double, 2> force{};
+};
+
+// Sizes of a pair's polylines.
+struct PairSize {
+    std::size_t a = 0;
+    std::size_t b = 0;
+};
+
+// Timings and the number of factorizations done by hycon.
+struct Timings {
+    HyconTimings seconds{};
+    std::size_t factorizations = 0;
+};
+
+// A matrix in CSR form (hycon_contact_kc).
+struct Csr {
+    std::vector<std::size_t> row_ptr;
+    std::vector<std::size_t> columns;
+    std::vector<double> values;
+};
+
+// A contact analysis: K factored once, the converged state, the records.
+class Contact {
+  public:
+    Contact() noexcept = default;
+    explicit Contact(ContactPtr handle) noexcept : handle_(std::move(handle)) {}
+
+    // Model API. The model is copied (it may be destroyed or changed afterwards).
+    static Result<Contact> create(const Model &model,
+                                  const HyconContactOptions &options = default_options()) {
+        HyconContact *raw = nullptr;
+        const Status s = Status::from(hycon_contact_new(&raw, model.get(), &options));
+        if (!s.ok()) return s;
+        return Contact(ContactPtr(raw));
+    }
+    // Host-assembly API. The host description is copied, its solver's callable is not.
+    static Result<Contact> create(const Host &host,
+                                  const HyconContactOptions &options = default_options()) {
+        HyconContact *raw = nullptr;
+        const Status s = Status::from(hycon_contact_new_host(&raw, host.get(), &options));
+        if (!s.ok()) return s;
+        return Contact(ContactPtr(raw));
+    }
+
+    // Length of the load and displacement vectors.
+    Result<std::size_t> field_len() const {
+        std::size_t n = 0;
+        const Status s = Status::from(hycon_contact_field_len(get(), &n));
+        return Result<std::size_t>(s, n);
+    }
+
+    // One increment with total values (see hycon_contact_increment).
+    Result<HyconIncrementInfo> increment(View<double> load, View<double> prescribed = {}) {
+        HyconIncrementInfo info{};
+        const Status s = Status::from(hycon_contact_increment(
+            get(), load.data(), load.size(), prescribed.data(), prescribed.size(), &info));
+        return Result<HyconIncrementInfo>(s, info);
+    }
+
+    // One increment of a model with a plate, its x and y translations driven by `x` and `y`.
+    Result<HyconIncrementInfo> increment_plate(View<double> load, View<double> prescribed,
+                                               PlateDrive x, PlateDrive y) {
+        const HyconPlateControl control[2] = {x.control, y.control};
+        const double value[2] = {x.value, y.value};
+        HyconIncrementInfo info{};
+        const Status s = Status::from(
+            hycon_contact_increment_plate(get(), load.data(), load.size(), prescribed.data(),
+                                          prescribed.size(), control, value, &info));
+        return Result<HyconIncrementInfo>(s, info);
+    }
+
+    Result<PlateState> plate() const {
+        PlateState p;
+        const Status s =
+            Status::from(hycon_contact_plate(get(), p.displacement.data(), p.force.data()));
+        return Result<PlateState>(s, p);
+    }
+
+    // Total displacement of the last converged increment over the field.
+    Result<std::vector<double>> displacement() {
+        return field([this](double *out, std::size_t n) {
+            return hycon_contact_displacement(get(), out, n);
+        });
+    }
+
+    // The last converged increment's displacement minus the previous one's (one solve).
+    Result<std::vector<double>> displacement_increment() {
+        return field([this](double *out, std::size_t n) {
+            return hycon_contact_displacement_increment(get(), out, n);
+        });
+    }
+
+    // Contact forces of the last converged increment over the field.
+    Result<std::vector<double>> forces() const {
+        return field(
+            [this](double *out, std::size_t n) { return hycon_contact_forces(get(), out, n); });
+    }
+
+    Result<PairSize> pair_size(std::size_t pair) const {
+        PairSize size;
+        const Status s = Status::from(hycon_contact_pair_size(get(), pair, &size.a, &size.b));
+        return Result<PairSize>(s, size);
+    }
+
+    // The multipliers and states at the A nodes of `pair`.
+    Result<std::vector<HyconNodeResult>> node_results(std::size_t pair) const {
+        return per_node<HyconNodeResult>(pair, false, 1, [this, pair](HyconNodeResult *out,
+                                                                      std::size_t n) {
+            return hycon_contact_node_results(get(), pair, out, n);
+        });
+    }
+
+    // Forces, weights and pressures at the B nodes of `pair`.
+    Result<std::vector<HyconBNodeResult>> b_node_results(std::size_t pair) const {
+        return per_node<HyconBNodeResult>(pair, true, 1, [this, pair](HyconBNodeResult *out,
+                                                                      std::size_t n) {
+            return hycon_contact_b_node_results(get(), pair, out, n);
+        });
+    }
+
+    // tn ts per A node of `pair` from body A's element stresses (model API), 2 n_a values.
+    Result<std::vector<double>> stress_tractions(std::size_t pair) {
+        return per_node<double>(pair, false, 2, [this, pair](double *out, std::size_t n) {
+            return hycon_contact_stress_tractions(get(), pair, out, n);
+        });
+    }
+
+    // Contact-element quantities of the A nodes of `pair`.
+    Result<std::vector<HyconContactNode>> element_nodes(std::size_t pair) const {
+        return per_node<HyconContactNode>(pair, false, 1, [this, pair](HyconContactNode *out,
+                                                                       std::size_t n) {
+            return hycon_contact_element_nodes(get(), pair, out, n);
+        });
+    }
+
+    // The iteration records from `first` on (all increments, failed ones excluded).
+    Result<std::vector<HyconIterationRecord>> records(std::size_t first = 0) const {
+        std::size_t count = 0;
+        Status s = Status::from(hycon_contact_record_count(get(), &count));
+        if (!s.ok()) return s;
+        if (first > count) return detail::invalid("records: first is past the record count");
+        std::vector<HyconIterationRecord> out(count - first);
+        s = Status::from(hycon_contact_records(get(), first, out.data(), out.size()));
+        if (!s.ok()) return s;
+        return out;
+    }
+
+    Result<Timings> timings() {
+        Timings t;
+        const Status s = Status::from(hycon_contact_timings(get(), &t.seconds, &t.factorizations));
+        return Result<Timings>(s, t);
+    }
+
+    // The entries of F^A and F^B of `pair`.
+    Result<std::vector<HyconCouplingEntry>> coupling(std::size_t pair) const {
+        std::size_t count = 0;
+        Status s = Status::from(hycon_contact_coupling(get(), pair, nullptr, 0, &count));
+        if (!s.ok()) return s;
+        std::vector<HyconCouplingEntry> out(count);
+        s = Status::from(hycon_contact_coupling(get(), pair, out.data(), out.size(), &count));
+        if (!s.ok()) return s;
+        out.resize(count);
+        return out;
+    }
+
+    // The constraint matrix Kc of `pair` (2 n_a rows).
+    Result<Csr> kc(std::size_t pair) const {
+        const Result<PairSize> size = pair_size(pair);
+        if (!size) return size.status();
+        std::size_t nnz = 0;
+        Status s = Status::from(
+            hycon_contact_kc(get(), pair, nullptr, 0, nullptr, nullptr, 0, &nnz));
+        if (!s.ok()) return s;
+        Csr m;
+        m.row_ptr.assign(2 * size->a + 1, 0);
+        if (nnz == 0) return m;  // (NULL, NULL, 0) would be read as the size query
+        m.columns.resize(nnz);
+        m.values.resize(nnz);
+        s = Status::from(hycon_contact_kc(get(), pair, m.row_ptr.data(), m.row_ptr.size(),
+                                          m.columns.data(), m.values.data(), nnz, &nnz));
+        if (!s.ok()) return s;
+        return m;
+    }
+
+    HyconContact *get() const noexcept { return handle_.get(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
+    HyconContact *release() noexcept { return handle_.release(); }
+
+  private:
+    template <class Fill>
+    Result<std::vector<double>> field(Fill fill) const {
+        const Result<std::size_t> n = field_len();
+        if (!n) return n.status();
+        std::vector<double> out(*n);
+        const Status s = Status::from(fill(out.data(), out.size()));
+        if (!s.ok()) return s;
+        return out;
+    }
+
+    template <class T, class Fill>
+    Result<std::vector<T>> per_node(std::size_t pair, bool b_side, std::size_t per,
+                                    Fill fill) const {
+        const Result<PairSize> size = pair_size(pair);
+        if (!size) return size.status();
+        std::vector<T> out(per * (b_side ? size->b : size->a));
+        const Status s = Status::from(fill(out.data(), out.size()));
+        if (!s.ok()) return s;
+        return out;
+    }
+
+    ContactPtr handle_;
+};
+
+}  // namespace hycon
+
+#endif  // HYCON_HPP
