@@ -1508,10 +1508,10 @@ static bool test_plate_short_prescribed(void) {
     fill_bytes(&info, sizeof info);
     ok = ok && STATUS_FN(hycon_contact_increment_plate,
                          (c, load, NDOF, qp, 10, disp, value, &info),
-                         HYCON_ERROR_INVALID_ARGUMENT, "prescribed vector 48");
+                         HYCON_ERROR_INVALID_ARGUMENT, "prescribed vector needs 48");
     ok = ok && STATUS_FN(hycon_contact_increment_plate,
                          (c, load, NDOF, NULL, 0, disp, value, &info),
-                         HYCON_ERROR_INVALID_ARGUMENT, "prescribed vector 48");
+                         HYCON_ERROR_INVALID_ARGUMENT, "prescribed vector needs 48");
     ok = ok && bytes_untouched(&info, sizeof info);
     hycon_contact_free(c);
     return ok;
@@ -1546,7 +1546,7 @@ static bool test_host_new_bad_input(void) {
     HyconHost *d = MARKER(HyconHost);
     EXPECT(STATUS_FN(hycon_host_new, (NULL, 10), HYCON_ERROR_NULL_POINTER, "out is NULL"));
     EXPECT(STATUS_FN(hycon_host_new, (&d, 0), HYCON_ERROR_INVALID_ARGUMENT,
-                     "n_equations must be positive"));
+                     "n_equations = 0 must be positive"));
     EXPECT(d == MARKER(HyconHost));
     return true;
 }

@@ -15,25 +15,6 @@ hycon_valgrind_test(valgrind_contact_bad_input contact_bad_input)
 hycon_valgrind_test(valgrind_contact_bad_input_static contact_bad_input_static)
 hycon_asan_test(contact_bad_input contact_bad_input.c C)
 
-# memcheck false positive in the optimised library: Plate::settle takes
-# `solved: Option<(&[usize], &[f64])>`; LLVM compares the two slice lengths (uninitialised when
-# the option is None) before it tests the None niche, and both branches end in the same state.
-# Scoped to these tests (VALGRIND_OPTS) and to that one function.
-set(_hycon_safety_supp "${CMAKE_CURRENT_BINARY_DIR}/contact_safety.supp")
-file(WRITE "${_hycon_safety_supp}"
-"{
-   hycon-plate-settle-none-slice-lengths
-   Memcheck:Cond
-   fun:*Plate*settle*
-}
-")
-foreach(_t valgrind_contact_bad_input valgrind_contact_bad_input_static)
-  if(TEST ${_t})
-    set_tests_properties(${_t} PROPERTIES
-      ENVIRONMENT "RUST_BACKTRACE=1;VALGRIND_OPTS=--suppressions=${_hycon_safety_supp}")
-  endif()
-endforeach()
-
 # contact_threads [rounds]: the threaded solves are repeated `rounds` times (default 4)
 hycon_example(contact_threads contact_threads.c C hycon::hycon)
 target_link_libraries(contact_threads PRIVATE Threads::Threads)

@@ -72,9 +72,6 @@
 // Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
 #define HYCON_FIXED -1
 
-// Which sparse Cholesky library factors K.
-typedef struct Backend Backend;
-
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
 // `hycon_contact_free`. Thread safety: a `HyconContact` may be moved between threads but must
@@ -795,8 +792,9 @@ HyconStatus hycon_contact_coupling(const struct HyconContact *contact,
 // the tangential one with `s_k`; columns are field indices (model dofs `2 node + direction`,
 // or host equations; a host's fixed dofs are left out). The mixed system of a host that
 // assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]` with the active rows.
-// Call with `columns` and `values` NULL and `capacity` 0 to get the entry count in `nnz`;
-// then with buffers of at least that many and `row_ptr` of `2 n_a + 1` entries.
+// Call with `row_ptr`, `columns` and `values` all NULL to get the entry count in `nnz`; then
+// with `row_ptr` of `2 n_a + 1` entries and `columns`, `values` of at least `nnz` (NULL with
+// capacity 0 when `nnz` is 0).
 //
 // # Safety
 // `contact` must be a live handle; `row_ptr` NULL or `row_ptr_len` writable; `columns` and

@@ -256,14 +256,14 @@ struct Plate {
 }
 
 impl Plate {
-    /// Record the converged plate state: its motion (prescribed, or `solved` for the
-    /// force-controlled directions) written into `prescribed` at the tied nodes, and the force
+    /// Record the converged plate state: its motion (prescribed, or `motion[k]` for the
+    /// force-controlled directions `directions[k]`) written into `prescribed` at the tied nodes, and the force
     /// it exerts on the body, `force0 + D U_force - W^T f_c` (load, force-controlled motion and
     /// contact parts).
     fn settle(
         &mut self,
         control: [PlateControl; 2],
-        solved: Option<(&[usize], &[f64])>,
+        (directions, solved): (&[usize], &[f64]),
         force0: [f64; 2],
         contact_forces: &[f64],
         prescribed: &mut [f64],
@@ -272,7 +272,7 @@ impl Plate {
             PlateControl::Displacement(u) => u,
             PlateControl::Force(_) => 0.0,
         });
-        for (&d, &m) in solved.into_iter().flat_map(|(d, m)| d.iter().zip(m)) {
+        for (&d, &m) in directions.iter().zip(solved) {
             motion[d] = m;
         }
         for &node in &self.nodes {
@@ -843,6 +843,13 @@ impl ContactAnalysis {
                 "non-finite plate control {control:?}"
             )));
         }
+        let n = self.bodies.field_len();
+        if qp.len() != n {
+            return Err(Error::InvalidInput(format!(
+                "the prescribed vector needs {n} entries, got {}",
+                qp.len()
+            )));
+        }
         let mut qp = qp.to_vec();
         for &node in &plate.nodes {
             for (d, c) in control.iter().enumerate() {
@@ -947,10 +954,14 @@ impl ContactAnalysis {
                 self.timings.iterations += clock.elapsed().as_secs_f64();
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
-                    let solved = border
-                        .as_ref()
-                        .map(|b| (b.directions.as_slice(), &plate_motion[..]));
-                    plate.settle(control, solved, force0, &forces, &mut prescribed);
+                    let directions = border.as_ref().map_or(&[][..], |b| &b.directions[..]);
+                    plate.settle(
+                        control,
+                        (directions, &plate_motion),
+                        force0,
+                        &forces,
+                        &mut prescribed,
+                    );
                 }
                 let converged = Converged {
                     load: f.to_vec(),

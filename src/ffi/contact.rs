@@ -393,9 +393,21 @@ unsafe fn slice<'a, T>(ptr: *const T, len: usize, name: &str) -> Result<&'a [T],
     if len == 0 {
         return Ok(&[]);
     }
+    if len > isize::MAX as usize / std::mem::size_of::<T>().max(1) {
+        return Err(Fail::invalid(format!("{name}: length {len} is too large")));
+    }
     check_pointer(ptr, name)?;
     // SAFETY: non-null and aligned (checked); `len` readable values (caller contract).
     Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
+}
+
+/// `count * per + extra`, the length of an array sized by another argument, or an error naming
+/// `name` when it overflows.
+fn length(count: usize, per: usize, extra: usize, name: &str) -> Result<usize, Fail> {
+    count
+        .checked_mul(per)
+        .and_then(|n| n.checked_add(extra))
+        .ok_or_else(|| Fail::invalid(format!("{name} = {count} is too large")))
 }
 
 /// [`slice`] of doubles, checked finite.
@@ -665,8 +677,9 @@ pub unsafe extern "C" fn hycon_model_new(
             )));
         }
         // SAFETY (all reads below): the caller's contract on the arrays and lengths.
-        let xy = unsafe { doubles(coords, 2 * n_nodes, "coords")? };
-        let offsets = unsafe { slice(element_offsets, n_elements + 1, "element_offsets")? };
+        let xy = unsafe { doubles(coords, length(n_nodes, 2, 0, "n_nodes")?, "coords")? };
+        let n_offsets = length(n_elements, 1, 1, "n_elements")?;
+        let offsets = unsafe { slice(element_offsets, n_offsets, "element_offsets")? };
         if offsets[0] != 0 || offsets.windows(2).any(|w| w[1] < w[0]) {
             return Err(Fail::invalid(
                 "element_offsets must start at 0 and be nondecreasing",
@@ -909,8 +922,10 @@ pub unsafe extern "C" fn hycon_host_new(
     n_equations: usize,
 ) -> HyconStatus {
     boundary("hycon_host_new", || {
-        if n_equations == 0 {
-            return Err(Fail::invalid("n_equations must be positive"));
+        if n_equations == 0 || n_equations > isize::MAX as usize / 16 {
+            return Err(Fail::invalid(format!(
+                "n_equations = {n_equations} must be positive and addressable"
+            )));
         }
         // SAFETY: the caller's contract on `out`.
         unsafe {
@@ -1029,10 +1044,11 @@ pub unsafe extern "C" fn hycon_host_add_pair(
         if let Some(n) = a.iter().find(|n| b.contains(n)) {
             return Err(Fail::invalid(format!("node {n} is in both polylines")));
         }
-        let a_xy = unsafe { doubles(a_coords, 2 * n_a, "a_coords")? };
-        let b_xy = unsafe { doubles(b_coords, 2 * n_b, "b_coords")? };
-        let a_eq = unsafe { slice(a_equations, 2 * n_a, "a_equations")? };
-        let b_eq = unsafe { slice(b_equations, 2 * n_b, "b_equations")? };
+        let (len_a, len_b) = (length(n_a, 2, 0, "n_a")?, length(n_b, 2, 0, "n_b")?);
+        let a_xy = unsafe { doubles(a_coords, len_a, "a_coords")? };
+        let b_xy = unsafe { doubles(b_coords, len_b, "b_coords")? };
+        let a_eq = unsafe { slice(a_equations, len_a, "a_equations")? };
+        let b_eq = unsafe { slice(b_equations, len_b, "b_equations")? };
         for (ids, xy, side) in [(a, a_xy, "A"), (b, b_xy, "B")] {
             if let Some(w) = ids
                 .windows(2)
@@ -1097,7 +1113,7 @@ pub unsafe extern "C" fn hycon_host_set_csr(
             }
         };
         let n = h.equations;
-        let ptr = unsafe { slice(row_ptr, n + 1, "row_ptr")? };
+        let ptr = unsafe { slice(row_ptr, length(n, 1, 1, "n_equations")?, "row_ptr")? };
         let nnz = ptr[n];
         let cols = unsafe { slice(columns, nnz, "columns")? };
         let vals = unsafe { doubles(values, nnz, "values")? };
@@ -1330,6 +1346,8 @@ pub unsafe extern "C" fn hycon_contact_plate(
         let Some((u, f)) = c.analysis.plate() else {
             return Err(Fail::invalid("this analysis has no plate"));
         };
+        check_output(displacement, 2, 2, "displacement")?;
+        check_output(force, 2, 2, "force")?;
         unsafe { write_all(displacement, 2, &u, "displacement")? };
         unsafe { write_all(force, 2, &f, "force") }
     })
@@ -1688,8 +1706,9 @@ pub unsafe extern "C" fn hycon_contact_coupling(
 /// the tangential one with `s_k`; columns are field indices (model dofs `2 node + direction`,
 /// or host equations; a host's fixed dofs are left out). The mixed system of a host that
 /// assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]` with the active rows.
-/// Call with `columns` and `values` NULL and `capacity` 0 to get the entry count in `nnz`;
-/// then with buffers of at least that many and `row_ptr` of `2 n_a + 1` entries.
+/// Call with `row_ptr`, `columns` and `values` all NULL to get the entry count in `nnz`; then
+/// with `row_ptr` of `2 n_a + 1` entries and `columns`, `values` of at least `nnz` (NULL with
+/// capacity 0 when `nnz` is 0).
 ///
 /// # Safety
 /// `contact` must be a live handle; `row_ptr` NULL or `row_ptr_len` writable; `columns` and
@@ -1711,7 +1730,7 @@ pub unsafe extern "C" fn hycon_contact_kc(
         let c = unsafe { handle(contact, "contact")? };
         check_pointer(nnz.cast_const(), "nnz")?;
         let rows = c.analysis.constraint_rows(pair)?;
-        let query = columns.is_null() && values.is_null() && capacity == 0;
+        let query = row_ptr.is_null() && columns.is_null() && values.is_null();
         if !query {
             check_output(row_ptr, row_ptr_len, rows.row_ptr.len(), "row_ptr")?;
             check_output(columns, capacity, rows.columns.len(), "columns")?;

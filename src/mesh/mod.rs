@@ -8,7 +8,7 @@ pub mod generate;
 pub mod quality;
 
 use crate::element::MAX_NODES;
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, ShapeError};
 use std::collections::BTreeMap;
 
 /// A 2D mesh in compressed connectivity storage.
@@ -110,10 +110,12 @@ impl Mesh {
         for e in 0..self.n_elements() {
             let (lo, hi) = (self.element_offsets[e], self.element_offsets[e + 1]);
             if hi < lo || !(4..=MAX_NODES).contains(&(hi - lo)) {
-                return Err(Error::InvalidInput(format!(
-                    "element {e} has {} nodes (4 to {MAX_NODES} allowed)",
-                    hi.saturating_sub(lo)
-                )));
+                const _: () = assert!(MAX_NODES == 6, "update the message below");
+                let kind = ShapeError::NodeCount {
+                    got: hi.saturating_sub(lo),
+                    expected: "4 to 6",
+                };
+                return Err(Error::at_element(kind, e));
             }
             let nodes = self.element(e);
             if let Some(&n) = nodes.iter().find(|&&n| n >= self.n_nodes()) {
@@ -124,9 +126,8 @@ impl Mesh {
             }
             for (i, a) in nodes.iter().enumerate() {
                 if nodes[i + 1..].contains(a) {
-                    return Err(Error::InvalidInput(format!(
-                        "element {e} lists node {a} twice"
-                    )));
+                    // the same node twice: two coincident corners
+                    return Err(Error::at_element(ShapeError::Degenerate, e));
                 }
             }
         }

@@ -86,15 +86,16 @@ impl ContactAnalysis {
     /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
     /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
     pub fn stress_tractions(&mut self, p: usize) -> Result<Vec<(f64, f64)>> {
-        let frames = self.node_results(p)?;
-        let q = self.displacement()?.to_vec();
-        let model = self.bodies.as_model().ok_or_else(|| {
-            Error::InvalidInput(
+        if self.bodies.as_model().is_none() {
+            return Err(Error::InvalidInput(
                 "tractions from element stresses need hycon's elements: a host computes sigma n \
                  from its own element stresses (the model API provides them)"
                     .into(),
-            )
-        })?;
+            ));
+        }
+        let frames = self.node_results(p)?;
+        let q = self.displacement()?.to_vec();
+        let model = self.model()?;
         let mut edges = std::collections::HashMap::new();
         for e in 0..model.mesh.n_elements() {
             let nodes = model.mesh.element(e);
