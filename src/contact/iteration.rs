@@ -36,9 +36,13 @@
 //! whose two nodes are open), drop active nodes in tension, turn stick nodes that violate
 //! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
 //! stops when no state changed and `R = |dU(i+1) - dU(i)| / |dU(i+1)|` (increment displacement
-//! of the contact nodes) is below `tolerance`. A state seen before reappearing is cycling and
-//! stops the increment with an error naming the node; so does the iteration cap. A failed
-//! increment leaves the last converged state untouched.
+//! of the contact nodes) is below `tolerance`. A state set seen before reappearing is a cycle.
+//! Two kinds are benign and resolved (at most `lock_rounds` times per increment): a node on the
+//! edge of the friction cone alternating between stick and slip is locked in slip, and a node
+//! on the edge of the contact zone alternating between open and closed (zero traction and zero
+//! gap to round-off) is locked open, provided it then penetrates by at most `1e-4` of the
+//! increment's motion. Any other cycle stops the increment with an error naming the node; so
+//! does the iteration cap. A failed increment leaves the last converged state untouched.
 
 use super::bodies::{Bodies, HostSystem};
 use super::geometry::{self, ContactSurface};
@@ -887,6 +891,7 @@ impl ContactAnalysis {
         }
         let mut history: Vec<Vec<Vec<NodeState>>> = vec![states.clone()];
         let mut locked: Vec<(usize, usize)> = Vec::new();
+        let mut locked_open: Vec<(usize, usize)> = Vec::new();
         let mut lock_rounds = 0;
         let mut records = Vec::new();
         for iteration in 1..=self.options.max_iterations {
@@ -917,12 +922,19 @@ impl ContactAnalysis {
             let tractions = system.tractions(&tau, &states, &self.pairs);
             let (mut new_states, mut changes) =
                 self.update_states(&states, &tractions, &new_surfaces, &x, &uc_new, &startc)?;
-            // a node locked in slip does not return to stick in this increment
+            // a node locked in slip does not return to stick in this increment, nor a node
+            // locked open to contact
             for (p, k) in locked.iter().copied() {
                 if matches!(states[p][k], NodeState::Slip { .. })
                     && new_states[p][k] == NodeState::Stick
                 {
                     new_states[p][k] = states[p][k];
+                    changes -= 1;
+                }
+            }
+            for (p, k) in locked_open.iter().copied() {
+                if states[p][k] == NodeState::Open && new_states[p][k] != NodeState::Open {
+                    new_states[p][k] = NodeState::Open;
                     changes -= 1;
                 }
             }
@@ -951,6 +963,7 @@ impl ContactAnalysis {
             surfaces = new_surfaces;
             if changes == 0 && r <= self.options.tolerance {
                 self.uncovered(&surfaces, &states)?;
+                self.edge_penetration(number, &surfaces, &locked_open, &uc, &startc)?;
                 self.timings.iterations += clock.elapsed().as_secs_f64();
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
@@ -978,12 +991,23 @@ impl ContactAnalysis {
                     // (which violates the cone) and slip (whose slip reverses): it sits on the
                     // cone with a vanishing slip, so it is locked in slip and the search
                     // goes on (at most `lock_rounds` times per increment)
+                    // a node at the edge of the contact zone (zero traction, zero gap to
+                    // round-off) can alternate between closed (in tension by a hair) and open
+                    // (penetrating by a hair): it is locked open and the search goes on; its
+                    // penetration is checked at convergence (`edge_penetration`)
                     let flips = stick_slip_flips(&history[j], &states);
-                    if !flips.is_empty() && lock_rounds < self.options.lock_rounds {
+                    let edges = open_closed_flips(&history[j], &states);
+                    if !(flips.is_empty() && edges.is_empty())
+                        && lock_rounds < self.options.lock_rounds
+                    {
                         lock_rounds += 1;
                         for &(p, k, slip) in &flips {
                             locked.push((p, k));
                             new_states[p][k] = slip;
+                        }
+                        for &(p, k) in &edges {
+                            locked_open.push((p, k));
+                            new_states[p][k] = NodeState::Open;
                         }
                         history = vec![new_states.clone()];
                         states = new_states;
@@ -1005,6 +1029,47 @@ impl ContactAnalysis {
             self.options.max_iterations,
             records.last().map_or(f64::NAN, |r: &IterationRecord| r.r)
         )))
+    }
+
+    /// The length against which gaps of pair `p` are judged: the increment's largest motion of
+    /// a contact dof, bounded by the mean A segment length `h` (and by `1e-12 h` below), so
+    /// that tiny loads still close the contact and the judgement does not depend on units.
+    fn gap_scale(&self, p: usize, x: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
+        let h = self.mean_segment(p, x);
+        let motion = uc
+            .iter()
+            .zip(startc)
+            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        motion.clamp(1e-12 * h, h)
+    }
+
+    /// Nodes locked open after an open/closed cycle must not penetrate by more than
+    /// `EDGE_PENETRATION` of the gap scale at convergence; otherwise the cycle was not an edge
+    /// effect and the increment fails naming the node.
+    fn edge_penetration(
+        &self,
+        number: usize,
+        surfaces: &[ContactSurface],
+        locked_open: &[(usize, usize)],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<()> {
+        let x = self.positions(uc);
+        for &(p, k) in locked_open {
+            let scale = self.gap_scale(p, &x, uc, startc);
+            let gap = surfaces[p].nodes[k].normal_gap;
+            if gap < -EDGE_PENETRATION * scale {
+                return Err(Error::Contact(format!(
+                    "increment {number}: the contact set cycles: node {} alternates between open \
+                     and closed, and open it penetrates by {:.3e} ({:.1e} of the increment's \
+                     motion): reduce the load step",
+                    self.bodies.external(self.pairs[p].a[k]),
+                    -gap,
+                    -gap / scale
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// A node whose state differs between two state sets (for messages; the caller's id).
@@ -1119,6 +1184,23 @@ fn stick_slip_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, u
     }
     flips
 }
+
+/// `(pair, node)` of the nodes that are open in one state set and closed in the other.
+fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, usize)> {
+    let mut flips = Vec::new();
+    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
+        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
+            if (x == NodeState::Open) != (y == NodeState::Open) {
+                flips.push((p, k));
+            }
+        }
+    }
+    flips
+}
+
+/// How far a node locked open after an open/closed cycle may penetrate at convergence,
+/// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
+const EDGE_PENETRATION: f64 = 1e-4;
 
 /// `R = |u_new - u_old| / |u_new - u_start|` over the contact dofs (0 when nothing moved).
 fn change_ratio(new: &[f64], old: &[f64], start: &[f64]) -> f64 {
@@ -1392,16 +1474,11 @@ impl ContactAnalysis {
         startc: &[f64],
     ) -> Result<(Vec<Vec<NodeState>>, usize)> {
         let mut new = states.to_vec();
-        // penetration is judged against the increment's own displacement scale (bounded by the
-        // segment length), so that tiny loads still close the contact
-        let motion = uc
-            .iter()
-            .zip(startc)
-            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
         for (p, surface) in surfaces.iter().enumerate() {
             let mu = self.pairs[p].friction;
             let h = self.mean_segment(p, x);
-            let gap_tolerance = self.options.gap_tolerance * motion.clamp(1e-12 * h, h);
+            // penetration is judged against the increment's own displacement scale
+            let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, x, uc, startc);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
             // tangential slip of A relative to B since the increment began, per unit length
             let slip_since_start = |node: &geometry::ContactNode| {
