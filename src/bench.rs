@@ -787,8 +787,9 @@ pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
                 });
                 let _ = writeln!(
                     md,
-                    "| {} | {} | {} | {} | {:.4} | {t1} | {ratio} |",
+                    "| {} {} | {} | {} | {} | {:.4} | {t1} | {ratio} |",
                     r.case.config(),
+                    r.case.backend.name(),
                     r.case.n,
                     r.factorizations,
                     r.iterations,

@@ -240,9 +240,9 @@ enum Bench {
         /// Exponents k of the caps 2^-k (radii); k = 7 gives about 1.1M dofs.
         #[arg(long, value_delimiter = ',', default_values_t = [3, 4, 5, 6, 7])]
         levels: Vec<i32>,
-        /// Sparse backend.
-        #[arg(long, default_value = "faer")]
-        backend: String,
+        /// Sparse backends (comma separated: faer, cholmod).
+        #[arg(long, value_delimiter = ',', default_values = ["faer"])]
+        backend: Vec<String>,
     },
     /// The regression guard: accuracy at fixed meshes against the committed values; fails
     /// (exit 1) when an error got worse. Timings are printed, never checked.
@@ -1181,11 +1181,16 @@ fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path
     }
 }
 
-/// `hycon bench contact-scale`: one configuration at fixed n, element size capped at 2^-k.
-fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Path) -> AnyResult {
+/// `hycon bench contact-scale`: one configuration at fixed n, element size capped at 2^-k,
+/// for each backend.
+fn contact_scale(
+    n: usize,
+    config: &str,
+    levels: &[i32],
+    backends: &[String],
+    out: &Path,
+) -> AnyResult {
     use std::fmt::Write as _;
-    let backend = hycon::bench::parse_backend(backend)
-        .ok_or_else(|| format!("unknown backend {backend:?}"))?;
     let exe = std::env::current_exe()?;
     let mut runs = Vec::new();
     println!(
@@ -1205,50 +1210,56 @@ fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Pa
         "MiB",
         "L2"
     );
-    for &k in levels {
-        let case = hycon::bench::SweepCase {
-            backend,
-            max_element_size: Some(2f64.powi(-k)),
-            ..parse_config(config, n)?
-        };
-        let r = hycon::bench::sweep_run_in_child(&exe, &case)?;
-        let t = r.timings;
-        println!(
-            "{:<28} {:>3} {:>9} {:>6} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.1} {:>6.3}%",
-            hycon::bench::series_name(&case),
-            k,
-            r.dofs,
-            r.contact_dofs,
-            r.mesh,
-            t.assembly,
-            t.factorization,
-            t.flexibility,
-            t.load_solves,
-            t.iterations,
-            t.recovery,
-            r.total,
-            r.peak_rss,
-            100.0 * r.l2_error
-        );
-        runs.push(r);
+    for name in backends {
+        let backend =
+            hycon::bench::parse_backend(name).ok_or_else(|| format!("unknown backend {name:?}"))?;
+        for &k in levels {
+            let case = hycon::bench::SweepCase {
+                backend,
+                max_element_size: Some(2f64.powi(-k)),
+                ..parse_config(config, n)?
+            };
+            let r = hycon::bench::sweep_run_in_child(&exe, &case)?;
+            let t = r.timings;
+            println!(
+                "{:<28} {:>3} {:>9} {:>6} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.1} {:>6.3}%",
+                hycon::bench::series_name(&case),
+                k,
+                r.dofs,
+                r.contact_dofs,
+                r.mesh,
+                t.assembly,
+                t.factorization,
+                t.flexibility,
+                t.load_solves,
+                t.iterations,
+                t.recovery,
+                r.total,
+                r.peak_rss,
+                100.0 * r.l2_error
+            );
+            runs.push((k, r));
+        }
     }
     std::fs::create_dir_all(out)?;
     let csv = out.join("contact_scale.csv");
-    std::fs::write(&csv, hycon::bench::sweep_csv(&runs))?;
+    let plain: Vec<hycon::bench::SweepRun> = runs.iter().map(|(_, r)| r.clone()).collect();
+    std::fs::write(&csv, hycon::bench::sweep_csv(&plain))?;
     println!("written: {}", csv.display());
     let mut md = String::new();
     let _ = writeln!(
         md,
         "### Cost against size: {config}, n = {n}, element size capped at 2^-k radii\n\n\
-         | k | dofs | elements | mesh s | assembly s | factorization s | flexibility s | load \
-         solves s | iterations s | recovery s | total s | peak RSS MiB | L2 |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|"
+         | backend | k | dofs | elements | mesh s | assembly s | factorization s | flexibility s \
+         | load solves s | iterations s | recovery s | total s | peak RSS MiB | L2 |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     );
-    for (r, k) in runs.iter().zip(levels) {
+    for (k, r) in &runs {
         let t = r.timings;
         let _ = writeln!(
             md,
-            "| {k} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.0} | {:.3}% |",
+            "| {} | {k} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.0} | {:.3}% |",
+            r.case.backend.name(),
             r.dofs,
             r.elements,
             r.mesh,
@@ -1263,23 +1274,37 @@ fn contact_scale(n: usize, config: &str, levels: &[i32], backend: &str, out: &Pa
             100.0 * r.l2_error
         );
     }
-    let big = &runs[runs.len().min(1)..];
-    let fit = |y: &dyn Fn(&hycon::bench::SweepRun) -> f64| {
-        let pts: Vec<(f64, f64)> = big.iter().map(|r| (r.dofs as f64, y(r))).collect();
-        hycon::bench::fit_power(&pts)
-            .map_or("-".into(), |(p, _, r2)| format!("{p:.2} (r^2 {r2:.3})"))
-    };
     let _ = writeln!(
         md,
-        "\nGrowth against dofs (least squares on log-log over the {} largest runs): total time \
-         {}, factorization {}, assembly {}, mesh {}, peak memory (VmHWM - VmRSS at start) {}.",
-        big.len(),
-        fit(&|r| r.total),
-        fit(&|r| r.timings.factorization),
-        fit(&|r| r.timings.assembly),
-        fit(&|r| r.mesh),
-        fit(&|r| r.memory())
+        "\nGrowth against dofs, least squares on log-log over all runs but the smallest \
+         (exponent, r^2):\n\n\
+         | backend | runs | total time | factorization | load solves + recovery | assembly | mesh | peak memory (VmHWM - VmRSS at start) |\n\
+         |---|---|---|---|---|---|---|---|"
     );
+    for name in backends {
+        let big: Vec<&hycon::bench::SweepRun> = runs
+            .iter()
+            .map(|(_, r)| r)
+            .filter(|r| r.case.backend.name() == name.as_str())
+            .skip(1)
+            .collect();
+        let fit = |y: &dyn Fn(&hycon::bench::SweepRun) -> f64| {
+            let pts: Vec<(f64, f64)> = big.iter().map(|r| (r.dofs as f64, y(r))).collect();
+            hycon::bench::fit_power(&pts)
+                .map_or("-".into(), |(p, _, r2)| format!("{p:.2} ({r2:.3})"))
+        };
+        let _ = writeln!(
+            md,
+            "| {name} | {} | {} | {} | {} | {} | {} | {} |",
+            big.len(),
+            fit(&|r| r.total),
+            fit(&|r| r.timings.factorization),
+            fit(&|r| r.timings.load_solves + r.timings.recovery),
+            fit(&|r| r.timings.assembly),
+            fit(&|r| r.mesh),
+            fit(&|r| r.memory())
+        );
+    }
     println!("{md}");
     let path = out.join("contact_scale.md");
     std::fs::write(&path, md)?;

@@ -379,3 +379,31 @@ fn bench_sweep_rejects_a_transition_mesh_for_q4() {
         "{stderr}"
     );
 }
+
+#[test]
+fn bench_contact_scale_writes_the_csv_and_the_fit() {
+    let dir = Scratch::new("contact-scale");
+    let out = hycon(&[
+        "bench",
+        "contact-scale",
+        "--n",
+        "2",
+        "--levels",
+        "1,2,3",
+        "--out",
+        dir.arg(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = std::fs::read_to_string(dir.path().join("contact_scale.csv")).expect("csv");
+    let runs = hycon::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
+    assert_eq!(runs.len(), 3);
+    // a smaller cap never gives fewer dofs
+    assert!(runs.windows(2).all(|w| w[1].dofs >= w[0].dofs), "{csv}");
+    assert!(runs.iter().all(|r| r.case.max_element_size.is_some()));
+    let md = std::fs::read_to_string(dir.path().join("contact_scale.md")).expect("md");
+    assert!(md.contains("| faer | 2 |"), "{md}");
+}
