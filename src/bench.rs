@@ -304,6 +304,11 @@ pub struct SweepCase {
     ///
     /// [`DiskOnBlock::max_element_size`]: crate::contact::scene::DiskOnBlock::max_element_size
     pub max_element_size: Option<f64>,
+    /// `R / a` ([`DiskOnBlock::radius_over_half_width`]; 64 in the reference scene).
+    ///
+    /// [`DiskOnBlock::radius_over_half_width`]:
+    ///     crate::contact::scene::DiskOnBlock::radius_over_half_width
+    pub radius_over_half_width: usize,
 }
 
 impl SweepCase {
@@ -316,6 +321,7 @@ impl SweepCase {
             backend: Backend::Faer,
             refactor: false,
             max_element_size: None,
+            radius_over_half_width: 64,
         }
     }
 
@@ -345,6 +351,7 @@ impl SweepCase {
         if let Some(c) = self.max_element_size {
             args.extend(["--max-element-size".into(), format!("{c:e}")]);
         }
+        args.extend(["--r-over-a".into(), self.radius_over_half_width.to_string()]);
         args
     }
 }
@@ -392,7 +399,7 @@ pub struct SweepRun {
 pub const SWEEP_CSV_HEADER: &str = "element,mesh,backend,refactor,n,max_element_size,dofs,\
 elements,contact_dofs,active_nodes,iterations,factorizations,mesh_s,assembly_s,\
 factorization_s,flexibility_s,load_solves_s,iterations_s,recovery_s,total_s,peak_rss_mib,\
-start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error";
+start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error,r_over_a";
 
 impl SweepRun {
     /// Memory of the run itself: peak minus the process' memory before it started, MiB.
@@ -409,7 +416,7 @@ impl SweepRun {
             .map_or(String::new(), |v| format!("{v:e}"));
         format!(
             "{},{},{},{},{},{cap},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},\
-             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e}",
+             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e},{}",
             c.formulation.name(),
             mesh_name(c.transition),
             c.backend.name(),
@@ -435,14 +442,17 @@ impl SweepRun {
             self.l2_error_forces,
             self.half_width_error,
             self.peak_error,
+            c.radius_over_half_width,
         )
     }
 
-    /// Parse a line written by [`SweepRun::csv_row`].
+    /// Parse a line written by [`SweepRun::csv_row`] (also without the last column,
+    /// `r_over_a`, which is then 64).
     pub fn from_csv_row(line: &str) -> Result<SweepRun> {
         let bad = |what: &str| Error::InvalidInput(format!("sweep CSV row {line:?}: {what}"));
         let f: Vec<&str> = line.trim().split(',').collect();
-        if f.len() != SWEEP_CSV_HEADER.split(',').count() {
+        let columns = SWEEP_CSV_HEADER.split(',').count();
+        if f.len() != columns && f.len() != columns - 1 {
             return Err(bad("wrong number of columns"));
         }
         let num = |i: usize| -> Result<f64> { f[i].parse().map_err(|_| bad(f[i])) };
@@ -454,6 +464,7 @@ impl SweepRun {
             refactor: f[3].parse().map_err(|_| bad(f[3]))?,
             n: int(4)?,
             max_element_size: if f[5].is_empty() { None } else { Some(num(5)?) },
+            radius_over_half_width: if f.len() == columns { int(26)? } else { 64 },
         };
         Ok(SweepRun {
             case,
@@ -514,6 +525,7 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
         formulation: case.formulation,
         transition: case.transition,
         max_element_size: case.max_element_size,
+        radius_over_half_width: case.radius_over_half_width,
         ..Default::default()
     }
     .build()?;
@@ -596,8 +608,9 @@ pub fn sweep_csv(runs: &[SweepRun]) -> String {
 /// Parse a CSV written by [`sweep_csv`].
 pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+    let legacy = SWEEP_CSV_HEADER.trim_end_matches(",r_over_a");
     match lines.next() {
-        Some(h) if h.trim() == SWEEP_CSV_HEADER => {}
+        Some(h) if h.trim() == SWEEP_CSV_HEADER || h.trim() == legacy => {}
         _ => {
             return Err(Error::InvalidInput(
                 "not a sweep CSV (header differs)".into(),
@@ -607,8 +620,8 @@ pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
     lines.map(SweepRun::from_csv_row).collect()
 }
 
-/// Series key: element, mesh, backend, refactor (one line in the plots).
-fn series_key(c: &SweepCase) -> (usize, u8, usize, bool) {
+/// Series key: `R / a`, element, mesh, backend, refactor (one line in the plots).
+fn series_key(c: &SweepCase) -> (usize, usize, u8, usize, bool) {
     let f = Formulation::ALL
         .iter()
         .position(|&g| g == c.formulation)
@@ -618,12 +631,16 @@ fn series_key(c: &SweepCase) -> (usize, u8, usize, bool) {
         Transition::Quads => 1,
     };
     let b = BACKENDS.iter().position(|&g| g == c.backend).unwrap_or(0);
-    (f, m, b, c.refactor)
+    (c.radius_over_half_width, f, m, b, c.refactor)
 }
 
-/// Name of a series: `element/mesh backend` (and `, re-factor each iteration`).
+/// Name of a series: `element/mesh backend` (and `, R/a = ...` when not 64, `, refactor each
+/// iteration`).
 pub fn series_name(c: &SweepCase) -> String {
     let mut s = format!("{} {}", c.config(), c.backend.name());
+    if c.radius_over_half_width != 64 {
+        s += &format!(", R/a = {}", c.radius_over_half_width);
+    }
     if c.refactor {
         s += ", refactor each iteration";
     }
@@ -777,6 +794,7 @@ pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
                         c.formulation == r.case.formulation
                             && c.transition == r.case.transition
                             && c.backend == r.case.backend
+                            && c.radius_over_half_width == r.case.radius_over_half_width
                     })
                     .and_then(|p| p.iter().find(|o| o.case.n == r.case.n));
                 let (t1, ratio) = once.map_or(("-".into(), "-".into()), |o| {

@@ -194,9 +194,12 @@ enum Bench {
         #[arg(long, value_enum, default_value_t = BackendChoice::Faer)]
         backend: BackendChoice,
         /// Extra runs that re-factor K and rebuild the flexibility every iteration, at these n
-        /// (comma separated).
+        /// (comma separated; 0: none).
         #[arg(long, value_delimiter = ',', default_values_t = [8, 16, 32])]
         refactor_n: Vec<usize>,
+        /// R / a of the scene (a power of two; 64 is the reference scene).
+        #[arg(long, default_value_t = 64)]
+        r_over_a: usize,
         /// Runs per case (the plots and the summary take the fastest).
         #[arg(long, default_value_t = 1)]
         repeats: usize,
@@ -222,6 +225,8 @@ enum Bench {
         refactor: bool,
         #[arg(long)]
         max_element_size: Option<f64>,
+        #[arg(long, default_value_t = 64)]
+        r_over_a: usize,
         /// Also print the CSV header.
         #[arg(long)]
         header: bool,
@@ -485,6 +490,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             configs,
             backend,
             refactor_n,
+            r_over_a,
             repeats,
             fit_min_n,
             from_csv,
@@ -495,6 +501,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 configs,
                 backend,
                 refactor_n,
+                r_over_a,
                 repeats,
             };
             sweep(&plan, fit_min_n, from_csv.as_deref(), out)?
@@ -506,6 +513,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             backend,
             refactor,
             max_element_size,
+            r_over_a,
             header,
         } => {
             let case = hycon::bench::SweepCase {
@@ -516,6 +524,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                     .ok_or_else(|| format!("unknown backend {backend:?}"))?,
                 refactor,
                 max_element_size,
+                radius_over_half_width: r_over_a,
             };
             let run = hycon::bench::sweep_run(&case)?;
             if header {
@@ -997,6 +1006,7 @@ struct SweepPlan {
     configs: Vec<String>,
     backend: BackendChoice,
     refactor_n: Vec<usize>,
+    r_over_a: usize,
     repeats: usize,
 }
 
@@ -1053,17 +1063,19 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
             for &backend in &usable {
                 cases.push(hycon::bench::SweepCase {
                     backend,
+                    radius_over_half_width: plan.r_over_a,
                     ..parse_config(config, n)?
                 });
             }
         }
     }
-    for &n in &plan.refactor_n {
+    for &n in plan.refactor_n.iter().filter(|&&n| n > 0) {
         for config in &plan.configs {
             for &backend in &usable {
                 cases.push(hycon::bench::SweepCase {
                     refactor: true,
                     backend,
+                    radius_over_half_width: plan.r_over_a,
                     ..parse_config(config, n)?
                 });
             }

@@ -407,3 +407,35 @@ fn bench_contact_scale_writes_the_csv_and_the_fit() {
     let md = std::fs::read_to_string(dir.path().join("contact_scale.md")).expect("md");
     assert!(md.contains("| faer | 2 |"), "{md}");
 }
+
+#[test]
+fn bench_sweep_one_takes_the_scene_options() {
+    let out = hycon(&[
+        "bench",
+        "sweep-one",
+        "--element",
+        "q4",
+        "--mesh",
+        "quads",
+        "--n",
+        "4",
+        "--r-over-a",
+        "128",
+        "--header",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let runs = hycon::bench::parse_sweep_csv(&text).expect("header and one row");
+    assert_eq!(runs.len(), 1);
+    let r = &runs[0];
+    assert_eq!(r.case.radius_over_half_width, 128);
+    assert_eq!(r.case.config(), "q4/quads");
+    assert!(r.peak_rss >= r.start_rss, "{text}");
+    let bad = hycon(&["bench", "sweep-one", "--r-over-a", "100"]);
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("power of two"));
+}

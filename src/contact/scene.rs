@@ -8,7 +8,8 @@
 //! the opposite side B. The element size at the contact is `h = a / n` with `a` the target
 //! half-width and `n` the elements per half-width; `a` is `R / 64`, so `h` is a power of two of
 //! the block's root cells and the meshes are exactly graded. Both meshes are graded 2:1 toward
-//! the contact zone with 8 cells per size band.
+//! the contact zone with 8 cells per size band. ([`DiskOnBlock::radius_over_half_width`] sets
+//! another power of two for `R / a`; 64 is the reference scene.)
 //!
 //! Mesh variants: [`DiskOnBlock::transition`] `Transition::Elements` (the reference scene: one
 //! element per quadtree leaf, 5- and 6-node transition elements, hybrid elements only) or
@@ -62,6 +63,10 @@ pub struct DiskOnBlock {
     /// their root cells). A cap refines the far field uniformly: large models with the same
     /// contact zone.
     pub max_element_size: Option<f64>,
+    /// `R / a`, a power of two from 4 to 2^16 (64 in the reference scene). A smaller target
+    /// half-width shrinks the O(a / R) offset of the current-configuration geometry against
+    /// linear Hertz. Node-to-node meshes take the largest `n h` not above `R` / this.
+    pub radius_over_half_width: usize,
 }
 
 impl Default for DiskOnBlock {
@@ -78,6 +83,7 @@ impl Default for DiskOnBlock {
             node_to_node: false,
             transition: Transition::Elements,
             max_element_size: None,
+            radius_over_half_width: 64,
         }
     }
 }
@@ -119,16 +125,17 @@ pub struct Scene {
     pub top: Vec<usize>,
     /// Effective modulus `E*`.
     pub e_star: f64,
-    /// Target half-width `a = R / 64`.
+    /// Target half-width `a` (`R / 64` in the reference scene).
     pub half_width: f64,
     /// Disk radius `R`.
     pub radius: f64,
 }
 
 impl DiskOnBlock {
-    /// Target half-width `a`: `R / 64` for node-to-internode meshes; for node-to-node meshes
-    /// the largest `n h` not above `R / 64` with `h` the block's cell size (see
-    /// [`DiskOnBlock::build`]).
+    /// Target half-width `a`: `R / 64` (generally `R /`
+    /// [`radius_over_half_width`](Self::radius_over_half_width)) for node-to-internode meshes;
+    /// for node-to-node meshes the largest `n h` not above that with `h` the block's cell size
+    /// (see [`DiskOnBlock::build`]).
     pub fn target_half_width(&self) -> f64 {
         self.radius * self.unit_geometry().0
     }
@@ -137,17 +144,18 @@ impl DiskOnBlock {
     /// half-width (the block is `[-W, W] x [-W_depth, 0]`, root cells of size `W`).
     fn unit_geometry(&self) -> (f64, f64, f64) {
         let n = self.elements_per_half_width.max(1) as f64;
+        let a = 1.0 / self.radius_over_half_width.max(1) as f64;
         if self.node_to_node {
             // the disk's arc cells at the contact are (pi / 8) / 2^k long (45-degree O-grid
             // patches of 2 root cells): a block of root size 2 pi has cells of the same length
             let w = 2.0 * std::f64::consts::PI;
             let mut h = w;
-            while n * h > 1.0 / 64.0 {
+            while n * h > a {
                 h /= 2.0;
             }
             (n * h, h, w)
         } else {
-            (1.0 / 64.0, 1.0 / (64.0 * n), 4.0)
+            (a, a / n, 4.0)
         }
     }
 
@@ -157,6 +165,12 @@ impl DiskOnBlock {
         if n == 0 || !n.is_power_of_two() || n > 256 {
             return Err(Error::InvalidInput(format!(
                 "elements per half-width must be a power of two in 1..=256, got {n}"
+            )));
+        }
+        let q = self.radius_over_half_width;
+        if !q.is_power_of_two() || !(4..=1 << 16).contains(&q) {
+            return Err(Error::InvalidInput(format!(
+                "R / a must be a power of two in 4..=65536, got {q}"
             )));
         }
         if self.transition == Transition::Elements && self.formulation != Formulation::Hybrid {
