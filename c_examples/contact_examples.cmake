@@ -9,6 +9,10 @@ hycon_example(hertz_model hertz_model.c C hycon::hycon)
 hycon_test(hertz_model hertz_model)
 hycon_valgrind_test(valgrind_hertz_model hertz_model 8)
 hycon_asan_test(hertz_model hertz_model.c C)
+# the same analysis factored by CHOLMOD, when the library has the suitesparse feature
+if(HYCON_CARGO_FEATURES MATCHES "suitesparse")
+  hycon_test(hertz_model_cholmod hertz_model 12 cholmod)
+endif()
 
 # 4b: a host with its own Q4 elements and CHOLMOD (Debian's libsuitesparse-dev has no CMake or
 # pkg-config file: find the header and the library directly), through the solve callback,

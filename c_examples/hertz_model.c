@@ -19,8 +19,10 @@
  * The measured load is P = sum over the A nodes of -n . f (normal nodal contact forces); the
  * pressure centre is the multipliers' load centroid, used for all three curves.
  *
- * Usage: hertz_model [n [wrong-estar]]   n = elements per half-width, 8..32 (default 12; the
- * tolerances scale with 1 / n). With `wrong-estar` the checks use the wrong E* and must fail.
+ * Usage: hertz_model [n [wrong-estar | cholmod]]   n = elements per half-width, 8..32 (default
+ * 12; the tolerances scale with 1 / n). With `wrong-estar` the checks use the wrong E* and must
+ * fail. With `cholmod` hycon factors K with CHOLMOD (HYCON_BACKEND_CHOLMOD: a library built with
+ * the `suitesparse` feature) instead of faer; the checks are the same.
  * Prints OK on success; FAILED or "wrong value" and exit code 1 otherwise.
  */
 #include "disk_mesh.h"
@@ -131,6 +133,7 @@ int main(int argc, char **argv) {
     const double e_star_wrong = youngs / 2.0;
     size_t n = argc > 1 ? (size_t)strtoul(argv[1], NULL, 10) : 12;
     int use_wrong = argc > 2 && strcmp(argv[2], "wrong-estar") == 0;
+    int use_cholmod = argc > 2 && strcmp(argv[2], "cholmod") == 0;
     DiskMeshParams params;
     DiskMesh m;
     HyconMaterial materials[2];
@@ -149,7 +152,7 @@ int main(int argc, char **argv) {
     Tolerance tol_multipliers, tol_b, tol_stress;
 
     if (n < 8 || n > 32) {
-        fprintf(stderr, "usage: hertz_model [n [wrong-estar]], 8 <= n <= 32\n");
+        fprintf(stderr, "usage: hertz_model [n [wrong-estar | cholmod]], 8 <= n <= 32\n");
         return EXIT_FAILURE;
     }
     /* Tolerances at the last increment, where a = n h. Measured there (n = 8, 12, 16, 24):
@@ -204,6 +207,8 @@ int main(int argc, char **argv) {
     CHECK(hycon_contact_options_default(&options));
     options.monitor = monitor;
     options.monitor_data = log;
+    if (use_cholmod) options.backend = HYCON_BACKEND_CHOLMOD;
+    printf("sparse backend: %s\n", use_cholmod ? "CHOLMOD" : "faer");
     CHECK(hycon_contact_new(&c, model, &options));
     hycon_model_free(model); /* the analysis keeps its own copy */
     model = NULL;
