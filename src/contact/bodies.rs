@@ -2,8 +2,8 @@
 //! contact nodes, where their dofs sit in the linear system, and solves with the stiffness.
 //!
 //! Two sources:
-//! * [`Bodies::Model`]: hycon's own [`Model`], assembled and factored by hycon;
-//! * [`Bodies::Host`]: a host FE code's system ([`HostSystem`]): its contact nodes (positions
+//! * [`Bodies::model`]: hycon's own [`Model`], assembled and factored by hycon;
+//! * [`Bodies::host`]: a host FE code's system ([`HostSystem`]): its contact nodes (positions
 //!   and equation numbers in its numbering) and either its stiffness in CSR, factored here, or a
 //!   solve callback ([`HostSolve`]) so that the host factors `K` with its own solver.
 //!
