@@ -50,7 +50,7 @@ use crate::assembly::dof;
 use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{DMatrix, DVector, Dyn, LU};
 
 mod results;
 pub use results::ConstraintRows;
@@ -908,10 +908,12 @@ impl ContactAnalysis {
             let (tau, plate_motion, condition) =
                 system.solve(&u0c, &self.flexibility, border.as_ref())?;
             let forces = system.forces(&tau, self.dofs.len());
+            // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
             let mut uc_new = u0c.clone();
-            let df = &self.flexibility * DVector::from_column_slice(&forces);
-            for (u, d) in uc_new.iter_mut().zip(df.iter()) {
-                *u += d;
+            for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
+                for (u, c) in uc_new.iter_mut().zip(column(&self.flexibility, j)) {
+                    *u += c * fj;
+                }
             }
             if let Some(b) = &border {
                 for (&d, &m) in b.directions.iter().zip(&plate_motion) {
@@ -1146,22 +1148,34 @@ fn plate_force(model: &Model, plate: &[usize], q: &[f64], f: &[f64]) -> Result<[
     Ok(force)
 }
 
-/// `||A||_1 ||A^-1||_1` with `||A^-1||_1` estimated by Hager's method (a few solves with `A`
-/// and `A^T`, Higham's Algorithm 2.1); `None` when `A` is singular.
-fn condition_estimate(a: &DMatrix<f64>) -> Option<f64> {
-    let m = a.nrows();
+/// `||A||_1`, the largest column sum.
+fn norm1(a: &DMatrix<f64>) -> f64 {
+    a.column_iter()
+        .map(|c| c.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+}
+
+/// Solve `A^T y = b` with the LU factors of `A` (`P A = L U`, so `A^T = U^T L^T P`).
+fn solve_transposed(lu: &LU<f64, Dyn, Dyn>, b: &DVector<f64>) -> Option<DVector<f64>> {
+    let z = lu.u().tr_solve_upper_triangular(b)?;
+    let mut w = lu.l().tr_solve_lower_triangular(&z)?;
+    lu.p().inv_permute_rows(&mut w);
+    Some(w)
+}
+
+/// `||A||_1 ||A^-1||_1` (`a_norm = ||A||_1`) with `||A^-1||_1` estimated by Hager's method from
+/// the LU factors of `A` (a few solves with `A` and `A^T`, Higham's Algorithm 2.1); `None`
+/// when `A` is singular.
+fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<f64> {
+    let m = lu.l().nrows();
     let norm1 = |v: &DVector<f64>| v.iter().map(|x| x.abs()).sum::<f64>();
-    let a_norm = (0..m)
-        .map(|j| a.column(j).iter().map(|x| x.abs()).sum::<f64>())
-        .fold(0.0, f64::max);
-    let (lu, lu_t) = (a.clone().lu(), a.transpose().lu());
     let mut x = DVector::from_element(m, 1.0 / m as f64);
     let mut estimate = 0.0;
     for _ in 0..5 {
         let y = lu.solve(&x)?;
         estimate = norm1(&y);
         let sign = y.map(|v| if v >= 0.0 { 1.0 } else { -1.0 });
-        let z = lu_t.solve(&sign)?;
+        let z = solve_transposed(lu, &sign)?;
         let j = z.iamax();
         if z[j].abs() <= z.dot(&x) {
             break;
@@ -1281,6 +1295,12 @@ struct SmallSystem {
     b: Vec<f64>,
 }
 
+/// Column `j` of a dense matrix as a slice (column-major storage).
+fn column(a: &DMatrix<f64>, j: usize) -> &[f64] {
+    let m = a.nrows();
+    &a.as_slice()[j * m..(j + 1) * m]
+}
+
 fn dot(v: &Sparse, u: &[f64]) -> f64 {
     v.iter().map(|&(i, c)| c * u[i]).sum()
 }
@@ -1305,8 +1325,8 @@ impl SmallSystem {
         for (j, col) in self.cols.iter().enumerate() {
             fcol.iter_mut().for_each(|v| *v = 0.0);
             for &(c, v) in col {
-                for (r, out) in fcol.iter_mut().enumerate() {
-                    *out += flex[(r, c)] * v;
+                for (out, f) in fcol.iter_mut().zip(column(flex, c)) {
+                    *out += f * v;
                 }
             }
             for (i, row) in self.rows.iter().enumerate() {
@@ -1347,11 +1367,12 @@ impl SmallSystem {
             )
         };
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
-        let condition = condition_estimate(&s)
+        let s_norm = norm1(&s);
+        let lu = s.lu();
+        let condition = condition_estimate(s_norm, &lu)
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
-        let tau = s
-            .lu()
+        let tau = lu
             .solve(&rhs)
             .filter(|t| t.iter().all(|v| v.is_finite()))
             .ok_or_else(singular)?;
@@ -1641,12 +1662,13 @@ mod tests {
             let norm1 =
                 |b: &DMatrix<f64>| (0..m).map(|j| b.column(j).abs().sum()).fold(0.0, f64::max);
             let exact = norm1(&a) * norm1(&inv);
-            let estimate = condition_estimate(&a).unwrap();
+            let estimate = condition_estimate(norm1(&a), &a.clone().lu()).unwrap();
             assert!(
                 estimate <= exact * (1.0 + 1e-12) && estimate >= exact / 3.0,
                 "{m}: {estimate} vs {exact}"
             );
         }
-        assert!(condition_estimate(&DMatrix::zeros(3, 3)).is_none());
+        let zero = DMatrix::zeros(3, 3);
+        assert!(condition_estimate(0.0, &zero.lu()).is_none());
     }
 }
