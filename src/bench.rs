@@ -1004,3 +1004,156 @@ pub fn sweep_time_dofs_svg(runs: &[SweepRun]) -> Plot<String> {
     }
     Ok(svg)
 }
+
+/// One row of the "skip what a scene does not need" table: the time with the skip and without
+/// it (the work done anyway), on the same scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SkipRow {
+    /// What is skipped.
+    pub what: String,
+    /// Seconds with the skip (what hycon does).
+    pub with_skip: f64,
+    /// Seconds without it.
+    pub without: f64,
+    /// What the two numbers time.
+    pub measured: String,
+}
+
+/// The reference Hertz scene at `n` elements per half-width, pressed by the calibrated
+/// approach in 3 increments; `pair` replaces the scene's candidate pair when given.
+fn skip_press(
+    scene: &crate::contact::scene::Scene,
+    pair: Option<crate::contact::iteration::ContactPair>,
+    options: crate::contact::iteration::ContactOptions,
+    recover_each: bool,
+) -> Result<(f64, crate::contact::iteration::Timings, usize)> {
+    use crate::contact::iteration::ContactAnalysis;
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    let clock = Instant::now();
+    let pair = pair.unwrap_or_else(|| scene.pair.clone());
+    let mut analysis = ContactAnalysis::new(scene.model.clone(), vec![pair], options)?;
+    let approach = scene.calibrated_approach(&mut analysis)?;
+    for step in 1..=3 {
+        analysis.increment(&f, &scene.prescribed(approach * step as f64 / 3.0, 0.0))?;
+        if recover_each {
+            analysis.displacement()?;
+        }
+    }
+    let unknowns = analysis.records().iter().map(|r| r.active + r.stick).sum();
+    Ok((clock.elapsed().as_secs_f64(), analysis.timings(), unknowns))
+}
+
+/// Measure what skipping unneeded work saves on the reference Hertz scene at `n` elements per
+/// half-width (each figure the fastest of `repeats` runs): tangential rows at `mu = 0`, the
+/// factorization kept for the whole analysis, the flexibility on the candidate dofs only, the
+/// field recovered only on request, and a scene without contact going straight to one linear
+/// solve.
+pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
+    use crate::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair};
+    use crate::contact::scene::DiskOnBlock;
+    use crate::model::LinearSystem;
+    let build = |friction: f64| {
+        DiskOnBlock {
+            elements_per_half_width: n,
+            friction,
+            ..Default::default()
+        }
+        .build()
+    };
+    let scene = build(0.0)?;
+    let sticky = build(0.3)?;
+    let defaults = ContactOptions::default();
+    let best = |run: &dyn Fn() -> Result<(f64, crate::contact::iteration::Timings, usize)>| {
+        (0..repeats.max(1)).try_fold(
+            (f64::INFINITY, Default::default(), 0),
+            |best: (f64, crate::contact::iteration::Timings, usize), _| {
+                let r = run()?;
+                Ok::<_, crate::Error>(if r.0 < best.0 { r } else { best })
+            },
+        )
+    };
+    let plain = best(&|| skip_press(&scene, None, defaults, false))?;
+    let friction = best(&|| skip_press(&sticky, None, defaults, false))?;
+    let refactor = best(&|| {
+        let options = ContactOptions {
+            refactor_each_iteration: true,
+            ..defaults
+        };
+        skip_press(&scene, None, options, false)
+    })?;
+    let whole = ContactPair {
+        a: scene.model.mesh.node_sets["block.top"].clone(),
+        b: scene.model.mesh.node_sets["disk.arc"].clone(),
+        friction: 0.0,
+    };
+    let surfaces = best(&|| skip_press(&scene, Some(whole.clone()), defaults, false))?;
+    let recovered = best(&|| skip_press(&scene, None, defaults, true))?;
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    let qp = scene.prescribed(1e-3 * scene.half_width, 0.0);
+    let timed = |run: &dyn Fn() -> Result<()>| -> Result<f64> {
+        (0..repeats.max(1)).try_fold(f64::INFINITY, |best, _| {
+            let clock = Instant::now();
+            run()?;
+            Ok(best.min(clock.elapsed().as_secs_f64()))
+        })
+    };
+    let no_contact = timed(&|| {
+        let mut analysis = ContactAnalysis::new(scene.model.clone(), Vec::new(), defaults)?;
+        analysis.increment(&f, &qp)?;
+        analysis.displacement()?;
+        Ok(())
+    })?;
+    let linear = timed(&|| {
+        LinearSystem::new(&scene.model)?.solve_for(&scene.model, &f, &qp)?;
+        Ok(())
+    })?;
+    let with_contact = timed(&|| {
+        let mut analysis = scene.analysis(defaults)?;
+        analysis.increment(&f, &qp)?;
+        analysis.displacement()?;
+        Ok(())
+    })?;
+    Ok(vec![
+        SkipRow {
+            what: format!(
+                "no tangential rows at mu = 0 ({} unknowns in all iterations; {} with mu = 0.3)",
+                plain.2, friction.2
+            ),
+            with_skip: plain.1.iterations,
+            without: friction.1.iterations,
+            measured: "contact iterations of the press, mu = 0 vs mu = 0.3".into(),
+        },
+        SkipRow {
+            what: "K factored once per analysis".into(),
+            with_skip: plain.0,
+            without: refactor.0,
+            measured: "whole press; the other re-factors K and rebuilds F every iteration".into(),
+        },
+        SkipRow {
+            what: format!(
+                "F only on the candidate dofs ({} of {} surface nodes)",
+                scene.pair.a.len() + scene.pair.b.len(),
+                whole.a.len() + whole.b.len()
+            ),
+            with_skip: plain.1.flexibility,
+            without: surfaces.1.flexibility,
+            measured: "flexibility F; the other pairs the whole block top with the whole arc"
+                .into(),
+        },
+        SkipRow {
+            what: "full field only on request".into(),
+            with_skip: plain.0,
+            without: recovered.0,
+            measured: "whole press; the other recovers the field after every increment".into(),
+        },
+        SkipRow {
+            what: "no contact pair: straight to the linear solve".into(),
+            with_skip: no_contact,
+            without: with_contact,
+            measured: format!(
+                "one increment and its field without pairs vs with the pair (one assembly + \
+                 factorization + solve alone: {linear:.4} s)"
+            ),
+        },
+    ])
+}

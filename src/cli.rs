@@ -170,6 +170,16 @@ enum Bench {
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
         n: Vec<usize>,
     },
+    /// What skipping unneeded work saves, on the reference Hertz scene (frictionless, a = R/64,
+    /// calibration + 3 increments): each figure the fastest of --repeats runs.
+    Skip {
+        /// Elements per half-width.
+        #[arg(long, default_value_t = 32)]
+        n: usize,
+        /// Runs per figure (the fastest is kept).
+        #[arg(long, default_value_t = 3)]
+        repeats: usize,
+    },
     /// Run time against error: the reference Hertz scene (frictionless, a = R/64, calibration
     /// increment + final increment + full-field recovery) for each element / mesh variant /
     /// backend and n = min, 2 min, ..., max elements per half-width, each run in a fresh child
@@ -542,6 +552,20 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             println!("element stiffness kernel, {repeats} evaluations each:");
             for k in hycon::bench::kernel_times(repeats)? {
                 println!("  {:<26} {:>8.0} ns/element", k.kind, k.nanoseconds);
+            }
+        }
+        Bench::Skip { n, repeats } => {
+            println!("| skipped | with the skip (s) | without (s) | saving | what is timed |");
+            println!("|---|---|---|---|---|");
+            for r in hycon::bench::skip_table(n, repeats)? {
+                println!(
+                    "| {} | {:.4} | {:.4} | {:.1}x | {} |",
+                    r.what,
+                    r.with_skip,
+                    r.without,
+                    r.without / r.with_skip,
+                    r.measured
+                );
             }
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,

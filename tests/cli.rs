@@ -439,3 +439,28 @@ fn bench_sweep_one_takes_the_scene_options() {
     assert!(!bad.status.success());
     assert!(String::from_utf8_lossy(&bad.stderr).contains("power of two"));
 }
+
+/// `hycon bench skip` prints its five rows with finite, positive times (timings are printed,
+/// never compared).
+#[test]
+fn bench_skip_prints_the_table() {
+    let out = hycon(&["bench", "skip", "--n", "4", "--repeats", "1"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let rows: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| skipped"))
+        .collect();
+    assert_eq!(rows.len(), 5, "{text}");
+    for row in rows {
+        let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+        for cell in &cells[2..4] {
+            let t: f64 = cell.parse().unwrap_or_else(|_| panic!("{row}"));
+            assert!(t.is_finite() && t > 0.0, "{row}");
+        }
+    }
+}
