@@ -367,6 +367,18 @@ int main(int argc, char **argv) {
                               NULL));
     CHECK(hycon_host_set_csr(host_csr, row_ptr, columns, (const double *)kff->x,
                              HYCON_CSR_LOWER));
+    { /* the host's elements (as hycon's Q4), so that hycon also gives the tractions from the
+       * element stresses, way (a); here every element, with every node's equations */
+        size_t *ids = xcalloc(m.n_nodes, sizeof *ids);
+        int64_t *node_eq = xcalloc(2 * m.n_nodes, sizeof *node_eq);
+        for (k = 0; k < m.n_nodes; ++k) ids[k] = k;
+        for (k = 0; k < 2 * m.n_nodes; ++k) node_eq[k] = eq[k] < 0 ? HYCON_FIXED : eq[k];
+        CHECK(hycon_host_set_elements(host_csr, HYCON_ELEMENT_Q4, materials, 2, m.materials,
+                                      m.offsets, m.nodes, m.n_elements, ids, m.coords, node_eq,
+                                      m.n_nodes));
+        free(ids);
+        free(node_eq);
+    }
     CHECK(hycon_contact_new_host(&c_csr, host_csr, &options));
     hycon_host_free(host_csr);
     free(row_ptr);
@@ -427,6 +439,26 @@ int main(int argc, char **argv) {
         printf("  differences from the model API:\n");
         failures += compare("callback (CHOLMOD)", &m, &s_cb, &s_model, tolerance);
         failures += compare("CSR (hycon factors)", &m, &s_csr, &s_model, tolerance);
+        { /* way (a), tractions from element stresses: the CSR host (its elements handed over)
+           * against the model API */
+            double *ta = xcalloc(2 * m.n_a, sizeof *ta), *tb = xcalloc(2 * m.n_a, sizeof *tb);
+            double peak = 0.0, diff = 0.0;
+            CHECK(hycon_contact_stress_tractions(c_csr, 0, ta, 2 * m.n_a));
+            CHECK(hycon_contact_stress_tractions(c_model, 0, tb, 2 * m.n_a));
+            for (k = 0; k < 2 * m.n_a; ++k) {
+                peak = fmax(peak, fabs(tb[k]));
+                diff = fmax(diff, fabs(ta[k] - tb[k]));
+            }
+            printf("    element-stress tractions (CSR host with its elements): %.1e of the peak\n",
+                   peak > 0.0 ? diff / peak : 1.0);
+            if (!(peak > 0.0) || diff > tolerance * peak) {
+                printf("wrong value: element-stress tractions of the host differ from the "
+                       "model's\n");
+                ++failures;
+            }
+            free(ta);
+            free(tb);
+        }
         {
             /* Hertz, for information: Q4 on this mesh, multipliers and B side */
             HyconBNodeResult *bn = xcalloc(m.n_b, sizeof *bn);

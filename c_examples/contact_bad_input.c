@@ -1942,9 +1942,9 @@ static bool test_host_increment_bad_input(void) {
     ok = ok && STATUS_FN(hycon_contact_displacement, (c, buf, host.n - 1),
                          HYCON_ERROR_BUFFER_TOO_SMALL, part);
     ok = ok && untouched(buf, NDOF);
-    /* tractions from element stresses need hycon's elements */
+    /* tractions from element stresses need the elements of body A (none handed over) */
     ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, buf, 2 * NA),
-                         HYCON_ERROR_INVALID_ARGUMENT, "hycon's elements");
+                         HYCON_ERROR_INVALID_ARGUMENT, "elements of body A");
     ok = ok && untouched(buf, NDOF);
     hycon_contact_free(c);
     return ok;

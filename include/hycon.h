@@ -596,6 +596,31 @@ HyconStatus hycon_host_set_csr(struct HyconHost *host,
 // `host` must be a live handle; `solve` a valid function as documented.
 HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, void *user_data);
 
+// Optionally hand over the elements of body A along the A polylines (at least those owning an
+// A segment), so that `hycon_contact_stress_tractions` can recover the tractions from their
+// stresses (the paper's way (a)) from the host's displacements. The elements must be hycon
+// element formulations (`kind`), counter-clockwise, in compressed form as in
+// `hycon_model_new` (`element_offsets` has `n_elements + 1` entries, `element_materials`
+// `n_elements` indices into `materials` or NULL for all 0), with node ids of the host's
+// numbering; the node table gives, for each of the `n_nodes` nodes they use, its id
+// (`node_ids`), reference coordinates (`coords`, 2 per node) and equations (`equations`, 2 per
+// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements.
+//
+// # Safety
+// `host` must be a live handle; every array NULL or holding the stated number of values.
+HyconStatus hycon_host_set_elements(struct HyconHost *host,
+                                    HyconElementKind kind,
+                                    const struct HyconMaterial *materials,
+                                    size_t n_materials,
+                                    const size_t *element_materials,
+                                    const size_t *element_offsets,
+                                    const size_t *element_nodes,
+                                    size_t n_elements,
+                                    const size_t *node_ids,
+                                    const double *coords,
+                                    const int64_t *equations,
+                                    size_t n_nodes);
+
 // Start a contact analysis of a host's system: factor its CSR matrix once (the contact
 // equations last) and read the flexibility off the factor, or build the flexibility from
 // batched solves through its callback. `options` NULL means the defaults.
@@ -728,9 +753,10 @@ HyconStatus hycon_contact_b_node_results(const struct HyconContact *contact,
                                          struct HyconBNodeResult *out,
                                          size_t len);
 
-// Tractions way (a), from the element stresses of body A (model API only: a host has its own
-// elements): `tn ts` per A node of `pair` in its nodal frame, `2 * n_a` doubles. Costs the
-// displacement recovery (one solve) if not done yet.
+// Tractions way (a), from the element stresses of body A: `tn ts` per A node of `pair` in its
+// nodal frame, `2 * n_a` doubles. Model API; host API when the host handed over the elements
+// along A (`hycon_host_set_elements`). Costs the displacement recovery (one solve) if not done
+// yet.
 //
 // # Safety
 // `contact` must be a live handle; `out` NULL or `len` writable doubles.

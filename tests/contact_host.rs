@@ -10,7 +10,9 @@
 //! 1000 so that any mix-up of numberings shows).
 
 use hycon::assembly::{DofMap, SparsePattern, dof};
-use hycon::contact::bodies::{Csr, HostNode, HostSolve, HostStiffness, HostSystem, Triangle};
+use hycon::contact::bodies::{
+    Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
+};
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, NodeResult};
 use hycon::contact::scene::{DiskOnBlock, Scene};
 use hycon::model::Model;
@@ -46,6 +48,25 @@ impl HostSide {
             columns: m.symbolic().row_idx().to_vec(),
             values: m.val().to_vec(),
             triangle: Triangle::Upper,
+        }
+    }
+
+    /// Every element of the model, in the host's numbering (ids shifted), for stress recovery.
+    fn elements(&self, model: &Model) -> HostElements {
+        let mesh = &model.mesh;
+        HostElements {
+            formulation: model.formulation,
+            materials: model.materials.clone(),
+            element_material: mesh.element_material.clone(),
+            offsets: mesh.element_offsets.clone(),
+            nodes: mesh.element_nodes.iter().map(|n| n + SHIFT).collect(),
+            node_table: (0..mesh.n_nodes())
+                .map(|n| HostNode {
+                    id: n + SHIFT,
+                    position: mesh.nodes[n],
+                    equations: [self.dofs.equation(dof(n, 0)), self.dofs.equation(dof(n, 1))],
+                })
+                .collect(),
         }
     }
 
@@ -97,6 +118,7 @@ impl HostSide {
             equations: self.dofs.n_free(),
             nodes,
             stiffness,
+            elements: None,
         }
     }
 }
@@ -334,4 +356,39 @@ fn displacement_increment_is_the_difference_of_totals() {
         }
         previous = total;
     }
+}
+
+/// Tractions from element stresses (way (a)) on the host path, with the elements handed over,
+/// equal the model path's; without the elements they are an error that says what is missing.
+#[test]
+fn host_stress_tractions_match_the_model_path() {
+    let scene = scene();
+    let model = &scene.model;
+    let host = HostSide::new(model);
+    let options = ContactOptions::default();
+    let mut reference = scene.analysis(options).unwrap();
+    let mut system = host.system(model, &scene.pair, HostStiffness::Csr(host.csr()));
+    system.elements = Some(host.elements(model));
+    let mut analysis = ContactAnalysis::host(system, vec![shifted(&scene.pair)], options).unwrap();
+    let qp = scene.prescribed(scene.half_width.powi(2) / scene.radius, 0.0);
+    reference
+        .increment(&vec![0.0; 2 * model.mesh.n_nodes()], &qp)
+        .unwrap();
+    analysis.increment(&host.rhs(model, &qp), &[]).unwrap();
+    let a = reference.stress_tractions(0).unwrap();
+    let b = analysis.stress_tractions(0).unwrap();
+    let peak = a.iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
+    assert!(peak > 0.0);
+    for (x, y) in a.iter().zip(&b) {
+        assert!((x.0 - y.0).abs() <= 1e-9 * peak && (x.1 - y.1).abs() <= 1e-9 * peak);
+    }
+    let mut bare = ContactAnalysis::host(
+        host.system(model, &scene.pair, HostStiffness::Csr(host.csr())),
+        vec![shifted(&scene.pair)],
+        options,
+    )
+    .unwrap();
+    bare.increment(&host.rhs(model, &qp), &[]).unwrap();
+    let err = bare.stress_tractions(0).unwrap_err();
+    assert!(err.to_string().contains("elements of body A"), "{err}");
 }

@@ -16,7 +16,9 @@
 //! model (`f` external forces, `qp` prescribed values), or the host's `n` equations (`f` its
 //! right-hand side, which already holds the effect of its prescribed displacements; no `qp`).
 
+use crate::element::Formulation;
 use crate::error::{Error, Result};
+use crate::material::Material;
 use crate::model::{LinearSystem, Model};
 use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
@@ -190,6 +192,84 @@ pub struct HostSystem {
     pub nodes: Vec<HostNode>,
     /// The stiffness over the `n` equations.
     pub stiffness: HostStiffness,
+    /// Optionally, the elements along the A polylines, for tractions from element stresses.
+    pub elements: Option<HostElements>,
+}
+
+/// Elements of a host along its A polylines (those owning the A segments), with hycon's element
+/// formulations, so that hycon can recover the tractions from the element stresses (the
+/// paper's way (a)) from the host's displacements.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HostElements {
+    /// The elements' formulation.
+    pub formulation: Formulation,
+    /// Materials.
+    pub materials: Vec<Material>,
+    /// Material of each element.
+    pub element_material: Vec<usize>,
+    /// Element `e` has the node ids `nodes[offsets[e]..offsets[e + 1]]` (host numbering,
+    /// counter-clockwise).
+    pub offsets: Vec<usize>,
+    /// Node ids of the elements.
+    pub nodes: Vec<usize>,
+    /// Every node the elements use: id, reference position, equations.
+    pub node_table: Vec<HostNode>,
+}
+
+/// Check host elements as [`ContactAnalysis::host`](super::iteration::ContactAnalysis::host)
+/// will: ids, equations, element shapes.
+pub fn check_elements(elements: &HostElements, n_equations: usize) -> Result<()> {
+    ElementPatch::new(elements.clone(), n_equations).map(|_| ())
+}
+
+/// Host elements ready for stress recovery: a model in a local numbering, the equations of its
+/// nodes and the map from host ids.
+struct ElementPatch {
+    model: Model,
+    equations: Vec<[Option<usize>; 2]>,
+    local: std::collections::HashMap<usize, usize>,
+}
+
+impl ElementPatch {
+    fn new(e: HostElements, n_equations: usize) -> Result<Self> {
+        let mut local = std::collections::HashMap::new();
+        let mut mesh = crate::mesh::Mesh::new();
+        let mut equations = Vec::new();
+        for node in &e.node_table {
+            if local.insert(node.id, mesh.n_nodes()).is_some() {
+                return Err(Error::InvalidInput(format!(
+                    "element node {} is listed twice",
+                    node.id
+                )));
+            }
+            if let Some(eq) = node.equations.iter().flatten().find(|&&q| q >= n_equations) {
+                return Err(Error::InvalidInput(format!(
+                    "element node {}: equation {eq} is out of range (n = {n_equations})",
+                    node.id
+                )));
+            }
+            mesh.push_node(node.position);
+            equations.push(node.equations);
+        }
+        mesh.element_offsets = e.offsets;
+        mesh.element_nodes = e
+            .nodes
+            .iter()
+            .map(|id| {
+                local.get(id).copied().ok_or_else(|| {
+                    Error::InvalidInput(format!("element node {id} is not in the node table"))
+                })
+            })
+            .collect::<Result<_>>()?;
+        mesh.element_material = e.element_material;
+        let model = Model::new(mesh, e.materials, e.formulation);
+        model.validate()?;
+        Ok(ElementPatch {
+            model,
+            equations,
+            local,
+        })
+    }
 }
 
 /// The host's system after setup: nodes renumbered `0..m` (local ids) in `nodes` order.
@@ -198,6 +278,7 @@ struct Host {
     nodes: Vec<HostNode>,
     positions: Vec<[f64; 2]>,
     solver: HostSolver,
+    elements: Option<ElementPatch>,
 }
 
 enum HostSolver {
@@ -257,7 +338,11 @@ impl Bodies {
             equations,
             nodes,
             stiffness,
+            elements,
         } = system;
+        let elements = elements
+            .map(|e| ElementPatch::new(e, equations))
+            .transpose()?;
         let mut seen_ids = std::collections::HashSet::new();
         let mut seen_eqs = std::collections::HashSet::new();
         for node in &nodes {
@@ -309,6 +394,7 @@ impl Bodies {
             nodes,
             positions,
             solver,
+            elements,
         })))
     }
 
@@ -367,6 +453,40 @@ impl Bodies {
         match &self.0 {
             Kind::Model { model, .. } => Some(model),
             Kind::Host(_) => None,
+        }
+    }
+
+    /// Whether [`elements`](Self::elements) has elements to offer.
+    pub fn has_elements(&self) -> bool {
+        match &self.0 {
+            Kind::Model { .. } => true,
+            Kind::Host(h) => h.elements.is_some(),
+        }
+    }
+
+    /// The elements for stress recovery with the displacement of `field` in their numbering,
+    /// and the translation of a node id of the iteration into theirs: hycon's model (identity),
+    /// or the elements a host handed over (`None` if it did not).
+    #[allow(clippy::type_complexity)]
+    pub fn elements(
+        &self,
+        field: &[f64],
+    ) -> Option<(&Model, Vec<f64>, Box<dyn Fn(usize) -> Option<usize> + '_>)> {
+        match &self.0 {
+            Kind::Model { model, .. } => Some((model, field.to_vec(), Box::new(Some))),
+            Kind::Host(h) => {
+                let patch = h.elements.as_ref()?;
+                let q = patch
+                    .equations
+                    .iter()
+                    .flat_map(|eq| eq.map(|e| e.map_or(0.0, |i| field[i])))
+                    .collect();
+                let map = move |n: usize| {
+                    let id = h.nodes.get(n)?.id;
+                    patch.local.get(&id).copied()
+                };
+                Some((&patch.model, q, Box::new(map)))
+            }
         }
     }
 

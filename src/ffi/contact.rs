@@ -17,7 +17,9 @@
 //! stated per handle type in the header.
 
 use super::*;
-use crate::contact::bodies::{Csr, HostNode, HostSolve, HostStiffness, HostSystem, Triangle};
+use crate::contact::bodies::{
+    Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
+};
 use crate::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, IterationRecord, Monitor, NodeState, PlateControl,
 };
@@ -302,6 +304,7 @@ pub struct HyconHost {
     nodes: Vec<HostNode>,
     pairs: Vec<ContactPair>,
     stiffness: Option<HostSource>,
+    elements: Option<HostElements>,
 }
 
 enum HostSource {
@@ -936,6 +939,7 @@ pub unsafe extern "C" fn hycon_host_new(
                     nodes: Vec::new(),
                     pairs: Vec::new(),
                     stiffness: None,
+                    elements: None,
                 },
             )
         }
@@ -1156,6 +1160,111 @@ pub unsafe extern "C" fn hycon_host_set_solver(
     })
 }
 
+/// Optionally hand over the elements of body A along the A polylines (at least those owning an
+/// A segment), so that `hycon_contact_stress_tractions` can recover the tractions from their
+/// stresses (the paper's way (a)) from the host's displacements. The elements must be hycon
+/// element formulations (`kind`), counter-clockwise, in compressed form as in
+/// `hycon_model_new` (`element_offsets` has `n_elements + 1` entries, `element_materials`
+/// `n_elements` indices into `materials` or NULL for all 0), with node ids of the host's
+/// numbering; the node table gives, for each of the `n_nodes` nodes they use, its id
+/// (`node_ids`), reference coordinates (`coords`, 2 per node) and equations (`equations`, 2 per
+/// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements.
+///
+/// # Safety
+/// `host` must be a live handle; every array NULL or holding the stated number of values.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn hycon_host_set_elements(
+    host: *mut HyconHost,
+    kind: HyconElementKind,
+    materials: *const HyconMaterial,
+    n_materials: usize,
+    element_materials: *const usize,
+    element_offsets: *const usize,
+    element_nodes: *const usize,
+    n_elements: usize,
+    node_ids: *const usize,
+    coords: *const f64,
+    equations: *const i64,
+    n_nodes: usize,
+) -> HyconStatus {
+    boundary("hycon_host_set_elements", || {
+        // SAFETY (all reads): the caller's contract.
+        let h = unsafe { handle_mut(host, "host")? };
+        let formulation = formulation(kind)?;
+        if n_elements == 0 || n_nodes == 0 || n_materials == 0 {
+            return Err(Fail::invalid(format!(
+                "elements need nodes, elements and materials (got {n_nodes}, {n_elements}, \
+                 {n_materials})"
+            )));
+        }
+        let mats = unsafe { slice(materials, n_materials, "materials")? };
+        let mats = mats
+            .iter()
+            .map(|m| unsafe { read_material(m) })
+            .collect::<Result<Vec<_>, _>>()?;
+        let n_offsets = length(n_elements, 1, 1, "n_elements")?;
+        let offsets = unsafe { slice(element_offsets, n_offsets, "element_offsets")? };
+        if offsets[0] != 0 || offsets.windows(2).any(|w| w[1] < w[0]) {
+            return Err(Fail::invalid(
+                "element_offsets must start at 0 and be nondecreasing",
+            ));
+        }
+        let connectivity = unsafe { slice(element_nodes, offsets[n_elements], "element_nodes")? };
+        let element_material = if element_materials.is_null() {
+            vec![0; n_elements]
+        } else {
+            unsafe { slice(element_materials, n_elements, "element_materials")? }.to_vec()
+        };
+        if let Some(m) = element_material.iter().find(|&&m| m >= n_materials) {
+            return Err(Fail::invalid(format!(
+                "material index {m} is out of range ({n_materials} materials)"
+            )));
+        }
+        let ids = unsafe { slice(node_ids, n_nodes, "node_ids")? };
+        let per_node = length(n_nodes, 2, 0, "n_nodes")?;
+        let xy = unsafe { doubles(coords, per_node, "coords")? };
+        let eqs = unsafe { slice(equations, per_node, "equations")? };
+        let node_table = ids
+            .iter()
+            .enumerate()
+            .map(|(i, &id)| {
+                let mut equations = [None; 2];
+                for (d, e) in equations.iter_mut().enumerate() {
+                    *e = match eqs[2 * i + d] {
+                        HYCON_FIXED => None,
+                        r if r >= 0 && (r as u64) < h.equations as u64 => Some(r as usize),
+                        r => {
+                            return Err(Fail::invalid(format!(
+                                "element node {id}: equation {r} is out of range (0..{} or \
+                                 HYCON_FIXED)",
+                                h.equations
+                            )));
+                        }
+                    };
+                }
+                Ok(HostNode {
+                    id,
+                    position: [xy[2 * i], xy[2 * i + 1]],
+                    equations,
+                })
+            })
+            .collect::<Result<Vec<_>, Fail>>()?;
+        let elements = HostElements {
+            formulation,
+            materials: mats,
+            element_material,
+            offsets: offsets.to_vec(),
+            nodes: connectivity.to_vec(),
+            node_table,
+        };
+        // check now (shapes, ids), so that errors come from this call
+        crate::contact::bodies::check_elements(&elements, h.equations)?;
+        h.elements = Some(elements);
+        Ok(())
+    })
+}
+
 /// Start a contact analysis of a host's system: factor its CSR matrix once (the contact
 /// equations last) and read the flexibility off the factor, or build the flexibility from
 /// batched solves through its callback. `options` NULL means the defaults.
@@ -1199,6 +1308,7 @@ pub unsafe extern "C" fn hycon_contact_new_host(
             equations: h.equations,
             nodes: h.nodes.clone(),
             stiffness,
+            elements: h.elements.clone(),
         };
         let mut analysis = ContactAnalysis::host(system, h.pairs.clone(), opts)?;
         analysis.set_monitor(monitor);
@@ -1514,9 +1624,10 @@ pub unsafe extern "C" fn hycon_contact_b_node_results(
     })
 }
 
-/// Tractions way (a), from the element stresses of body A (model API only: a host has its own
-/// elements): `tn ts` per A node of `pair` in its nodal frame, `2 * n_a` doubles. Costs the
-/// displacement recovery (one solve) if not done yet.
+/// Tractions way (a), from the element stresses of body A: `tn ts` per A node of `pair` in its
+/// nodal frame, `2 * n_a` doubles. Model API; host API when the host handed over the elements
+/// along A (`hycon_host_set_elements`). Costs the displacement recovery (one solve) if not done
+/// yet.
 ///
 /// # Safety
 /// `contact` must be a live handle; `out` NULL or `len` writable doubles.

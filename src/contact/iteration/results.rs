@@ -86,16 +86,31 @@ impl ContactAnalysis {
     /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
     /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
     pub fn stress_tractions(&mut self, p: usize) -> Result<Vec<(f64, f64)>> {
-        if self.bodies.as_model().is_none() {
-            return Err(Error::InvalidInput(
-                "tractions from element stresses need hycon's elements: a host computes sigma n \
-                 from its own element stresses (the model API provides them)"
-                    .into(),
-            ));
-        }
         let frames = self.node_results(p)?;
-        let q = self.displacement()?.to_vec();
-        let model = self.model()?;
+        let missing = || {
+            Error::InvalidInput(
+                "tractions from element stresses need the elements of body A: a host hands them \
+                 over with hycon_host_set_elements (HostSystem::elements in Rust)"
+                    .into(),
+            )
+        };
+        if !self.bodies.has_elements() {
+            return Err(missing());
+        }
+        let field = self.displacement()?.to_vec();
+        let (model, q, local) = self.bodies.elements(&field).ok_or_else(missing)?;
+        let a = self.pairs[p]
+            .a
+            .iter()
+            .map(|&n| {
+                local(n).ok_or_else(|| {
+                    Error::InvalidInput(format!(
+                        "A node {} belongs to none of the elements handed over",
+                        self.bodies.external(n)
+                    ))
+                })
+            })
+            .collect::<Result<Vec<usize>>>()?;
         let mut edges = std::collections::HashMap::new();
         for e in 0..model.mesh.n_elements() {
             let nodes = model.mesh.element(e);
@@ -104,13 +119,14 @@ impl ContactAnalysis {
             }
         }
         let solution = crate::model::Solution { q };
-        let a = &self.pairs[p].a;
         let mut sums = vec![([0.0; 2], 0.0); a.len()];
         for (k, w) in a.windows(2).enumerate() {
             let &(e, edge) = edges.get(&(w[0], w[1])).ok_or_else(|| {
+                let pair = &self.pairs[p].a;
                 Error::InvalidInput(format!(
                     "A segment {} -> {} is not an element edge with its body on the left",
-                    w[0], w[1]
+                    self.bodies.external(pair[k]),
+                    self.bodies.external(pair[k + 1])
                 ))
             })?;
             let field = solution.stress_field(model, e)?;
