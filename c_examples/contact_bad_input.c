@@ -1783,6 +1783,44 @@ static bool test_host_set_csr_bad_input(void) {
     return ok;
 }
 
+static bool test_host_set_elements_bad_input(void) {
+    HyconHost *d = make_host(&host);
+    const HyconMaterial mat = {1.0, 0.3, 1.0, HYCON_PLANE_STRAIN};
+    const size_t offsets[2] = {0, 4}, ccw[4] = {100, 101, 102, 103}, cw[4] = {100, 103, 102, 101};
+    const size_t unknown[4] = {100, 101, 102, 999}, ids[4] = {100, 101, 102, 103};
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    int64_t eqs[8] = {HYCON_FIXED, HYCON_FIXED, HYCON_FIXED, HYCON_FIXED,
+                      HYCON_FIXED, HYCON_FIXED, HYCON_FIXED, HYCON_FIXED};
+    bool ok = true;
+    EXPECT(d != NULL);
+#define BAD_EL(args, status, part) \
+    ok = ok && STATUS_FN(hycon_host_set_elements, args, status, part)
+    BAD_EL((NULL, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+           HYCON_ERROR_NULL_POINTER, "host is NULL");
+    BAD_EL((d, 0, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4), HYCON_ERROR_INVALID_ARGUMENT,
+           "unknown element kind");
+    BAD_EL((d, HYCON_ELEMENT_Q4, NULL, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+           HYCON_ERROR_NULL_POINTER, "materials is NULL");
+    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, unknown, 1, ids, xy, eqs, 4),
+           HYCON_ERROR_INVALID_ARGUMENT, "not in the node table");
+    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, cw, 1, ids, xy, eqs, 4),
+           HYCON_ERROR_BAD_ELEMENT, "inverted");
+    eqs[3] = (int64_t)host.n + 5;
+    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+           HYCON_ERROR_INVALID_ARGUMENT, "out of range");
+    eqs[3] = HYCON_FIXED;
+    xy[5] = NAN;
+    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+           HYCON_ERROR_INVALID_ARGUMENT, "not finite");
+    xy[5] = 1.0;
+#undef BAD_EL
+    ok = ok && STATUS(hycon_host_set_elements(d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1,
+                                              ids, xy, eqs, 4),
+                      HYCON_OK, NULL);
+    hycon_host_free(d);
+    return ok;
+}
+
 static bool test_host_set_solver_null(void) {
     HyconHost *d = make_host(&host);
     bool ok = true;
@@ -2034,6 +2072,7 @@ int main(void) {
         {"host_add_pair_unknown_ids", test_host_add_pair_unknown_ids},
         {"host_add_pair_bad_friction", test_host_add_pair_bad_friction},
         {"host_set_csr_bad_input", test_host_set_csr_bad_input},
+        {"host_set_elements_bad_input", test_host_set_elements_bad_input},
         {"host_set_solver_null", test_host_set_solver_null},
         {"contact_new_host_bad_input", test_contact_new_host_bad_input},
         {"contact_new_host_singular_csr", test_contact_new_host_singular_csr},
