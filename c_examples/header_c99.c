@@ -147,6 +147,11 @@ static HyconStatus (*const fn_host_set_csr)(HyconHost *, const size_t *, const s
                                             const double *, HyconTriangle) = hycon_host_set_csr;
 static HyconStatus (*const fn_host_set_solver)(HyconHost *, HyconSolveFn, void *) =
     hycon_host_set_solver;
+static HyconStatus (*const fn_host_set_elements)(HyconHost *, HyconElementKind,
+                                                 const HyconMaterial *, size_t, const size_t *,
+                                                 const size_t *, const size_t *, size_t,
+                                                 const size_t *, const double *, const int64_t *,
+                                                 size_t) = hycon_host_set_elements;
 static HyconStatus (*const fn_contact_new_host)(HyconContact **, const HyconHost *,
                                                 const HyconContactOptions *) =
     hycon_contact_new_host;
@@ -216,7 +221,8 @@ int main(void) {
         (any_function)fn_model_prescribe, (any_function)fn_model_add_pair,
         (any_function)fn_model_set_plate, (any_function)fn_contact_new, (any_function)fn_host_new,
         (any_function)fn_host_free, (any_function)fn_host_add_pair, (any_function)fn_host_set_csr,
-        (any_function)fn_host_set_solver, (any_function)fn_contact_new_host,
+        (any_function)fn_host_set_solver, (any_function)fn_host_set_elements,
+        (any_function)fn_contact_new_host,
         (any_function)fn_contact_free, (any_function)fn_field_len, (any_function)fn_increment,
         (any_function)fn_increment_plate, (any_function)fn_plate, (any_function)fn_displacement,
         (any_function)fn_displacement_increment, (any_function)fn_forces,
