@@ -380,6 +380,30 @@ class Host {
             hycon_host_set_csr(get(), row_ptr.data(), columns.data(), values.data(), triangle));
     }
 
+    // The elements of body A along its contact polylines (hycon formulations, counter-clockwise,
+    // host node ids), so that Contact::stress_tractions works on this host: the node table
+    // gives each node's id, coordinates (2 each) and equations (2 each, HYCON_FIXED if held).
+    Status set_elements(HyconElementKind kind, View<HyconMaterial> materials,
+                        View<std::size_t> element_offsets, View<std::size_t> element_nodes,
+                        View<std::size_t> node_ids, View<double> coords,
+                        View<std::int64_t> equations,
+                        View<std::size_t> element_materials = {}) {
+        if (element_offsets.size() < 2)
+            return detail::invalid("element_offsets needs n_elements + 1 >= 2 entries");
+        const std::size_t n_elements = element_offsets.size() - 1;
+        if (element_nodes.size() != element_offsets.back())
+            return detail::invalid("element_nodes must hold element_offsets.back() ids");
+        if (!element_materials.empty() && element_materials.size() != n_elements)
+            return detail::invalid("element_materials must be empty or hold one index per element");
+        if (coords.size() != 2 * node_ids.size() || equations.size() != 2 * node_ids.size())
+            return detail::invalid("coords and equations must hold 2 values per node id");
+        return Status::from(hycon_host_set_elements(
+            get(), kind, materials.data(), materials.size(),
+            element_materials.empty() ? nullptr : element_materials.data(), element_offsets.data(),
+            element_nodes.data(), n_elements, node_ids.data(), coords.data(), equations.data(),
+            node_ids.size()));
+    }
+
     // The host's own solver: `solve(std::size_t n, std::size_t nrhs, const double *rhs,
     // double *x)` solves K x_j = rhs_j for nrhs column-major right-hand sides and returns bool
     // (true: success) or void. Only a pointer to `solve` is kept: it must outlive this Host and
