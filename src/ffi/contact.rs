@@ -589,6 +589,69 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
     Ok((options, monitor))
 }
 
+/// Elements in compressed form with their materials, read from caller arrays and checked
+/// (offsets start at 0 and do not decrease, material indices in range).
+struct ElementArrays {
+    offsets: Vec<usize>,
+    nodes: Vec<usize>,
+    element_material: Vec<usize>,
+    materials: Vec<Material>,
+}
+
+/// Read `n_elements` elements in compressed form (`element_offsets`: `n_elements + 1` entries;
+/// `element_nodes`: `element_offsets[n_elements]` ids; `element_materials`: `n_elements`
+/// indices or NULL for all 0) and `n_materials` materials.
+///
+/// # Safety
+/// Each array must be NULL or hold the stated number of readable values.
+unsafe fn read_elements(
+    element_offsets: *const usize,
+    element_nodes: *const usize,
+    n_elements: usize,
+    element_materials: *const usize,
+    materials: *const HyconMaterial,
+    n_materials: usize,
+) -> Result<ElementArrays, Fail> {
+    if n_elements == 0 || n_materials == 0 {
+        return Err(Fail::invalid(format!(
+            "elements and materials are needed (got {n_elements} and {n_materials})"
+        )));
+    }
+    let n_offsets = length(n_elements, 1, 1, "n_elements")?;
+    // SAFETY (all reads): forwarded contract.
+    let offsets = unsafe { slice(element_offsets, n_offsets, "element_offsets")? };
+    if offsets[0] != 0 || offsets.windows(2).any(|w| w[1] < w[0]) {
+        return Err(Fail::invalid(
+            "element_offsets must start at 0 and be nondecreasing",
+        ));
+    }
+    let nodes = unsafe { slice(element_nodes, offsets[n_elements], "element_nodes")? };
+    let element_material = if element_materials.is_null() {
+        vec![0; n_elements]
+    } else {
+        unsafe { slice(element_materials, n_elements, "element_materials")? }.to_vec()
+    };
+    let materials = unsafe { slice(materials, n_materials, "materials")? }
+        .iter()
+        .map(|m| unsafe { read_material(m) })
+        .collect::<Result<Vec<_>, _>>()?;
+    if let Some((e, &m)) = element_material
+        .iter()
+        .enumerate()
+        .find(|(_, m)| **m >= n_materials)
+    {
+        return Err(Fail::invalid(format!(
+            "element {e} uses material {m}, but there are {n_materials}"
+        )));
+    }
+    Ok(ElementArrays {
+        offsets: offsets.to_vec(),
+        nodes: nodes.to_vec(),
+        element_material,
+        materials,
+    })
+}
+
 /// Read the options argument (NULL: defaults).
 ///
 /// # Safety
@@ -673,49 +736,29 @@ pub unsafe extern "C" fn hycon_model_new(
 ) -> HyconStatus {
     boundary("hycon_model_new", || {
         let formulation = formulation(kind)?;
-        if n_nodes == 0 || n_elements == 0 || n_materials == 0 {
-            return Err(Fail::invalid(format!(
-                "a model needs nodes, elements and materials (got {n_nodes}, {n_elements}, \
-                 {n_materials})"
-            )));
+        if n_nodes == 0 {
+            return Err(Fail::invalid("a model needs nodes (n_nodes = 0)"));
         }
         // SAFETY (all reads below): the caller's contract on the arrays and lengths.
         let xy = unsafe { doubles(coords, length(n_nodes, 2, 0, "n_nodes")?, "coords")? };
-        let n_offsets = length(n_elements, 1, 1, "n_elements")?;
-        let offsets = unsafe { slice(element_offsets, n_offsets, "element_offsets")? };
-        if offsets[0] != 0 || offsets.windows(2).any(|w| w[1] < w[0]) {
-            return Err(Fail::invalid(
-                "element_offsets must start at 0 and be nondecreasing",
-            ));
-        }
-        let connectivity = unsafe { slice(element_nodes, offsets[n_elements], "element_nodes")? };
-        let material_index = if element_materials.is_null() {
-            vec![0; n_elements]
-        } else {
-            unsafe { slice(element_materials, n_elements, "element_materials")? }.to_vec()
+        let elements = unsafe {
+            read_elements(
+                element_offsets,
+                element_nodes,
+                n_elements,
+                element_materials,
+                materials,
+                n_materials,
+            )?
         };
-        let mats = unsafe { slice(materials, n_materials, "materials")? };
-        let mats = mats
-            .iter()
-            .map(|m| unsafe { read_material(m) })
-            .collect::<Result<Vec<_>, _>>()?;
-        if let Some((e, &m)) = material_index
-            .iter()
-            .enumerate()
-            .find(|(_, m)| **m >= n_materials)
-        {
-            return Err(Fail::invalid(format!(
-                "element {e} uses material {m}, but there are {n_materials}"
-            )));
-        }
         let mut mesh = Mesh::new();
         for p in xy.chunks_exact(2) {
             mesh.push_node([p[0], p[1]]);
         }
-        mesh.element_offsets = offsets.to_vec();
-        mesh.element_nodes = connectivity.to_vec();
-        mesh.element_material = material_index;
-        let model = Model::new(mesh, mats, formulation);
+        mesh.element_offsets = elements.offsets;
+        mesh.element_nodes = elements.nodes;
+        mesh.element_material = elements.element_material;
+        let model = Model::new(mesh, elements.materials, formulation);
         model.validate()?;
         // SAFETY: the caller's contract on `out`.
         unsafe {
@@ -1192,35 +1235,19 @@ pub unsafe extern "C" fn hycon_host_set_elements(
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
         let formulation = formulation(kind)?;
-        if n_elements == 0 || n_nodes == 0 || n_materials == 0 {
-            return Err(Fail::invalid(format!(
-                "elements need nodes, elements and materials (got {n_nodes}, {n_elements}, \
-                 {n_materials})"
-            )));
+        if n_nodes == 0 {
+            return Err(Fail::invalid("elements need nodes (n_nodes = 0)"));
         }
-        let mats = unsafe { slice(materials, n_materials, "materials")? };
-        let mats = mats
-            .iter()
-            .map(|m| unsafe { read_material(m) })
-            .collect::<Result<Vec<_>, _>>()?;
-        let n_offsets = length(n_elements, 1, 1, "n_elements")?;
-        let offsets = unsafe { slice(element_offsets, n_offsets, "element_offsets")? };
-        if offsets[0] != 0 || offsets.windows(2).any(|w| w[1] < w[0]) {
-            return Err(Fail::invalid(
-                "element_offsets must start at 0 and be nondecreasing",
-            ));
-        }
-        let connectivity = unsafe { slice(element_nodes, offsets[n_elements], "element_nodes")? };
-        let element_material = if element_materials.is_null() {
-            vec![0; n_elements]
-        } else {
-            unsafe { slice(element_materials, n_elements, "element_materials")? }.to_vec()
+        let elements = unsafe {
+            read_elements(
+                element_offsets,
+                element_nodes,
+                n_elements,
+                element_materials,
+                materials,
+                n_materials,
+            )?
         };
-        if let Some(m) = element_material.iter().find(|&&m| m >= n_materials) {
-            return Err(Fail::invalid(format!(
-                "material index {m} is out of range ({n_materials} materials)"
-            )));
-        }
         let ids = unsafe { slice(node_ids, n_nodes, "node_ids")? };
         let per_node = length(n_nodes, 2, 0, "n_nodes")?;
         let xy = unsafe { doubles(coords, per_node, "coords")? };
@@ -1252,10 +1279,10 @@ pub unsafe extern "C" fn hycon_host_set_elements(
             .collect::<Result<Vec<_>, Fail>>()?;
         let elements = HostElements {
             formulation,
-            materials: mats,
-            element_material,
-            offsets: offsets.to_vec(),
-            nodes: connectivity.to_vec(),
+            materials: elements.materials,
+            element_material: elements.element_material,
+            offsets: elements.offsets,
+            nodes: elements.nodes,
             node_table,
         };
         // check now (shapes, ids), so that errors come from this call
