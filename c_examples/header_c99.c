@@ -22,8 +22,8 @@ HYCON_STATIC_ASSERT(packed_version, HYCON_VERSION == HYCON_VERSION_MAJOR * 10000
                                                         HYCON_VERSION_MINOR * 100 +
                                                         HYCON_VERSION_PATCH);
 
-#if HYCON_VERSION < 100
-#error "this program needs hycon 0.1 or newer"
+#if HYCON_VERSION < 200
+#error "this program needs hycon 0.2 or newer (the contact API)"
 #endif
 
 /* The contact API: the fields of every struct in their documented order (a removed, renamed or

@@ -78,7 +78,7 @@ step "cmake build"
 cmake --build "$build"
 
 step "ctest (C/C++ examples shared + static, valgrind, ASan+UBSan)"
-ctest --test-dir "$build" --output-on-failure
+ctest --test-dir "$build" --output-on-failure -j2
 
 step "cmake install"
 rm -rf "$stage"
