@@ -297,10 +297,10 @@ enum Kind {
     /// hycon's own model and `K_ff`, factored with the contact dofs last.
     Model {
         model: Box<Model>,
-        system: LinearSystem,
+        system: Box<LinearSystem>,
     },
     /// A host's system.
-    Host(Host),
+    Host(Box<Host>),
 }
 
 impl std::fmt::Debug for Bodies {
@@ -327,7 +327,7 @@ impl Bodies {
         let system = LinearSystem::with_trailing_on(&model, trailing, backend)?;
         Ok(Bodies(Kind::Model {
             model: Box::new(model),
-            system,
+            system: Box::new(system),
         }))
     }
 
@@ -389,13 +389,13 @@ impl Bodies {
             HostStiffness::Solver(s) => HostSolver::Callback(s),
         };
         let positions = nodes.iter().map(|n| n.position).collect();
-        Ok(Bodies(Kind::Host(Host {
+        Ok(Bodies(Kind::Host(Box::new(Host {
             equations,
             nodes,
             positions,
             solver,
             elements,
-        })))
+        }))))
     }
 
     /// Translate a node id of the caller's numbering into the iteration's (identity for a
