@@ -111,3 +111,11 @@ cargo fmt --check
 
 step "cargo doc --no-deps"
 RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps
+
+# Last, because it rebuilds target/release/libhycon.* with the feature (the install and the
+# consumers above used the default build).
+step "CMake with -DHYCON_CARGO_FEATURES=suitesparse: the C examples on CHOLMOD (hertz_model_cholmod)"
+cmake -S . -B "$build-suitesparse" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHYCON_CARGO_FEATURES=suitesparse \
+    -DHYCON_SANITIZERS=OFF -DHYCON_VALGRIND=OFF
+cmake --build "$build-suitesparse" --target hycon_cargo hertz_model cholmod_host
+ctest --test-dir "$build-suitesparse" --output-on-failure -R '^(hertz_model|hertz_model_cholmod|cholmod_host)$'
