@@ -1155,10 +1155,16 @@ fn norm1(a: &DMatrix<f64>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Solve `A^T y = b` with the LU factors of `A` (`P A = L U`, so `A^T = U^T L^T P`).
-fn solve_transposed(lu: &LU<f64, Dyn, Dyn>, b: &DVector<f64>) -> Option<DVector<f64>> {
-    let z = lu.u().tr_solve_upper_triangular(b)?;
-    let mut w = lu.l().tr_solve_lower_triangular(&z)?;
+/// Solve `A^T y = b` with the LU factors of `A` (`P A = L U`, so `A^T = U^T L^T P`), `l` and
+/// `u` extracted once by the caller.
+fn solve_transposed(
+    lu: &LU<f64, Dyn, Dyn>,
+    l: &DMatrix<f64>,
+    u: &DMatrix<f64>,
+    b: &DVector<f64>,
+) -> Option<DVector<f64>> {
+    let z = u.tr_solve_upper_triangular(b)?;
+    let mut w = l.tr_solve_lower_triangular(&z)?;
     lu.p().inv_permute_rows(&mut w);
     Some(w)
 }
@@ -1167,7 +1173,8 @@ fn solve_transposed(lu: &LU<f64, Dyn, Dyn>, b: &DVector<f64>) -> Option<DVector<
 /// the LU factors of `A` (a few solves with `A` and `A^T`, Higham's Algorithm 2.1); `None`
 /// when `A` is singular.
 fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<f64> {
-    let m = lu.l().nrows();
+    let (l, u) = (lu.l(), lu.u());
+    let m = l.nrows();
     let norm1 = |v: &DVector<f64>| v.iter().map(|x| x.abs()).sum::<f64>();
     let mut x = DVector::from_element(m, 1.0 / m as f64);
     let mut estimate = 0.0;
@@ -1175,7 +1182,7 @@ fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<f64> {
         let y = lu.solve(&x)?;
         estimate = norm1(&y);
         let sign = y.map(|v| if v >= 0.0 { 1.0 } else { -1.0 });
-        let z = solve_transposed(lu, &sign)?;
+        let z = solve_transposed(lu, &l, &u, &sign)?;
         let j = z.iamax();
         if z[j].abs() <= z.dot(&x) {
             break;

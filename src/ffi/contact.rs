@@ -1566,8 +1566,7 @@ pub unsafe extern "C" fn hycon_contact_pair_size(
     boundary("hycon_contact_pair_size", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let a = c.analysis.node_results(pair)?.len();
-        let b = c.analysis.b_node_results(pair)?.len();
+        let (a, b) = c.analysis.pair_size(pair)?;
         unsafe {
             write_optional(n_a, a);
             write_optional(n_b, b);
@@ -1668,7 +1667,7 @@ pub unsafe extern "C" fn hycon_contact_stress_tractions(
     boundary("hycon_contact_stress_tractions", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
-        let n_a = c.analysis.node_results(pair)?.len();
+        let (n_a, _) = c.analysis.pair_size(pair)?;
         check_output(out, len, 2 * n_a, "out")?;
         let t: Vec<f64> = c
             .analysis

@@ -21,6 +21,11 @@ pub struct ConstraintRows {
 }
 
 impl ContactAnalysis {
+    /// Node counts of the A and B polylines of pair `p`.
+    pub fn pair_size(&self, p: usize) -> Result<(usize, usize)> {
+        self.pair(p).map(|pair| (pair.a.len(), pair.b.len()))
+    }
+
     /// Check a pair index.
     fn pair(&self, p: usize) -> Result<&super::ContactPair> {
         self.pairs.get(p).ok_or_else(|| {
