@@ -900,6 +900,28 @@ static bool test_contact_new_bad_options(void) {
     return ok;
 }
 
+/* Kinematics: 0 (a zero-initialised struct) and unknown values are rejected by name. */
+static bool test_contact_new_unknown_kinematics(void) {
+    HyconModel *m = make_model(HOLD_UPPER | WITH_PAIR);
+    HyconContact *c = MARKER(HyconContact);
+    HyconContactOptions o;
+    const HyconKinematics bad[3] = {0, 3, -1};
+    size_t i;
+    bool ok = true;
+    char part[64];
+    EXPECT(m != NULL);
+    EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
+    EXPECT(o.kinematics == HYCON_KINEMATICS_SMALL);
+    for (i = 0; i < 3; ++i) {
+        o.kinematics = bad[i];
+        sprintf(part, "options.kinematics = %d", (int)bad[i]);
+        ok = ok && STATUS_FN(hycon_contact_new, (&c, m, &o), HYCON_ERROR_INVALID_ARGUMENT, part);
+    }
+    ok = ok && c == MARKER(HyconContact);
+    hycon_model_free(m);
+    return ok;
+}
+
 static bool test_contact_new_unknown_backend(void) {
     HyconModel *m = make_model(HOLD_UPPER | WITH_PAIR);
     HyconContact *c = MARKER(HyconContact);
@@ -2047,6 +2069,7 @@ int main(void) {
         {"contact_new_null_pointers", test_contact_new_null_pointers},
         {"contact_new_bad_options", test_contact_new_bad_options},
         {"contact_new_unknown_backend", test_contact_new_unknown_backend},
+        {"contact_new_unknown_kinematics", test_contact_new_unknown_kinematics},
         {"contact_new_no_pair", test_contact_new_no_pair},
         {"contact_new_unconstrained_body", test_contact_new_unconstrained_body},
         {"lock_rounds_zero_accepted", test_lock_rounds_zero_accepted},

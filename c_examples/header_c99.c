@@ -22,8 +22,8 @@ HYCON_STATIC_ASSERT(packed_version, HYCON_VERSION == HYCON_VERSION_MAJOR * 10000
                                                         HYCON_VERSION_MINOR * 100 +
                                                         HYCON_VERSION_PATCH);
 
-#if HYCON_VERSION < 200
-#error "this program needs hycon 0.2 or newer (the contact API)"
+#if HYCON_VERSION < 300
+#error "this program needs hycon 0.3 or newer (contact kinematics)"
 #endif
 
 /* The contact API: the fields of every struct in their documented order (a removed, renamed or
@@ -49,7 +49,8 @@ HYCON_ORDER(HyconContactOptions, slip_tolerance, search_distance);
 HYCON_ORDER(HyconContactOptions, search_distance, max_iterations);
 HYCON_ORDER(HyconContactOptions, max_iterations, lock_rounds);
 HYCON_ORDER(HyconContactOptions, lock_rounds, backend);
-HYCON_ORDER(HyconContactOptions, backend, monitor);
+HYCON_ORDER(HyconContactOptions, backend, kinematics);
+HYCON_ORDER(HyconContactOptions, kinematics, monitor);
 HYCON_ORDER(HyconContactOptions, monitor, monitor_data);
 HYCON_STATIC_ASSERT(HyconIncrementInfo_first, offsetof(HyconIncrementInfo, increment) == 0);
 HYCON_ORDER(HyconIncrementInfo, increment, iterations);
@@ -87,10 +88,13 @@ HYCON_STATIC_ASSERT(HyconCouplingEntry_first, offsetof(HyconCouplingEntry, row) 
 HYCON_ORDER(HyconCouplingEntry, row, node);
 HYCON_ORDER(HyconCouplingEntry, node, side);
 HYCON_ORDER(HyconCouplingEntry, side, value);
-HYCON_STATIC_ASSERT(enum_sizes, sizeof(HyconBackend) == 4 && sizeof(HyconDirections) == 4 &&
+HYCON_STATIC_ASSERT(enum_sizes, sizeof(HyconBackend) == 4 && sizeof(HyconKinematics) == 4 &&
+                                    sizeof(HyconDirections) == 4 &&
                                     sizeof(HyconNodeState) == 4 && sizeof(HyconSide) == 4 &&
                                     sizeof(HyconTriangle) == 4 && sizeof(HyconPlateControl) == 4);
 HYCON_STATIC_ASSERT(constants, HYCON_BACKEND_FAER != HYCON_BACKEND_CHOLMOD &&
+                                   HYCON_KINEMATICS_SMALL > 0 && HYCON_KINEMATICS_FINITE > 0 &&
+                                   HYCON_KINEMATICS_SMALL != HYCON_KINEMATICS_FINITE &&
                                    (HYCON_X | HYCON_Y) == HYCON_XY &&
                                    HYCON_NODE_OPEN != HYCON_NODE_STICK &&
                                    HYCON_NODE_STICK != HYCON_NODE_SLIP &&

@@ -87,6 +87,10 @@ int main() {
     const HyconContactOptions defaults = hycon::default_options();
     expect(defaults.tolerance > 0.0 && defaults.max_iterations > 0 && defaults.monitor == nullptr,
            "default options");
+    expect(defaults.kinematics == HYCON_KINEMATICS_SMALL &&
+               hycon::default_options(HYCON_KINEMATICS_FINITE).kinematics ==
+                   HYCON_KINEMATICS_FINITE,
+           "default kinematics and the kinematics overload");
 
     // ---- errors: the wrapper's own length checks and hycon's messages
     {

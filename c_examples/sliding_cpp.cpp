@@ -237,7 +237,8 @@ int main(int argc, char **argv) {
         counters.worst_iteration = std::max(counters.worst_iteration, std::size_t(r.iteration));
         return true;  // go on
     };
-    HyconContactOptions options = hycon::default_options();
+    // the disk slides over many elements: finite kinematics
+    HyconContactOptions options = hycon::default_options(HYCON_KINEMATICS_FINITE);
     options.tolerance = 1e-10;
     hycon::set_monitor(options, monitor);
     hycon::Contact contact = take(hycon::Contact::create(model, options), "Contact::create");

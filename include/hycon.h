@@ -52,13 +52,13 @@
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 2
+#define HYCON_VERSION_MINOR 3
 
 // Patch version of the library this header belongs to.
 #define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 200
+#define HYCON_VERSION 300
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6
@@ -95,6 +95,9 @@ typedef int32_t HyconStatus;
 
 // Sparse Cholesky library that factors `K`, one of `HYCON_BACKEND_*`.
 typedef int32_t HyconBackend;
+
+// Contact kinematics, one of `HYCON_KINEMATICS_*`.
+typedef int32_t HyconKinematics;
 
 // What happened in one iteration of the contact search (also passed to the monitor).
 typedef struct HyconIterationRecord {
@@ -149,6 +152,9 @@ typedef struct HyconContactOptions {
     // `HYCON_BACKEND_CHOLMOD` fails with `HYCON_ERROR_SOLVER` unless hycon was built with the
     // `suitesparse` feature).
     HyconBackend backend;
+    // Contact kinematics (default `HYCON_KINEMATICS_SMALL`; `HYCON_KINEMATICS_FINITE` for
+    // extensive sliding).
+    HyconKinematics kinematics;
     // Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
     HyconMonitorFn monitor;
     // Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.
@@ -364,6 +370,16 @@ typedef struct HyconCouplingEntry {
 
 // CHOLMOD from SuiteSparse (only when hycon was built with the `suitesparse` feature).
 #define HYCON_BACKEND_CHOLMOD 2
+
+// Small deformation (the default): the pairing, frames, weights and contact-element matrices
+// are evaluated once in the reference configuration and the gap is linear in the
+// displacements, consistent with small-strain elasticity (Hertz, Cattaneo-Mindlin); valid
+// while the surfaces slide by a small fraction of an element.
+#define HYCON_KINEMATICS_SMALL 1
+
+// Finite kinematics: the contact geometry is evaluated at the current positions in every
+// iteration; for surfaces that slide far along each other.
+#define HYCON_KINEMATICS_FINITE 2
 
 // x only.
 #define HYCON_X 1

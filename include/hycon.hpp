@@ -183,6 +183,14 @@ inline HyconContactOptions default_options() noexcept {
     return options;
 }
 
+// The default contact options with the given kinematics: HYCON_KINEMATICS_SMALL (the
+// default: geometry evaluated once, linear gap) or HYCON_KINEMATICS_FINITE (extensive sliding).
+inline HyconContactOptions default_options(HyconKinematics kinematics) noexcept {
+    HyconContactOptions options = default_options();
+    options.kinematics = kinematics;
+    return options;
+}
+
 // Check one element's shape for a formulation (`coords`: x0 y0 x1 y1 ..., counter-clockwise).
 inline Status element_check(HyconElementKind kind, View<double> coords) {
     if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");

@@ -4,6 +4,7 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use hycon::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
 use hycon::contact::examples::{self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase};
+use hycon::contact::iteration::Kinematics;
 use hycon::element::Formulation;
 use hycon::material::Analysis;
 use hycon::report;
@@ -54,6 +55,13 @@ enum Command {
         /// Displacement increments up to the calibrated approach.
         #[arg(long, default_value_t = 3)]
         increments: usize,
+        /// Contact kinematics: small (linear gap, geometry evaluated once; Hertz theory's
+        /// problem) or finite (geometry at the current positions).
+        #[arg(long, value_enum, default_value_t = KinematicsChoice::Small)]
+        kinematics: KinematicsChoice,
+        /// R / a of the scene (a power of two; 64 is the reference scene).
+        #[arg(long, default_value_t = 64)]
+        r_over_a: usize,
         #[command(flatten)]
         output: Output,
     },
@@ -71,6 +79,10 @@ enum Command {
         /// Sliding distance, in contact half-widths a.
         #[arg(long, default_value_t = 2.0)]
         distance: f64,
+        /// Contact kinematics: finite (the disk slides over many elements) or small (valid
+        /// only for slides much shorter than an element).
+        #[arg(long, value_enum, default_value_t = KinematicsChoice::Finite)]
+        kinematics: KinematicsChoice,
         #[command(flatten)]
         output: Output,
     },
@@ -89,6 +101,9 @@ enum Command {
         /// Stop once Q/(mu P) has passed this value.
         #[arg(long, default_value_t = 0.75)]
         target: f64,
+        /// Contact kinematics: small (the theory's linearized problem) or finite.
+        #[arg(long, value_enum, default_value_t = KinematicsChoice::Small)]
+        kinematics: KinematicsChoice,
         #[command(flatten)]
         output: Output,
     },
@@ -271,6 +286,25 @@ enum Bench {
     },
 }
 
+/// `--kinematics`.
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum KinematicsChoice {
+    /// Small deformation: pairing and contact matrices from the reference configuration,
+    /// linear gap.
+    Small,
+    /// Finite kinematics: geometry at the current positions in every iteration.
+    Finite,
+}
+
+impl From<KinematicsChoice> for Kinematics {
+    fn from(k: KinematicsChoice) -> Self {
+        match k {
+            KinematicsChoice::Small => Kinematics::Small,
+            KinematicsChoice::Finite => Kinematics::Finite,
+        }
+    }
+}
+
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum BackendChoice {
     Faer,
@@ -347,6 +381,8 @@ pub fn main() -> ExitCode {
             n,
             modulus_ratio,
             increments,
+            kinematics,
+            r_over_a,
             output,
         } => single(output, &contact_dir(), |progress| {
             examples::hertz(
@@ -354,6 +390,8 @@ pub fn main() -> ExitCode {
                     n,
                     modulus_ratios: modulus_ratio,
                     increments,
+                    kinematics: kinematics.into(),
+                    r_over_a,
                     fields: output.fields(),
                 },
                 progress,
@@ -364,6 +402,7 @@ pub fn main() -> ExitCode {
             friction,
             increments,
             distance,
+            kinematics,
             output,
         } => single(output, &contact_dir(), |progress| {
             examples::slide(
@@ -372,6 +411,7 @@ pub fn main() -> ExitCode {
                     friction,
                     increments,
                     distance,
+                    kinematics: kinematics.into(),
                     fields: output.fields(),
                 },
                 progress,
@@ -382,6 +422,7 @@ pub fn main() -> ExitCode {
             friction,
             step,
             target,
+            kinematics,
             output,
         } => single(output, &contact_dir(), |progress| {
             examples::cattaneo_mindlin(
@@ -390,6 +431,7 @@ pub fn main() -> ExitCode {
                     friction,
                     step,
                     target,
+                    kinematics: kinematics.into(),
                     fields: output.fields(),
                     ..Default::default()
                 },
@@ -688,6 +730,7 @@ fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
                 increments: 8,
                 distance: 2.0,
                 fields: output.fields(),
+                ..Default::default()
             },
             Some(&mut progress),
         )?,
@@ -698,6 +741,7 @@ fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
                 increments: 8,
                 distance: 2.0,
                 fields: output.fields(),
+                ..Default::default()
             },
             Some(&mut progress),
         )?,

@@ -31,13 +31,14 @@
 //! pair of meshes. So the discrete solution is the exact one, to round-off, in all three cases
 //! for this flat interface (the side dependence METHOD.md mentions appears where the exact
 //! traction is not in the multiplier space, or with node-to-segment collocation, not here).
-//! One exact, non-round-off factor: the contact tractions are per unit length of the current
-//! interface, which has widened by `eps_x = nu (1 + nu) p / E = 8e-5`, while the line load and
-//! the (small-strain) element stresses are per unit reference length; the contact pressure is
-//! therefore `p / (1 + eps_x)` (compared with `p` it is off by exactly `8e-5`, which is what a
-//! first run showed).
+//! Every case runs with both contact kinematics. Small kinematics: the tractions are per unit
+//! reference length, like the line load and the element stresses, so the contact pressure is
+//! `p` exactly. Finite kinematics: one exact, non-round-off factor: the contact tractions are
+//! per unit length of the current interface, which has widened by
+//! `eps_x = nu (1 + nu) p / E = 8e-5`; the contact pressure is therefore `p / (1 + eps_x)`
+//! (compared with `p` it is off by exactly `8e-5`, which is what a first run showed).
 
-use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair};
+use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
 use hycon::material::{Analysis, Material};
 use hycon::mesh::{Mesh, generate};
@@ -54,7 +55,8 @@ const P: f64 = 1e-3;
 /// stops at `R <= 1e-10`; here `R` falls by 1e-3 .. 1e-4 per iteration once the set is found (the
 /// geometry moves with the `8e-5` widening), final `R` 6e-12 .. 4e-11, 5 iterations per case.
 mod tol {
-    /// Multiplier and force-based pressures (A and B sides) vs `p / (1 + eps_x)`, node by node.
+    /// Multiplier and force-based pressures (A and B sides) vs `p` (small kinematics) or
+    /// `p / (1 + eps_x)` (finite kinematics), node by node.
     pub const PRESSURE: f64 = 1e-11;
     /// Element stresses at the centres vs `(0, -p, 0)`.
     pub const STRESS: f64 = 1e-11;
@@ -77,6 +79,7 @@ struct Case {
     /// Hold the four interface end nodes horizontally at their exact displacements (`0` at
     /// `x = 0`, the uniform widening at `x = 1`).
     hold_ends: bool,
+    kinematics: Kinematics,
 }
 
 /// Results of one case.
@@ -179,6 +182,7 @@ fn run(case: Case) -> Outcome {
     };
     let options = ContactOptions {
         tolerance: 1e-10,
+        kinematics: case.kinematics,
         ..Default::default()
     };
     let mut analysis = ContactAnalysis::new(model.clone(), vec![pair], options).unwrap();
@@ -202,10 +206,13 @@ fn run(case: Case) -> Outcome {
     let q = analysis.displacement().unwrap().to_vec();
     let kq = model.internal_forces(&q).unwrap();
     let f = model.external_forces();
-    // the contact tractions are per unit length of the current (widened) interface, the line
-    // load and the element stresses per unit reference length: the same total force over the
-    // width 1 + eps_x
-    let expected = P / (1.0 + widening);
+    // finite kinematics: the contact tractions are per unit length of the current (widened)
+    // interface, the line load and the element stresses per unit reference length: the same
+    // total force over the width 1 + eps_x; small kinematics: all per reference length
+    let (expected, moves) = match case.kinematics {
+        Kinematics::Small => (P, 0.0),
+        Kinematics::Finite => (P / (1.0 + widening), 1.0),
+    };
     let rel = |v: f64| (v / expected - 1.0).abs();
     let multipliers = nodes.iter().map(|n| rel(-n.tn)).fold(0.0, f64::max);
     let forces = nodes
@@ -213,11 +220,11 @@ fn run(case: Case) -> Outcome {
         .map(|n| rel(-(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight))
         .fold(0.0, f64::max);
     // B side: K q at B's nodes is the contact force on B; divided by B's tributary lengths
-    // (current configuration) it must be the pressure p, pushing B down (force -y)
+    // (in the geometry's configuration) it must be the contact pressure, pushing B down
     let x = |i: usize| {
         [
-            model.mesh.nodes[i][0] + q[2 * i],
-            model.mesh.nodes[i][1] + q[2 * i + 1],
+            model.mesh.nodes[i][0] + moves * q[2 * i],
+            model.mesh.nodes[i][1] + moves * q[2 * i + 1],
         ]
     };
     let forces_b = (0..lower_top.len())
@@ -283,7 +290,10 @@ fn run(case: Case) -> Outcome {
 fn contact_patch_test() {
     let clock = std::time::Instant::now();
     let mut cases = Vec::new();
-    for gap in [1e-3, 0.0] {
+    for (gap, kinematics) in [1e-3, 0.0]
+        .into_iter()
+        .flat_map(|g| [(g, Kinematics::Small), (g, Kinematics::Finite)])
+    {
         cases.push(Case {
             name: "A finer",
             nx_a: 13,
@@ -291,6 +301,7 @@ fn contact_patch_test() {
             distortion: 0.02,
             gap,
             hold_ends: true,
+            kinematics,
         });
         cases.push(Case {
             name: "equal",
@@ -299,6 +310,7 @@ fn contact_patch_test() {
             distortion: 0.0,
             gap,
             hold_ends: true,
+            kinematics,
         });
         cases.push(Case {
             name: "A coarser",
@@ -307,14 +319,16 @@ fn contact_patch_test() {
             distortion: 0.02,
             gap,
             hold_ends: true,
+            kinematics,
         });
     }
     println!(
         "contact patch test, p = {P}, plane strain, lower E = 3 nu = 0.2, upper E = 7 nu = 0.4"
     );
     println!(
-        "{:>10} {:>6} {:>6} {:>3} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "{:>10} {:>6} {:>6} {:>6} {:>3} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
         "case",
+        "kin.",
         "nx A/B",
         "gap",
         "it",
@@ -330,8 +344,9 @@ fn contact_patch_test() {
     for case in cases {
         let o = run(case);
         println!(
-            "{:>10} {:>3}/{:<2} {:>6.0e} {:>3} {:>3}/{:<2} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>+9.1e}",
+            "{:>10} {:>6} {:>3}/{:<2} {:>6.0e} {:>3} {:>3}/{:<2} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>+9.1e}",
             case.name,
+            case.kinematics.name(),
             case.nx_a,
             case.nx_b,
             case.gap,
@@ -346,7 +361,12 @@ fn contact_patch_test() {
             o.reaction,
             o.support
         );
-        let what = format!("{} (gap {})", case.name, case.gap);
+        let what = format!(
+            "{} (gap {}, {} kinematics)",
+            case.name,
+            case.gap,
+            case.kinematics.name()
+        );
         assert_eq!(o.active, o.a_nodes, "{what}: every A node in contact");
         assert!(
             o.multipliers < tol::PRESSURE,
@@ -394,13 +414,20 @@ fn contact_patch_test() {
 /// coincide, so the test passes with surfaces of equal extent.
 #[test]
 fn contact_patch_test_free_ends() {
-    let o = run(Case {
-        name: "A finer, free ends",
-        nx_a: 13,
-        nx_b: 8,
-        distortion: 0.02,
-        gap: 0.0,
-        hold_ends: false,
-    });
-    assert!(o.multipliers < tol::PRESSURE && o.reaction < tol::REACTION);
+    for kinematics in [Kinematics::Small, Kinematics::Finite] {
+        let o = run(Case {
+            name: "A finer, free ends",
+            nx_a: 13,
+            nx_b: 8,
+            distortion: 0.02,
+            gap: 0.0,
+            hold_ends: false,
+            kinematics,
+        });
+        assert!(
+            o.multipliers < tol::PRESSURE && o.reaction < tol::REACTION,
+            "{} kinematics: {o:?}",
+            kinematics.name()
+        );
+    }
 }

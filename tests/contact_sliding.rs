@@ -23,7 +23,9 @@
 //! * Hertz at the same `P` with `E*` of the scene.
 
 use hycon::cases::Hertz;
-use hycon::contact::iteration::{ContactAnalysis, ContactOptions, NodeResult, NodeState};
+use hycon::contact::iteration::{
+    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState,
+};
 use hycon::contact::scene::{DiskOnBlock, Scene};
 
 /// Elements per target half-width.
@@ -307,8 +309,10 @@ fn frictionless_sliding() {
     let clock = std::time::Instant::now();
     let scene = scene(0.0);
     let h = scene.half_width / N as f64;
+    // extensive sliding: finite kinematics
     let options = ContactOptions {
         tolerance: TOL,
+        kinematics: Kinematics::Finite,
         ..Default::default()
     };
     let (approach, steps, analysis) = slide_run(&scene, options);
@@ -437,8 +441,10 @@ fn frictional_sliding() {
     let scene_mu = scene(mu);
     let scene_0 = scene(0.0);
     let h = scene_mu.half_width / N as f64;
+    // extensive sliding: finite kinematics
     let options = ContactOptions {
         tolerance: TOL,
+        kinematics: Kinematics::Finite,
         ..Default::default()
     };
     let (approach, steps, analysis) = slide_run(&scene_mu, options);

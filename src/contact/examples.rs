@@ -17,7 +17,7 @@
 //! pressure and shear along the contact with the closed forms at the same `x`, the iteration and
 //! node counts, `Q/P`, and its time; each run keeps the time split of the analysis.
 
-use super::iteration::{ContactAnalysis, ContactOptions, NodeResult, NodeState};
+use super::iteration::{ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState};
 use super::scene::{DiskOnBlock, HertzComparison, Scene};
 use crate::error::{Error, Result};
 use crate::model::{LinearSystem, Model};
@@ -55,6 +55,10 @@ pub struct HertzCase {
     pub modulus_ratios: Vec<f64>,
     /// Increments up to the calibrated approach.
     pub increments: usize,
+    /// Contact kinematics (default small: Hertz theory is the linearized problem).
+    pub kinematics: Kinematics,
+    /// `R / a` of the scene (a power of two; 64 is the reference scene).
+    pub r_over_a: usize,
     /// Displacement fields kept.
     pub fields: Fields,
 }
@@ -65,6 +69,8 @@ impl Default for HertzCase {
             n: 16,
             modulus_ratios: vec![1.0, 1e-2, 1e-4],
             increments: 3,
+            kinematics: Kinematics::Small,
+            r_over_a: 64,
             fields: Fields::Every,
         }
     }
@@ -81,6 +87,8 @@ pub struct SlideCase {
     pub increments: usize,
     /// Sliding distance of the disk top, in target half-widths `a`.
     pub distance: f64,
+    /// Contact kinematics (default finite: the disk slides over many elements).
+    pub kinematics: Kinematics,
     /// Displacement fields kept.
     pub fields: Fields,
 }
@@ -92,6 +100,7 @@ impl Default for SlideCase {
             friction: 0.0,
             increments: 8,
             distance: 2.0,
+            kinematics: Kinematics::Finite,
             fields: Fields::Every,
         }
     }
@@ -110,6 +119,8 @@ pub struct CattaneoCase {
     pub target: f64,
     /// Cap on the tangential increments.
     pub max_increments: usize,
+    /// Contact kinematics (default small: the theory is the linearized problem).
+    pub kinematics: Kinematics,
     /// Displacement fields kept.
     pub fields: Fields,
 }
@@ -122,6 +133,7 @@ impl Default for CattaneoCase {
             step: 0.1,
             target: 0.75,
             max_increments: 40,
+            kinematics: Kinematics::Small,
             fields: Fields::Every,
         }
     }
@@ -132,8 +144,10 @@ impl Default for CattaneoCase {
 pub struct Example {
     /// Short name, also the file stem of its outputs.
     pub name: String,
-    /// One-line description.
+    /// One-line description (it names the kinematics).
     pub title: String,
+    /// Contact kinematics of every run: `"small"` or `"finite"`.
+    pub kinematics: &'static str,
     /// The analyses.
     pub runs: Vec<Run>,
 }
@@ -477,8 +491,8 @@ struct Path {
 impl Path {
     fn new(
         def: DiskOnBlock,
-        label: String,
-        tag: String,
+        (label, tag): (String, String),
+        kinematics: Kinematics,
         fields: Fields,
         progress: &mut Progress<'_>,
     ) -> Result<Path> {
@@ -505,7 +519,10 @@ impl Path {
                 setup.nodes, setup.elements
             )
         });
-        let mut analysis = scene.analysis(ContactOptions::default())?;
+        let mut analysis = scene.analysis(ContactOptions {
+            kinematics,
+            ..Default::default()
+        })?;
         let approach = scene.calibrated_approach(&mut analysis)?;
         let iterations = analysis.records().last().map_or(0, |r| r.iteration);
         let forces = vec![0.0; setup.dofs];
@@ -554,7 +571,7 @@ impl Path {
             })?;
         let seconds = clock.elapsed().as_secs_f64();
         self.solved += 1;
-        let results = self.analysis.node_results(0)?;
+        let results = self.scene.node_results(&self.analysis)?;
         let comparison = self.scene.compare(&self.analysis)?;
         let displacement = match self.fields {
             Fields::Every => self.analysis.displacement()?.to_vec(),
@@ -768,12 +785,16 @@ pub fn hertz(case: &HertzCase, mut progress: Progress<'_>) -> Result<Example> {
         let def = DiskOnBlock {
             elements_per_half_width: case.n,
             modulus_ratio: ratio,
+            radius_over_half_width: case.r_over_a,
             ..Default::default()
         };
         let mut path = Path::new(
             def,
-            format!("E_disk/E_block = {ratio:.0e}"),
-            format!("ratio-{ratio:.0e}"),
+            (
+                format!("E_disk/E_block = {ratio:.0e}"),
+                format!("ratio-{ratio:.0e}"),
+            ),
+            case.kinematics,
             case.fields,
             &mut progress,
         )?;
@@ -787,11 +808,14 @@ pub fn hertz(case: &HertzCase, mut progress: Progress<'_>) -> Result<Example> {
     Ok(Example {
         name: "hertz".into(),
         title: format!(
-            "non-sliding Hertz contact, frictionless, {} increments to a = R/{}, n = {}",
+            "non-sliding Hertz contact, frictionless, {} increments to a = R/{}, n = {}, {} \
+             kinematics",
             case.increments,
-            r_over_a(),
-            case.n
+            case.r_over_a,
+            case.n,
+            case.kinematics.name()
         ),
+        kinematics: case.kinematics.name(),
         runs,
     })
 }
@@ -822,7 +846,13 @@ pub fn slide(case: &SlideCase, mut progress: Progress<'_>) -> Result<Example> {
     } else {
         ("slide-frictionless", "frictionless sliding".to_string())
     };
-    let mut path = Path::new(def, what.clone(), String::new(), case.fields, &mut progress)?;
+    let mut path = Path::new(
+        def,
+        (what.clone(), String::new()),
+        case.kinematics,
+        case.fields,
+        &mut progress,
+    )?;
     let approach = path.approach();
     path.step(Phase::Press, approach, 0.0, &mut progress)?;
     let a = path.scene.half_width;
@@ -833,12 +863,15 @@ pub fn slide(case: &SlideCase, mut progress: Progress<'_>) -> Result<Example> {
     Ok(Example {
         name: name.into(),
         title: format!(
-            "{what}: pressed to a = R/{}, then moved {} a sideways in {} increments, n = {}",
+            "{what}: pressed to a = R/{}, then moved {} a sideways in {} increments, n = {}, \
+             {} kinematics",
             r_over_a(),
             case.distance,
             case.increments,
-            case.n
+            case.n,
+            case.kinematics.name()
         ),
+        kinematics: case.kinematics.name(),
         runs: vec![path.finish()?],
     })
 }
@@ -876,8 +909,8 @@ pub fn cattaneo_mindlin(case: &CattaneoCase, mut progress: Progress<'_>) -> Resu
     };
     let mut path = Path::new(
         def,
-        format!("Cattaneo-Mindlin, mu = {mu}"),
-        String::new(),
+        (format!("Cattaneo-Mindlin, mu = {mu}"), String::new()),
+        case.kinematics,
         case.fields,
         &mut progress,
     )?;
@@ -918,9 +951,12 @@ pub fn cattaneo_mindlin(case: &CattaneoCase, mut progress: Progress<'_>) -> Resu
         name: "cattaneo-mindlin".into(),
         title: format!(
             "Cattaneo-Mindlin partial slip, identical materials, mu = {mu}: tangential \
-             displacement until Q/(mu P) > {}, n = {}",
-            case.target, case.n
+             displacement until Q/(mu P) > {}, n = {}, {} kinematics",
+            case.target,
+            case.n,
+            case.kinematics.name()
         ),
+        kinematics: case.kinematics.name(),
         runs: vec![path.finish()?],
     })
 }

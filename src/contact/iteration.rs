@@ -67,9 +67,56 @@ pub struct ContactPair {
     pub friction: f64,
 }
 
+/// How the contact geometry follows the deformation (METHOD.md section 2b).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Kinematics {
+    /// Small deformation ("small sliding"), consistent with the small-strain elasticity of the
+    /// bodies: the pairing (projection of A onto B), the nodal frames, the weights and the
+    /// coupling `F^A`, `F^B` are evaluated once, in the reference configuration `X`; the
+    /// weighted gap is linear in the displacements,
+    /// `R_C,k(u) = R_C,k(X) + sum_j c_kj u_j`; tractions are per reference length. The
+    /// contact matrices never change, so no geometry is evaluated during the iteration. Exact
+    /// for the linearized problem that Hertz and Cattaneo-Mindlin theory solve; wrong once
+    /// the surfaces slide by more than a small fraction of an element or rotate noticeably.
+    #[default]
+    Small,
+    /// Finite kinematics ("finite sliding"): the geometry is evaluated at the current
+    /// positions `x = X + u` in every iteration, tractions per current length. Needed when
+    /// the bodies slide far along each other (the paper's extensive sliding); adds effects of
+    /// the order of the surface strain (`a / R` in Hertz contact) to a small-strain model.
+    Finite,
+}
+
+impl Kinematics {
+    /// `"small"` or `"finite"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kinematics::Small => "small",
+            Kinematics::Finite => "finite",
+        }
+    }
+}
+
+impl std::str::FromStr for Kinematics {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "small" => Ok(Kinematics::Small),
+            "finite" => Ok(Kinematics::Finite),
+            _ => Err(Error::InvalidInput(format!(
+                "unknown kinematics {s:?} (small or finite)"
+            ))),
+        }
+    }
+}
+
 /// Parameters of the contact-set iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactOptions {
+    /// Contact kinematics: small deformation (the default; linear gap, geometry evaluated once)
+    /// or finite (geometry at the current positions, for extensive sliding).
+    pub kinematics: Kinematics,
     /// Convergence tolerance on `R` (the paper used 0.01; 1e-6 costs about one more iteration).
     pub tolerance: f64,
     /// Iteration cap per increment.
@@ -102,6 +149,7 @@ pub struct ContactOptions {
 impl Default for ContactOptions {
     fn default() -> Self {
         ContactOptions {
+            kinematics: Kinematics::Small,
             tolerance: 1e-6,
             max_iterations: 60,
             gap_tolerance: 1e-9,
@@ -394,6 +442,13 @@ pub struct ContactAnalysis {
     loads: Vec<LoadSolve>,
     /// Converged node data, per pair, per A node.
     nodes: Vec<Vec<NodeData>>,
+    /// The contact geometry of every pair in the reference configuration (the frozen pairing
+    /// of small kinematics).
+    reference: Vec<ContactSurface>,
+    /// The contact geometry of every pair at the last converged state (the reference one
+    /// before the first increment): the iteration starts from it and the result queries read
+    /// it, so nothing is evaluated twice.
+    surfaces: Vec<ContactSurface>,
     increment: usize,
     records: Vec<IterationRecord>,
     timings: Timings,
@@ -477,6 +532,7 @@ impl ContactAnalysis {
         let clock = std::time::Instant::now();
         let flexibility = bodies.flexibility(&dofs)?;
         timings.flexibility = clock.elapsed().as_secs_f64();
+        let reference = evaluate_pairs(&pairs, bodies.positions(), options.search_distance)?;
         let nodes = pairs
             .iter()
             .map(|p| {
@@ -503,6 +559,8 @@ impl ContactAnalysis {
             dofs,
             slot,
             nodes,
+            surfaces: reference.clone(),
+            reference,
             increment: 0,
             records: Vec::new(),
             timings,
@@ -761,6 +819,11 @@ impl ContactAnalysis {
         Ok((u0c, plate_force))
     }
 
+    /// The options the analysis runs with.
+    pub fn options(&self) -> &ContactOptions {
+        &self.options
+    }
+
     /// Where the time went so far.
     pub fn timings(&self) -> Timings {
         self.timings
@@ -777,18 +840,10 @@ impl ContactAnalysis {
         self.bodies.factorizations()
     }
 
-    /// Mean A segment length of pair `p` in the current configuration (the length scale of
-    /// the gap tolerance and the search distance).
-    fn mean_segment(&self, p: usize, x: &[[f64; 2]]) -> f64 {
-        let a = &self.pairs[p].a;
-        let total: f64 = a
-            .windows(2)
-            .map(|w| {
-                let (u, v) = (x[w[0]], x[w[1]]);
-                (v[0] - u[0]).hypot(v[1] - u[1])
-            })
-            .sum();
-        total / (a.len().max(2) - 1) as f64
+    /// Mean A segment length of pair `p` in the geometry's configuration `xg` (the length
+    /// scale of the gap tolerance and the search distance).
+    fn mean_segment(&self, p: usize, xg: &[[f64; 2]]) -> f64 {
+        mean_segment(&self.pairs[p].a, xg)
     }
 
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
@@ -801,18 +856,58 @@ impl ContactAnalysis {
         x
     }
 
-    fn surfaces(&self, x: &[[f64; 2]]) -> Result<Vec<ContactSurface>> {
-        (0..self.pairs.len())
-            .map(|p| {
-                let h = self.mean_segment(p, x);
-                geometry::evaluate(
-                    &self.pairs[p].a,
-                    &self.pairs[p].b,
-                    x,
-                    self.options.search_distance * h,
-                )
-            })
-            .collect()
+    /// The positions the contact geometry is evaluated at, given the current ones `x`: the
+    /// reference positions `X` under small kinematics, `x` itself under finite kinematics.
+    fn geometry_positions<'a>(&'a self, x: &'a [[f64; 2]]) -> &'a [[f64; 2]] {
+        match self.options.kinematics {
+            Kinematics::Small => self.bodies.positions(),
+            Kinematics::Finite => x,
+        }
+    }
+
+    /// Bring the contact geometry `surfaces` to the displacement `uc` of the contact dofs.
+    /// Finite kinematics: evaluate every pair at the current positions (reusing the surfaces'
+    /// buffers). Small kinematics: nothing but the gaps changes, linearly:
+    /// `R_C,k = R_C,k(X) + sum_j c_kj u_j`, `normal_gap_k = -n_k . R_C,k / covered weight`
+    /// (and `mean_distance` moves with `normal_gap`), with the reference pairing, frames,
+    /// weights and coupling rows.
+    fn update_geometry(&self, surfaces: &mut [ContactSurface], uc: &[f64]) -> Result<()> {
+        match self.options.kinematics {
+            Kinematics::Finite => {
+                let x = self.positions(uc);
+                for (p, surface) in surfaces.iter_mut().enumerate() {
+                    let pair = &self.pairs[p];
+                    let distance = self.options.search_distance * mean_segment(&pair.a, &x);
+                    geometry::evaluate_into(&pair.a, &pair.b, &x, distance, surface)?;
+                }
+            }
+            Kinematics::Small => {
+                for (surface, reference) in surfaces.iter_mut().zip(&self.reference) {
+                    for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
+                        let change = self.coupled(&r.coupling, uc);
+                        node.gap = [r.gap[0] + change[0], r.gap[1] + change[1]];
+                        if r.covered_weight > 0.0 {
+                            let n = r.normal;
+                            node.normal_gap =
+                                -(n[0] * node.gap[0] + n[1] * node.gap[1]) / r.covered_weight;
+                            node.mean_distance =
+                                r.mean_distance + (node.normal_gap - r.normal_gap);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
+    fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> [f64; 2] {
+        coupling.iter().fold([0.0, 0.0], |acc, &(j, c)| {
+            [
+                acc[0] + c * uc[self.slot[dof(j, 0)]],
+                acc[1] + c * uc[self.slot[dof(j, 1)]],
+            ]
+        })
     }
 
     /// Apply one load increment: total external forces `f` and total prescribed displacement
@@ -885,7 +980,7 @@ impl ContactAnalysis {
         // iterate on the contact dofs only; geometry from the start configuration
         let startc = self.qc.clone();
         let mut uc = startc.clone();
-        let mut surfaces = self.surfaces(&self.positions(&uc))?;
+        let mut surfaces = self.surfaces.clone();
         if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
             // a force-controlled body needs a support to start from: the nearest node
             self.close_nearest(&surfaces, &mut states);
@@ -922,11 +1017,10 @@ impl ContactAnalysis {
                     }
                 }
             }
-            let x = self.positions(&uc_new);
-            let new_surfaces = self.surfaces(&x)?;
+            self.update_geometry(&mut surfaces, &uc_new)?;
             let tractions = system.tractions(&tau, &states, &self.pairs);
             let (mut new_states, mut changes) =
-                self.update_states(&states, &tractions, &new_surfaces, &x, &uc_new, &startc)?;
+                self.update_states(&states, &tractions, &surfaces, &uc_new, &startc)?;
             // a node locked in slip does not return to stick in this increment, nor a node
             // locked open to contact
             for (p, k) in locked.iter().copied() {
@@ -965,7 +1059,6 @@ impl ContactAnalysis {
                 )));
             }
             uc = uc_new;
-            surfaces = new_surfaces;
             if changes == 0 && r <= self.options.tolerance {
                 self.uncovered(&surfaces, &states)?;
                 self.edge_penetration(number, &surfaces, &locked_open, &uc, &startc)?;
@@ -988,7 +1081,7 @@ impl ContactAnalysis {
                     contact: forces,
                 };
                 return Ok(self.finish(
-                    number, iteration, &states, &tractions, uc, converged, records,
+                    number, iteration, &states, &tractions, uc, surfaces, converged, records,
                 ));
             }
             if changes > 0 {
@@ -1040,8 +1133,8 @@ impl ContactAnalysis {
     /// The length against which gaps of pair `p` are judged: the increment's largest motion of
     /// a contact dof, bounded by the mean A segment length `h` (and by `1e-12 h` below), so
     /// that tiny loads still close the contact and the judgement does not depend on units.
-    fn gap_scale(&self, p: usize, x: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
-        let h = self.mean_segment(p, x);
+    fn gap_scale(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
+        let h = self.mean_segment(p, xg);
         let motion = uc
             .iter()
             .zip(startc)
@@ -1061,8 +1154,9 @@ impl ContactAnalysis {
         startc: &[f64],
     ) -> Result<()> {
         let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
         for &(p, k) in locked_open {
-            let scale = self.gap_scale(p, &x, uc, startc);
+            let scale = self.gap_scale(p, xg, uc, startc);
             let gap = surfaces[p].nodes[k].normal_gap;
             if gap < -EDGE_PENETRATION * scale {
                 return Err(Error::Contact(format!(
@@ -1105,6 +1199,31 @@ impl ContactAnalysis {
         }
         Ok(())
     }
+}
+
+/// Mean A segment length of the polyline `a` at positions `x`.
+fn mean_segment(a: &[usize], x: &[[f64; 2]]) -> f64 {
+    let total: f64 = a
+        .windows(2)
+        .map(|w| {
+            let (u, v) = (x[w[0]], x[w[1]]);
+            (v[0] - u[0]).hypot(v[1] - u[1])
+        })
+        .sum();
+    total / (a.len().max(2) - 1) as f64
+}
+
+/// The contact geometry of every pair at positions `x`, B paired with A within
+/// `search_distance` mean A segment lengths.
+fn evaluate_pairs(
+    pairs: &[ContactPair],
+    x: &[[f64; 2]],
+    search_distance: f64,
+) -> Result<Vec<ContactSurface>> {
+    pairs
+        .iter()
+        .map(|p| geometry::evaluate(&p.a, &p.b, x, search_distance * mean_segment(&p.a, x)))
+        .collect()
 }
 
 /// Check the pairs: finite friction `>= 0`, known node ids (`known` maps a caller's id to the
@@ -1495,22 +1614,22 @@ impl ContactAnalysis {
     /// The paper's rules: penetration (A nodes by weighted gap; B nodes pointwise over A
     /// segments whose two nodes are open), tension, the friction cone and slip reversal.
     /// Returns the new states and the number of changes.
-    #[allow(clippy::too_many_arguments)]
     fn update_states(
         &self,
         states: &[Vec<NodeState>],
         tractions: &[Vec<(f64, f64)>],
         surfaces: &[ContactSurface],
-        x: &[[f64; 2]],
         uc: &[f64],
         startc: &[f64],
     ) -> Result<(Vec<Vec<NodeState>>, usize)> {
         let mut new = states.to_vec();
+        let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
         for (p, surface) in surfaces.iter().enumerate() {
             let mu = self.pairs[p].friction;
-            let h = self.mean_segment(p, x);
+            let h = self.mean_segment(p, xg);
             // penetration is judged against the increment's own displacement scale
-            let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, x, uc, startc);
+            let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
             // tangential slip of A relative to B since the increment began, per unit length
             let slip_since_start = |node: &geometry::ContactNode| {
@@ -1565,7 +1684,10 @@ impl ContactAnalysis {
                     NodeState::Slip { .. } => {}
                 }
             }
-            // B nodes over A segments whose two nodes are open
+            // B nodes over A segments whose two nodes are open: the signed distance of the B
+            // node from the segment along its normal, the segment's point `xi`, normal and
+            // the B node's projection taken in the geometry's configuration (frozen under
+            // small kinematics: the distance is then linear in the displacements)
             let a = &self.pairs[p].a;
             let open: Vec<bool> = (0..a.len())
                 .map(|k| states[p][k] == NodeState::Open && new[p][k] == NodeState::Open)
@@ -1574,15 +1696,21 @@ impl ContactAnalysis {
                 if !(open[k] && open[k + 1]) {
                     continue;
                 }
-                let (s0, s1) = (x[w[0]], x[w[1]]);
+                let (s0, s1) = (xg[w[0]], xg[w[1]]);
                 let d = [s1[0] - s0[0], s1[1] - s0[1]];
                 let len2 = d[0] * d[0] + d[1] * d[1];
                 let len = len2.sqrt();
                 let n = [d[1] / len, -d[0] / len];
+                // current segment end points (equal to s0, s1 under finite kinematics)
+                let (c0, c1) = (x[w[0]], x[w[1]]);
                 for &j in &self.pairs[p].b {
-                    let r = [x[j][0] - s0[0], x[j][1] - s0[1]];
+                    let r = [xg[j][0] - s0[0], xg[j][1] - s0[1]];
                     let xi = (r[0] * d[0] + r[1] * d[1]) / len2;
-                    let g = r[0] * n[0] + r[1] * n[1];
+                    let hit = [
+                        c0[0] + xi * (c1[0] - c0[0]),
+                        c0[1] + xi * (c1[1] - c0[1]),
+                    ];
+                    let g = (x[j][0] - hit[0]) * n[0] + (x[j][1] - hit[1]) * n[1];
                     // a B node facing an A node (node-to-node) is that node's weighted gap's
                     // business: only B nodes strictly inside the segment are checked here
                     if !(1e-3..=1.0 - 1e-3).contains(&xi) || g >= -gap_tolerance {
@@ -1623,10 +1751,12 @@ impl ContactAnalysis {
         states: &[Vec<NodeState>],
         tractions: &[Vec<(f64, f64)>],
         uc: Vec<f64>,
+        surfaces: Vec<ContactSurface>,
         converged: Converged,
         records: Vec<IterationRecord>,
     ) -> IncrementInfo {
         self.qc = uc;
+        self.surfaces = surfaces;
         self.previous = self.converged.replace(converged);
         self.field = None;
         for (p, s) in states.iter().enumerate() {

@@ -21,7 +21,8 @@ use crate::contact::bodies::{
     Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
 };
 use crate::contact::iteration::{
-    ContactAnalysis, ContactOptions, ContactPair, IterationRecord, Monitor, NodeState, PlateControl,
+    ContactAnalysis, ContactOptions, ContactPair, IterationRecord, Kinematics, Monitor, NodeState,
+    PlateControl,
 };
 use crate::mesh::Mesh;
 use crate::model::Model;
@@ -37,6 +38,17 @@ pub type HyconBackend = i32;
 pub const HYCON_BACKEND_FAER: HyconBackend = 1;
 /// CHOLMOD from SuiteSparse (only when hycon was built with the `suitesparse` feature).
 pub const HYCON_BACKEND_CHOLMOD: HyconBackend = 2;
+
+/// Contact kinematics, one of `HYCON_KINEMATICS_*`.
+pub type HyconKinematics = i32;
+/// Small deformation (the default): the pairing, frames, weights and contact-element matrices
+/// are evaluated once in the reference configuration and the gap is linear in the
+/// displacements, consistent with small-strain elasticity (Hertz, Cattaneo-Mindlin); valid
+/// while the surfaces slide by a small fraction of an element.
+pub const HYCON_KINEMATICS_SMALL: HyconKinematics = 1;
+/// Finite kinematics: the contact geometry is evaluated at the current positions in every
+/// iteration; for surfaces that slide far along each other.
+pub const HYCON_KINEMATICS_FINITE: HyconKinematics = 2;
 
 /// Directions of a prescribed displacement, a bit mask.
 pub type HyconDirections = i32;
@@ -163,6 +175,9 @@ pub struct HyconContactOptions {
     /// `HYCON_BACKEND_CHOLMOD` fails with `HYCON_ERROR_SOLVER` unless hycon was built with the
     /// `suitesparse` feature).
     pub backend: HyconBackend,
+    /// Contact kinematics (default `HYCON_KINEMATICS_SMALL`; `HYCON_KINEMATICS_FINITE` for
+    /// extensive sliding).
+    pub kinematics: HyconKinematics,
     /// Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
     pub monitor: HyconMonitorFn,
     /// Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.
@@ -567,7 +582,18 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
             )));
         }
     };
+    let kinematics = match o.kinematics {
+        HYCON_KINEMATICS_SMALL => Kinematics::Small,
+        HYCON_KINEMATICS_FINITE => Kinematics::Finite,
+        k => {
+            return Err(Fail::invalid(format!(
+                "options.kinematics = {k} is unknown (HYCON_KINEMATICS_SMALL = 1, \
+                 HYCON_KINEMATICS_FINITE = 2)"
+            )));
+        }
+    };
     let options = ContactOptions {
+        kinematics,
         tolerance: o.tolerance,
         max_iterations: o.max_iterations as usize,
         gap_tolerance: o.gap_tolerance,
@@ -690,6 +716,10 @@ pub unsafe extern "C" fn hycon_contact_options_default(
             max_iterations: d.max_iterations as u32,
             lock_rounds: d.lock_rounds as u32,
             backend: HYCON_BACKEND_FAER,
+            kinematics: match d.kinematics {
+                Kinematics::Small => HYCON_KINEMATICS_SMALL,
+                Kinematics::Finite => HYCON_KINEMATICS_FINITE,
+            },
             monitor: None,
             monitor_data: std::ptr::null_mut(),
         };

@@ -3,7 +3,7 @@
 //! matrices for hosts that assemble the mixed system themselves.
 
 use super::{BNodeResult, ContactAnalysis, NodeResult};
-use crate::contact::geometry::{self, ContactSurface};
+use crate::contact::geometry::ContactSurface;
 use crate::error::{Error, Result};
 
 /// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `2k` (normal,
@@ -36,21 +36,22 @@ impl ContactAnalysis {
         })
     }
 
-    /// The contact quantities of pair `p` in the converged configuration (the reference one
-    /// before the first increment), iteration numbering.
-    fn converged_surface(&self, p: usize) -> Result<(ContactSurface, Vec<[f64; 2]>)> {
-        let pair = self.pair(p)?;
-        let x = self.positions(&self.qc);
-        let h = self.mean_segment(p, &x);
-        let surface = geometry::evaluate(&pair.a, &pair.b, &x, self.options.search_distance * h)?;
-        Ok((surface, x))
+    /// The contact quantities of pair `p` at the converged state (the reference one before
+    /// the first increment), iteration numbering: kept from the iteration, not evaluated
+    /// again.
+    fn converged_surface(&self, p: usize) -> Result<&ContactSurface> {
+        self.pair(p)?;
+        Ok(&self.surfaces[p])
     }
 
-    /// The contact-element quantities of pair `p` in the converged configuration, node ids in
-    /// the caller's numbering: per A node the weight, frame, weighted gap `R_C` and the
-    /// coupling row `c_kj` (`+F^A_kj` at A nodes, `-F^B_kj` at B nodes).
+    /// The contact-element quantities of pair `p` at the converged state, node ids in the
+    /// caller's numbering: per A node the weight, frame, weighted gap `R_C` and the coupling
+    /// row `c_kj` (`+F^A_kj` at A nodes, `-F^B_kj` at B nodes). Under small kinematics the
+    /// pairing, frames, weights and coupling are those of the reference configuration and
+    /// the gaps are linearized; under finite kinematics all are evaluated at the converged
+    /// positions.
     pub fn surface(&self, p: usize) -> Result<ContactSurface> {
-        let (mut surface, _) = self.converged_surface(p)?;
+        let mut surface = self.converged_surface(p)?.clone();
         for node in &mut surface.nodes {
             node.node = self.bodies.external(node.node);
             for entry in &mut node.coupling {
@@ -63,7 +64,7 @@ impl ContactAnalysis {
     /// The constraint matrix `Kc` of pair `p` in the converged configuration (see
     /// [`ConstraintRows`]).
     pub fn constraint_rows(&self, p: usize) -> Result<ConstraintRows> {
-        let (surface, _) = self.converged_surface(p)?;
+        let surface = self.converged_surface(p)?;
         let mut rows = ConstraintRows {
             row_ptr: vec![0],
             columns: Vec::new(),
@@ -162,7 +163,9 @@ impl ContactAnalysis {
     /// pressure 0.
     pub fn b_node_results(&self, p: usize) -> Result<Vec<BNodeResult>> {
         let a_nodes = self.node_results(p)?;
-        let (surface, x) = self.converged_surface(p)?;
+        let surface = self.converged_surface(p)?;
+        let x = self.positions(&self.qc);
+        let xg = self.geometry_positions(&x);
         let pair = &self.pairs[p];
         let index = |j: usize| pair.b.iter().position(|&b| b == j);
         let mut weight = vec![0.0; pair.b.len()];
@@ -190,7 +193,7 @@ impl ContactAnalysis {
                     pair.b[i.saturating_sub(1)],
                     pair.b[(i + 1).min(pair.b.len() - 1)],
                 );
-                let d = [x[next][0] - x[prev][0], x[next][1] - x[prev][1]];
+                let d = [xg[next][0] - xg[prev][0], xg[next][1] - xg[prev][1]];
                 let len = d[0].hypot(d[1]);
                 let n = [d[1] / len, -d[0] / len];
                 let pressure = if weight[i] > 0.0 {
@@ -212,7 +215,8 @@ impl ContactAnalysis {
     /// Converged results at the A nodes of pair `p`: states, tractions (multipliers),
     /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
     pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
-        let (surface, x) = self.converged_surface(p)?;
+        let surface = self.converged_surface(p)?;
+        let x = self.positions(&self.qc);
         let pair = &self.pairs[p];
         let data = &self.nodes[p];
         // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
