@@ -226,15 +226,19 @@ typedef struct HyconNodeResult {
     double tn;
     // Tangential traction on A along `tangent`.
     double ts;
-    // Nodal normal (A's outward), converged configuration.
+    // Nodal normal (A's outward): of the reference configuration under small kinematics, of
+    // the converged one under finite kinematics.
     double normal[2];
     // Nodal tangent `(n_y, -n_x)`.
     double tangent[2];
-    // Current position.
+    // Current position (reference position plus the converged displacement).
     double position[2];
-    // Tributary length `integral M_k ds`.
+    // Tributary length `integral M_k ds`, measured in the configuration the geometry lives in
+    // (reference under small kinematics, converged under finite): the tractions are per unit
+    // length of it, so `sum -tn * weight` is the normal load only where A is straight.
     double weight;
-    // Weighted normal gap per unit length (`< 0` penetration).
+    // Weighted normal gap per unit length (`< 0` penetration; infinite where B does not
+    // cover the node's support).
     double gap;
     // Equivalent nodal contact force on A, `sum_k F^A_kj t_k` (x, y).
     double force[2];
@@ -270,8 +274,10 @@ typedef struct HyconTimings {
     double recovery;
 } HyconTimings;
 
-// Contact-element quantities of one A node in the converged configuration (the reference one
-// before the first increment), for hosts that assemble the mixed system themselves.
+// Contact-element quantities of one A node at the converged state (the reference one before
+// the first increment; under small kinematics the pairing, frames and weights are always the
+// reference ones and the gaps linear in the displacements), for hosts that assemble the mixed
+// system themselves.
 typedef struct HyconContactNode {
     // Node id (the caller's numbering).
     size_t node;

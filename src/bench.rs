@@ -213,15 +213,15 @@ pub struct GuardValue {
     pub value: f64,
 }
 
-/// The accuracy figures the regression guard watches (`hycon bench guard`): the Hertz scene at
-/// 8 and 16 elements per half-width (final-increment L2 error of the multiplier pressure and
-/// the absolute relative errors of half-width and peak) and the 7-beta element on Cook's
-/// membrane at 8 x 8. About a second in release.
+/// The accuracy figures the regression guard watches (`hycon bench guard`): the Hertz scene
+/// with small kinematics at 8, 16 and 64 elements per half-width (final-increment L2 error of
+/// the multiplier pressure and the absolute relative errors of half-width and peak) and the
+/// 7-beta element on Cook's membrane at 8 x 8. About half a second in release.
 pub fn guard_values() -> Result<Vec<GuardValue>> {
     use crate::contact::iteration::ContactOptions;
     use crate::contact::scene::DiskOnBlock;
     let mut values = Vec::new();
-    for n in [8, 16] {
+    for n in [8, 16, 64] {
         let scene = DiskOnBlock {
             elements_per_half_width: n,
             ..Default::default()
@@ -309,6 +309,8 @@ pub struct SweepCase {
     /// [`DiskOnBlock::radius_over_half_width`]:
     ///     crate::contact::scene::DiskOnBlock::radius_over_half_width
     pub radius_over_half_width: usize,
+    /// Contact kinematics (small in the reference case).
+    pub kinematics: crate::contact::iteration::Kinematics,
 }
 
 impl SweepCase {
@@ -322,6 +324,7 @@ impl SweepCase {
             refactor: false,
             max_element_size: None,
             radius_over_half_width: 64,
+            kinematics: crate::contact::iteration::Kinematics::Small,
         }
     }
 
@@ -352,6 +355,7 @@ impl SweepCase {
             args.extend(["--max-element-size".into(), format!("{c:e}")]);
         }
         args.extend(["--r-over-a".into(), self.radius_over_half_width.to_string()]);
+        args.extend(["--kinematics".into(), self.kinematics.name().into()]);
         args
     }
 }
@@ -399,7 +403,7 @@ pub struct SweepRun {
 pub const SWEEP_CSV_HEADER: &str = "element,mesh,backend,refactor,n,max_element_size,dofs,\
 elements,contact_dofs,active_nodes,iterations,factorizations,mesh_s,assembly_s,\
 factorization_s,flexibility_s,load_solves_s,iterations_s,recovery_s,total_s,peak_rss_mib,\
-start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error,r_over_a";
+start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error,r_over_a,kinematics";
 
 impl SweepRun {
     /// Memory of the run itself: peak minus the process' memory before it started, MiB.
@@ -416,7 +420,7 @@ impl SweepRun {
             .map_or(String::new(), |v| format!("{v:e}"));
         format!(
             "{},{},{},{},{},{cap},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},\
-             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e},{}",
+             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e},{},{}",
             c.formulation.name(),
             mesh_name(c.transition),
             c.backend.name(),
@@ -443,16 +447,18 @@ impl SweepRun {
             self.half_width_error,
             self.peak_error,
             c.radius_over_half_width,
+            c.kinematics.name(),
         )
     }
 
     /// Parse a line written by [`SweepRun::csv_row`] (also without the last column,
-    /// `r_over_a`, which is then 64).
+    /// `kinematics`, which is then finite, as in the files written before it existed, nor the
+    /// one before it, `r_over_a`, which is then 64).
     pub fn from_csv_row(line: &str) -> Result<SweepRun> {
         let bad = |what: &str| Error::InvalidInput(format!("sweep CSV row {line:?}: {what}"));
         let f: Vec<&str> = line.trim().split(',').collect();
         let columns = SWEEP_CSV_HEADER.split(',').count();
-        if f.len() != columns && f.len() != columns - 1 {
+        if !(columns - 2..=columns).contains(&f.len()) {
             return Err(bad("wrong number of columns"));
         }
         let num = |i: usize| -> Result<f64> { f[i].parse().map_err(|_| bad(f[i])) };
@@ -464,7 +470,11 @@ impl SweepRun {
             refactor: f[3].parse().map_err(|_| bad(f[3]))?,
             n: int(4)?,
             max_element_size: if f[5].is_empty() { None } else { Some(num(5)?) },
-            radius_over_half_width: if f.len() == columns { int(26)? } else { 64 },
+            radius_over_half_width: if f.len() > 26 { int(26)? } else { 64 },
+            kinematics: match f.get(27) {
+                Some(k) => k.parse()?,
+                None => crate::contact::iteration::Kinematics::Finite,
+            },
         };
         Ok(SweepRun {
             case,
@@ -541,6 +551,7 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
     let options = ContactOptions {
         backend: case.backend,
         refactor_each_iteration: case.refactor,
+        kinematics: case.kinematics,
         ..Default::default()
     };
     let mut analysis = scene.analysis(options)?;
@@ -620,8 +631,8 @@ pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
     lines.map(SweepRun::from_csv_row).collect()
 }
 
-/// Series key: `R / a`, element, mesh, backend, refactor (one line in the plots).
-fn series_key(c: &SweepCase) -> (usize, usize, u8, usize, bool) {
+/// Series key: kinematics, `R / a`, element, mesh, backend, refactor (one line in the plots).
+fn series_key(c: &SweepCase) -> (&'static str, usize, usize, u8, usize, bool) {
     let f = Formulation::ALL
         .iter()
         .position(|&g| g == c.formulation)
@@ -631,13 +642,23 @@ fn series_key(c: &SweepCase) -> (usize, usize, u8, usize, bool) {
         Transition::Quads => 1,
     };
     let b = BACKENDS.iter().position(|&g| g == c.backend).unwrap_or(0);
-    (c.radius_over_half_width, f, m, b, c.refactor)
+    (
+        c.kinematics.name(),
+        c.radius_over_half_width,
+        f,
+        m,
+        b,
+        c.refactor,
+    )
 }
 
-/// Name of a series: `element/mesh backend` (and `, R/a = ...` when not 64, `, refactor each
-/// iteration`).
+/// Name of a series: `element/mesh backend` (and `, finite kinematics`, `, R/a = ...` when not
+/// 64, `, refactor each iteration`).
 pub fn series_name(c: &SweepCase) -> String {
     let mut s = format!("{} {}", c.config(), c.backend.name());
+    if c.kinematics == crate::contact::iteration::Kinematics::Finite {
+        s += ", finite kinematics";
+    }
     if c.radius_over_half_width != 64 {
         s += &format!(", R/a = {}", c.radius_over_half_width);
     }
@@ -702,18 +723,18 @@ pub fn fit_power(points: &[(f64, f64)]) -> Option<(f64, f64, f64)> {
     Some((p, (my - p * mx).exp(), r2))
 }
 
-/// The markdown summary of a sweep: per series the fastest run reaching 1% and 0.5% L2
-/// error, the ranking at each threshold, growth exponents of time and memory against dofs
+/// The markdown summary of a sweep: per series the fastest run reaching 1%, 0.5%, 0.25% and
+/// 0.1% L2 error (with its dofs and memory), the ranking at each threshold, growth exponents of time and memory against dofs
 /// fitted over the runs with `n >= fit_min_n`, and the re-factor ratios.
 pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
     use std::fmt::Write;
     let series = sweep_series(runs);
     let plain: Vec<&Vec<SweepRun>> = series.iter().filter(|s| !s[0].case.refactor).collect();
     let mut md = String::new();
-    for threshold in [0.01, 0.005] {
+    for threshold in [0.01, 0.005, 0.0025, 0.001] {
         let _ = writeln!(
             md,
-            "\n### Fastest to L2 error <= {}%\n\n| rank | configuration | n | dofs | L2 | total s |\n|---|---|---|---|---|---|",
+            "\n### Fastest to L2 error <= {}%\n\n| rank | configuration | n | dofs | L2 | total s | MiB |\n|---|---|---|---|---|---|---|",
             100.0 * threshold
         );
         let mut reached: Vec<&SweepRun> = plain
@@ -728,13 +749,14 @@ pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
         for (k, r) in reached.iter().enumerate() {
             let _ = writeln!(
                 md,
-                "| {} | {} | {} | {} | {:.3}% | {:.4} |",
+                "| {} | {} | {} | {} | {:.3}% | {:.4} | {:.0} |",
                 k + 1,
                 series_name(&r.case),
                 r.case.n,
                 r.dofs,
                 100.0 * r.l2_error,
-                r.total
+                r.total,
+                r.memory()
             );
         }
         for s in &plain {
@@ -745,7 +767,7 @@ pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
                     .expect("non-empty series");
                 let _ = writeln!(
                     md,
-                    "| - | {} (not reached; best {:.3}% at n = {}) | | | | |",
+                    "| - | {} (not reached; best {:.3}% at n = {}) | | | | | |",
                     series_name(&s[0].case),
                     100.0 * best.l2_error,
                     best.case.n
@@ -795,6 +817,7 @@ pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
                             && c.transition == r.case.transition
                             && c.backend == r.case.backend
                             && c.radius_over_half_width == r.case.radius_over_half_width
+                            && c.kinematics == r.case.kinematics
                     })
                     .and_then(|p| p.iter().find(|o| o.case.n == r.case.n));
                 let (t1, ratio) = once.map_or(("-".into(), "-".into()), |o| {
@@ -1019,6 +1042,18 @@ pub struct SkipRow {
     pub measured: String,
 }
 
+/// What one press of [`skip_press`] measured.
+#[derive(Debug, Clone, Copy, Default)]
+struct Press {
+    /// Whole press, seconds.
+    seconds: f64,
+    timings: crate::contact::iteration::Timings,
+    /// Unknowns of the small systems summed over the iterations.
+    unknowns: usize,
+    /// Contact iterations.
+    iterations: usize,
+}
+
 /// The reference Hertz scene at `n` elements per half-width, pressed by the calibrated
 /// approach in 3 increments; `pair` replaces the scene's candidate pair when given.
 fn skip_press(
@@ -1026,7 +1061,7 @@ fn skip_press(
     pair: Option<crate::contact::iteration::ContactPair>,
     options: crate::contact::iteration::ContactOptions,
     recover_each: bool,
-) -> Result<(f64, crate::contact::iteration::Timings, usize)> {
+) -> Result<Press> {
     use crate::contact::iteration::ContactAnalysis;
     let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
     let clock = Instant::now();
@@ -1039,17 +1074,21 @@ fn skip_press(
             analysis.displacement()?;
         }
     }
-    let unknowns = analysis.records().iter().map(|r| r.active + r.stick).sum();
-    Ok((clock.elapsed().as_secs_f64(), analysis.timings(), unknowns))
+    Ok(Press {
+        seconds: clock.elapsed().as_secs_f64(),
+        timings: analysis.timings(),
+        unknowns: analysis.records().iter().map(|r| r.active + r.stick).sum(),
+        iterations: analysis.records().len(),
+    })
 }
 
 /// Measure what skipping unneeded work saves on the reference Hertz scene at `n` elements per
 /// half-width (each figure the fastest of `repeats` runs): tangential rows at `mu = 0`, the
 /// factorization kept for the whole analysis, the flexibility on the candidate dofs only, the
-/// field recovered only on request, and a scene without contact going straight to one linear
-/// solve.
+/// contact geometry evaluated once (small kinematics), the field recovered only on request,
+/// and a scene without contact going straight to one linear solve.
 pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
-    use crate::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair};
+    use crate::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
     use crate::contact::scene::DiskOnBlock;
     use crate::model::LinearSystem;
     let build = |friction: f64| {
@@ -1063,12 +1102,15 @@ pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
     let scene = build(0.0)?;
     let sticky = build(0.3)?;
     let defaults = ContactOptions::default();
-    let best = |run: &dyn Fn() -> Result<(f64, crate::contact::iteration::Timings, usize)>| {
+    let best = |run: &dyn Fn() -> Result<Press>| {
         (0..repeats.max(1)).try_fold(
-            (f64::INFINITY, Default::default(), 0),
-            |best: (f64, crate::contact::iteration::Timings, usize), _| {
+            Press {
+                seconds: f64::INFINITY,
+                ..Default::default()
+            },
+            |best: Press, _| {
                 let r = run()?;
-                Ok::<_, crate::Error>(if r.0 < best.0 { r } else { best })
+                Ok::<_, crate::Error>(if r.seconds < best.seconds { r } else { best })
             },
         )
     };
@@ -1088,6 +1130,13 @@ pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
     };
     let surfaces = best(&|| skip_press(&scene, Some(whole.clone()), defaults, false))?;
     let recovered = best(&|| skip_press(&scene, None, defaults, true))?;
+    let finite = best(&|| {
+        let options = ContactOptions {
+            kinematics: Kinematics::Finite,
+            ..defaults
+        };
+        skip_press(&scene, None, options, false)
+    })?;
     let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
     let qp = scene.prescribed(1e-3 * scene.half_width, 0.0);
     let timed = |run: &dyn Fn() -> Result<()>| -> Result<f64> {
@@ -1117,16 +1166,16 @@ pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
         SkipRow {
             what: format!(
                 "no tangential rows at mu = 0 ({} unknowns in all iterations; {} with mu = 0.3)",
-                plain.2, friction.2
+                plain.unknowns, friction.unknowns
             ),
-            with_skip: plain.1.iterations,
-            without: friction.1.iterations,
+            with_skip: plain.timings.iterations,
+            without: friction.timings.iterations,
             measured: "contact iterations of the press, mu = 0 vs mu = 0.3".into(),
         },
         SkipRow {
             what: "K factored once per analysis".into(),
-            with_skip: plain.0,
-            without: refactor.0,
+            with_skip: plain.seconds,
+            without: refactor.seconds,
             measured: "whole press; the other re-factors K and rebuilds F every iteration".into(),
         },
         SkipRow {
@@ -1135,15 +1184,25 @@ pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
                 scene.pair.a.len() + scene.pair.b.len(),
                 whole.a.len() + whole.b.len()
             ),
-            with_skip: plain.1.flexibility,
-            without: surfaces.1.flexibility,
+            with_skip: plain.timings.flexibility,
+            without: surfaces.timings.flexibility,
             measured: "flexibility F; the other pairs the whole block top with the whole arc"
                 .into(),
         },
         SkipRow {
+            what: format!(
+                "contact geometry evaluated once: small kinematics ({} iterations; {} with \
+                 finite kinematics)",
+                plain.iterations, finite.iterations
+            ),
+            with_skip: plain.timings.iterations,
+            without: finite.timings.iterations,
+            measured: "contact iterations of the press, small vs finite kinematics".into(),
+        },
+        SkipRow {
             what: "full field only on request".into(),
-            with_skip: plain.0,
-            without: recovered.0,
+            with_skip: plain.seconds,
+            without: recovered.seconds,
             measured: "whole press; the other recovers the field after every increment".into(),
         },
         SkipRow {

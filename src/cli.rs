@@ -225,6 +225,9 @@ enum Bench {
         /// R / a of the scene (a power of two; 64 is the reference scene).
         #[arg(long, default_value_t = 64)]
         r_over_a: usize,
+        /// Contact kinematics of every case.
+        #[arg(long, value_enum, default_value_t = KinematicsChoice::Small)]
+        kinematics: KinematicsChoice,
         /// Runs per case (the plots and the summary take the fastest).
         #[arg(long, default_value_t = 1)]
         repeats: usize,
@@ -252,6 +255,8 @@ enum Bench {
         max_element_size: Option<f64>,
         #[arg(long, default_value_t = 64)]
         r_over_a: usize,
+        #[arg(long, value_enum, default_value_t = KinematicsChoice::Small)]
+        kinematics: KinematicsChoice,
         /// Also print the CSV header.
         #[arg(long)]
         header: bool,
@@ -543,6 +548,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             backend,
             refactor_n,
             r_over_a,
+            kinematics,
             repeats,
             fit_min_n,
             from_csv,
@@ -554,6 +560,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 backend,
                 refactor_n,
                 r_over_a,
+                kinematics: kinematics.into(),
                 repeats,
             };
             sweep(&plan, fit_min_n, from_csv.as_deref(), out)?
@@ -566,6 +573,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             refactor,
             max_element_size,
             r_over_a,
+            kinematics,
             header,
         } => {
             let case = hycon::bench::SweepCase {
@@ -577,6 +585,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 refactor,
                 max_element_size,
                 radius_over_half_width: r_over_a,
+                kinematics: kinematics.into(),
             };
             let run = hycon::bench::sweep_run(&case)?;
             if header {
@@ -1075,6 +1084,7 @@ struct SweepPlan {
     backend: BackendChoice,
     refactor_n: Vec<usize>,
     r_over_a: usize,
+    kinematics: Kinematics,
     repeats: usize,
 }
 
@@ -1132,6 +1142,7 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
                 cases.push(hycon::bench::SweepCase {
                     backend,
                     radius_over_half_width: plan.r_over_a,
+                    kinematics: plan.kinematics,
                     ..parse_config(config, n)?
                 });
             }
@@ -1144,6 +1155,7 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
                     refactor: true,
                     backend,
                     radius_over_half_width: plan.r_over_a,
+                    kinematics: plan.kinematics,
                     ..parse_config(config, n)?
                 });
             }

@@ -416,9 +416,7 @@ fn gross_slip_reaches_the_friction_limit() {
         }
         let nodes = analysis.node_results(0).unwrap();
         assert!(
-            nodes
-                .iter()
-                .all(|n| !matches!(n.state, NodeState::Stick)),
+            nodes.iter().all(|n| !matches!(n.state, NodeState::Stick)),
             "{}: gross slip, no stick node",
             kinematics.name()
         );

@@ -190,7 +190,10 @@ fn converges(modulus_ratio: f64) {
     );
     let mut failures = Vec::new();
     for r_over_a in [32, 64] {
-        let runs: Vec<Run> = NS.iter().map(|&n| run(r_over_a, modulus_ratio, n)).collect();
+        let runs: Vec<Run> = NS
+            .iter()
+            .map(|&n| run(r_over_a, modulus_ratio, n))
+            .collect();
         for r in &runs {
             let (da, dp) = errors(&r.comparison);
             out += &format!(
@@ -244,7 +247,9 @@ fn converges(modulus_ratio: f64) {
     {
         let d = (at_64[0][k] - at_64[1][k]).abs();
         if d > R_OVER_A {
-            failures.push(format!("n = 64: {what} differs by {d:.2e} between R/a = 32 and 64"));
+            failures.push(format!(
+                "n = 64: {what} differs by {d:.2e} between R/a = 32 and 64"
+            ));
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");

@@ -1,11 +1,12 @@
-//! Contact-element kernels: the mortar integrals of one contact pair in the current
-//! configuration (METHOD.md section 2).
+//! Contact-element kernels: the mortar integrals of one contact pair at given nodal positions
+//! (METHOD.md section 2): the current ones `x = X + U` for finite kinematics, the reference
+//! ones `X` (once per analysis) for small kinematics.
 //!
 //! # Conventions
 //! * A contact pair is a **multiplier-side polyline A** and an **opposite polyline B**, each a
 //!   list of node ids of one body's boundary, ordered so that the body lies on the **left** of
 //!   every segment (the [`crate::mesh::Mesh`] edge convention). Node ids index the slice `x` of
-//!   **current** positions `x = X + U` of all nodes.
+//!   positions of all nodes (`x = X + U` below; `X` for small kinematics).
 //! * A segment `p0 -> p1` of A with `d = p1 - p0`, `h = |d|`, unit tangent `t = d / h`, has the
 //!   outward normal `n = (d_y, -d_x) / h` (`d` rotated clockwise: it points away from A, into B)
 //!   and `s = (n_y, -n_x)` (so `s = -t`). B's outward normal is defined the same way from B's
@@ -149,7 +150,7 @@ impl ContactSurface {
     }
 }
 
-/// Evaluate the contact pair `(a, b)` at the current positions `x` (all nodes, indexed by node
+/// Evaluate the contact pair `(a, b)` at the positions `x` (all nodes, indexed by node
 /// id): weights, `F^A`, `F^B`, `R_C`, nodal frames, coverage and coupling rows of every A node
 /// (equations in the [module docs](self)). `search_distance > 0` bounds `|g|` of a valid hit.
 ///

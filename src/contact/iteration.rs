@@ -12,7 +12,7 @@
 //! ```
 //!
 //! and an active node closes its weighted gap `R_C,k` (linearised about the latest iterate
-//! `q_i`, geometry re-evaluated every iteration):
+//! `q_i`):
 //!
 //! ```text
 //! normal row:   n_k . sum_j c_kj q_j = n_k . sum_j c_kj q_i,j - n_k . R_C,k(q_i)
@@ -29,9 +29,18 @@
 //! `u0` is reused when a load is a combination of earlier ones, and the full displacement
 //! field is recovered only when asked for (one solve).
 //!
+//! # Kinematics (METHOD.md section 2b)
+//! [`Kinematics::Small`] (the default) evaluates the contact geometry of every pair once, in
+//! the reference configuration: pairing, frames, weights and the coupling `c_kj` (`F^A`, `F^B`)
+//! are constant, the gap is linear, `R_C,k(q) = R_C,k(X) + sum_j c_kj q_j`, and the normal row
+//! above is exact, so a contact set is solved in one step and no geometry is evaluated during
+//! the iteration. [`Kinematics::Finite`] re-evaluates the geometry at every iterate (the
+//! current positions `x = X + q`), a geometric iteration that lets bodies slide far along each
+//! other.
+//!
 //! # The iteration (per increment)
-//! Start from the last converged states; each iteration solves the small system, re-evaluates
-//! the geometry at the new iterate and applies the paper's rules: activate an open A node whose
+//! Start from the last converged states; each iteration solves the small system, brings the
+//! geometry to the new iterate and applies the paper's rules: activate an open A node whose
 //! weighted gap is below `-gap_tolerance` (B nodes are checked pointwise only over A segments
 //! whose two nodes are open), drop active nodes in tension, turn stick nodes that violate
 //! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
@@ -890,8 +899,7 @@ impl ContactAnalysis {
                             let n = r.normal;
                             node.normal_gap =
                                 -(n[0] * node.gap[0] + n[1] * node.gap[1]) / r.covered_weight;
-                            node.mean_distance =
-                                r.mean_distance + (node.normal_gap - r.normal_gap);
+                            node.mean_distance = r.mean_distance + (node.normal_gap - r.normal_gap);
                         }
                     }
                 }
@@ -1706,10 +1714,7 @@ impl ContactAnalysis {
                 for &j in &self.pairs[p].b {
                     let r = [xg[j][0] - s0[0], xg[j][1] - s0[1]];
                     let xi = (r[0] * d[0] + r[1] * d[1]) / len2;
-                    let hit = [
-                        c0[0] + xi * (c1[0] - c0[0]),
-                        c0[1] + xi * (c1[1] - c0[1]),
-                    ];
+                    let hit = [c0[0] + xi * (c1[0] - c0[0]), c0[1] + xi * (c1[1] - c0[1])];
                     let g = (x[j][0] - hit[0]) * n[0] + (x[j][1] - hit[1]) * n[1];
                     // a B node facing an A node (node-to-node) is that node's weighted gap's
                     // business: only B nodes strictly inside the segment are checked here

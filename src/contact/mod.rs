@@ -1,8 +1,8 @@
 //! Contact between two bodies by the method of Kubomura and Pian (METHOD.md sections 2 to 5).
 //!
-//! * [`geometry`]: pure contact-element kernels of one contact pair in the current
-//!   configuration: nodal frames, weights, the mortar matrices `F^A` and `F^B`, the weighted gap
-//!   `R_C`, coverage and the coupling rows.
+//! * [`geometry`]: pure contact-element kernels of one contact pair at given positions (the
+//!   reference ones for small kinematics, the current ones for finite): nodal frames, weights,
+//!   the mortar matrices `F^A` and `F^B`, the weighted gap `R_C`, coverage and the coupling rows.
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and

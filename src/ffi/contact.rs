@@ -212,15 +212,19 @@ pub struct HyconNodeResult {
     pub tn: f64,
     /// Tangential traction on A along `tangent`.
     pub ts: f64,
-    /// Nodal normal (A's outward), converged configuration.
+    /// Nodal normal (A's outward): of the reference configuration under small kinematics, of
+    /// the converged one under finite kinematics.
     pub normal: [f64; 2],
     /// Nodal tangent `(n_y, -n_x)`.
     pub tangent: [f64; 2],
-    /// Current position.
+    /// Current position (reference position plus the converged displacement).
     pub position: [f64; 2],
-    /// Tributary length `integral M_k ds`.
+    /// Tributary length `integral M_k ds`, measured in the configuration the geometry lives in
+    /// (reference under small kinematics, converged under finite): the tractions are per unit
+    /// length of it, so `sum -tn * weight` is the normal load only where A is straight.
     pub weight: f64,
-    /// Weighted normal gap per unit length (`< 0` penetration).
+    /// Weighted normal gap per unit length (`< 0` penetration; infinite where B does not
+    /// cover the node's support).
     pub gap: f64,
     /// Equivalent nodal contact force on A, `sum_k F^A_kj t_k` (x, y).
     pub force: [f64; 2],
@@ -242,8 +246,10 @@ pub struct HyconBNodeResult {
     pub position: [f64; 2],
 }
 
-/// Contact-element quantities of one A node in the converged configuration (the reference one
-/// before the first increment), for hosts that assemble the mixed system themselves.
+/// Contact-element quantities of one A node at the converged state (the reference one before
+/// the first increment; under small kinematics the pairing, frames and weights are always the
+/// reference ones and the gaps linear in the displacements), for hosts that assemble the mixed
+/// system themselves.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct HyconContactNode {
