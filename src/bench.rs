@@ -619,9 +619,11 @@ pub fn sweep_csv(runs: &[SweepRun]) -> String {
 /// Parse a CSV written by [`sweep_csv`].
 pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    let legacy = SWEEP_CSV_HEADER.trim_end_matches(",r_over_a");
+    // files written before the last columns existed (kinematics, then r_over_a)
+    let older = SWEEP_CSV_HEADER.trim_end_matches(",kinematics");
+    let oldest = older.trim_end_matches(",r_over_a");
     match lines.next() {
-        Some(h) if h.trim() == SWEEP_CSV_HEADER || h.trim() == legacy => {}
+        Some(h) if [SWEEP_CSV_HEADER, older, oldest].contains(&h.trim()) => {}
         _ => {
             return Err(Error::InvalidInput(
                 "not a sweep CSV (header differs)".into(),

@@ -1,6 +1,7 @@
 //! The command-line program: the contact subcommands on small cases, their JSON, SVG and VTU
 //! output, and error handling.
 
+use hycon::contact::iteration::Kinematics;
 use hycon::contact::scene::DiskOnBlock;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -434,13 +435,14 @@ fn bench_sweep_one_takes_the_scene_options() {
     let r = &runs[0];
     assert_eq!(r.case.radius_over_half_width, 128);
     assert_eq!(r.case.config(), "q4/quads");
+    assert_eq!(r.case.kinematics, Kinematics::Small, "the default");
     assert!(r.peak_rss >= r.start_rss, "{text}");
     let bad = hycon(&["bench", "sweep-one", "--r-over-a", "100"]);
     assert!(!bad.status.success());
     assert!(String::from_utf8_lossy(&bad.stderr).contains("power of two"));
 }
 
-/// `hycon bench skip` prints its five rows with finite, positive times (timings are printed,
+/// `hycon bench skip` prints its six rows with finite, positive times (timings are printed,
 /// never compared).
 #[test]
 fn bench_skip_prints_the_table() {
@@ -455,7 +457,7 @@ fn bench_skip_prints_the_table() {
         .lines()
         .filter(|l| l.starts_with("| ") && !l.starts_with("| skipped"))
         .collect();
-    assert_eq!(rows.len(), 5, "{text}");
+    assert_eq!(rows.len(), 6, "{text}");
     for row in rows {
         let cells: Vec<&str> = row.split('|').map(str::trim).collect();
         for cell in &cells[2..4] {
@@ -463,4 +465,23 @@ fn bench_skip_prints_the_table() {
             assert!(t.is_finite() && t > 0.0, "{row}");
         }
     }
+}
+
+/// The committed sweeps parse back with their kinematics: the 0.3 sweep's `kinematics` column
+/// says small, and the 0.2 files, written before the column existed, read as finite.
+#[test]
+fn committed_sweeps_parse_with_their_kinematics() {
+    let read = |path: &str| {
+        let text = std::fs::read_to_string(path).expect("committed sweep CSV");
+        hycon::bench::parse_sweep_csv(&text).expect("it parses")
+    };
+    let current = read("docs/bench/sweep.csv");
+    let old = read("docs/bench/finite-kinematics/sweep.csv");
+    assert!(!current.is_empty() && !old.is_empty());
+    assert!(
+        current
+            .iter()
+            .all(|r| r.case.kinematics == Kinematics::Small)
+    );
+    assert!(old.iter().all(|r| r.case.kinematics == Kinematics::Finite));
 }
