@@ -1427,9 +1427,16 @@ static bool test_contact_failure_max_iterations(void) {
 /* A slide that takes the A surface beyond the end of B fails the increment; the pressed state
  * stays, and the next (smaller) increment works. */
 static bool test_contact_failure_keeps_state(void) {
-    HyconContact *c = make_contact(NULL), *reference = make_contact(NULL);
+    /* finite kinematics: sliding the top block off the bottom one fails (small kinematics would
+     * keep the reference pairing and succeed) */
+    HyconContactOptions finite;
+    HyconContact *c, *reference;
     HyconIncrementInfo info;
     State before, after, ref;
+    EXPECT(hycon_contact_options_default(&finite) == HYCON_OK);
+    finite.kinematics = HYCON_KINEMATICS_FINITE;
+    c = make_contact(&finite);
+    reference = make_contact(&finite);
     EXPECT(c != NULL && reference != NULL);
     EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
     EXPECT(snapshot(c, &before) && pressed(&before));

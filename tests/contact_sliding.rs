@@ -586,3 +586,47 @@ fn frictional_sliding() {
     print_iterations(&analysis, STEPS + 2);
     println!("run time {:.2} s", clock.elapsed().as_secs_f64());
 }
+
+/// Small kinematics freeze the pairing, which holds for slides of a fraction of an element: a
+/// slide of two elements in one increment fails with an error that points to finite kinematics,
+/// and the analysis keeps its last converged state (the next, valid increment continues from
+/// it and matches a fresh analysis).
+#[test]
+fn small_kinematics_refuse_extensive_sliding() {
+    let scene = scene(0.0);
+    let h = scene.half_width / N as f64;
+    let options = ContactOptions {
+        tolerance: TOL,
+        kinematics: Kinematics::Small,
+        ..Default::default()
+    };
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    let mut analysis = scene.analysis(options).unwrap();
+    let approach = scene.calibrated_approach(&mut analysis).unwrap();
+    analysis
+        .increment(&f, &scene.prescribed(approach, 0.0))
+        .unwrap();
+    let before = analysis.node_results(0).unwrap();
+    let err = analysis
+        .increment(&f, &scene.prescribed(approach, 2.0 * h))
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("use finite kinematics"), "{err}");
+    assert_eq!(analysis.node_results(0).unwrap(), before, "state kept");
+    // a slide of 0.2 h is fine, and continues from the kept state
+    analysis
+        .increment(&f, &scene.prescribed(approach, 0.2 * h))
+        .unwrap();
+    let mut fresh = scene.analysis(options).unwrap();
+    fresh
+        .increment(&f, &scene.prescribed(approach, 0.2 * h))
+        .unwrap();
+    let (a, b) = (
+        analysis.node_results(0).unwrap(),
+        fresh.node_results(0).unwrap(),
+    );
+    let peak = a.iter().map(|n| n.tn.abs()).fold(0.0, f64::max);
+    for (x, y) in a.iter().zip(&b) {
+        assert!((x.tn - y.tn).abs() <= 1e-8 * peak, "{x:?} vs {y:?}");
+    }
+}

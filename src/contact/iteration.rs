@@ -1070,6 +1070,7 @@ impl ContactAnalysis {
             if changes == 0 && r <= self.options.tolerance {
                 self.uncovered(&surfaces, &states)?;
                 self.edge_penetration(number, &surfaces, &locked_open, &uc, &startc)?;
+                self.small_sliding(number, &states, &uc)?;
                 self.timings.factorization += refactoring;
                 self.timings.iterations += clock.elapsed().as_secs_f64() - refactoring;
                 let mut prescribed = qp.to_vec();
@@ -1175,6 +1176,38 @@ impl ContactAnalysis {
                     -gap,
                     -gap / scale
                 )));
+            }
+        }
+        Ok(())
+    }
+
+    /// Under small kinematics the pairing of A with B is frozen, which holds while the surfaces
+    /// slide by a fraction of an element: an active node whose relative tangential displacement
+    /// since the reference configuration, `s_k . sum_j c_kj u_j / covered weight` (the mean slip
+    /// of A along B over the node's support), exceeds [`SMALL_SLIDING_LIMIT`] of its tributary
+    /// length fails the increment, naming the node and pointing to finite kinematics.
+    fn small_sliding(&self, number: usize, states: &[Vec<NodeState>], uc: &[f64]) -> Result<()> {
+        if self.options.kinematics != Kinematics::Small {
+            return Ok(());
+        }
+        for (reference, states) in self.reference.iter().zip(states) {
+            for (node, state) in reference.nodes.iter().zip(states) {
+                if *state == NodeState::Open || node.covered_weight <= 0.0 {
+                    continue;
+                }
+                let change = self.coupled(&node.coupling, uc);
+                let slip = (node.tangent[0] * change[0] + node.tangent[1] * change[1])
+                    / node.covered_weight;
+                if slip.abs() > SMALL_SLIDING_LIMIT * node.weight {
+                    return Err(Error::Contact(format!(
+                        "increment {number}: node {} has slid {:.2} of its tributary length \
+                         along the opposite surface, beyond what small kinematics (the \
+                         pairing frozen in the reference configuration) can represent: use \
+                         finite kinematics",
+                        self.bodies.external(node.node),
+                        slip.abs() / node.weight
+                    )));
+                }
             }
         }
         Ok(())
@@ -1349,6 +1382,10 @@ fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, 
     }
     flips
 }
+
+/// How far an active node may slide along the opposite surface under small kinematics, as a
+/// fraction of its tributary length (see [`ContactAnalysis::small_sliding`]).
+pub const SMALL_SLIDING_LIMIT: f64 = 0.5;
 
 /// How far a node locked open after an open/closed cycle may penetrate at convergence,
 /// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
