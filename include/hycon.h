@@ -380,9 +380,9 @@ typedef struct HyconCouplingEntry {
 // Small deformation (the default): the pairing, frames, weights and contact-element matrices
 // are evaluated once in the reference configuration and the gap is linear in the
 // displacements, consistent with small-strain elasticity (Hertz, Cattaneo-Mindlin); valid
-// while the surfaces slide by a small fraction of an element: an increment in which an active
-// node slides by more than half its tributary length fails with `HYCON_ERROR_CONTACT`
-// ("use finite kinematics"), keeping the last converged state.
+// while the surfaces slide little: an increment in which sliding with the frozen pairing would
+// move an active node's gap by more than 10% of the contact's normal approach fails with
+// `HYCON_ERROR_CONTACT` ("use finite kinematics"), keeping the last converged state.
 #define HYCON_KINEMATICS_SMALL 1
 
 // Finite kinematics: the contact geometry is evaluated at the current positions in every

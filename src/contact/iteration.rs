@@ -1181,33 +1181,53 @@ impl ContactAnalysis {
         Ok(())
     }
 
-    /// Under small kinematics the pairing of A with B is frozen, which holds while the surfaces
-    /// slide by a fraction of an element: an active node whose relative tangential displacement
-    /// since the reference configuration, `s_k . sum_j c_kj u_j / covered weight` (the mean slip
-    /// of A along B over the node's support), exceeds [`SMALL_SLIDING_LIMIT`] of its tributary
-    /// length fails the increment, naming the node and pointing to finite kinematics.
+    /// Under small kinematics the pairing of A with B is frozen in the reference configuration.
+    /// When the surfaces slide along each other by `slip_k = s_k . sum_j c_kj u_j / covered
+    /// weight` at node `k` (the mean tangential displacement of A relative to B over the node's
+    /// support), the frozen pairing misplaces B by `slip_k`, which changes the gap by about
+    /// `|slip_k| |dg0/ds|_k`, `dg0/ds` the slope of the reference gap along A (the angle between
+    /// the surfaces). That is the linearization that Hertz theory makes too, harmless while it
+    /// is small against the contact's normal approach `delta` (the largest change of a normal
+    /// gap over the active nodes); an active node whose error exceeds [`SMALL_SLIDING_LIMIT`]
+    /// `delta` fails the increment, naming the node and pointing to finite kinematics.
     fn small_sliding(&self, number: usize, states: &[Vec<NodeState>], uc: &[f64]) -> Result<()> {
         if self.options.kinematics != Kinematics::Small {
             return Ok(());
         }
-        for (reference, states) in self.reference.iter().zip(states) {
-            for (node, state) in reference.nodes.iter().zip(states) {
-                if *state == NodeState::Open || node.covered_weight <= 0.0 {
-                    continue;
-                }
-                let change = self.coupled(&node.coupling, uc);
-                let slip = (node.tangent[0] * change[0] + node.tangent[1] * change[1])
-                    / node.covered_weight;
-                if slip.abs() > SMALL_SLIDING_LIMIT * node.weight {
-                    return Err(Error::Contact(format!(
-                        "increment {number}: node {} has slid {:.2} of its tributary length \
-                         along the opposite surface, beyond what small kinematics (the \
-                         pairing frozen in the reference configuration) can represent: use \
-                         finite kinematics",
-                        self.bodies.external(node.node),
-                        slip.abs() / node.weight
-                    )));
-                }
+        let active = || {
+            self.reference
+                .iter()
+                .zip(states)
+                .flat_map(|(surface, states)| {
+                    surface
+                        .nodes
+                        .iter()
+                        .enumerate()
+                        .zip(states)
+                        .filter(|(_, s)| **s != NodeState::Open)
+                        .map(move |((k, node), _)| (surface, k, node))
+                })
+        };
+        let along = |node: &geometry::ContactNode, d: [f64; 2]| {
+            let change = self.coupled(&node.coupling, uc);
+            (d[0] * change[0] + d[1] * change[1]) / node.covered_weight
+        };
+        let delta = active()
+            .map(|(_, _, node)| along(node, node.normal).abs())
+            .fold(0.0, f64::max);
+        let x = self.bodies.positions();
+        for (surface, k, node) in active() {
+            let slope = reference_gap_slope(surface, k, x);
+            let slip = along(node, node.tangent);
+            if (slip * slope).abs() > SMALL_SLIDING_LIMIT * delta {
+                return Err(Error::Contact(format!(
+                    "increment {number}: node {} slid {slip:.3e} along the opposite surface, \
+                     which moves its gap by about {:.1}% of the normal approach: beyond small \
+                     kinematics (the pairing frozen in the reference configuration): use \
+                     finite kinematics",
+                    self.bodies.external(node.node),
+                    100.0 * (slip * slope).abs() / delta
+                )));
             }
         }
         Ok(())
@@ -1383,9 +1403,29 @@ fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, 
     flips
 }
 
-/// How far an active node may slide along the opposite surface under small kinematics, as a
-/// fraction of its tributary length (see [`ContactAnalysis::small_sliding`]).
-pub const SMALL_SLIDING_LIMIT: f64 = 0.5;
+/// Under small kinematics, the largest change of an active node's gap caused by sliding with
+/// the pairing frozen, relative to the contact's normal approach (see
+/// [`ContactAnalysis::small_sliding`]).
+pub const SMALL_SLIDING_LIMIT: f64 = 0.1;
+
+/// `|dg0/ds|` at A node `k` of a reference surface: the slope of the reference normal gap along
+/// A (central difference over the covered neighbours, one-sided at an end; 0 when no neighbour
+/// is covered). `x` are the reference positions.
+fn reference_gap_slope(surface: &ContactSurface, k: usize, x: &[[f64; 2]]) -> f64 {
+    let nodes = &surface.nodes;
+    let covered = |i: usize| nodes[i].normal_gap.is_finite();
+    let lo = if k > 0 && covered(k - 1) { k - 1 } else { k };
+    let hi = if k + 1 < nodes.len() && covered(k + 1) {
+        k + 1
+    } else {
+        k
+    };
+    if lo == hi {
+        return 0.0;
+    }
+    let (p, q) = (x[nodes[lo].node], x[nodes[hi].node]);
+    ((nodes[hi].normal_gap - nodes[lo].normal_gap) / (q[0] - p[0]).hypot(q[1] - p[1])).abs()
+}
 
 /// How far a node locked open after an open/closed cycle may penetrate at convergence,
 /// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
