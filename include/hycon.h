@@ -315,8 +315,6 @@ typedef struct HyconCouplingEntry {
 
 
 
-
-
 // Success.
 #define HYCON_OK 0
 

@@ -68,8 +68,8 @@ grep -E '^test result:' "$log" |
     awk '{p += $4; f += $6; i += $8} END {printf "==== cargo test: %d passed, %d failed, %d ignored\n", p, f, i}'
 rm -f "$log"
 
-step "cargo test --locked --features suitesparse --test backends (faer and CHOLMOD agree)"
-cargo test --locked --features suitesparse --test backends
+step "cargo test --locked -p hycon-lab --features suitesparse --test backends (faer and CHOLMOD agree)"
+cargo test --locked -p hycon-lab --features suitesparse --test backends
 
 step "cmake configure"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$stage"
@@ -104,7 +104,7 @@ LD_LIBRARY_PATH="$build/relocated/lib" "$build/consumer-pc"
 
 step "cargo clippy --all-targets -- -D warnings (without and with feature suitesparse)"
 cargo clippy --locked --all-targets -- -D warnings
-cargo clippy --locked --all-targets --features suitesparse -- -D warnings
+cargo clippy --locked --workspace --all-targets --all-features -- -D warnings
 
 step "cargo fmt --check"
 cargo fmt --check

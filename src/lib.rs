@@ -12,17 +12,16 @@
 //! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.
 //! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
 //!   stresses.
-//! * [`contact`]: contact-element kernels (mortar projection, weighted gaps, coupling rows).
-//! * [`cases`]: reference problems (Cook's membrane, the Pian-Sumihara cantilever).
-//! * [`bench`](mod@bench): the measurements behind the README's performance figures.
+//! * [`contact`]: contact-element kernels (mortar projection, weighted gaps, coupling rows), the
+//!   bodies (hycon's model or a host's system) and the contact-set iteration with its results.
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
-//! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
+//!
+//! The reference scenes and cases, the paper's examples, the benchmarks, the report writers and
+//! the `hycon` program live beside the library in the workspace crate `hycon-lab` (`lab/`).
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]
 
 pub mod assembly;
-pub mod bench;
-pub mod cases;
 pub mod contact;
 pub mod element;
 pub mod error;
@@ -30,7 +29,6 @@ pub mod ffi;
 pub mod material;
 pub mod mesh;
 pub mod model;
-pub mod report;
 pub mod solver;
 
 pub use error::{Error, Result, ShapeError};

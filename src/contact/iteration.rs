@@ -1404,8 +1404,9 @@ fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, 
 }
 
 /// Under small kinematics, the largest change of an active node's gap caused by sliding with
-/// the pairing frozen, relative to the contact's normal approach (see
-/// [`ContactAnalysis::small_sliding`]).
+/// the pairing frozen (slip times the angle between the surfaces), relative to the contact's
+/// normal approach (the largest change of a normal gap over the active nodes); beyond it the
+/// increment fails and names the node.
 pub const SMALL_SLIDING_LIMIT: f64 = 0.1;
 
 /// `|dg0/ds|` at A node `k` of a reference surface: the slope of the reference normal gap along

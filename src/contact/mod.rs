@@ -7,11 +7,7 @@
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
 //!   its results.
-//! * [`scene`]: the reference disk-on-block scene and its comparison with Hertz.
-//! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 
 pub mod bodies;
-pub mod examples;
 pub mod geometry;
 pub mod iteration;
-pub mod scene;

@@ -1,4 +1,4 @@
-//! Output writers for the contact examples ([`crate::contact::examples`]).
+//! Output writers for the contact examples ([`crate::examples`]).
 //!
 //! * [`svg`]: plots of contact pressure and shear against the closed forms (Hertz,
 //!   Cattaneo-Mindlin, `mu p` for slip), one file per example, one panel per run, one curve per
@@ -37,7 +37,7 @@ pub enum ReportError {
     Json(#[from] serde_json::Error),
     /// Recovering the stresses failed.
     #[error(transparent)]
-    Model(#[from] crate::Error),
+    Model(#[from] hycon::Error),
 }
 
 /// Result alias of the writers.

@@ -28,7 +28,7 @@
 //!   error (the O(a / R) offset of finite kinematics is gone).
 
 use hycon::contact::iteration::{ContactOptions, Kinematics};
-use hycon::contact::scene::{DiskOnBlock, HertzComparison};
+use hycon_lab::scene::{DiskOnBlock, HertzComparison};
 
 /// Largest ratio of the method's L2 error to the best approximation's on the same nodes.
 const QUASI: f64 = 1.9;

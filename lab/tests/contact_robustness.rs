@@ -8,7 +8,7 @@
 //! open, its penetration checked).
 
 use hycon::contact::iteration::{ContactOptions, Kinematics, NodeState};
-use hycon::contact::scene::DiskOnBlock;
+use hycon_lab::scene::DiskOnBlock;
 
 #[test]
 fn frictional_pressing_on_a_fine_mesh_converges() {

@@ -22,11 +22,11 @@
 //!   nodes, integrated on 64 sub-intervals per segment);
 //! * Hertz at the same `P` with `E*` of the scene.
 
-use hycon::cases::Hertz;
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState,
 };
-use hycon::contact::scene::{DiskOnBlock, Scene};
+use hycon_lab::cases::Hertz;
+use hycon_lab::scene::{DiskOnBlock, Scene};
 
 /// Elements per target half-width.
 const N: usize = 16;

@@ -9,12 +9,12 @@
 use faer::Mat;
 use faer::sparse::{SparseColMat, Triplet};
 use hycon::assembly::{DofMap, SparsePattern, dof};
-use hycon::cases;
 use hycon::element::Formulation;
 use hycon::mesh::generate::{self, Grading};
 use hycon::model::{LinearSystem, Model};
 use hycon::solver::{Backend, SparseCholesky};
 use hycon::{Analysis, Error, Material};
+use hycon_lab::cases;
 use std::time::Instant;
 
 const BACKENDS: [Backend; 2] = [Backend::Faer, Backend::Cholmod];
@@ -316,7 +316,7 @@ fn timing_faer_vs_cholmod_100k() {
 #[test]
 fn contact_analysis_agrees() {
     use hycon::contact::iteration::ContactOptions;
-    use hycon::contact::scene::DiskOnBlock;
+    use hycon_lab::scene::DiskOnBlock;
     let scene = DiskOnBlock {
         elements_per_half_width: 8,
         friction: 0.3,

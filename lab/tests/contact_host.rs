@@ -16,9 +16,9 @@ use hycon::contact::bodies::{
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult,
 };
-use hycon::contact::scene::{DiskOnBlock, Scene};
 use hycon::model::Model;
 use hycon::solver::SparseCholesky;
+use hycon_lab::scene::{DiskOnBlock, Scene};
 
 const SHIFT: usize = 1000;
 

@@ -2,7 +2,7 @@
 //! output, and error handling.
 
 use hycon::contact::iteration::Kinematics;
-use hycon::contact::scene::DiskOnBlock;
+use hycon_lab::scene::DiskOnBlock;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -318,7 +318,7 @@ fn bench_sweep_runs_at_tiny_sizes_and_writes_the_csv_and_plots() {
         String::from_utf8_lossy(&out.stderr)
     );
     let csv = std::fs::read_to_string(dir.path().join("sweep.csv")).expect("sweep.csv");
-    let runs = hycon::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
+    let runs = hycon_lab::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
     let plain: Vec<_> = runs.iter().filter(|r| !r.case.refactor).collect();
     assert_eq!(plain.len(), 4, "2 configurations x n = 2, 4:\n{csv}");
     for r in &runs {
@@ -400,7 +400,7 @@ fn bench_contact_scale_writes_the_csv_and_the_fit() {
         String::from_utf8_lossy(&out.stderr)
     );
     let csv = std::fs::read_to_string(dir.path().join("contact_scale.csv")).expect("csv");
-    let runs = hycon::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
+    let runs = hycon_lab::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
     assert_eq!(runs.len(), 3);
     // a smaller cap never gives fewer dofs
     assert!(runs.windows(2).all(|w| w[1].dofs >= w[0].dofs), "{csv}");
@@ -430,7 +430,7 @@ fn bench_sweep_one_takes_the_scene_options() {
         String::from_utf8_lossy(&out.stderr)
     );
     let text = String::from_utf8_lossy(&out.stdout);
-    let runs = hycon::bench::parse_sweep_csv(&text).expect("header and one row");
+    let runs = hycon_lab::bench::parse_sweep_csv(&text).expect("header and one row");
     assert_eq!(runs.len(), 1);
     let r = &runs[0];
     assert_eq!(r.case.radius_over_half_width, 128);
@@ -472,8 +472,9 @@ fn bench_skip_prints_the_table() {
 #[test]
 fn committed_sweeps_parse_with_their_kinematics() {
     let read = |path: &str| {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(path);
         let text = std::fs::read_to_string(path).expect("committed sweep CSV");
-        hycon::bench::parse_sweep_csv(&text).expect("it parses")
+        hycon_lab::bench::parse_sweep_csv(&text).expect("it parses")
     };
     let current = read("docs/bench/sweep.csv");
     let old = read("docs/bench/finite-kinematics/sweep.csv");

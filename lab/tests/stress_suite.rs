@@ -4,7 +4,7 @@
 //! garbage. Each test prints a small table (`cargo test --test stress_suite -- --nocapture`).
 //!
 //! Two set-ups are used:
-//! * the Hertz scene of `hycon::contact::scene` (half disk on a block, plane strain), pressed by
+//! * the Hertz scene of `hycon_lab::scene` (half disk on a block, plane strain), pressed by
 //!   the calibrated approach (target `a = R / 64`) and compared with Hertz at the same load;
 //! * the contact patch test of `tests/contact_patch.rs` (two stacked blocks, non-matching flat
 //!   interface, uniform pressure), whose discrete solution is the exact uniform state to
@@ -19,11 +19,11 @@ use hycon::Error;
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeState, PlateControl,
 };
-use hycon::contact::scene::{DiskOnBlock, HertzComparison};
 use hycon::element::Formulation;
 use hycon::material::{Analysis, Material};
 use hycon::mesh::{Mesh, generate, quality};
 use hycon::model::{Model, Solution};
+use hycon_lab::scene::{DiskOnBlock, HertzComparison};
 use std::time::Instant;
 
 // ---------------------------------------------------------------------------------------------

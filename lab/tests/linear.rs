@@ -2,12 +2,12 @@
 //! (with transition elements), Cook's membrane, the Pian-Sumihara cantilever, near
 //! incompressibility, and invariance under a change of units.
 
-use hycon::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
 use hycon::element::Formulation;
 use hycon::mesh::Mesh;
 use hycon::mesh::generate::{self, Grading};
 use hycon::model::Model;
 use hycon::{Analysis, Material};
+use hycon_lab::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
 
 /// Linear displacement field `u = a + B x` of the patch test.
 fn linear_field(p: [f64; 2]) -> [f64; 2] {

@@ -17,10 +17,12 @@
 //! pressure and shear along the contact with the closed forms at the same `x`, the iteration and
 //! node counts, `Q/P`, and its time; each run keeps the time split of the analysis.
 
-use super::iteration::{ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState};
-use super::scene::{DiskOnBlock, HertzComparison, Scene};
-use crate::error::{Error, Result};
-use crate::model::{LinearSystem, Model};
+use crate::scene::{DiskOnBlock, HertzComparison, Scene};
+use hycon::contact::iteration::{
+    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState,
+};
+use hycon::error::{Error, Result};
+use hycon::model::{LinearSystem, Model};
 use serde::Serialize;
 use std::time::Instant;
 

@@ -1,14 +1,14 @@
 //! Hertz validation of the contact method (METHOD.md section 7): a half disk of radius R pressed
 //! onto a large block, plane strain, frictionless, node-to-internode meshes graded toward the
 //! contact with transition elements, displacement control in 3 increments up to the approach
-//! that gives a = R/64 (see `hycon::contact::scene` for every number of the set-up).
+//! that gives a = R/64 (see `hycon_lab::scene` for every number of the set-up).
 //!
 //! Tolerances: the half-width and the peak pressure within 1% (the set-up offset of order a/R,
 //! measured 0.3-0.6%, plus discretisation); the continuous L2 error of the multiplier pressure at
 //! most 2% at about 16 elements per half-width, decreasing with refinement.
 
 use hycon::contact::iteration::ContactOptions;
-use hycon::contact::scene::{DiskOnBlock, HertzComparison};
+use hycon_lab::scene::{DiskOnBlock, HertzComparison};
 
 /// Run the scene and return the comparison at each of the 3 increments (after the calibration
 /// increment), with the iteration counts.

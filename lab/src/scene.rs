@@ -26,14 +26,16 @@
 //! kinematics (the default) solve the linearized problem of Hertz theory and have no such
 //! offset; 64 stays the reference so that both kinematics run on one scene.
 
-use super::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult};
 use crate::cases::Hertz;
-use crate::element::Formulation;
-use crate::error::{Error, Result};
-use crate::material::{Analysis, Material};
-use crate::mesh::Mesh;
-use crate::mesh::generate::{self, Grading, Target, Transition};
-use crate::model::Model;
+use hycon::contact::iteration::{
+    ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult,
+};
+use hycon::element::Formulation;
+use hycon::error::{Error, Result};
+use hycon::material::{Analysis, Material};
+use hycon::mesh::Mesh;
+use hycon::mesh::generate::{self, Grading, Target, Transition};
+use hycon::model::Model;
 
 /// The disk-on-block scene.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -12,8 +12,8 @@
 //! 5- and 6-node transition elements `VTK_POLYGON` (7), nodes counter-clockwise in boundary order.
 
 use super::{Result, write_file};
-use crate::material::Analysis;
-use crate::model::{Model, Solution};
+use hycon::material::Analysis;
+use hycon::model::{Model, Solution};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -33,7 +33,7 @@ pub fn to_string(model: &Model, q: &[f64]) -> Result<String> {
     let mesh = &model.mesh;
     let (n_points, n_cells) = (mesh.n_nodes(), mesh.n_elements());
     if q.len() != 2 * n_points {
-        return Err(crate::Error::InvalidInput(format!(
+        return Err(hycon::Error::InvalidInput(format!(
             "displacement has {} values, the mesh {} dofs",
             q.len(),
             2 * n_points
@@ -144,7 +144,7 @@ pub fn write(path: &Path, model: &Model, q: &[f64]) -> Result<()> {
 }
 
 /// File stem of run `run` of `example`: the example's name, plus the run's tag when it has one.
-pub fn stem(example: &crate::contact::examples::Example, run: usize) -> String {
+pub fn stem(example: &crate::examples::Example, run: usize) -> String {
     let tag = &example.runs[run].tag;
     if tag.is_empty() {
         example.name.clone()
@@ -159,7 +159,7 @@ pub fn stem(example: &crate::contact::examples::Example, run: usize) -> String {
 /// fields are skipped. Returns the files written.
 pub fn write_example(
     dir: &Path,
-    example: &crate::contact::examples::Example,
+    example: &crate::examples::Example,
     every_increment: bool,
 ) -> Result<Vec<std::path::PathBuf>> {
     let mut written = Vec::new();

@@ -9,11 +9,11 @@
 //!   strain under end moment the exact deflection is `M L^2 / (2 E' I)`, `E' = E / (1 - nu^2)`,
 //!   which is the locking test for nearly incompressible material.
 
-use crate::element::Formulation;
-use crate::error::{Error, Result};
-use crate::material::{Analysis, Material};
-use crate::mesh::generate;
-use crate::model::Model;
+use hycon::element::Formulation;
+use hycon::error::{Error, Result};
+use hycon::material::{Analysis, Material};
+use hycon::mesh::generate;
+use hycon::model::Model;
 
 /// Converged vertical tip displacement of Cook's membrane.
 pub const COOK_CONVERGED: f64 = 23.96;

@@ -8,7 +8,7 @@
 //! increment) to red (last).
 
 use super::{ReportError, Result, write_file};
-use crate::contact::examples::{Example, Increment, Phase, Run};
+use crate::examples::{Example, Increment, Phase, Run};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;

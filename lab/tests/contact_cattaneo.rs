@@ -16,9 +16,9 @@
 //! distance between the two stick/slip boundaries, each located halfway between the outermost
 //! stick node and the next (slip) node.
 
-use hycon::cases::Hertz;
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, NodeResult, NodeState};
-use hycon::contact::scene::DiskOnBlock;
+use hycon_lab::cases::Hertz;
+use hycon_lab::scene::DiskOnBlock;
 
 const N: usize = 16;
 const MU: f64 = 0.3;

@@ -2,12 +2,12 @@
 //! reference case.
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use hycon::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
-use hycon::contact::examples::{self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase};
 use hycon::contact::iteration::Kinematics;
 use hycon::element::Formulation;
 use hycon::material::Analysis;
-use hycon::report;
+use hycon_lab::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
+use hycon_lab::examples::{self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase};
+use hycon_lab::report;
 use serde::Serialize;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -576,20 +576,20 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             kinematics,
             header,
         } => {
-            let case = hycon::bench::SweepCase {
+            let case = hycon_lab::bench::SweepCase {
                 formulation: element.into(),
                 transition: mesh.into(),
                 n,
-                backend: hycon::bench::parse_backend(&backend)
+                backend: hycon_lab::bench::parse_backend(&backend)
                     .ok_or_else(|| format!("unknown backend {backend:?}"))?,
                 refactor,
                 max_element_size,
                 radius_over_half_width: r_over_a,
                 kinematics: kinematics.into(),
             };
-            let run = hycon::bench::sweep_run(&case)?;
+            let run = hycon_lab::bench::sweep_run(&case)?;
             if header {
-                println!("{}", hycon::bench::SWEEP_CSV_HEADER);
+                println!("{}", hycon_lab::bench::SWEEP_CSV_HEADER);
             }
             println!("{}", run.csv_row());
         }
@@ -601,14 +601,14 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
         } => contact_scale(n, &config, &levels, &backend, out)?,
         Bench::Kernels { repeats } => {
             println!("element stiffness kernel, {repeats} evaluations each:");
-            for k in hycon::bench::kernel_times(repeats)? {
+            for k in hycon_lab::bench::kernel_times(repeats)? {
                 println!("  {:<26} {:>8.0} ns/element", k.kind, k.nanoseconds);
             }
         }
         Bench::Skip { n, repeats } => {
             println!("| skipped | with the skip (s) | without (s) | saving | what is timed |");
             println!("|---|---|---|---|---|");
-            for r in hycon::bench::skip_table(n, repeats)? {
+            for r in hycon_lab::bench::skip_table(n, repeats)? {
                 println!(
                     "| {} | {:.4} | {:.4} | {:.1}x | {} |",
                     r.what,
@@ -626,7 +626,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 "n", "dofs", "contact", "contact s", "floor s", "ratio", "L2", "iters"
             );
             for n in n {
-                let r = hycon::bench::contact_run(n)?;
+                let r = hycon_lab::bench::contact_run(n)?;
                 let t = r.timings;
                 println!(
                     "{:>4} {:>7} {:>8} {:>9.4} {:>9.4} {:>6.2} {:>6.2}% {:>5} | {:.4} {:.4} {:.4} {:.4} {:.4}",
@@ -647,7 +647,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             }
         }
         Bench::Scale { n } => {
-            let r = hycon::bench::scale_run(n)?;
+            let r = hycon_lab::bench::scale_run(n)?;
             let mib = |b: Option<u64>| {
                 b.map_or("n/a".into(), |b| format!("{:.0} MiB", b as f64 / 1048576.0))
             };
@@ -1031,7 +1031,7 @@ fn print_overview(all: &[Example], seconds: f64) {
 /// round-off across machines stays far below that) or write them.
 fn guard(reference: &Path, write: bool) -> AnyResult {
     let clock = Instant::now();
-    let values = hycon::bench::guard_values()?;
+    let values = hycon_lab::bench::guard_values()?;
     println!(
         "regression guard computed in {:.2} s (printed, not checked)",
         clock.elapsed().as_secs_f64()
@@ -1089,21 +1089,21 @@ struct SweepPlan {
 }
 
 /// Parse `element/mesh` into a case at `n` (faer, factor once).
-fn parse_config(config: &str, n: usize) -> AnyResult<hycon::bench::SweepCase> {
+fn parse_config(config: &str, n: usize) -> AnyResult<hycon_lab::bench::SweepCase> {
     let (e, m) = config
         .split_once('/')
         .ok_or_else(|| format!("configuration {config:?} is not element/mesh"))?;
-    Ok(hycon::bench::SweepCase {
-        formulation: hycon::bench::parse_formulation(e)
+    Ok(hycon_lab::bench::SweepCase {
+        formulation: hycon_lab::bench::parse_formulation(e)
             .ok_or_else(|| format!("unknown element {e:?} (hybrid, pian-sumihara, q4)"))?,
-        transition: hycon::bench::parse_mesh(m)
+        transition: hycon_lab::bench::parse_mesh(m)
             .ok_or_else(|| format!("unknown mesh {m:?} (transition, quads)"))?,
-        ..hycon::bench::SweepCase::reference(n)
+        ..hycon_lab::bench::SweepCase::reference(n)
     })
 }
 
 /// The sweep's cases, in run order (by n, then configuration, backend; re-factor runs last).
-fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
+fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon_lab::bench::SweepCase>> {
     use hycon::solver::Backend;
     for n in [plan.min, plan.max] {
         if n == 0 || !n.is_power_of_two() || n > 256 {
@@ -1113,7 +1113,7 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
     let backends: Vec<Backend> = match plan.backend {
         BackendChoice::Faer => vec![Backend::Faer],
         BackendChoice::Cholmod => vec![Backend::Cholmod],
-        BackendChoice::All => hycon::bench::BACKENDS.to_vec(),
+        BackendChoice::All => hycon_lab::bench::BACKENDS.to_vec(),
     };
     let mut usable = Vec::new();
     for b in backends {
@@ -1139,7 +1139,7 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
     for &n in &ns {
         for config in &plan.configs {
             for &backend in &usable {
-                cases.push(hycon::bench::SweepCase {
+                cases.push(hycon_lab::bench::SweepCase {
                     backend,
                     radius_over_half_width: plan.r_over_a,
                     kinematics: plan.kinematics,
@@ -1151,7 +1151,7 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
     for &n in plan.refactor_n.iter().filter(|&&n| n > 0) {
         for config in &plan.configs {
             for &backend in &usable {
-                cases.push(hycon::bench::SweepCase {
+                cases.push(hycon_lab::bench::SweepCase {
                     refactor: true,
                     backend,
                     radius_over_half_width: plan.r_over_a,
@@ -1169,7 +1169,7 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon::bench::SweepCase>> {
 fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path) -> AnyResult {
     let mut failed = Vec::new();
     let runs = match from_csv {
-        Some(path) => hycon::bench::parse_sweep_csv(&std::fs::read_to_string(path)?)?,
+        Some(path) => hycon_lab::bench::parse_sweep_csv(&std::fs::read_to_string(path)?)?,
         None => {
             let cases = sweep_cases(plan)?;
             let exe = std::env::current_exe()?;
@@ -1195,12 +1195,12 @@ fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path
             let mut runs = Vec::new();
             for case in &cases {
                 for _ in 0..plan.repeats.max(1) {
-                    match hycon::bench::sweep_run_in_child(&exe, case) {
+                    match hycon_lab::bench::sweep_run_in_child(&exe, case) {
                         Ok(r) => {
                             let t = r.timings;
                             println!(
                                 "{:<34} {:>4} {:>8} {:>6} {:>5} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>8.4} {:>7.1} {:>7.3}% {:>+7.3}%",
-                                hycon::bench::series_name(case),
+                                hycon_lab::bench::series_name(case),
                                 case.n,
                                 r.dofs,
                                 r.contact_dofs,
@@ -1222,7 +1222,7 @@ fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path
                             eprintln!("FAILED: {e}");
                             failed.push(format!(
                                 "{} n={}: {e}",
-                                hycon::bench::series_name(case),
+                                hycon_lab::bench::series_name(case),
                                 case.n
                             ));
                         }
@@ -1249,17 +1249,17 @@ fn sweep(plan: &SweepPlan, fit_min_n: usize, from_csv: Option<&Path>, out: &Path
         Ok(())
     };
     if from_csv.is_none() {
-        write("sweep.csv", &hycon::bench::sweep_csv(&runs))?;
+        write("sweep.csv", &hycon_lab::bench::sweep_csv(&runs))?;
     }
     write(
         "sweep_error_time.svg",
-        &hycon::bench::sweep_error_time_svg(&runs)?,
+        &hycon_lab::bench::sweep_error_time_svg(&runs)?,
     )?;
     write(
         "sweep_time_dofs.svg",
-        &hycon::bench::sweep_time_dofs_svg(&runs)?,
+        &hycon_lab::bench::sweep_time_dofs_svg(&runs)?,
     )?;
-    let summary = hycon::bench::sweep_summary(&runs, fit_min_n);
+    let summary = hycon_lab::bench::sweep_summary(&runs, fit_min_n);
     println!("{summary}");
     write("sweep_summary.md", &summary)?;
     if failed.is_empty() {
@@ -1303,19 +1303,19 @@ fn contact_scale(
         "L2"
     );
     for name in backends {
-        let backend =
-            hycon::bench::parse_backend(name).ok_or_else(|| format!("unknown backend {name:?}"))?;
+        let backend = hycon_lab::bench::parse_backend(name)
+            .ok_or_else(|| format!("unknown backend {name:?}"))?;
         for &k in levels {
-            let case = hycon::bench::SweepCase {
+            let case = hycon_lab::bench::SweepCase {
                 backend,
                 max_element_size: Some(2f64.powi(-k)),
                 ..parse_config(config, n)?
             };
-            let r = hycon::bench::sweep_run_in_child(&exe, &case)?;
+            let r = hycon_lab::bench::sweep_run_in_child(&exe, &case)?;
             let t = r.timings;
             println!(
                 "{:<28} {:>3} {:>9} {:>6} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.1} {:>6.3}%",
-                hycon::bench::series_name(&case),
+                hycon_lab::bench::series_name(&case),
                 k,
                 r.dofs,
                 r.contact_dofs,
@@ -1335,8 +1335,8 @@ fn contact_scale(
     }
     std::fs::create_dir_all(out)?;
     let csv = out.join("contact_scale.csv");
-    let plain: Vec<hycon::bench::SweepRun> = runs.iter().map(|(_, r)| r.clone()).collect();
-    std::fs::write(&csv, hycon::bench::sweep_csv(&plain))?;
+    let plain: Vec<hycon_lab::bench::SweepRun> = runs.iter().map(|(_, r)| r.clone()).collect();
+    std::fs::write(&csv, hycon_lab::bench::sweep_csv(&plain))?;
     println!("written: {}", csv.display());
     let mut md = String::new();
     let _ = writeln!(
@@ -1374,15 +1374,15 @@ fn contact_scale(
          |---|---|---|---|---|---|---|---|"
     );
     for name in backends {
-        let big: Vec<&hycon::bench::SweepRun> = runs
+        let big: Vec<&hycon_lab::bench::SweepRun> = runs
             .iter()
             .map(|(_, r)| r)
             .filter(|r| r.case.backend.name() == name.as_str())
             .skip(1)
             .collect();
-        let fit = |y: &dyn Fn(&hycon::bench::SweepRun) -> f64| {
+        let fit = |y: &dyn Fn(&hycon_lab::bench::SweepRun) -> f64| {
             let pts: Vec<(f64, f64)> = big.iter().map(|r| (r.dofs as f64, y(r))).collect();
-            hycon::bench::fit_power(&pts)
+            hycon_lab::bench::fit_power(&pts)
                 .map_or("-".into(), |(p, _, r2)| format!("{p:.2} ({r2:.3})"))
         };
         let _ = writeln!(

@@ -2,13 +2,13 @@
 //! kind, and the cost of assembling, analysing, factoring and solving a large linear problem.
 //! Timings are printed by the CLI (`hycon bench ...`), never asserted in tests.
 
-use crate::assembly::{DofMap, SparsePattern, dof};
-use crate::element::{self, ElementMatrix, Formulation};
-use crate::error::{Error, Result};
-use crate::material::{Analysis, Material};
-use crate::mesh::generate::{self, Transition};
-use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
+use hycon::assembly::{DofMap, SparsePattern, dof};
+use hycon::element::{self, ElementMatrix, Formulation};
+use hycon::error::{Error, Result};
+use hycon::material::{Analysis, Material};
+use hycon::mesh::generate::{self, Transition};
+use hycon::solver::{Backend, SparseCholesky};
 use std::time::Instant;
 
 /// Mean time of one element stiffness evaluation.
@@ -154,7 +154,7 @@ pub struct ContactRun {
     /// Dofs of the contact candidates (the condensed boundary).
     pub contact_dofs: usize,
     /// The contact analysis' own time split.
-    pub timings: crate::contact::iteration::Timings,
+    pub timings: hycon::contact::iteration::Timings,
     /// Wall time of the whole contact analysis (construction, calibration increment and 3
     /// load increments).
     pub contact_seconds: f64,
@@ -169,9 +169,9 @@ pub struct ContactRun {
 /// The reference Hertz scene at `n` elements per half-width (frictionless, `a = R/64`):
 /// time the whole contact analysis and, on the same model, one plain factorization and solve.
 pub fn contact_run(n: usize) -> Result<ContactRun> {
-    use crate::contact::iteration::ContactOptions;
-    use crate::contact::scene::DiskOnBlock;
-    use crate::model::LinearSystem;
+    use crate::scene::DiskOnBlock;
+    use hycon::contact::iteration::ContactOptions;
+    use hycon::model::LinearSystem;
     let scene = DiskOnBlock {
         elements_per_half_width: n,
         ..Default::default()
@@ -218,8 +218,8 @@ pub struct GuardValue {
 /// the multiplier pressure and the absolute relative errors of half-width and peak) and the
 /// 7-beta element on Cook's membrane at 8 x 8. About half a second in release.
 pub fn guard_values() -> Result<Vec<GuardValue>> {
-    use crate::contact::iteration::ContactOptions;
-    use crate::contact::scene::DiskOnBlock;
+    use crate::scene::DiskOnBlock;
+    use hycon::contact::iteration::ContactOptions;
     let mut values = Vec::new();
     for n in [8, 16, 64] {
         let scene = DiskOnBlock {
@@ -302,15 +302,15 @@ pub struct SweepCase {
     pub refactor: bool,
     /// Element size cap everywhere, in radii ([`DiskOnBlock::max_element_size`]).
     ///
-    /// [`DiskOnBlock::max_element_size`]: crate::contact::scene::DiskOnBlock::max_element_size
+    /// [`DiskOnBlock::max_element_size`]: crate::scene::DiskOnBlock::max_element_size
     pub max_element_size: Option<f64>,
     /// `R / a` ([`DiskOnBlock::radius_over_half_width`]; 64 in the reference scene).
     ///
     /// [`DiskOnBlock::radius_over_half_width`]:
-    ///     crate::contact::scene::DiskOnBlock::radius_over_half_width
+    ///     crate::scene::DiskOnBlock::radius_over_half_width
     pub radius_over_half_width: usize,
     /// Contact kinematics (small in the reference case).
-    pub kinematics: crate::contact::iteration::Kinematics,
+    pub kinematics: hycon::contact::iteration::Kinematics,
 }
 
 impl SweepCase {
@@ -324,7 +324,7 @@ impl SweepCase {
             refactor: false,
             max_element_size: None,
             radius_over_half_width: 64,
-            kinematics: crate::contact::iteration::Kinematics::Small,
+            kinematics: hycon::contact::iteration::Kinematics::Small,
         }
     }
 
@@ -379,10 +379,10 @@ pub struct SweepRun {
     pub factorizations: usize,
     /// Mesh generation and model set-up ([`DiskOnBlock::build`]).
     ///
-    /// [`DiskOnBlock::build`]: crate::contact::scene::DiskOnBlock::build
+    /// [`DiskOnBlock::build`]: crate::scene::DiskOnBlock::build
     pub mesh: f64,
     /// The contact analysis' own split.
-    pub timings: crate::contact::iteration::Timings,
+    pub timings: hycon::contact::iteration::Timings,
     /// Everything from mesh generation to the recovered displacement field.
     pub total: f64,
     /// Peak resident memory of the process running the case (`VmHWM`), MiB (NaN if unknown).
@@ -473,7 +473,7 @@ impl SweepRun {
             radius_over_half_width: if f.len() > 26 { int(26)? } else { 64 },
             kinematics: match f.get(27) {
                 Some(k) => k.parse()?,
-                None => crate::contact::iteration::Kinematics::Finite,
+                None => hycon::contact::iteration::Kinematics::Finite,
             },
         };
         Ok(SweepRun {
@@ -485,7 +485,7 @@ impl SweepRun {
             iterations: int(10)?,
             factorizations: int(11)?,
             mesh: num(12)?,
-            timings: crate::contact::iteration::Timings {
+            timings: hycon::contact::iteration::Timings {
                 assembly: num(13)?,
                 factorization: num(14)?,
                 flexibility: num(15)?,
@@ -519,8 +519,8 @@ pub fn current_memory() -> Option<u64> {
 /// the process' `VmHWM`: run each case in a fresh process (`hycon bench sweep` does) for it to
 /// be the case's own.
 pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
-    use crate::contact::iteration::ContactOptions;
-    use crate::contact::scene::DiskOnBlock;
+    use crate::scene::DiskOnBlock;
+    use hycon::contact::iteration::ContactOptions;
     if !case.backend.available() {
         return Err(Error::InvalidInput(format!(
             "backend {} is not available in this build",
@@ -658,7 +658,7 @@ fn series_key(c: &SweepCase) -> (&'static str, usize, usize, u8, usize, bool) {
 /// 64, `, refactor each iteration`).
 pub fn series_name(c: &SweepCase) -> String {
     let mut s = format!("{} {}", c.config(), c.backend.name());
-    if c.kinematics == crate::contact::iteration::Kinematics::Finite {
+    if c.kinematics == hycon::contact::iteration::Kinematics::Finite {
         s += ", finite kinematics";
     }
     if c.radius_over_half_width != 64 {
@@ -1049,7 +1049,7 @@ pub struct SkipRow {
 struct Press {
     /// Whole press, seconds.
     seconds: f64,
-    timings: crate::contact::iteration::Timings,
+    timings: hycon::contact::iteration::Timings,
     /// Unknowns of the small systems summed over the iterations.
     unknowns: usize,
     /// Contact iterations.
@@ -1059,12 +1059,12 @@ struct Press {
 /// The reference Hertz scene at `n` elements per half-width, pressed by the calibrated
 /// approach in 3 increments; `pair` replaces the scene's candidate pair when given.
 fn skip_press(
-    scene: &crate::contact::scene::Scene,
-    pair: Option<crate::contact::iteration::ContactPair>,
-    options: crate::contact::iteration::ContactOptions,
+    scene: &crate::scene::Scene,
+    pair: Option<hycon::contact::iteration::ContactPair>,
+    options: hycon::contact::iteration::ContactOptions,
     recover_each: bool,
 ) -> Result<Press> {
-    use crate::contact::iteration::ContactAnalysis;
+    use hycon::contact::iteration::ContactAnalysis;
     let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
     let clock = Instant::now();
     let pair = pair.unwrap_or_else(|| scene.pair.clone());
@@ -1090,9 +1090,9 @@ fn skip_press(
 /// contact geometry evaluated once (small kinematics), the field recovered only on request,
 /// and a scene without contact going straight to one linear solve.
 pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
-    use crate::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
-    use crate::contact::scene::DiskOnBlock;
-    use crate::model::LinearSystem;
+    use crate::scene::DiskOnBlock;
+    use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
+    use hycon::model::LinearSystem;
     let build = |friction: f64| {
         DiskOnBlock {
             elements_per_half_width: n,
@@ -1112,7 +1112,7 @@ pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
             },
             |best: Press, _| {
                 let r = run()?;
-                Ok::<_, crate::Error>(if r.seconds < best.seconds { r } else { best })
+                Ok::<_, hycon::Error>(if r.seconds < best.seconds { r } else { best })
             },
         )
     };

@@ -1,4 +1,4 @@
-//! JSON output (serde): the result structs of [`crate::contact::examples`] derive `Serialize`;
+//! JSON output (serde): the result structs of [`crate::examples`] derive `Serialize`;
 //! fields that only serve the field output (model, displacements) are skipped.
 
 use super::{Result, write_file};

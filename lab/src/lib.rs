@@ -1,0 +1,19 @@
+//! # hycon-lab
+//!
+//! Everything around the hycon library that a host does not link: the reference scenes and
+//! cases, the paper's examples, the benchmarks, the report writers and the `hycon` command-line
+//! program (`src/main.rs`). It uses only hycon's public Rust API.
+//!
+//! * [`cases`]: reference problems with closed forms or published values (Hertz, Cook's
+//!   membrane, the Pian-Sumihara cantilever).
+//! * [`scene`]: the disk-on-block contact scene of the paper and its comparison with Hertz.
+//! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
+//! * [`bench`](mod@bench): the measurements behind the README's performance figures.
+//! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
+#![warn(missing_docs)]
+
+pub mod bench;
+pub mod cases;
+pub mod examples;
+pub mod report;
+pub mod scene;
