@@ -144,9 +144,10 @@ typedef struct HyconContactOptions {
     double search_distance;
     // Iteration cap per increment (default 60).
     uint32_t max_iterations;
-    // Cycle policy: how many times per increment nodes alternating between stick and slip are
-    // locked in slip before a cycling contact set fails the increment (default 3; 0 fails at
-    // the first cycle).
+    // Cycle policy: how many times per increment a cycling contact set is resolved by locking
+    // the alternating nodes (in slip for stick/slip alternation at the friction cone, open for
+    // open/closed alternation at the edge of the contact zone) before a cycle fails the
+    // increment (default 3; 0 fails at the first cycle).
     uint32_t lock_rounds;
     // Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`;
     // `HYCON_BACKEND_CHOLMOD` fails with `HYCON_ERROR_SOLVER` unless hycon was built with the

@@ -143,9 +143,10 @@ pub struct ContactOptions {
     /// Distance within which B segments are paired with an A segment, relative to the mean A
     /// segment length.
     pub search_distance: f64,
-    /// Cycle policy: how many times per increment nodes alternating between stick and slip
-    /// (a node on the edge of the friction cone) are locked in slip before a cycling contact
-    /// set is reported as an error. 0: report the first cycle.
+    /// Cycle policy: how many times per increment a cycling contact set is resolved by locking
+    /// the alternating nodes (in slip: a node on the edge of the friction cone alternating
+    /// between stick and slip; open: a node on the edge of the contact zone alternating between
+    /// open and closed) before a cycle is reported as an error. 0: report the first cycle.
     pub lock_rounds: usize,
     /// Sparse Cholesky library for hycon's factorizations of `K`.
     pub backend: Backend,

@@ -169,9 +169,10 @@ pub struct HyconContactOptions {
     pub search_distance: f64,
     /// Iteration cap per increment (default 60).
     pub max_iterations: u32,
-    /// Cycle policy: how many times per increment nodes alternating between stick and slip are
-    /// locked in slip before a cycling contact set fails the increment (default 3; 0 fails at
-    /// the first cycle).
+    /// Cycle policy: how many times per increment a cycling contact set is resolved by locking
+    /// the alternating nodes (in slip for stick/slip alternation at the friction cone, open for
+    /// open/closed alternation at the edge of the contact zone) before a cycle fails the
+    /// increment (default 3; 0 fails at the first cycle).
     pub lock_rounds: u32,
     /// Sparse Cholesky library for hycon's own factorizations (default `HYCON_BACKEND_FAER`;
     /// `HYCON_BACKEND_CHOLMOD` fails with `HYCON_ERROR_SOLVER` unless hycon was built with the
