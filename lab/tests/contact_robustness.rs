@@ -103,3 +103,52 @@ fn frictional_sliding_in_small_steps_converges() {
     let err = run(0).unwrap_err();
     assert!(err.contains("cycles"), "{err}");
 }
+
+/// A host repeats its totals all the time (a hold step, a step where only another body moves):
+/// after a converged increment, the same totals again, or totals changed by 1e-12 or 1e-9 of
+/// themselves, converge at once (at most 3 iterations) to the same state, with both kinematics
+/// and with and without friction. (The convergence measure used to compare round-off with
+/// round-off there and failed with "no convergence" under finite kinematics.)
+#[test]
+fn repeated_and_tiny_increments_converge_at_once() {
+    use hycon::contact::iteration::ContactAnalysis;
+    let tn = |a: &ContactAnalysis| -> Vec<f64> {
+        a.node_results(0).unwrap().iter().map(|n| n.tn).collect()
+    };
+    for kinematics in [Kinematics::Small, Kinematics::Finite] {
+        for mu in [0.0, 0.3] {
+            let scene = DiskOnBlock {
+                elements_per_half_width: 8,
+                friction: mu,
+                ..Default::default()
+            }
+            .build()
+            .unwrap();
+            let options = ContactOptions {
+                kinematics,
+                ..Default::default()
+            };
+            let mut analysis = scene.analysis(options).unwrap();
+            let approach = scene.calibrated_approach(&mut analysis).unwrap();
+            let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+            analysis
+                .increment(&f, &scene.prescribed(approach, 0.0))
+                .unwrap();
+            let pressed = tn(&analysis);
+            let peak = pressed.iter().map(|t| t.abs()).fold(0.0, f64::max);
+            for relative in [0.0, 1e-12, 1e-9] {
+                let what = format!(
+                    "{} kinematics, mu = {mu}, change {relative:e}",
+                    kinematics.name()
+                );
+                let info = analysis
+                    .increment(&f, &scene.prescribed(approach * (1.0 + relative), 0.0))
+                    .unwrap_or_else(|e| panic!("{what}: {e}"));
+                assert!(info.iterations <= 3, "{what}: {info:?}");
+                for (a, b) in tn(&analysis).iter().zip(&pressed) {
+                    assert!((a - b).abs() <= 1e-6 * peak, "{what}: tn {a} against {b}");
+                }
+            }
+        }
+    }
+}

@@ -45,7 +45,8 @@
 //! whose two nodes are open), drop active nodes in tension, turn stick nodes that violate
 //! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
 //! stops when no state changed and `R = |dU(i+1) - dU(i)| / |dU(i+1)|` (increment displacement
-//! of the contact nodes) is below `tolerance`. A state set seen before reappearing is a cycle.
+//! of the contact nodes; the denominator bounded below by round-off of the displacement, see
+//! `change_ratio`) is below `tolerance`. A state set seen before reappearing is a cycle.
 //! Two kinds are benign and resolved (at most `lock_rounds` times per increment): a node on the
 //! edge of the friction cone alternating between stick and slip is locked in slip, and a node
 //! on the edge of the contact zone alternating between open and closed (zero traction and zero
@@ -1046,7 +1047,7 @@ impl ContactAnalysis {
                     changes -= 1;
                 }
             }
-            let r = change_ratio(&uc_new, &uc, &startc);
+            let r = change_ratio(&uc_new, &uc, &startc, self.options.tolerance);
             let (active, stick, slip) = count(&states);
             let record = IterationRecord {
                 increment: number,
@@ -1433,15 +1434,23 @@ fn reference_gap_slope(surface: &ContactSurface, k: usize, x: &[[f64; 2]]) -> f6
 /// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
 const EDGE_PENETRATION: f64 = 1e-4;
 
-/// `R = |u_new - u_old| / |u_new - u_start|` over the contact dofs (0 when nothing moved).
-fn change_ratio(new: &[f64], old: &[f64], start: &[f64]) -> f64 {
-    let num: f64 = new.iter().zip(old).map(|(a, b)| (a - b).powi(2)).sum();
-    let den: f64 = new.iter().zip(start).map(|(a, b)| (a - b).powi(2)).sum();
-    if den == 0.0 {
-        num.sqrt()
-    } else {
-        (num / den).sqrt()
-    }
+/// Round-off level of a displacement, relative to its size: iterates that differ by less than
+/// this times `|u|` are the same to the precision the geometry can be evaluated at.
+const ROUND_OFF: f64 = 1e4 * f64::EPSILON;
+
+/// The convergence measure over the contact dofs,
+/// `R = |u_new - u_old| / max(|u_new - u_start|, ROUND_OFF |u_new| / tolerance)`: the change of
+/// the last iteration relative to the increment's motion, so that `R <= tolerance` once the
+/// iterate changes by less than `tolerance` times the increment's motion or by less than
+/// round-off of the displacement itself. The floor keeps a zero or tiny increment (a host
+/// repeating its totals) from measuring round-off against round-off. 0 when nothing moved.
+fn change_ratio(new: &[f64], old: &[f64], start: &[f64], tolerance: f64) -> f64 {
+    let norm = |it: &mut dyn Iterator<Item = f64>| it.map(|v| v * v).sum::<f64>().sqrt();
+    let change = norm(&mut new.iter().zip(old).map(|(a, b)| a - b));
+    let motion = norm(&mut new.iter().zip(start).map(|(a, b)| a - b));
+    let floor = ROUND_OFF * norm(&mut new.iter().copied()) / tolerance;
+    let scale = motion.max(floor);
+    if scale == 0.0 { change } else { change / scale }
 }
 
 /// `(active, stick, slip)` counts.

@@ -1,0 +1,38 @@
+# CMake generated Testfile for 
+# Source directory: /work/main
+# Build directory: /work/main/build-suitesparse
+# 
+# This file includes the relevant testing commands required for 
+# testing this directory and lists subdirectories to be tested as well.
+add_test([=[header_c99]=] "/work/main/build-suitesparse/header_c99")
+set_tests_properties([=[header_c99]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;170;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[header_cpp17]=] "/work/main/build-suitesparse/header_cpp17")
+set_tests_properties([=[header_cpp17]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;171;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[bad_input_shared]=] "/work/main/build-suitesparse/bad_input")
+set_tests_properties([=[bad_input_shared]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;172;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[bad_input_static]=] "/work/main/build-suitesparse/bad_input_static")
+set_tests_properties([=[bad_input_static]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;173;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[cook_c_shared]=] "/work/main/build-suitesparse/cook_c")
+set_tests_properties([=[cook_c_shared]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;174;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[cook_c_static]=] "/work/main/build-suitesparse/cook_c_static")
+set_tests_properties([=[cook_c_static]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;175;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[cook_cpp_shared]=] "/work/main/build-suitesparse/cook_cpp")
+set_tests_properties([=[cook_cpp_shared]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/CMakeLists.txt;176;hycon_test;/work/main/CMakeLists.txt;0;")
+add_test([=[hertz_model]=] "/work/main/build-suitesparse/hertz_model")
+set_tests_properties([=[hertz_model]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_examples.cmake;9;hycon_test;/work/main/c_examples/contact_examples.cmake;0;;/work/main/CMakeLists.txt;186;include;/work/main/CMakeLists.txt;0;")
+add_test([=[hertz_model_cholmod]=] "/work/main/build-suitesparse/hertz_model" "12" "cholmod")
+set_tests_properties([=[hertz_model_cholmod]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_examples.cmake;14;hycon_test;/work/main/c_examples/contact_examples.cmake;0;;/work/main/CMakeLists.txt;186;include;/work/main/CMakeLists.txt;0;")
+add_test([=[cholmod_host]=] "/work/main/build-suitesparse/cholmod_host")
+set_tests_properties([=[cholmod_host]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_examples.cmake;27;hycon_test;/work/main/c_examples/contact_examples.cmake;0;;/work/main/CMakeLists.txt;186;include;/work/main/CMakeLists.txt;0;")
+add_test([=[sliding_cpp]=] "/work/main/build-suitesparse/sliding_cpp")
+set_tests_properties([=[sliding_cpp]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_cpp.cmake;12;hycon_test;/work/main/c_examples/contact_cpp.cmake;0;;/work/main/CMakeLists.txt;187;include;/work/main/CMakeLists.txt;0;")
+add_test([=[header_hpp17]=] "/work/main/build-suitesparse/header_hpp17")
+set_tests_properties([=[header_hpp17]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_cpp.cmake;17;hycon_test;/work/main/c_examples/contact_cpp.cmake;0;;/work/main/CMakeLists.txt;187;include;/work/main/CMakeLists.txt;0;")
+add_test([=[header_hpp17_noexcept]=] "/work/main/build-suitesparse/header_hpp17_noexcept")
+set_tests_properties([=[header_hpp17_noexcept]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_cpp.cmake;26;hycon_test;/work/main/c_examples/contact_cpp.cmake;0;;/work/main/CMakeLists.txt;187;include;/work/main/CMakeLists.txt;0;")
+add_test([=[contact_bad_input_shared]=] "/work/main/build-suitesparse/contact_bad_input")
+set_tests_properties([=[contact_bad_input_shared]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_safety.cmake;12;hycon_test;/work/main/c_examples/contact_safety.cmake;0;;/work/main/CMakeLists.txt;188;include;/work/main/CMakeLists.txt;0;")
+add_test([=[contact_bad_input_static]=] "/work/main/build-suitesparse/contact_bad_input_static")
+set_tests_properties([=[contact_bad_input_static]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_safety.cmake;13;hycon_test;/work/main/c_examples/contact_safety.cmake;0;;/work/main/CMakeLists.txt;188;include;/work/main/CMakeLists.txt;0;")
+add_test([=[contact_threads]=] "/work/main/build-suitesparse/contact_threads" "8")
+set_tests_properties([=[contact_threads]=] PROPERTIES  ENVIRONMENT "RUST_BACKTRACE=1" FAIL_REGULAR_EXPRESSION "panicked|FAILED|wrong value|runtime error|ERROR: AddressSanitizer|ERROR: LeakSanitizer" _BACKTRACE_TRIPLES "/work/main/CMakeLists.txt;118;add_test;/work/main/c_examples/contact_safety.cmake;21;hycon_test;/work/main/c_examples/contact_safety.cmake;0;;/work/main/CMakeLists.txt;188;include;/work/main/CMakeLists.txt;0;")
