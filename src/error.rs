@@ -58,14 +58,113 @@ pub enum Error {
     /// The sparse factorization failed for a numerical reason.
     #[error("linear solver failed: {0}")]
     Solver(String),
-    /// A contact increment failed (no convergence, cycling contact set, contact reaching the
-    /// end of a surface); the last converged state is kept.
+    /// A contact increment failed; the last converged state is kept.
     #[error("contact: {0}")]
-    Contact(String),
+    Contact(ContactError),
     /// A caller-supplied callback (a host's solver, an iteration monitor) failed or asked to
     /// stop; the last converged state is kept.
     #[error("callback: {0}")]
     Callback(String),
+}
+
+/// Why a contact increment failed. Every variant leaves the analysis at its last converged
+/// state; node ids are the caller's.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ContactError {
+    /// The iteration cap was reached before the contact set settled and `R` fell below the
+    /// tolerance.
+    #[error(
+        "increment {increment}: no convergence in {iterations} iterations (last R = {last_r:.3e})"
+    )]
+    NoConvergence {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The iteration cap.
+        iterations: usize,
+        /// The convergence measure of the last iteration.
+        last_r: f64,
+    },
+    /// A contact-state set returned that was seen before in the increment, and it was not a
+    /// benign alternation the locks resolve (or they were used up).
+    #[error(
+        "increment {increment}: the contact set cycles (iteration {iteration} returns to the set          of iteration {returns_to}; node {node} flips)"
+    )]
+    Cycling {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The iteration at which the set returned.
+        iteration: usize,
+        /// The earlier iteration whose set it is.
+        returns_to: usize,
+        /// A node whose state differs between the two.
+        node: usize,
+    },
+    /// A node locked open after alternating between open and closed penetrates at convergence
+    /// by more than a hair: the alternation was not an edge effect.
+    #[error(
+        "increment {increment}: the contact set cycles: node {node} alternates between open and          closed, and open it penetrates by {depth:.3e} ({relative:.1e} of the increment's          motion): reduce the load step"
+    )]
+    EdgePenetration {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The A node.
+        node: usize,
+        /// Its penetration (a length, positive).
+        depth: f64,
+        /// The penetration over the increment's motion.
+        relative: f64,
+    },
+    /// A B node penetrates an open A segment deeper than the search distance, so the pairing
+    /// cannot be trusted.
+    #[error(
+        "B node {node} penetrates A segment {} -> {} by {depth:.3e}, more than the search          distance ({search_distance:.3e}): reduce the load step or widen search_distance",
+        segment[0],
+        segment[1]
+    )]
+    BeyondSearchDistance {
+        /// The B node.
+        node: usize,
+        /// The A segment's nodes.
+        segment: [usize; 2],
+        /// The penetration (a length, positive).
+        depth: f64,
+        /// The search distance it exceeds.
+        search_distance: f64,
+    },
+    /// An active A node's support is not fully covered by the opposite surface (an integral
+    /// over a hole would be wrong).
+    #[error(
+        "contact node {node} is active but {:.1e} of its support is not covered by the opposite          surface: extend the B polyline",
+        1.0 - coverage
+    )]
+    Uncovered {
+        /// The A node.
+        node: usize,
+        /// The covered fraction of its support, below 1.
+        coverage: f64,
+    },
+    /// Under small kinematics an active node slid so far that the frozen pairing misplaces
+    /// the opposite surface by a noticeable part of the normal approach.
+    #[error(
+        "increment {increment}: node {node} slid {slip:.3e} along the opposite surface, which          moves its gap by about {percent:.1}% of the normal approach: beyond small kinematics          (the pairing frozen in the reference configuration): use finite kinematics",
+        percent = 100.0 * relative
+    )]
+    SmallSlidingExceeded {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The A node.
+        node: usize,
+        /// Its tangential slip relative to B since the reference configuration.
+        slip: f64,
+        /// The gap change it causes over the normal approach.
+        relative: f64,
+    },
+}
+
+impl From<ContactError> for Error {
+    fn from(e: ContactError) -> Self {
+        Error::Contact(e)
+    }
 }
 
 fn fmt_index(e: Option<usize>) -> String {

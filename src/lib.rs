@@ -31,5 +31,5 @@ pub mod mesh;
 pub mod model;
 pub mod solver;
 
-pub use error::{Error, Result, ShapeError};
+pub use error::{ContactError, Error, Result, ShapeError};
 pub use material::{Analysis, Material};

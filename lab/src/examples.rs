@@ -560,17 +560,11 @@ impl Path {
     ) -> Result<&Increment> {
         let clock = Instant::now();
         let number = self.increments.len() + 1;
+        // a failure names the analysis' increment (the calibration trial is its increment 1);
+        // the progress lines name the run
         let info = self
             .analysis
-            .increment(&self.forces, &self.scene.prescribed(approach, slide))
-            .map_err(|e| match e {
-                Error::Contact(m) => Error::Contact(format!(
-                    "{}: {m} (increment {number} of the path; the analysis counts the \
-                     calibration trial as increment 1)",
-                    self.label
-                )),
-                other => other,
-            })?;
+            .increment(&self.forces, &self.scene.prescribed(approach, slide))?;
         let seconds = clock.elapsed().as_secs_f64();
         self.solved += 1;
         let results = self.scene.node_results(&self.analysis)?;
@@ -927,9 +921,9 @@ pub fn cattaneo_mindlin(case: &CattaneoCase, mut progress: Progress<'_>) -> Resu
     let mut taken = 0;
     while ratio < case.target {
         if taken == case.max_increments {
-            return Err(Error::Contact(format!(
+            return Err(Error::InvalidInput(format!(
                 "Cattaneo-Mindlin: Q/(mu P) = {ratio:.3} after {taken} tangential increments, \
-                 target {} not reached",
+                 target {} not reached: raise the step or the increment cap",
                 case.target
             )));
         }
@@ -940,8 +934,9 @@ pub fn cattaneo_mindlin(case: &CattaneoCase, mut progress: Progress<'_>) -> Resu
         ratio = q / (mu * inc.load);
         let stiffness = (q - q_old) / delta;
         if !(stiffness > 0.0 && stiffness.is_finite()) {
-            return Err(Error::Contact(format!(
-                "Cattaneo-Mindlin: tangential load did not grow (Q = {q:.3e}) at increment {}",
+            return Err(Error::InvalidInput(format!(
+                "Cattaneo-Mindlin: tangential load did not grow (Q = {q:.3e}) at increment {}: \
+                 the set-up does not load the contact tangentially",
                 inc.number
             )));
         }

@@ -365,7 +365,9 @@ impl Scene {
         analysis.increment(&f, &self.prescribed(trial, 0.0))?;
         let load = total_load(&analysis.node_results(0)?);
         if load <= 0.0 {
-            return Err(Error::Contact("no contact at the trial approach".into()));
+            return Err(Error::InvalidInput(
+                "calibration: no contact at the trial approach".into(),
+            ));
         }
         Ok(trial * self.hertz_load() / load)
     }
@@ -426,7 +428,9 @@ pub fn compare_with_hertz(
 ) -> Result<HertzComparison> {
     let load = total_load(nodes);
     if load <= 0.0 {
-        return Err(Error::Contact("no compressive contact load".into()));
+        return Err(Error::InvalidInput(
+            "no compressive contact load to compare with Hertz".into(),
+        ));
     }
     let hertz = Hertz::new(load, radius, e_star);
     let pressure = |n: &NodeResult| -n.tn;

@@ -57,7 +57,7 @@
 use super::bodies::{Bodies, HostSystem};
 use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
-use crate::error::{Error, Result};
+use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
@@ -1124,21 +1124,24 @@ impl ContactAnalysis {
                         continue;
                     }
                     let node = self.flipping_node(&history[j], &states);
-                    return Err(Error::Contact(format!(
-                        "increment {number}: the contact set cycles (iteration {iteration} \
-                         returns to the set of iteration {}; node {node} flips)",
-                        j + 1
-                    )));
+                    return Err(ContactError::Cycling {
+                        increment: number,
+                        iteration,
+                        returns_to: j + 1,
+                        node,
+                    }
+                    .into());
                 }
                 history.push(new_states.clone());
             }
             states = new_states;
         }
-        Err(Error::Contact(format!(
-            "increment {number}: no convergence in {} iterations (last R = {:.3e})",
-            self.options.max_iterations,
-            records.last().map_or(f64::NAN, |r: &IterationRecord| r.r)
-        )))
+        Err(ContactError::NoConvergence {
+            increment: number,
+            iterations: self.options.max_iterations,
+            last_r: records.last().map_or(f64::NAN, |r: &IterationRecord| r.r),
+        }
+        .into())
     }
 
     /// The length against which gaps of pair `p` are judged: the increment's largest motion of
@@ -1170,14 +1173,13 @@ impl ContactAnalysis {
             let scale = self.gap_scale(p, xg, uc, startc);
             let gap = surfaces[p].nodes[k].normal_gap;
             if gap < -EDGE_PENETRATION * scale {
-                return Err(Error::Contact(format!(
-                    "increment {number}: the contact set cycles: node {} alternates between open \
-                     and closed, and open it penetrates by {:.3e} ({:.1e} of the increment's \
-                     motion): reduce the load step",
-                    self.bodies.external(self.pairs[p].a[k]),
-                    -gap,
-                    -gap / scale
-                )));
+                return Err(ContactError::EdgePenetration {
+                    increment: number,
+                    node: self.bodies.external(self.pairs[p].a[k]),
+                    depth: -gap,
+                    relative: -gap / scale,
+                }
+                .into());
             }
         }
         Ok(())
@@ -1222,14 +1224,13 @@ impl ContactAnalysis {
             let slope = reference_gap_slope(surface, k, x);
             let slip = along(node, node.tangent);
             if (slip * slope).abs() > SMALL_SLIDING_LIMIT * delta {
-                return Err(Error::Contact(format!(
-                    "increment {number}: node {} slid {slip:.3e} along the opposite surface, \
-                     which moves its gap by about {:.1}% of the normal approach: beyond small \
-                     kinematics (the pairing frozen in the reference configuration): use \
-                     finite kinematics",
-                    self.bodies.external(node.node),
-                    100.0 * (slip * slope).abs() / delta
-                )));
+                return Err(ContactError::SmallSlidingExceeded {
+                    increment: number,
+                    node: self.bodies.external(node.node),
+                    slip,
+                    relative: (slip * slope).abs() / delta,
+                }
+                .into());
             }
         }
         Ok(())
@@ -1251,12 +1252,11 @@ impl ContactAnalysis {
         for (surface, states) in surfaces.iter().zip(states) {
             for (node, state) in surface.nodes.iter().zip(states) {
                 if *state != NodeState::Open && node.coverage < 1.0 - 1e-9 {
-                    return Err(Error::Contact(format!(
-                        "contact node {} is active but its support is only {:.1}% covered by \
-                         the opposite surface: extend the B polyline",
-                        self.bodies.external(node.node),
-                        100.0 * node.coverage
-                    )));
+                    return Err(ContactError::Uncovered {
+                        node: self.bodies.external(node.node),
+                        coverage: node.coverage,
+                    }
+                    .into());
                 }
             }
         }
@@ -1810,16 +1810,13 @@ impl ContactAnalysis {
                         continue;
                     }
                     if g <= -self.options.search_distance * h {
-                        return Err(Error::Contact(format!(
-                            "B node {} penetrates A segment {} -> {} by {:.3e}, more than the \
-                             search distance ({:.3e}): reduce the load step or widen \
-                             search_distance",
-                            self.bodies.external(j),
-                            self.bodies.external(w[0]),
-                            self.bodies.external(w[1]),
-                            -g,
-                            self.options.search_distance * h
-                        )));
+                        return Err(ContactError::BeyondSearchDistance {
+                            node: self.bodies.external(j),
+                            segment: [self.bodies.external(w[0]), self.bodies.external(w[1])],
+                            depth: -g,
+                            search_distance: self.options.search_distance * h,
+                        }
+                        .into());
                     }
                     activate(if xi < 0.5 { k } else { k + 1 }, &mut new)?;
                 }
