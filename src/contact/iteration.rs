@@ -77,6 +77,75 @@ pub struct ContactPair {
     pub friction: f64,
 }
 
+impl ContactPair {
+    /// Check the pair on its own: friction finite and `>= 0`, each polyline a chain of at
+    /// least 2 distinct nodes, no node in both. ([`ContactAnalysis`] checks this too; the C
+    /// API calls it where the pair is handed over.)
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] saying which rule is broken.
+    pub fn check(&self) -> Result<()> {
+        if !(self.friction.is_finite() && self.friction >= 0.0) {
+            return Err(Error::InvalidInput(format!(
+                "friction = {} must be finite and >= 0",
+                self.friction
+            )));
+        }
+        for (ids, side) in [(&self.a, "A"), (&self.b, "B")] {
+            if ids.len() < 2 {
+                return Err(Error::InvalidInput(format!(
+                    "the {side} polyline has {} node(s); a chain needs at least 2",
+                    ids.len()
+                )));
+            }
+            let mut seen = std::collections::HashSet::new();
+            if let Some(n) = ids.iter().find(|&&n| !seen.insert(n)) {
+                return Err(Error::InvalidInput(format!(
+                    "the {side} polyline is not a chain: node {n} appears twice"
+                )));
+            }
+        }
+        if let Some(n) = self.a.iter().find(|n| self.b.contains(n)) {
+            return Err(Error::InvalidInput(format!(
+                "node {n} is in both polylines"
+            )));
+        }
+        Ok(())
+    }
+
+    /// [`check`](Self::check), and against hycon's mesh: every node exists and consecutive
+    /// nodes of each polyline are the ends of an element edge in the element's
+    /// counter-clockwise order (the body on the left).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the node or the segment.
+    pub fn check_on(&self, mesh: &crate::mesh::Mesh) -> Result<()> {
+        self.check()?;
+        let edges: std::collections::HashSet<(usize, usize)> = (0..mesh.n_elements())
+            .flat_map(|e| {
+                let nodes = mesh.element(e);
+                (0..nodes.len()).map(move |i| (nodes[i], nodes[(i + 1) % nodes.len()]))
+            })
+            .collect();
+        for (ids, side) in [(&self.a, "A"), (&self.b, "B")] {
+            if let Some(&bad) = ids.iter().find(|&&i| i >= mesh.n_nodes()) {
+                return Err(Error::InvalidInput(format!(
+                    "{side} polyline: unknown node {bad} (the model has {} nodes)",
+                    mesh.n_nodes()
+                )));
+            }
+            if let Some(w) = ids.windows(2).find(|w| !edges.contains(&(w[0], w[1]))) {
+                return Err(Error::InvalidInput(format!(
+                    "the {side} polyline is not a chain of element edges with the body on the \
+                     left: {} -> {} is not an edge of any element in counter-clockwise order",
+                    w[0], w[1]
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
 /// How the contact geometry follows the deformation (METHOD.md section 2b).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Kinematics {
@@ -155,6 +224,45 @@ pub struct ContactOptions {
     /// analysis: never needed (`K` does not change), it exists so that the benchmark can show
     /// what factoring once saves.
     pub refactor_each_iteration: bool,
+}
+
+impl ContactOptions {
+    /// Check the values: `tolerance` and `search_distance` positive and finite, the other
+    /// tolerances finite and `>= 0`, at least one iteration. [`ContactAnalysis`] calls it before
+    /// any work.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the option.
+    pub fn validate(&self) -> Result<()> {
+        for (v, name) in [
+            (self.tolerance, "tolerance"),
+            (self.search_distance, "search_distance"),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::InvalidInput(format!(
+                    "options.{name} = {v} must be > 0"
+                )));
+            }
+        }
+        for (v, name) in [
+            (self.gap_tolerance, "gap_tolerance"),
+            (self.tension_tolerance, "tension_tolerance"),
+            (self.friction_tolerance, "friction_tolerance"),
+            (self.slip_tolerance, "slip_tolerance"),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(Error::InvalidInput(format!(
+                    "options.{name} = {v} must be >= 0"
+                )));
+            }
+        }
+        if self.max_iterations == 0 {
+            return Err(Error::InvalidInput(
+                "options.max_iterations must be at least 1".into(),
+            ));
+        }
+        Ok(())
+    }
 }
 
 impl Default for ContactOptions {
@@ -482,8 +590,10 @@ impl ContactAnalysis {
     /// Validate, factor `K` once (the contact nodes' dofs eliminated last) and read the
     /// contact-boundary flexibility `F` off the factor's trailing block.
     pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
-        let n_nodes = model.mesh.n_nodes();
-        check_pairs(&pairs, |n| (n < n_nodes).then_some(n), n_nodes)?;
+        options.validate()?;
+        for (i, pair) in pairs.iter().enumerate() {
+            pair.check_on(&model.mesh).map_err(|e| in_pair(i, e))?;
+        }
         let mut dofs: Vec<usize> = pairs
             .iter()
             .flat_map(|p| p.a.iter().chain(&p.b))
@@ -505,11 +615,15 @@ impl ContactAnalysis {
         pairs: Vec<ContactPair>,
         options: ContactOptions,
     ) -> Result<Self> {
+        options.validate()?;
+        for (i, pair) in pairs.iter().enumerate() {
+            pair.check().map_err(|e| in_pair(i, e))?;
+        }
         let clock = std::time::Instant::now();
         let bodies = Bodies::host(system, options.backend)?;
         let seconds = clock.elapsed().as_secs_f64();
         let n_nodes = bodies.positions().len();
-        check_pairs(&pairs, |n| bodies.local(n), usize::MAX)?;
+        check_host_nodes(&pairs, &bodies)?;
         let pairs = pairs
             .into_iter()
             .map(|p| {
@@ -1289,28 +1403,20 @@ fn evaluate_pairs(
         .collect()
 }
 
-/// Check the pairs: finite friction `>= 0`, known node ids (`known` maps a caller's id to the
-/// iteration's; `n_nodes` for messages, `usize::MAX` when not meaningful).
-fn check_pairs(
-    pairs: &[ContactPair],
-    known: impl Fn(usize) -> Option<usize>,
-    n_nodes: usize,
-) -> Result<()> {
+/// Name the pair in an error of its checks.
+fn in_pair(i: usize, e: Error) -> Error {
+    match e {
+        Error::InvalidInput(m) => Error::InvalidInput(format!("contact pair {i}: {m}")),
+        other => other,
+    }
+}
+
+/// Every node of a host's pairs must be one of the contact nodes it described.
+fn check_host_nodes(pairs: &[ContactPair], bodies: &Bodies) -> Result<()> {
     for (i, p) in pairs.iter().enumerate() {
-        if !(p.friction.is_finite() && p.friction >= 0.0) {
+        if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| bodies.local(n).is_none()) {
             return Err(Error::InvalidInput(format!(
-                "contact pair {i}: friction must be finite and >= 0, got {}",
-                p.friction
-            )));
-        }
-        if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| known(n).is_none()) {
-            let what = if n_nodes == usize::MAX {
-                "it is not one of the contact nodes".to_string()
-            } else {
-                format!("mesh has {n_nodes} nodes")
-            };
-            return Err(Error::InvalidInput(format!(
-                "contact pair {i}: unknown node {n} ({what})"
+                "contact pair {i}: unknown node {n} (it is not one of the contact nodes)"
             )));
         }
     }
@@ -1870,6 +1976,82 @@ impl ContactAnalysis {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Options and pairs are checked in the core, so a Rust caller gets the same errors as a C
+    /// caller: each bad value is named.
+    #[test]
+    fn options_and_pairs_are_checked_in_the_core() {
+        let bad = |o: ContactOptions, what: &str| {
+            let e = o.validate().unwrap_err().to_string();
+            assert!(e.contains(what), "{e}");
+        };
+        let d = ContactOptions::default();
+        d.validate().unwrap();
+        bad(
+            ContactOptions {
+                tolerance: 0.0,
+                ..d
+            },
+            "options.tolerance = 0 must be > 0",
+        );
+        bad(
+            ContactOptions {
+                search_distance: f64::NAN,
+                ..d
+            },
+            "options.search_distance",
+        );
+        bad(
+            ContactOptions {
+                gap_tolerance: -1.0,
+                ..d
+            },
+            "options.gap_tolerance",
+        );
+        bad(
+            ContactOptions {
+                max_iterations: 0,
+                ..d
+            },
+            "options.max_iterations",
+        );
+        let pair = |a: Vec<usize>, b: Vec<usize>, friction: f64| ContactPair { a, b, friction };
+        let check = |p: ContactPair, what: &str| {
+            let e = p.check().unwrap_err().to_string();
+            assert!(e.contains(what), "{e}");
+        };
+        pair(vec![0, 1], vec![2, 3], 0.3).check().unwrap();
+        check(pair(vec![0, 1], vec![2, 3], -0.1), "friction");
+        check(pair(vec![0], vec![2, 3], 0.0), "A polyline has 1 node(s)");
+        check(pair(vec![0, 1, 0], vec![2, 3], 0.0), "node 0 appears twice");
+        check(
+            pair(vec![0, 1], vec![1, 3], 0.0),
+            "node 1 is in both polylines",
+        );
+        // on a mesh: one unit square, counter-clockwise 0 1 2 3; its bottom edge is 0 -> 1
+        let mut mesh = crate::mesh::Mesh::new();
+        mesh.nodes = vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [0.0, 1.0],
+            [0.0, 2.0],
+            [1.0, 2.0],
+        ];
+        mesh.push_element(&[0, 1, 2, 3], 0);
+        pair(vec![0, 1], vec![4, 5], 0.0)
+            .check_on(&mesh)
+            .unwrap_err();
+        let e = pair(vec![1, 0], vec![2, 3], 0.0)
+            .check_on(&mesh)
+            .unwrap_err();
+        assert!(e.to_string().contains("1 -> 0 is not an edge"), "{e}");
+        let e = pair(vec![0, 1], vec![2, 9], 0.0)
+            .check_on(&mesh)
+            .unwrap_err();
+        assert!(e.to_string().contains("unknown node 9"), "{e}");
+        pair(vec![0, 1], vec![2, 3], 0.0).check_on(&mesh).unwrap();
+    }
 
     /// Hager's estimate is a lower bound of the exact 1-norm condition number and, on these
     /// matrices, within a factor 3 of it (the estimator is usually exact or within a small

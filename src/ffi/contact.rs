@@ -531,56 +531,7 @@ unsafe fn free_handle<T>(ptr: *mut T) {
     }
 }
 
-fn check_pair_polyline(ids: &[usize], side: &str) -> Result<(), Fail> {
-    if ids.len() < 2 {
-        return Err(Fail::invalid(format!(
-            "the {side} polyline has {} node(s); a chain needs at least 2",
-            ids.len()
-        )));
-    }
-    let mut seen = std::collections::HashSet::new();
-    if let Some(n) = ids.iter().find(|&&n| !seen.insert(n)) {
-        return Err(Fail::invalid(format!(
-            "the {side} polyline is not a chain: node {n} appears twice"
-        )));
-    }
-    Ok(())
-}
-
-fn check_friction(friction: f64) -> Result<(), Fail> {
-    if friction.is_finite() && friction >= 0.0 {
-        Ok(())
-    } else {
-        Err(Fail::invalid(format!(
-            "friction = {friction} must be finite and >= 0"
-        )))
-    }
-}
-
 fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Monitor>), Fail> {
-    let positive = [
-        (o.tolerance, "tolerance"),
-        (o.search_distance, "search_distance"),
-    ];
-    for (v, name) in positive {
-        if !(v.is_finite() && v > 0.0) {
-            return Err(Fail::invalid(format!("options.{name} = {v} must be > 0")));
-        }
-    }
-    let non_negative = [
-        (o.gap_tolerance, "gap_tolerance"),
-        (o.tension_tolerance, "tension_tolerance"),
-        (o.friction_tolerance, "friction_tolerance"),
-        (o.slip_tolerance, "slip_tolerance"),
-    ];
-    for (v, name) in non_negative {
-        if !(v.is_finite() && v >= 0.0) {
-            return Err(Fail::invalid(format!("options.{name} = {v} must be >= 0")));
-        }
-    }
-    if o.max_iterations == 0 {
-        return Err(Fail::invalid("options.max_iterations must be at least 1"));
-    }
     let backend = match o.backend {
         HYCON_BACKEND_FAER => Backend::Faer,
         HYCON_BACKEND_CHOLMOD => Backend::Cholmod,
@@ -601,10 +552,12 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
             )));
         }
     };
+    let max_iterations = usize::try_from(o.max_iterations)
+        .map_err(|_| Fail::invalid("options.max_iterations does not fit in size_t"))?;
     let options = ContactOptions {
         kinematics,
         tolerance: o.tolerance,
-        max_iterations: o.max_iterations as usize,
+        max_iterations,
         gap_tolerance: o.gap_tolerance,
         tension_tolerance: o.tension_tolerance,
         friction_tolerance: o.friction_tolerance,
@@ -614,6 +567,7 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
         backend,
         refactor_each_iteration: false,
     };
+    options.validate()?;
     let monitor = o.monitor.map(|monitor| {
         MonitorCall {
             monitor,
@@ -889,38 +843,13 @@ pub unsafe extern "C" fn hycon_model_add_pair(
         // SAFETY: the caller's contract.
         let m = unsafe { handle_mut(model, "model")? };
         let (a, b) = unsafe { (slice(a, n_a, "a")?, slice(b, n_b, "b")?) };
-        check_friction(friction)?;
-        let mesh = &m.model.mesh;
-        let edges: std::collections::HashSet<(usize, usize)> = (0..mesh.n_elements())
-            .flat_map(|e| {
-                let nodes = mesh.element(e);
-                (0..nodes.len()).map(move |i| (nodes[i], nodes[(i + 1) % nodes.len()]))
-            })
-            .collect();
-        for (ids, side) in [(a, "A"), (b, "B")] {
-            check_pair_polyline(ids, side)?;
-            if let Some(&bad) = ids.iter().find(|&&i| i >= mesh.n_nodes()) {
-                return Err(Fail::invalid(format!(
-                    "{side} polyline: unknown node {bad} (the model has {} nodes)",
-                    mesh.n_nodes()
-                )));
-            }
-            if let Some(w) = ids.windows(2).find(|w| !edges.contains(&(w[0], w[1]))) {
-                return Err(Fail::invalid(format!(
-                    "the {side} polyline is not a chain of element edges with the body on the \
-                     left: {} -> {} is not an edge of any element in counter-clockwise order",
-                    w[0], w[1]
-                )));
-            }
-        }
-        if let Some(n) = a.iter().find(|n| b.contains(n)) {
-            return Err(Fail::invalid(format!("node {n} is in both polylines")));
-        }
-        m.pairs.push(ContactPair {
+        let pair = ContactPair {
             a: a.to_vec(),
             b: b.to_vec(),
             friction,
-        });
+        };
+        pair.check_on(&m.model.mesh)?;
+        m.pairs.push(pair);
         // SAFETY: the caller's contract on `index`.
         unsafe { write_optional(index, m.pairs.len() - 1) };
         Ok(())
@@ -1122,14 +1051,14 @@ pub unsafe extern "C" fn hycon_host_add_pair(
     boundary("hycon_host_add_pair", || {
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
-        check_friction(friction)?;
         let a = unsafe { slice(a_nodes, n_a, "a_nodes")? };
         let b = unsafe { slice(b_nodes, n_b, "b_nodes")? };
-        check_pair_polyline(a, "A")?;
-        check_pair_polyline(b, "B")?;
-        if let Some(n) = a.iter().find(|n| b.contains(n)) {
-            return Err(Fail::invalid(format!("node {n} is in both polylines")));
-        }
+        let pair = ContactPair {
+            a: a.to_vec(),
+            b: b.to_vec(),
+            friction,
+        };
+        pair.check()?;
         let (len_a, len_b) = (length(n_a, 2, 0, "n_a")?, length(n_b, 2, 0, "n_b")?);
         let a_xy = unsafe { doubles(a_coords, len_a, "a_coords")? };
         let b_xy = unsafe { doubles(b_coords, len_b, "b_coords")? };
@@ -1157,11 +1086,7 @@ pub unsafe extern "C" fn hycon_host_add_pair(
             h.nodes = nodes;
             return Err(e);
         }
-        h.pairs.push(ContactPair {
-            a: a.to_vec(),
-            b: b.to_vec(),
-            friction,
-        });
+        h.pairs.push(pair);
         // SAFETY: the caller's contract on `index`.
         unsafe { write_optional(index, h.pairs.len() - 1) };
         Ok(())
