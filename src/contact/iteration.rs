@@ -85,32 +85,11 @@ impl ContactPair {
     /// # Errors
     /// [`Error::InvalidInput`] saying which rule is broken.
     pub fn check(&self) -> Result<()> {
-        if !(self.friction.is_finite() && self.friction >= 0.0) {
-            return Err(Error::InvalidInput(format!(
-                "friction = {} must be finite and >= 0",
-                self.friction
-            )));
-        }
+        self.check_friction()?;
         for (ids, side) in [(&self.a, "A"), (&self.b, "B")] {
-            if ids.len() < 2 {
-                return Err(Error::InvalidInput(format!(
-                    "the {side} polyline has {} node(s); a chain needs at least 2",
-                    ids.len()
-                )));
-            }
-            let mut seen = std::collections::HashSet::new();
-            if let Some(n) = ids.iter().find(|&&n| !seen.insert(n)) {
-                return Err(Error::InvalidInput(format!(
-                    "the {side} polyline is not a chain: node {n} appears twice"
-                )));
-            }
+            check_chain(ids, side)?;
         }
-        if let Some(n) = self.a.iter().find(|n| self.b.contains(n)) {
-            return Err(Error::InvalidInput(format!(
-                "node {n} is in both polylines"
-            )));
-        }
-        Ok(())
+        self.check_disjoint()
     }
 
     /// [`check`](Self::check), and against hycon's mesh: every node exists and consecutive
@@ -120,7 +99,7 @@ impl ContactPair {
     /// # Errors
     /// [`Error::InvalidInput`] naming the node or the segment.
     pub fn check_on(&self, mesh: &crate::mesh::Mesh) -> Result<()> {
-        self.check()?;
+        self.check_friction()?;
         let edges: std::collections::HashSet<(usize, usize)> = (0..mesh.n_elements())
             .flat_map(|e| {
                 let nodes = mesh.element(e);
@@ -128,6 +107,7 @@ impl ContactPair {
             })
             .collect();
         for (ids, side) in [(&self.a, "A"), (&self.b, "B")] {
+            check_chain(ids, side)?;
             if let Some(&bad) = ids.iter().find(|&&i| i >= mesh.n_nodes()) {
                 return Err(Error::InvalidInput(format!(
                     "{side} polyline: unknown node {bad} (the model has {} nodes)",
@@ -142,7 +122,44 @@ impl ContactPair {
                 )));
             }
         }
-        Ok(())
+        self.check_disjoint()
+    }
+
+    fn check_friction(&self) -> Result<()> {
+        if self.friction.is_finite() && self.friction >= 0.0 {
+            Ok(())
+        } else {
+            Err(Error::InvalidInput(format!(
+                "friction = {} must be finite and >= 0",
+                self.friction
+            )))
+        }
+    }
+
+    fn check_disjoint(&self) -> Result<()> {
+        match self.a.iter().find(|n| self.b.contains(n)) {
+            Some(n) => Err(Error::InvalidInput(format!(
+                "node {n} is in both polylines"
+            ))),
+            None => Ok(()),
+        }
+    }
+}
+
+/// A polyline is a chain of at least 2 distinct nodes.
+fn check_chain(ids: &[usize], side: &str) -> Result<()> {
+    if ids.len() < 2 {
+        return Err(Error::InvalidInput(format!(
+            "the {side} polyline has {} node(s); a chain needs at least 2",
+            ids.len()
+        )));
+    }
+    let mut seen = std::collections::HashSet::new();
+    match ids.iter().find(|&&n| !seen.insert(n)) {
+        Some(n) => Err(Error::InvalidInput(format!(
+            "the {side} polyline is not a chain: node {n} appears twice"
+        ))),
+        None => Ok(()),
     }
 }
 
