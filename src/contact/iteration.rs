@@ -46,7 +46,8 @@
 //! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
 //! stops when no state changed and `R = |dU(i+1) - dU(i)| / |dU(i+1)|` (increment displacement
 //! of the contact nodes; the denominator bounded below by round-off of the displacement, see
-//! `change_ratio`) is below `tolerance`. A state set seen before reappearing is a cycle.
+//! `change_ratio`) is below `tolerance`. The states, their locks and the history belong to the
+//! increment's active set (`active_set.rs`): a state set seen before reappearing is a cycle.
 //! Two kinds are benign and resolved (at most `lock_rounds` times per increment): a node on the
 //! edge of the friction cone alternating between stick and slip is locked in slip, and a node
 //! on the edge of the contact zone alternating between open and closed (zero traction and zero
@@ -62,7 +63,9 @@ use crate::model::Model;
 use crate::solver::Backend;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
+mod active_set;
 mod results;
+use active_set::{ActiveSet, Commit, NodeKey, count};
 pub use results::ConstraintRows;
 
 /// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
@@ -1126,10 +1129,7 @@ impl ContactAnalysis {
             // a force-controlled body needs a support to start from: the nearest node
             self.close_nearest(&surfaces, &mut states);
         }
-        let mut history: Vec<Vec<Vec<NodeState>>> = vec![states.clone()];
-        let mut locked: Vec<(usize, usize)> = Vec::new();
-        let mut locked_open: Vec<(usize, usize)> = Vec::new();
-        let mut lock_rounds = 0;
+        let mut set = ActiveSet::new(states, self.options.lock_rounds);
         let mut records = Vec::new();
         // time of the refactor-every-iteration variant, counted as factorization
         let mut refactoring = 0.0;
@@ -1140,7 +1140,8 @@ impl ContactAnalysis {
                 self.flexibility = self.bodies.flexibility(&self.dofs)?;
                 refactoring += clock.elapsed().as_secs_f64();
             }
-            let system = self.build_system(&surfaces, &states, &uc, &startc)?;
+            let states = set.states();
+            let system = self.build_system(&surfaces, states, &uc, &startc)?;
             let (tau, plate_motion, condition) =
                 system.solve(&u0c, &self.flexibility, border.as_ref())?;
             let forces = system.forces(&tau, self.dofs.len());
@@ -1159,27 +1160,11 @@ impl ContactAnalysis {
                 }
             }
             self.update_geometry(&mut surfaces, &uc_new)?;
-            let tractions = system.tractions(&tau, &states, &self.pairs);
-            let (mut new_states, mut changes) =
-                self.update_states(&states, &tractions, &surfaces, &uc_new, &startc)?;
-            // a node locked in slip does not return to stick in this increment, nor a node
-            // locked open to contact
-            for (p, k) in locked.iter().copied() {
-                if matches!(states[p][k], NodeState::Slip { .. })
-                    && new_states[p][k] == NodeState::Stick
-                {
-                    new_states[p][k] = states[p][k];
-                    changes -= 1;
-                }
-            }
-            for (p, k) in locked_open.iter().copied() {
-                if states[p][k] == NodeState::Open && new_states[p][k] != NodeState::Open {
-                    new_states[p][k] = NodeState::Open;
-                    changes -= 1;
-                }
-            }
+            let tractions = system.tractions(&tau, states, &self.pairs);
+            let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, &startc)?;
+            let changes = set.changes(&proposed);
             let r = change_ratio(&uc_new, &uc, &startc, self.options.tolerance);
-            let (active, stick, slip) = count(&states);
+            let (active, stick, slip) = set.count();
             let record = IterationRecord {
                 increment: number,
                 iteration,
@@ -1201,9 +1186,10 @@ impl ContactAnalysis {
             }
             uc = uc_new;
             if changes == 0 && r <= self.options.tolerance {
-                self.uncovered(&surfaces, &states)?;
-                self.edge_penetration(number, &surfaces, &locked_open, &uc, &startc)?;
-                self.small_sliding(number, &states, &uc)?;
+                let states = set.states();
+                self.uncovered(&surfaces, states)?;
+                self.edge_penetration(number, &surfaces, set.locked_open(), &uc, &startc)?;
+                self.small_sliding(number, states, &uc)?;
                 self.timings.factorization += refactoring;
                 self.timings.iterations += clock.elapsed().as_secs_f64() - refactoring;
                 let mut prescribed = qp.to_vec();
@@ -1223,49 +1209,25 @@ impl ContactAnalysis {
                     contact: forces,
                 };
                 return Ok(self.finish(
-                    number, iteration, &states, &tractions, uc, surfaces, converged, records,
+                    number,
+                    iteration,
+                    set.states(),
+                    &tractions,
+                    uc,
+                    surfaces,
+                    converged,
+                    records,
                 ));
             }
-            if changes > 0 {
-                if let Some(j) = history.iter().position(|h| *h == new_states) {
-                    // a node at the edge of the friction cone can alternate between stick
-                    // (which violates the cone) and slip (whose slip reverses): it sits on the
-                    // cone with a vanishing slip, so it is locked in slip and the search
-                    // goes on (at most `lock_rounds` times per increment)
-                    // a node at the edge of the contact zone (zero traction, zero gap to
-                    // round-off) can alternate between closed (in tension by a hair) and open
-                    // (penetrating by a hair): it is locked open and the search goes on; its
-                    // penetration is checked at convergence (`edge_penetration`)
-                    let flips = stick_slip_flips(&history[j], &states);
-                    let edges = open_closed_flips(&history[j], &states);
-                    if !(flips.is_empty() && edges.is_empty())
-                        && lock_rounds < self.options.lock_rounds
-                    {
-                        lock_rounds += 1;
-                        for &(p, k, slip) in &flips {
-                            locked.push((p, k));
-                            new_states[p][k] = slip;
-                        }
-                        for &(p, k) in &edges {
-                            locked_open.push((p, k));
-                            new_states[p][k] = NodeState::Open;
-                        }
-                        history = vec![new_states.clone()];
-                        states = new_states;
-                        continue;
-                    }
-                    let node = self.flipping_node(&history[j], &states);
-                    return Err(ContactError::Cycling {
-                        increment: number,
-                        iteration,
-                        returns_to: j + 1,
-                        node,
-                    }
-                    .into());
+            if let Commit::Cycle { returns_to, node } = set.commit(proposed) {
+                return Err(ContactError::Cycling {
+                    increment: number,
+                    iteration,
+                    returns_to,
+                    node: self.external_a(node),
                 }
-                history.push(new_states.clone());
+                .into());
             }
-            states = new_states;
         }
         Err(ContactError::NoConvergence {
             increment: number,
@@ -1367,14 +1329,9 @@ impl ContactAnalysis {
         Ok(())
     }
 
-    /// A node whose state differs between two state sets (for messages; the caller's id).
-    fn flipping_node(&self, a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> usize {
-        for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
-            if let Some(k) = sa.iter().zip(sb).position(|(x, y)| x != y) {
-                return self.bodies.external(self.pairs[p].a[k]);
-            }
-        }
-        usize::MAX
+    /// The caller's id of A node `(pair, index)`.
+    fn external_a(&self, (p, k): NodeKey) -> usize {
+        self.bodies.external(self.pairs[p].a[k])
     }
 
     /// Every active node of a converged state must have its support fully covered by the
@@ -1499,35 +1456,6 @@ fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<f64> {
     condition.is_finite().then_some(condition)
 }
 
-/// `(pair, node, the slip state)` of the nodes that are stick in one state set and slip in the
-/// other.
-fn stick_slip_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, usize, NodeState)> {
-    let mut flips = Vec::new();
-    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
-        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
-            match (x, y) {
-                (NodeState::Stick, slip @ NodeState::Slip { .. })
-                | (slip @ NodeState::Slip { .. }, NodeState::Stick) => flips.push((p, k, slip)),
-                _ => {}
-            }
-        }
-    }
-    flips
-}
-
-/// `(pair, node)` of the nodes that are open in one state set and closed in the other.
-fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(usize, usize)> {
-    let mut flips = Vec::new();
-    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
-        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
-            if (x == NodeState::Open) != (y == NodeState::Open) {
-                flips.push((p, k));
-            }
-        }
-    }
-    flips
-}
-
 /// Under small kinematics, the largest change of an active node's gap caused by sliding with
 /// the pairing frozen (slip times the angle between the surfaces), relative to the contact's
 /// normal approach (the largest change of a normal gap over the active nodes); beyond it the
@@ -1574,17 +1502,6 @@ fn change_ratio(new: &[f64], old: &[f64], start: &[f64], tolerance: f64) -> f64 
     let floor = ROUND_OFF * norm(&mut new.iter().copied()) / tolerance;
     let scale = motion.max(floor);
     if scale == 0.0 { change } else { change / scale }
-}
-
-/// `(active, stick, slip)` counts.
-fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
-    let all = states.iter().flatten();
-    let stick = all.clone().filter(|s| **s == NodeState::Stick).count();
-    let slip = all
-        .clone()
-        .filter(|s| matches!(s, NodeState::Slip { .. }))
-        .count();
-    (stick + slip, stick, slip)
 }
 
 /// The plate's force-controlled translations as extra unknowns of the small system.
@@ -1830,17 +1747,19 @@ impl ContactAnalysis {
         Ok(sys)
     }
 
-    /// The paper's rules: penetration (A nodes by weighted gap; B nodes pointwise over A
-    /// segments whose two nodes are open), tension, the friction cone and slip reversal.
-    /// Returns the new states and the number of changes.
+    /// The paper's rules, proposing the next states from the set's current ones: penetration
+    /// (A nodes by weighted gap; B nodes pointwise over A segments whose two nodes are open),
+    /// tension, the friction cone and slip reversal. The rules respect the set's locks: a node
+    /// locked open does not close, a node locked in slip does not return to stick.
     fn update_states(
         &self,
-        states: &[Vec<NodeState>],
+        set: &ActiveSet,
         tractions: &[Vec<(f64, f64)>],
         surfaces: &[ContactSurface],
         uc: &[f64],
         startc: &[f64],
-    ) -> Result<(Vec<Vec<NodeState>>, usize)> {
+    ) -> Result<Vec<Vec<NodeState>>> {
+        let states = set.states();
         let mut new = states.to_vec();
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
@@ -1872,7 +1791,9 @@ impl ContactAnalysis {
             // coverage is checked on the converged state only: an intermediate iterate may
             // move a node at the end of a surface a hair past the other's end
             let activate = |k: usize, new: &mut Vec<Vec<NodeState>>| -> Result<()> {
-                new[p][k] = closed(&surface.nodes[k]);
+                if set.may_close((p, k)) {
+                    new[p][k] = closed(&surface.nodes[k]);
+                }
                 Ok(())
             };
             for (k, node) in surface.nodes.iter().enumerate() {
@@ -1894,8 +1815,9 @@ impl ContactAnalysis {
                         }
                     }
                     NodeState::Slip { sign } if mu > 0.0 => {
-                        if f64::from(sign) * slip_since_start(node)
-                            < -self.options.slip_tolerance * h
+                        if set.may_stick((p, k))
+                            && f64::from(sign) * slip_since_start(node)
+                                < -self.options.slip_tolerance * h
                         {
                             new[p][k] = NodeState::Stick;
                         }
@@ -1945,13 +1867,7 @@ impl ContactAnalysis {
                 }
             }
         }
-        let changes = new
-            .iter()
-            .flatten()
-            .zip(states.iter().flatten())
-            .filter(|(a, b)| a != b)
-            .count();
-        Ok((new, changes))
+        Ok(new)
     }
 
     /// Accept the converged iterate: store the contact state, the node data and the records;

@@ -1,0 +1,229 @@
+//! The contact states of one increment and their one owner.
+//!
+//! The paper's rules ([`ContactAnalysis::update_states`](super::ContactAnalysis)) propose the
+//! next states from the last solve; the [`ActiveSet`] holds the current states, the locks the
+//! rules must respect and the history of the increment, and decides what happens when a state
+//! set comes back. Two alternations are benign and resolved by a lock (at most `lock_rounds`
+//! times per increment):
+//! * a node on the edge of the friction cone alternating between stick (violating the cone)
+//!   and slip (whose slip reverses) sits on the cone with a vanishing slip: it is **locked in
+//!   slip** and may not return to stick;
+//! * a node on the edge of the contact zone alternating between closed (in tension by a hair)
+//!   and open (penetrating by a hair) has zero traction and zero gap to round-off: it is
+//!   **locked open** and may not close (its penetration is checked at convergence).
+//!
+//! Any other returning set is a cycle, reported with a node that flips.
+
+use super::NodeState;
+
+/// A node of the iteration: (pair, index of the A node in the pair).
+pub(super) type NodeKey = (usize, usize);
+
+/// What [`ActiveSet::commit`] did with a proposal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Commit {
+    /// The proposal is the new state set (possibly after locking the nodes of a benign
+    /// alternation).
+    Accepted,
+    /// The proposal returns to the set of an earlier iteration of this history (1-based), and
+    /// no lock resolves it; `node` is one that flips.
+    Cycle {
+        /// The earlier iteration whose set it is.
+        returns_to: usize,
+        /// A node whose state differs between that set and the current one.
+        node: NodeKey,
+    },
+}
+
+/// The states of every A node during one increment, with the locks and the history.
+#[derive(Debug, Clone)]
+pub(super) struct ActiveSet {
+    states: Vec<Vec<NodeState>>,
+    /// Nodes locked in slip (they may not return to stick).
+    locked_slip: Vec<NodeKey>,
+    /// Nodes locked open (they may not close).
+    locked_open: Vec<NodeKey>,
+    /// The state sets since the increment began, or since the last lock.
+    history: Vec<Vec<Vec<NodeState>>>,
+    /// Lock rounds used and allowed.
+    rounds: usize,
+    max_rounds: usize,
+}
+
+impl ActiveSet {
+    /// Start an increment from `states` (the last converged ones) with at most `max_rounds`
+    /// lock rounds.
+    pub(super) fn new(states: Vec<Vec<NodeState>>, max_rounds: usize) -> Self {
+        ActiveSet {
+            history: vec![states.clone()],
+            states,
+            locked_slip: Vec::new(),
+            locked_open: Vec::new(),
+            rounds: 0,
+            max_rounds,
+        }
+    }
+
+    /// The current states, per pair, per A node.
+    pub(super) fn states(&self) -> &[Vec<NodeState>] {
+        &self.states
+    }
+
+    /// Whether the rules may turn slip node `node` back into stick (not locked in slip).
+    pub(super) fn may_stick(&self, node: NodeKey) -> bool {
+        !self.locked_slip.contains(&node)
+    }
+
+    /// Whether the rules may close open node `node` (not locked open).
+    pub(super) fn may_close(&self, node: NodeKey) -> bool {
+        !self.locked_open.contains(&node)
+    }
+
+    /// The nodes locked open in this increment (their penetration is checked at convergence).
+    pub(super) fn locked_open(&self) -> &[NodeKey] {
+        &self.locked_open
+    }
+
+    /// How many nodes `proposed` changes.
+    pub(super) fn changes(&self, proposed: &[Vec<NodeState>]) -> usize {
+        proposed
+            .iter()
+            .flatten()
+            .zip(self.states.iter().flatten())
+            .filter(|(a, b)| a != b)
+            .count()
+    }
+
+    /// `(active, stick, slip)` counts of the current states.
+    pub(super) fn count(&self) -> (usize, usize, usize) {
+        count(&self.states)
+    }
+
+    /// Take the rules' proposal as the next states. A set seen before in the history is a
+    /// cycle: if the nodes that differ between it and the current set include stick/slip or
+    /// open/closed alternations and lock rounds are left, those nodes are locked (in slip or
+    /// open), the history restarts, and the locked proposal is accepted; otherwise the cycle is
+    /// returned and the states stay as they were.
+    pub(super) fn commit(&mut self, mut proposed: Vec<Vec<NodeState>>) -> Commit {
+        if proposed == self.states {
+            return Commit::Accepted;
+        }
+        let Some(j) = self.history.iter().position(|h| *h == proposed) else {
+            self.history.push(proposed.clone());
+            self.states = proposed;
+            return Commit::Accepted;
+        };
+        let earlier = &self.history[j];
+        let flips = stick_slip_flips(earlier, &self.states);
+        let edges = open_closed_flips(earlier, &self.states);
+        if (flips.is_empty() && edges.is_empty()) || self.rounds >= self.max_rounds {
+            let node = first_difference(earlier, &self.states).unwrap_or((0, 0));
+            return Commit::Cycle {
+                returns_to: j + 1,
+                node,
+            };
+        }
+        self.rounds += 1;
+        for (node, slip) in flips {
+            self.locked_slip.push(node);
+            proposed[node.0][node.1] = slip;
+        }
+        for node in edges {
+            self.locked_open.push(node);
+            proposed[node.0][node.1] = NodeState::Open;
+        }
+        self.history = vec![proposed.clone()];
+        self.states = proposed;
+        Commit::Accepted
+    }
+}
+
+/// `(active, stick, slip)` counts.
+pub(super) fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
+    let all = states.iter().flatten();
+    let stick = all.clone().filter(|s| **s == NodeState::Stick).count();
+    let slip = all
+        .clone()
+        .filter(|s| matches!(s, NodeState::Slip { .. }))
+        .count();
+    (stick + slip, stick, slip)
+}
+
+/// The nodes that are stick in one state set and slip in the other, with the slip state.
+fn stick_slip_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(NodeKey, NodeState)> {
+    let mut flips = Vec::new();
+    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
+        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
+            match (x, y) {
+                (NodeState::Stick, slip @ NodeState::Slip { .. })
+                | (slip @ NodeState::Slip { .. }, NodeState::Stick) => flips.push(((p, k), slip)),
+                _ => {}
+            }
+        }
+    }
+    flips
+}
+
+/// The nodes that are open in one state set and closed in the other.
+fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<NodeKey> {
+    let mut flips = Vec::new();
+    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
+        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
+            if (x == NodeState::Open) != (y == NodeState::Open) {
+                flips.push((p, k));
+            }
+        }
+    }
+    flips
+}
+
+/// The first node whose state differs between two state sets.
+fn first_difference(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Option<NodeKey> {
+    a.iter()
+        .zip(b)
+        .enumerate()
+        .find_map(|(p, (sa, sb))| sa.iter().zip(sb).position(|(x, y)| x != y).map(|k| (p, k)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SLIP: NodeState = NodeState::Slip { sign: 1 };
+
+    /// A stick/slip alternation is locked in slip, an open/closed one locked open; a cycle of
+    /// another kind, or one past the lock rounds, is reported with a flipping node.
+    #[test]
+    fn locks_resolve_benign_cycles_and_report_the_rest() {
+        use NodeState::{Open, Stick};
+        let mut set = ActiveSet::new(vec![vec![Stick, Open]], 1);
+        assert_eq!(set.commit(vec![vec![SLIP, Open]]), Commit::Accepted);
+        // back to the first set: node (0, 0) alternates stick/slip -> locked in slip
+        assert_eq!(set.commit(vec![vec![Stick, Open]]), Commit::Accepted);
+        assert_eq!(set.states(), &[vec![SLIP, Open]]);
+        assert!(!set.may_stick((0, 0)) && set.may_close((0, 1)));
+        // a second benign cycle, but the one lock round is used up
+        assert_eq!(set.commit(vec![vec![SLIP, Stick]]), Commit::Accepted);
+        assert_eq!(
+            set.commit(vec![vec![SLIP, Open]]),
+            Commit::Cycle {
+                returns_to: 1,
+                node: (0, 1)
+            }
+        );
+        assert_eq!(
+            set.states(),
+            &[vec![SLIP, Stick]],
+            "a cycle keeps the states"
+        );
+
+        let mut edge = ActiveSet::new(vec![vec![Open]], 3);
+        assert_eq!(edge.commit(vec![vec![SLIP]]), Commit::Accepted);
+        assert_eq!(edge.commit(vec![vec![Open]]), Commit::Accepted);
+        assert_eq!(edge.states(), &[vec![Open]]);
+        assert!(!edge.may_close((0, 0)));
+        assert_eq!(edge.locked_open(), &[(0, 0)]);
+        assert_eq!(edge.changes(&[vec![SLIP]]), 1);
+        assert_eq!(edge.count(), (0, 0, 0));
+    }
+}
