@@ -1,0 +1,172 @@
+//! What a converged increment must also satisfy, and the convergence measure: active nodes
+//! fully covered, nodes locked open not penetrating, small kinematics within their range.
+
+use super::*;
+
+/// Under small kinematics, the largest change of an active node's gap caused by sliding with
+/// the pairing frozen (slip times the angle between the surfaces), relative to the contact's
+/// normal approach (the largest change of a normal gap over the active nodes); beyond it the
+/// increment fails and names the node.
+pub const SMALL_SLIDING_LIMIT: f64 = 0.1;
+
+/// `|dg0/ds|` at A node `k` of a reference surface: the slope of the reference normal gap along
+/// A (central difference over the covered neighbours, one-sided at an end; 0 when no neighbour
+/// is covered). `x` are the reference positions.
+pub(super) fn reference_gap_slope(surface: &ContactSurface, k: usize, x: &[[f64; 2]]) -> f64 {
+    let nodes = &surface.nodes;
+    let covered = |i: usize| nodes[i].normal_gap.is_finite();
+    let lo = if k > 0 && covered(k - 1) { k - 1 } else { k };
+    let hi = if k + 1 < nodes.len() && covered(k + 1) {
+        k + 1
+    } else {
+        k
+    };
+    if lo == hi {
+        return 0.0;
+    }
+    let (p, q) = (x[nodes[lo].node], x[nodes[hi].node]);
+    ((nodes[hi].normal_gap - nodes[lo].normal_gap) / (q[0] - p[0]).hypot(q[1] - p[1])).abs()
+}
+
+/// How far a node locked open after an open/closed cycle may penetrate at convergence,
+/// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
+pub(super) const EDGE_PENETRATION: f64 = 1e-4;
+
+/// Round-off level of a displacement, relative to its size: iterates that differ by less than
+/// this times `|u|` are the same to the precision the geometry can be evaluated at.
+pub(super) const ROUND_OFF: f64 = 1e4 * f64::EPSILON;
+
+/// The convergence measure over the contact dofs,
+/// `R = |u_new - u_old| / max(|u_new - u_start|, ROUND_OFF |u_new| / tolerance)`: the change of
+/// the last iteration relative to the increment's motion, so that `R <= tolerance` once the
+/// iterate changes by less than `tolerance` times the increment's motion or by less than
+/// round-off of the displacement itself. The floor keeps a zero or tiny increment (a host
+/// repeating its totals) from measuring round-off against round-off. 0 when nothing moved.
+pub(super) fn change_ratio(new: &[f64], old: &[f64], start: &[f64], tolerance: f64) -> f64 {
+    let norm = |it: &mut dyn Iterator<Item = f64>| it.map(|v| v * v).sum::<f64>().sqrt();
+    let change = norm(&mut new.iter().zip(old).map(|(a, b)| a - b));
+    let motion = norm(&mut new.iter().zip(start).map(|(a, b)| a - b));
+    let floor = ROUND_OFF * norm(&mut new.iter().copied()) / tolerance;
+    let scale = motion.max(floor);
+    if scale == 0.0 { change } else { change / scale }
+}
+
+impl ContactAnalysis {
+    /// The length against which gaps of pair `p` are judged: the increment's largest motion of
+    /// a contact dof, bounded by the mean A segment length `h` (and by `1e-12 h` below), so
+    /// that tiny loads still close the contact and the judgement does not depend on units.
+    pub(super) fn gap_scale(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
+        let h = self.mean_segment(p, xg);
+        let motion = uc
+            .iter()
+            .zip(startc)
+            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        motion.clamp(1e-12 * h, h)
+    }
+
+    /// Nodes locked open after an open/closed cycle must not penetrate by more than
+    /// `EDGE_PENETRATION` of the gap scale at convergence; otherwise the cycle was not an edge
+    /// effect and the increment fails naming the node.
+    pub(super) fn edge_penetration(
+        &self,
+        number: usize,
+        surfaces: &[ContactSurface],
+        locked_open: &[(usize, usize)],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<()> {
+        let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
+        for &(p, k) in locked_open {
+            let scale = self.gap_scale(p, xg, uc, startc);
+            let gap = surfaces[p].nodes[k].normal_gap;
+            if gap < -EDGE_PENETRATION * scale {
+                return Err(ContactError::EdgePenetration {
+                    increment: number,
+                    node: self.bodies.external(self.pairs[p].a[k]),
+                    depth: -gap,
+                    relative: -gap / scale,
+                }
+                .into());
+            }
+        }
+        Ok(())
+    }
+
+    /// Under small kinematics the pairing of A with B is frozen in the reference configuration.
+    /// When the surfaces slide along each other by `slip_k = s_k . sum_j c_kj u_j / covered
+    /// weight` at node `k` (the mean tangential displacement of A relative to B over the node's
+    /// support), the frozen pairing misplaces B by `slip_k`, which changes the gap by about
+    /// `|slip_k| |dg0/ds|_k`, `dg0/ds` the slope of the reference gap along A (the angle between
+    /// the surfaces). That is the linearization that Hertz theory makes too, harmless while it
+    /// is small against the contact's normal approach `delta` (the largest change of a normal
+    /// gap over the active nodes); an active node whose error exceeds [`SMALL_SLIDING_LIMIT`]
+    /// `delta` fails the increment, naming the node and pointing to finite kinematics.
+    pub(super) fn small_sliding(
+        &self,
+        number: usize,
+        states: &[Vec<NodeState>],
+        uc: &[f64],
+    ) -> Result<()> {
+        if self.options.kinematics != Kinematics::Small {
+            return Ok(());
+        }
+        let active = || {
+            self.reference
+                .iter()
+                .zip(states)
+                .flat_map(|(surface, states)| {
+                    surface
+                        .nodes
+                        .iter()
+                        .enumerate()
+                        .zip(states)
+                        .filter(|(_, s)| **s != NodeState::Open)
+                        .map(move |((k, node), _)| (surface, k, node))
+                })
+        };
+        let along = |node: &geometry::ContactNode, d: [f64; 2]| {
+            let change = self.coupled(&node.coupling, uc);
+            (d[0] * change[0] + d[1] * change[1]) / node.covered_weight
+        };
+        let delta = active()
+            .map(|(_, _, node)| along(node, node.normal).abs())
+            .fold(0.0, f64::max);
+        let x = self.bodies.positions();
+        for (surface, k, node) in active() {
+            let slope = reference_gap_slope(surface, k, x);
+            let slip = along(node, node.tangent);
+            if (slip * slope).abs() > SMALL_SLIDING_LIMIT * delta {
+                return Err(ContactError::SmallSlidingExceeded {
+                    increment: number,
+                    node: self.bodies.external(node.node),
+                    slip,
+                    relative: (slip * slope).abs() / delta,
+                }
+                .into());
+            }
+        }
+        Ok(())
+    }
+
+    /// Every active node of a converged state must have its support fully covered by the
+    /// opposite surface (never integrate over a hole silently).
+    pub(super) fn uncovered(
+        &self,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+    ) -> Result<()> {
+        for (surface, states) in surfaces.iter().zip(states) {
+            for (node, state) in surface.nodes.iter().zip(states) {
+                if *state != NodeState::Open && node.coverage < 1.0 - 1e-9 {
+                    return Err(ContactError::Uncovered {
+                        node: self.bodies.external(node.node),
+                        coverage: node.coverage,
+                    }
+                    .into());
+                }
+            }
+        }
+        Ok(())
+    }
+}

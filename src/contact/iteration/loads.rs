@@ -1,0 +1,108 @@
+//! Load solves `u0 = K^-1 (f - K_fp q_p)` at the contact dofs, reused when a load is a
+//! combination of recent ones (proportional loading, a slide on a fixed approach).
+
+use super::*;
+
+/// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs for one load `(f, q_p)`.
+#[derive(Debug, Clone)]
+pub(super) struct LoadSolve {
+    /// `f` and `q_p` (zero at free dofs), concatenated.
+    pub(super) load: Vec<f64>,
+    /// `u0` at the contact dofs.
+    u0c: Vec<f64>,
+    /// The force the plate exerts on the body in the `u0` solution (zero without a plate).
+    pub(super) plate_force: [f64; 2],
+}
+
+/// Coefficients `c` with `new = sum_i c_i old_i` to round-off (relative 1e-13), if the loads
+/// `old` span `new` without cancellation (`sum |c_i| |old_i| <= 4 |new|`, so that combining
+/// their solutions loses no accuracy).
+pub(super) fn combination(new: &[f64], old: &[LoadSolve]) -> Option<Vec<f64>> {
+    let k = old.len();
+    if k == 0 {
+        return None;
+    }
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let gram = DMatrix::from_fn(k, k, |i, j| dot(&old[i].load, &old[j].load));
+    let rhs = DVector::from_fn(k, |i, _| dot(&old[i].load, new));
+    let c = gram.lu().solve(&rhs)?;
+    let norm = |v: &[f64]| dot(v, v).sqrt();
+    let new_norm = norm(new);
+    let mut residual = new.to_vec();
+    for (ci, o) in c.iter().zip(old) {
+        for (r, v) in residual.iter_mut().zip(&o.load) {
+            *r -= ci * v;
+        }
+    }
+    let spread: f64 = c
+        .iter()
+        .zip(old)
+        .map(|(ci, o)| ci.abs() * norm(&o.load))
+        .sum();
+    (norm(&residual) <= 1e-13 * new_norm && spread <= 4.0 * new_norm)
+        .then(|| c.iter().copied().collect())
+}
+
+/// How many load solves are kept for reuse.
+pub(super) const KEPT_LOADS: usize = 4;
+
+impl ContactAnalysis {
+    /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
+    /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
+    /// superposed on a fixed approach, costs one or two solves in all).
+    pub(super) fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<(Vec<f64>, [f64; 2])> {
+        let n = self.bodies.field_len();
+        let n_qp = if self.bodies.as_model().is_some() {
+            n
+        } else {
+            0
+        };
+        if f.len() != n || qp.len() != n_qp {
+            return Err(Error::InvalidInput(format!(
+                "the load vector needs {n} entries and the prescribed vector {n_qp}, got {} and \
+                 {}",
+                f.len(),
+                qp.len()
+            )));
+        }
+        if let Some(i) = f.iter().chain(qp).position(|v| !v.is_finite()) {
+            return Err(Error::InvalidInput(format!(
+                "entry {i} of the loads and prescribed values is not finite"
+            )));
+        }
+        let load = self.bodies.load_key(f, qp);
+        if let Some(c) = combination(&load, &self.loads) {
+            let mut u0c = vec![0.0; self.dofs.len()];
+            let mut force = [0.0; 2];
+            for (ci, cached) in c.iter().zip(&self.loads) {
+                for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
+                    *u += ci * v;
+                }
+                force[0] += ci * cached.plate_force[0];
+                force[1] += ci * cached.plate_force[1];
+            }
+            return Ok((u0c, force));
+        }
+        let clock = std::time::Instant::now();
+        let u0 = self.bodies.solve(f, qp)?;
+        let plate_force = match &self.plate {
+            Some(p) => plate_force(self.model()?, &p.nodes, &u0, f)?,
+            None => [0.0; 2],
+        };
+        self.timings.load_solves += clock.elapsed().as_secs_f64();
+        let u0c: Vec<f64> = self
+            .dofs
+            .iter()
+            .map(|&d| self.bodies.field_index(d).map_or(0.0, |i| u0[i]))
+            .collect();
+        if self.loads.len() == KEPT_LOADS {
+            self.loads.remove(0);
+        }
+        self.loads.push(LoadSolve {
+            load,
+            u0c: u0c.clone(),
+            plate_force,
+        });
+        Ok((u0c, plate_force))
+    }
+}

@@ -1,0 +1,253 @@
+//! The rigid loading plate: a face tied to two translations, each displacement- or
+//! force-controlled per increment; force control borders the small system with the plate's
+//! force balance (METHOD.md section 3, floating bodies).
+
+use super::*;
+
+/// A rigid loading plate: nodes of one body's face tied to two plate translations. Each
+/// direction is displacement- or force-controlled per increment.
+#[derive(Debug, Clone)]
+pub(super) struct Plate {
+    /// Tied nodes (prescribed in both directions in the model).
+    pub(super) nodes: Vec<usize>,
+    /// Contact-dof response to a unit plate translation in x and in y (no load, no contact).
+    pub(super) response: [Vec<f64>; 2],
+    /// Plate stiffness `D`: the force the plate exerts on the body per unit translation.
+    pub(super) stiffness: nalgebra::Matrix2<f64>,
+    /// Converged plate displacement and force.
+    pub(super) displacement: [f64; 2],
+    pub(super) force: [f64; 2],
+}
+
+impl Plate {
+    /// Record the converged plate state: its motion (prescribed, or `motion[k]` for the
+    /// force-controlled directions `directions[k]`) written into `prescribed` at the tied nodes, and the force
+    /// it exerts on the body, `force0 + D U_force - W^T f_c` (load, force-controlled motion and
+    /// contact parts).
+    pub(super) fn settle(
+        &mut self,
+        control: [PlateControl; 2],
+        (directions, solved): (&[usize], &[f64]),
+        force0: [f64; 2],
+        contact_forces: &[f64],
+        prescribed: &mut [f64],
+    ) {
+        let mut motion = control.map(|c| match c {
+            PlateControl::Displacement(u) => u,
+            PlateControl::Force(_) => 0.0,
+        });
+        for (&d, &m) in directions.iter().zip(solved) {
+            motion[d] = m;
+        }
+        for &node in &self.nodes {
+            prescribed[dof(node, 0)] = motion[0];
+            prescribed[dof(node, 1)] = motion[1];
+        }
+        let force_controlled = control.map(|c| matches!(c, PlateControl::Force(_)));
+        let mut force = force0;
+        for (d, out) in force.iter_mut().enumerate() {
+            for (e, &m) in motion.iter().enumerate() {
+                if force_controlled[e] {
+                    *out += self.stiffness[(d, e)] * m;
+                }
+            }
+            *out -= dot_dense(&self.response[d], contact_forces);
+        }
+        self.displacement = motion;
+        self.force = force;
+    }
+}
+
+pub(super) fn dot_dense(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// The force the tied nodes `plate` exert on the body in the field `q` under loads `f`: the sum
+/// of the reactions `K q - f` at their dofs.
+pub(super) fn plate_force(
+    model: &Model,
+    plate: &[usize],
+    q: &[f64],
+    f: &[f64],
+) -> Result<[f64; 2]> {
+    let r = model.internal_forces(q)?;
+    let mut force = [0.0; 2];
+    for &node in plate {
+        for (d, out) in force.iter_mut().enumerate() {
+            *out += r[dof(node, d)] - f[dof(node, d)];
+        }
+    }
+    Ok(force)
+}
+
+/// The plate's force-controlled translations as extra unknowns of the small system.
+pub(super) struct Border {
+    /// Force-controlled directions (0 = x, 1 = y).
+    pub(super) directions: Vec<usize>,
+    /// Contact-dof response to a unit plate translation, per direction.
+    pub(super) response: [Vec<f64>; 2],
+    /// Plate stiffness.
+    pub(super) stiffness: nalgebra::Matrix2<f64>,
+    /// `F_d - force0_d` per force-controlled direction.
+    pub(super) rhs: Vec<f64>,
+    /// Stiffness scale of the bodies (largest `E t`), against which `D` counts as zero.
+    pub(super) stiffness_scale: f64,
+}
+
+impl Border {
+    /// A force-controlled direction is held only if the plate's own stiffness holds it or an
+    /// active constraint row sees the plate's motion in it (relative to the sizes of the row
+    /// and of the motion); otherwise the bordered system is singular whatever its round-off.
+    pub(super) fn unheld(&self, rows: &[Sparse]) -> Option<usize> {
+        self.directions.iter().copied().find(|&d| {
+            let w = &self.response[d];
+            let w_norm = dot_dense(w, w).sqrt();
+            let seen = rows.iter().any(|row| {
+                let row_norm = row.iter().map(|(_, v)| v * v).sum::<f64>().sqrt();
+                dot(row, w).abs() > 1e-9 * row_norm * w_norm
+            });
+            !seen && self.stiffness[(d, d)].abs() <= 1e-10 * self.stiffness_scale
+        })
+    }
+}
+
+impl ContactAnalysis {
+    /// As [`ContactAnalysis::new`], with the nodes `plate` (prescribed in both directions in
+    /// the model, none of them a contact node) tied to a rigid plate whose two translations are
+    /// displacement- or force-controlled in each increment
+    /// ([`increment_with_plate`](Self::increment_with_plate)). Under force control the plate
+    /// translation joins the small contact system as extra unknowns with the plate's force
+    /// balance as extra equations (a bordered system): a body held only by the plate and by
+    /// contact, like a pressed disk, then takes a prescribed load. Costs two solves.
+    pub fn with_plate(
+        model: Model,
+        pairs: Vec<ContactPair>,
+        options: ContactOptions,
+        plate: Vec<usize>,
+    ) -> Result<Self> {
+        let mut analysis = Self::new(model, pairs, options)?;
+        let n = analysis.bodies.field_len();
+        for &node in &plate {
+            let held = node < n / 2 && (0..2).all(|d| !analysis.bodies.is_free(dof(node, d)));
+            if !held || analysis.slot[dof(node, 0)] != usize::MAX {
+                return Err(Error::InvalidInput(format!(
+                    "plate node {node} must exist, be prescribed in x and y, and not be a \
+                     contact node"
+                )));
+            }
+        }
+        let zero = vec![0.0; n];
+        let mut response = [Vec::new(), Vec::new()];
+        let mut stiffness = nalgebra::Matrix2::zeros();
+        for d in 0..2 {
+            let mut qp = zero.clone();
+            for &node in &plate {
+                qp[dof(node, d)] = 1.0;
+            }
+            let q = analysis.bodies.solve(&zero, &qp)?;
+            response[d] = analysis.dofs.iter().map(|&i| q[i]).collect();
+            let force = plate_force(analysis.model()?, &plate, &q, &zero)?;
+            stiffness[(0, d)] = force[0];
+            stiffness[(1, d)] = force[1];
+        }
+        analysis.plate = Some(Plate {
+            nodes: plate,
+            response,
+            stiffness,
+            displacement: [0.0; 2],
+            force: [0.0; 2],
+        });
+        Ok(analysis)
+    }
+
+    /// The border of the small system for the force-controlled plate directions, if any.
+    pub(super) fn border(&self, control: [PlateControl; 2], force0: [f64; 2]) -> Option<Border> {
+        let plate = self.plate.as_ref()?;
+        let mut directions = Vec::new();
+        let mut rhs = Vec::new();
+        for (d, c) in control.iter().enumerate() {
+            if let PlateControl::Force(f) = c {
+                directions.push(d);
+                rhs.push(f - force0[d]);
+            }
+        }
+        let stiffness_scale = self
+            .bodies
+            .as_model()?
+            .materials
+            .iter()
+            .map(|m| m.youngs * m.thickness)
+            .fold(0.0, f64::max);
+        (!directions.is_empty()).then(|| Border {
+            directions,
+            response: plate.response.clone(),
+            stiffness: plate.stiffness,
+            rhs,
+            stiffness_scale,
+        })
+    }
+
+    /// Close the covered A node with the smallest normal gap (the first support of a
+    /// force-controlled body).
+    pub(super) fn close_nearest(&self, surfaces: &[ContactSurface], states: &mut [Vec<NodeState>]) {
+        let nearest = surfaces
+            .iter()
+            .enumerate()
+            .flat_map(|(p, s)| s.nodes.iter().enumerate().map(move |(k, n)| (p, k, n)))
+            .filter(|(_, _, n)| n.is_covered())
+            .min_by(|a, b| a.2.normal_gap.total_cmp(&b.2.normal_gap));
+        if let Some((p, k, _)) = nearest {
+            states[p][k] = if self.pairs[p].friction > 0.0 {
+                NodeState::Stick
+            } else {
+                NodeState::Slip { sign: 1 }
+            };
+        }
+    }
+
+    /// The converged plate displacement and the force it exerts on the body (`None` without a
+    /// plate).
+    pub fn plate(&self) -> Option<([f64; 2], [f64; 2])> {
+        self.plate.as_ref().map(|p| (p.displacement, p.force))
+    }
+
+    /// One load increment of an analysis built [`with_plate`](Self::with_plate): as
+    /// [`increment`](Self::increment), with the plate's x and y translations driven by
+    /// `control` (the values `qp` holds at the plate nodes are ignored).
+    pub fn increment_with_plate(
+        &mut self,
+        f: &[f64],
+        qp: &[f64],
+        control: [PlateControl; 2],
+    ) -> Result<IncrementInfo> {
+        let Some(plate) = &self.plate else {
+            return Err(Error::InvalidInput(
+                "increment_with_plate needs an analysis built with_plate".into(),
+            ));
+        };
+        if control.iter().any(|c| match c {
+            PlateControl::Displacement(v) | PlateControl::Force(v) => !v.is_finite(),
+        }) {
+            return Err(Error::InvalidInput(format!(
+                "non-finite plate control {control:?}"
+            )));
+        }
+        let n = self.bodies.field_len();
+        if qp.len() != n {
+            return Err(Error::InvalidInput(format!(
+                "the prescribed vector needs {n} entries, got {}",
+                qp.len()
+            )));
+        }
+        let mut qp = qp.to_vec();
+        for &node in &plate.nodes {
+            for (d, c) in control.iter().enumerate() {
+                qp[dof(node, d)] = match c {
+                    PlateControl::Displacement(u) => *u,
+                    PlateControl::Force(_) => 0.0,
+                };
+            }
+        }
+        self.run_increment(f, &qp, Some(control))
+    }
+}
