@@ -900,46 +900,38 @@ static bool test_contact_new_bad_options(void) {
     return ok;
 }
 
-/* Kinematics: 0 (a zero-initialised struct) and unknown values are rejected by name. */
-static bool test_contact_new_unknown_kinematics(void) {
+/* An enum option (backend or kinematics, both int32_t) set to 0 (a zero-initialised struct) or
+ * to an unknown value is rejected by name; `field` points into `o`. */
+static bool rejects_enum_option(HyconContactOptions *o, int32_t *field, const char *name) {
     HyconModel *m = make_model(HOLD_UPPER | WITH_PAIR);
     HyconContact *c = MARKER(HyconContact);
-    HyconContactOptions o;
-    const HyconKinematics bad[3] = {0, 3, -1};
+    const int32_t bad[3] = {0, 3, -1};
     size_t i;
     bool ok = true;
     char part[64];
     EXPECT(m != NULL);
-    EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
-    EXPECT(o.kinematics == HYCON_KINEMATICS_SMALL);
     for (i = 0; i < 3; ++i) {
-        o.kinematics = bad[i];
-        sprintf(part, "options.kinematics = %d", (int)bad[i]);
-        ok = ok && STATUS_FN(hycon_contact_new, (&c, m, &o), HYCON_ERROR_INVALID_ARGUMENT, part);
+        *field = bad[i];
+        sprintf(part, "options.%s = %d", name, (int)bad[i]);
+        ok = ok && STATUS_FN(hycon_contact_new, (&c, m, o), HYCON_ERROR_INVALID_ARGUMENT, part);
     }
     ok = ok && c == MARKER(HyconContact);
     hycon_model_free(m);
     return ok;
 }
 
-static bool test_contact_new_unknown_backend(void) {
-    HyconModel *m = make_model(HOLD_UPPER | WITH_PAIR);
-    HyconContact *c = MARKER(HyconContact);
+static bool test_contact_new_unknown_kinematics(void) {
     HyconContactOptions o;
-    const HyconBackend bad[3] = {0, 3, -1};
-    size_t i;
-    bool ok = true;
-    char part[64];
-    EXPECT(m != NULL);
     EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
-    for (i = 0; i < 3; ++i) {
-        o.backend = bad[i];
-        sprintf(part, "options.backend = %d", (int)bad[i]);
-        ok = ok && STATUS_FN(hycon_contact_new, (&c, m, &o), HYCON_ERROR_INVALID_ARGUMENT, part);
-    }
-    ok = ok && c == MARKER(HyconContact);
-    hycon_model_free(m);
-    return ok;
+    EXPECT(o.kinematics == HYCON_KINEMATICS_SMALL);
+    return rejects_enum_option(&o, &o.kinematics, "kinematics");
+}
+
+static bool test_contact_new_unknown_backend(void) {
+    HyconContactOptions o;
+    EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
+    EXPECT(o.backend == HYCON_BACKEND_FAER);
+    return rejects_enum_option(&o, &o.backend, "backend");
 }
 
 /* A model without contact pairs is allowed (its increments are linear solves); every pair
