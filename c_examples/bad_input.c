@@ -186,6 +186,62 @@ static bool test_bad_material(void) {
     return true;
 }
 
+/* E (or t) outside 1e-100..1e100 is a material error that says so, never a "degenerate
+ * element"; inside that range, elements of any size give a finite stiffness. */
+static bool test_material_scale(void) {
+    const double tiny_e[3] = {4.94e-324, 2.2e-308, 1e-101};
+    const double huge_e[2] = {1.79e308, 1e101};
+    double k[64], scaled[8];
+    HyconMaterial m = steel;
+    size_t i;
+    fill(k, 64);
+    for (i = 0; i < 3; ++i) {
+        m.youngs = tiny_e[i];
+        EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m, k, 64),
+                         HYCON_ERROR_INVALID_MATERIAL, "other units"));
+    }
+    for (i = 0; i < 2; ++i) {
+        m.youngs = huge_e[i];
+        EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &m, k, 64),
+                         HYCON_ERROR_INVALID_MATERIAL, "Young's modulus"));
+    }
+    m = steel;
+    m.thickness = 1e-300;
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m, k, 64),
+                     HYCON_ERROR_INVALID_MATERIAL, "thickness"));
+    EXPECT(untouched(k, 64));
+    /* the ends of the range on elements scaled by 1e-20 and 1e20: finite, nonzero diagonal */
+    for (i = 0; i < 8; ++i) scaled[i] = 1e-20 * square[i];
+    m = steel;
+    m.youngs = 1e-100;
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, scaled, &m, k, 64),
+                     HYCON_OK, NULL));
+    EXPECT(isfinite(k[0]) && k[0] > 0.0);
+    for (i = 0; i < 8; ++i) scaled[i] = 1e20 * square[i];
+    m.youngs = 1e100;
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, scaled, &m, k, 64),
+                     HYCON_OK, NULL));
+    EXPECT(isfinite(k[0]) && k[0] > 0.0);
+    return true;
+}
+
+/* A 5- or 6-node hybrid element is a quadrilateral with mid-side nodes on straight edges: a
+ * convex pentagon or hexagon with every node a corner is rejected, naming the corners. */
+static bool test_transition_corners(void) {
+    const double pentagon[10] = {0, 0, 1, 0, 1.5, 0.8, 0.5, 1.5, -0.5, 0.8};
+    const double hexagon[12] = {0, 0, 1, 0, 1.5, 0.8, 1, 1.6, 0, 1.6, -0.5, 0.8};
+    /* the same outlines with straight edges: 4 corners plus mid-side nodes */
+    const double five[10] = {0, 0, 1, 0, 2, 0, 2, 1, 0, 1};
+    const double six[12] = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1};
+    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 5, pentagon),
+                     HYCON_ERROR_BAD_ELEMENT, "5 corners"));
+    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 6, hexagon),
+                     HYCON_ERROR_BAD_ELEMENT, "6 corners"));
+    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 5, five), HYCON_OK, NULL));
+    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 6, six), HYCON_OK, NULL));
+    return true;
+}
+
 static bool test_message_protocol(void) {
     char buf[8];
     size_t needed, full_len;
@@ -288,6 +344,8 @@ int main(void) {
         {"non_finite_coordinates", test_non_finite_coordinates},
         {"bad_shapes", test_bad_shapes},
         {"bad_material", test_bad_material},
+        {"material_scale", test_material_scale},
+        {"transition_corners", test_transition_corners},
         {"message_protocol", test_message_protocol},
         {"panic_becomes_status", test_panic_becomes_status},
         {"stress_routines", test_stress_routines},

@@ -11,6 +11,7 @@
  * the prescribed dofs and solves with a dense Cholesky factor in a solve callback. */
 #include "hycon.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -736,6 +737,29 @@ static bool test_prescribe_bad_input(void) {
     return ok;
 }
 
+/* A displacement component prescribed twice is rejected by the call that does it (listed
+ * twice, X then XY, prescribe then plate), and a rejected call prescribes nothing. */
+static bool test_prescribe_twice(void) {
+    HyconModel *m = make_model(0);
+    const size_t twice[2] = {7, 7}; /* a free node inside the lower block */
+    bool ok = true;
+    EXPECT(m != NULL);
+    ok = ok && STATUS_FN(hycon_model_prescribe, (m, twice, 2, HYCON_Y),
+                         HYCON_ERROR_INVALID_ARGUMENT, "node 7 direction y is prescribed twice");
+    /* nothing of the rejected call was kept: node 7 can be prescribed now */
+    ok = ok && STATUS_FN(hycon_model_prescribe, (m, twice, 1, HYCON_X), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_model_prescribe, (m, twice, 1, HYCON_XY),
+                         HYCON_ERROR_INVALID_ARGUMENT, "node 7 direction x is prescribed twice");
+    ok = ok && STATUS_FN(hycon_model_prescribe, (m, twice, 1, HYCON_Y), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_model_prescribe, (m, bottom, 1, HYCON_X),
+                         HYCON_ERROR_INVALID_ARGUMENT, "prescribed twice");
+    ok = ok && STATUS_FN(hycon_model_prescribe, (m, top, NTOP, HYCON_XY), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_model_set_plate, (m, top, NTOP), HYCON_ERROR_INVALID_ARGUMENT,
+                         "prescribed twice");
+    hycon_model_free(m);
+    return ok;
+}
+
 static bool test_add_pair_null_pointers(void) {
     HyconModel *m = make_model(HOLD_UPPER);
     size_t index = 777;
@@ -1351,6 +1375,166 @@ static int32_t monitor(void *user_data, const HyconIterationRecord *record) {
     (void)record;
     m->calls++;
     return (m->stop_at != 0 && m->calls >= m->stop_at) ? 1 : 0;
+}
+
+/* Pressing the upper block through the lower one in one increment, by any depth: never OK
+ * with the bodies passed through each other. Small kinematics pair the surfaces in the
+ * reference configuration and give the linear answer (every A node in contact); finite
+ * kinematics lose the pairing and must say so, keeping the last state. */
+static bool test_deep_press_never_missed(void) {
+    const double depths[5] = {1.5, 10.0, 1e6, 1e8, 1e10};
+    const HyconKinematics kinematics[2] = {HYCON_KINEMATICS_SMALL, HYCON_KINEMATICS_FINITE};
+    size_t k, i;
+    for (k = 0; k < 2; ++k)
+        for (i = 0; i < 5; ++i) {
+            HyconContactOptions o;
+            HyconContact *c;
+            State before, after;
+            HyconStatus s;
+            EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
+            o.kinematics = kinematics[k];
+            c = make_contact(&o);
+            EXPECT(c != NULL);
+            EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
+            EXPECT(snapshot(c, &before));
+            s = press(c, depths[i], 0.0, NULL);
+            if (s == HYCON_OK) {
+                EXPECT(snapshot(c, &after) && pressed(&after));
+            } else {
+                /* "penetrates the opposite surface" once the press is beyond the search's
+                 * reach, a cycling contact set within it */
+                char message[512];
+                hycon_last_error_message(message, sizeof message);
+                EXPECT(s == HYCON_ERROR_CONTACT);
+                EXPECT(strstr(message, "penetrates the opposite surface") != NULL ||
+                       strstr(message, "cycles") != NULL);
+                EXPECT(snapshot(c, &after) && same_state(&before, &after));
+            }
+            /* finite kinematics cannot resolve a press through the whole block (1 thick) in
+             * one increment */
+            EXPECT(kinematics[k] == HYCON_KINEMATICS_SMALL || depths[i] < 2.0 || s != HYCON_OK);
+            hycon_contact_free(c);
+        }
+    return true;
+}
+
+/* Two faces of one body as a pair (the upper block's bottom as A, its top as B, both with the
+ * body on their left): back to back, rejected when the analysis starts. */
+static bool test_pair_on_one_body(void) {
+    HyconModel *m = make_model(HOLD_UPPER);
+    HyconContact *c = MARKER(HyconContact);
+    size_t b[NTOP], i;
+    bool ok = true;
+    EXPECT(m != NULL);
+    for (i = 0; i < NTOP; ++i) b[i] = top[NTOP - 1 - i];
+    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, b, NTOP, 0.0, NULL), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_contact_new, (&c, m, NULL), HYCON_ERROR_INVALID_ARGUMENT,
+                         "B lies behind A");
+    ok = ok && c == MARKER(HyconContact);
+    hycon_model_free(m);
+    return ok;
+}
+
+/* The host API checks a pair's orientation as the model API does: A reversed (its body on the
+ * right) is rejected when the analysis starts, not run with every node open. */
+static bool test_host_reversed_a(void) {
+    HyconHost *d = NULL;
+    HyconContact *c = MARKER(HyconContact);
+    double a_xy[2 * NA], b_xy[2 * NB], r_xy[2 * NA];
+    int64_t a_eq[2 * NA], b_eq[2 * NB], r_eq[2 * NA];
+    size_t a[NA], i;
+    bool ok = true;
+    host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
+    for (i = 0; i < NA; ++i) {
+        a[i] = pair_a[NA - 1 - i];
+        r_xy[2 * i] = a_xy[2 * (NA - 1 - i)];
+        r_xy[2 * i + 1] = a_xy[2 * (NA - 1 - i) + 1];
+        r_eq[2 * i] = a_eq[2 * (NA - 1 - i)];
+        r_eq[2 * i + 1] = a_eq[2 * (NA - 1 - i) + 1];
+    }
+    EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
+    ok = ok && STATUS(hycon_host_add_pair(d, a, r_xy, r_eq, NA, pair_b, b_xy, b_eq, NB, 0.0,
+                                          NULL),
+                      HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_host_set_solver(d, host_solve, &host), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_contact_new_host, (&c, d, NULL), HYCON_ERROR_INVALID_ARGUMENT,
+                         "A and B run the same way");
+    ok = ok && c == MARKER(HyconContact);
+    hycon_host_free(d);
+    return ok;
+}
+
+typedef struct {
+    size_t calls;
+    size_t non_finite; /* records with R or the condition estimate not finite */
+} RecordWatch;
+
+static int32_t watch_records(void *user_data, const HyconIterationRecord *record) {
+    RecordWatch *w = (RecordWatch *)user_data;
+    w->calls++;
+    if (!isfinite(record->r) || !isfinite(record->condition)) w->non_finite++;
+    return 0;
+}
+
+/* Finite but huge loads: a result with finite values, or an error that keeps the state;
+ * never a record (or a monitor call) with R = NaN. */
+static bool test_huge_load(void) {
+    const double loads[3] = {1e300, -1e300, DBL_MAX};
+    size_t i;
+    for (i = 0; i < 3; ++i) {
+        HyconContactOptions o;
+        HyconContact *c;
+        RecordWatch watch = {0, 0};
+        double load[NDOF], qp[NDOF];
+        State before, after;
+        HyconStatus s;
+        size_t j;
+        EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
+        o.monitor = watch_records;
+        o.monitor_data = &watch;
+        c = make_contact(&o);
+        EXPECT(c != NULL);
+        EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
+        EXPECT(snapshot(c, &before));
+        memset(load, 0, sizeof load);
+        prescribed_values(qp, PRESS, 0.0);
+        load[2 * lower_node(2, 1) + 1] = loads[i]; /* a free dof inside the lower block */
+        s = hycon_contact_increment(c, load, NDOF, qp, NDOF, NULL);
+        EXPECT(snapshot(c, &after));
+        if (s == HYCON_OK) {
+            for (j = 0; j < NDOF; ++j) EXPECT(isfinite(after.u[j]));
+            for (j = 0; j < NA; ++j) EXPECT(isfinite(after.a[j].tn));
+            /* the load is not lost: pushing the lower block up presses the contact by
+             * orders of magnitude more; pulling it down opens it */
+            for (j = 0; j < NA; ++j)
+                EXPECT(loads[i] > 0.0 ? after.a[j].tn < 1e250 * before.a[j].tn
+                                      : after.a[j].state == HYCON_NODE_OPEN);
+        } else {
+            EXPECT(STATUS(s, HYCON_ERROR_CONTACT, "not finite"));
+            EXPECT(same_state(&before, &after));
+        }
+        EXPECT(watch.non_finite == 0);
+        hycon_contact_free(c);
+    }
+    return true;
+}
+
+/* Entries of `prescribed` at free dofs are ignored, whatever they hold (NaN included). */
+static bool test_ignored_prescribed_entries(void) {
+    HyconContact *c = make_contact(NULL), *reference = make_contact(NULL);
+    double load[NDOF], qp[NDOF];
+    State x, y;
+    EXPECT(c != NULL && reference != NULL);
+    memset(load, 0, sizeof load);
+    prescribed_values(qp, PRESS, 0.0);
+    EXPECT(hycon_contact_increment(reference, load, NDOF, qp, NDOF, NULL) == HYCON_OK);
+    qp[2 * lower_node(2, 1)] = NAN; /* free */
+    qp[2 * lower_node(1, 2) + 1] = INFINITY; /* a free contact dof */
+    EXPECT(STATUS(hycon_contact_increment(c, load, NDOF, qp, NDOF, NULL), HYCON_OK, NULL));
+    EXPECT(snapshot(c, &x) && snapshot(reference, &y) && same_state(&x, &y));
+    hycon_contact_free(c);
+    hycon_contact_free(reference);
+    return true;
 }
 
 static bool test_monitor_stops_increment(void) {
@@ -2059,6 +2243,7 @@ int main(void) {
         {"model_new_kind_and_material", test_model_new_unknown_kind_and_bad_material},
         {"free_null_is_a_no_op", test_free_null},
         {"prescribe_bad_input", test_prescribe_bad_input},
+        {"prescribe_twice", test_prescribe_twice},
         {"add_pair_null_pointers", test_add_pair_null_pointers},
         {"add_pair_lengths", test_add_pair_lengths},
         {"add_pair_not_a_chain", test_add_pair_not_a_chain},
@@ -2080,6 +2265,10 @@ int main(void) {
         {"results_unknown_pair", test_unknown_pair},
         {"records_out_of_range", test_records_out_of_range},
         {"length_overflow", test_length_overflow},
+        {"deep_press_never_missed", test_deep_press_never_missed},
+        {"pair_on_one_body", test_pair_on_one_body},
+        {"huge_load", test_huge_load},
+        {"ignored_prescribed_entries", test_ignored_prescribed_entries},
         {"monitor_stops_increment", test_monitor_stops_increment},
         {"contact_failure_max_iterations", test_contact_failure_max_iterations},
         {"contact_failure_keeps_state", test_contact_failure_keeps_state},
@@ -2090,6 +2279,7 @@ int main(void) {
         {"host_add_pair_null_pointers", test_host_add_pair_null_pointers},
         {"host_add_pair_lengths", test_host_add_pair_lengths},
         {"host_add_pair_non_finite", test_host_add_pair_non_finite},
+        {"host_reversed_a", test_host_reversed_a},
         {"host_add_pair_not_a_chain", test_host_add_pair_not_a_chain},
         {"host_add_pair_unknown_ids", test_host_add_pair_unknown_ids},
         {"host_add_pair_bad_friction", test_host_add_pair_bad_friction},

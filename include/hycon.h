@@ -48,6 +48,10 @@
 #include <stdint.h>
 #include <stddef.h>
 
+// The most true corners an element has: 4 (a quadrilateral; 5- and 6-node transition
+// elements add mid-side nodes on straight edges).
+#define MAX_CORNERS 4
+
 // Major version of the library this header belongs to (from `Cargo.toml`).
 #define HYCON_VERSION_MAJOR 0
 
@@ -427,6 +431,11 @@ typedef struct HyconCouplingEntry {
 // The value is the total force on the plate in that direction (its motion is solved for).
 #define HYCON_PLATE_FORCE 2
 
+// The range `E` and `t` must lie in: wide enough for any system of units, narrow enough that
+// the element matrices (`H ~ t A / E`, `G ~ t h`, `K ~ E t` for elements of area `A` and size
+// `h`) stay finite and normal in double precision for element sizes far beyond any mesh's.
+#define SCALE_RANGE { 1e-100, 1e100, }
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -508,6 +517,10 @@ void hycon_model_free(struct HyconModel *model);
 // The values are given per increment (`prescribed` of `hycon_contact_increment`). Contact
 // nodes may be prescribed too.
 //
+// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for an unknown node id, unknown `directions`, or a
+// displacement component prescribed twice (listed twice in `nodes`, prescribed by an earlier
+// call, or tied to the plate); on an error nothing is prescribed.
+//
 // # Safety
 // `model` must be a live handle; `nodes` NULL or `n` readable ids.
 HyconStatus hycon_model_prescribe(struct HyconModel *model,
@@ -539,6 +552,10 @@ HyconStatus hycon_model_add_pair(struct HyconModel *model,
 // y translations are driven per increment by `hycon_contact_increment_plate`, each by
 // displacement or by force. The nodes are prescribed in x and y by this call. A body held only
 // by the plate and by contact (a pressed disk) then takes a prescribed force.
+//
+// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for no nodes, an unknown node id, or a node already
+// prescribed (by `hycon_model_prescribe`, twice in `nodes`, or by an earlier plate: a model
+// has one plate); on an error the model is unchanged.
 //
 // # Safety
 // `model` must be a live handle; `nodes` NULL or `n` readable ids.
@@ -599,6 +616,11 @@ HyconStatus hycon_host_add_pair(struct HyconHost *host,
 // `row_ptr[n_equations]`; `triangle` says which part is stored (`HYCON_CSR_FULL`, checked
 // symmetric; `HYCON_CSR_LOWER`; `HYCON_CSR_UPPER`). hycon factors it once (faer, or the
 // options' backend) when the analysis starts. Replaces an earlier matrix or solver.
+//
+// The columns of a row may come in any order, and an entry given more than once is summed
+// (as an assembly loop leaves it). A dof the host holds fixed is either left out of the
+// equations (`HYCON_FIXED` in `hycon_host_add_pair`) or kept as an identity row and column
+// (1 on the diagonal, 0 elsewhere and in the right-hand side): both work.
 //
 // # Safety
 // `host` must be a live handle; the arrays NULL or of the stated lengths.
@@ -674,8 +696,8 @@ HyconStatus hycon_contact_field_len(const struct HyconContact *contact, size_t *
 
 // Apply one load increment with **total** values (from the reference state):
 // * model API: `load` = external nodal forces over all `2 * n_nodes` dofs (`u0 v0 u1 v1 ...`),
-//   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (others
-//   ignored);
+//   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (the
+//   others are ignored, whatever they hold: NaN there is fine);
 // * host API: `load` = the host's right-hand side over its equations (including the effect of
 //   its prescribed displacements), `prescribed` = (NULL, 0).
 //

@@ -27,6 +27,16 @@ pub enum ShapeError {
     /// Nodes given clockwise, or a bilinear map whose Jacobian changes sign.
     #[error("inverted element (nodes must be counter-clockwise)")]
     Inverted,
+    /// More than 4 true corners: a 5- or 6-node element is a quadrilateral with mid-side
+    /// nodes on straight edges, not a general polygon.
+    #[error(
+        "{corners} corners: an element has at most 4, its other nodes lie mid-side on straight \
+         edges"
+    )]
+    Corners {
+        /// The number of true corners found.
+        corners: usize,
+    },
     /// An interior angle above 180 degrees (beyond a small tolerance).
     #[error("non-convex element (interior angle above 180 degrees at local node {node})")]
     NonConvex {
@@ -87,7 +97,8 @@ pub enum ContactError {
     /// A contact-state set returned that was seen before in the increment, and it was not a
     /// benign alternation the locks resolve (or they were used up).
     #[error(
-        "increment {increment}: the contact set cycles (iteration {iteration} returns to the set          of iteration {returns_to}; node {node} flips)"
+        "increment {increment}: the contact set cycles (iteration {iteration} returns to the set \
+         of iteration {returns_to}; node {node} flips)"
     )]
     Cycling {
         /// Increment number (1-based).
@@ -102,7 +113,9 @@ pub enum ContactError {
     /// A node locked open after alternating between open and closed penetrates at convergence
     /// by more than a hair: the alternation was not an edge effect.
     #[error(
-        "increment {increment}: the contact set cycles: node {node} alternates between open and          closed, and open it penetrates by {depth:.3e} ({relative:.1e} of the increment's          motion): reduce the load step"
+        "increment {increment}: the contact set cycles: node {node} alternates between open and \
+         closed, and open it penetrates by {depth:.3e} ({relative:.1e} of the increment's \
+         motion): reduce the load step"
     )]
     EdgePenetration {
         /// Increment number (1-based).
@@ -114,17 +127,20 @@ pub enum ContactError {
         /// The penetration over the increment's motion.
         relative: f64,
     },
-    /// A B node penetrates an open A segment deeper than the search distance, so the pairing
-    /// cannot be trusted.
+    /// A node penetrates the opposite surface where the pairing does not see it: a B node
+    /// deeper than the search distance below an open A segment, or an A node with no B segment
+    /// within the search distance (one surface pushed through the other).
     #[error(
-        "B node {node} penetrates A segment {} -> {} by {depth:.3e}, more than the search          distance ({search_distance:.3e}): reduce the load step or widen search_distance",
+        "node {node} penetrates the opposite surface's segment {} -> {} by {depth:.3e}, beyond \
+         what the pairing sees (search distance {search_distance:.3e}): reduce the load step \
+         or widen search_distance",
         segment[0],
         segment[1]
     )]
     BeyondSearchDistance {
-        /// The B node.
+        /// The penetrating node (of A or of B).
         node: usize,
-        /// The A segment's nodes.
+        /// The segment of the opposite surface it penetrates.
         segment: [usize; 2],
         /// The penetration (a length, positive).
         depth: f64,
@@ -134,7 +150,8 @@ pub enum ContactError {
     /// An active A node's support is not fully covered by the opposite surface (an integral
     /// over a hole would be wrong).
     #[error(
-        "contact node {node} is active but {:.1e} of its support is not covered by the opposite          surface: extend the B polyline",
+        "contact node {node} is active but {:.1e} of its support is not covered by the opposite \
+         surface: extend the B polyline",
         1.0 - coverage
     )]
     Uncovered {
@@ -143,10 +160,24 @@ pub enum ContactError {
         /// The covered fraction of its support, below 1.
         coverage: f64,
     },
+    /// The displacements of an iterate are not finite: the loads or prescribed values, finite
+    /// themselves, overflow double precision on the way (a load of 1e300, say).
+    #[error(
+        "increment {increment}: the displacements are not finite at iteration {iteration} (the \
+         loads or prescribed values overflow double precision: rescale the units)"
+    )]
+    NonFinite {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The iteration (0: the solve for the loads, before any contact force).
+        iteration: usize,
+    },
     /// Under small kinematics an active node slid so far that the frozen pairing misplaces
     /// the opposite surface by a noticeable part of the normal approach.
     #[error(
-        "increment {increment}: node {node} slid {slip:.3e} along the opposite surface, which          moves its gap by about {percent:.1}% of the normal approach: beyond small kinematics          (the pairing frozen in the reference configuration): use finite kinematics",
+        "increment {increment}: node {node} slid {slip:.3e} along the opposite surface, which \
+         moves its gap by about {percent:.1}% of the normal approach: beyond small kinematics \
+         (the pairing frozen in the reference configuration): use finite kinematics",
         percent = 100.0 * relative
     )]
     SmallSlidingExceeded {

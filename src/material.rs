@@ -7,6 +7,11 @@
 use crate::error::{Error, Result};
 use nalgebra::Matrix3;
 
+/// The range `E` and `t` must lie in: wide enough for any system of units, narrow enough that
+/// the element matrices (`H ~ t A / E`, `G ~ t h`, `K ~ E t` for elements of area `A` and size
+/// `h`) stay finite and normal in double precision for element sizes far beyond any mesh's.
+pub const SCALE_RANGE: [f64; 2] = [1e-100, 1e100];
+
 /// Which two-dimensional idealisation is used.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Analysis {
@@ -30,7 +35,8 @@ pub struct Material {
 }
 
 impl Material {
-    /// A checked material: finite values, `E > 0`, `-1 < nu < 0.5`, `t > 0`.
+    /// A checked material: finite values, `E > 0`, `-1 < nu < 0.5`, `t > 0`, `E` and `t` within
+    /// [`SCALE_RANGE`].
     pub fn new(youngs: f64, poisson: f64, thickness: f64, analysis: Analysis) -> Result<Self> {
         let m = Material {
             youngs,
@@ -59,6 +65,15 @@ impl Material {
             return Err(Error::Material(format!(
                 "Young's modulus must be > 0, got {e}"
             )));
+        }
+        for (value, name) in [(e, "Young's modulus"), (t, "thickness")] {
+            if value > 0.0 && !(SCALE_RANGE[0]..=SCALE_RANGE[1]).contains(&value) {
+                return Err(Error::Material(format!(
+                    "{name} {value:e} lies outside [{:e}, {:e}], where the element matrices \
+                     stay finite and normal in double precision: choose other units",
+                    SCALE_RANGE[0], SCALE_RANGE[1]
+                )));
+            }
         }
         if !(nu > -1.0 && nu < 0.5) {
             return Err(Error::Material(format!(

@@ -66,23 +66,64 @@ impl Model {
         }
     }
 
-    /// Prescribe both displacement components of every node in `nodes`.
-    pub fn fix(&mut self, nodes: &[usize], value: [f64; 2]) {
-        for &node in nodes {
-            for (dir, &v) in value.iter().enumerate() {
-                self.prescribed.push(Prescribed {
-                    node,
-                    dir,
-                    value: v,
-                });
-            }
-        }
+    /// Prescribe both displacement components of every node in `nodes` to `value`.
+    ///
+    /// Checked here, atomically (on an error nothing is added): every node exists, `value` is
+    /// finite, and no component is prescribed twice (within `nodes` or by an earlier call).
+    pub fn fix(&mut self, nodes: &[usize], value: [f64; 2]) -> Result<()> {
+        self.prescribe(nodes, &[(0, value[0]), (1, value[1])])
     }
 
-    /// Prescribe displacement component `dir` of every node in `nodes`.
-    pub fn fix_dir(&mut self, nodes: &[usize], dir: usize, value: f64) {
-        self.prescribed
-            .extend(nodes.iter().map(|&node| Prescribed { node, dir, value }));
+    /// Prescribe displacement component `dir` (0 = x, 1 = y) of every node in `nodes` to
+    /// `value`, checked like [`Model::fix`].
+    pub fn fix_dir(&mut self, nodes: &[usize], dir: usize, value: f64) -> Result<()> {
+        if dir > 1 {
+            return Err(Error::InvalidInput(format!(
+                "direction {dir} (0 = x, 1 = y)"
+            )));
+        }
+        self.prescribe(nodes, &[(dir, value)])
+    }
+
+    /// Append `(node, dir, value)` for every node and every `(dir, value)` after checking them
+    /// all against the mesh and the components already prescribed.
+    fn prescribe(&mut self, nodes: &[usize], components: &[(usize, f64)]) -> Result<()> {
+        let n = self.mesh.n_nodes();
+        let mut taken = vec![false; 2 * n];
+        for p in &self.prescribed {
+            if p.node < n && p.dir < 2 {
+                taken[dof(p.node, p.dir)] = true;
+            }
+        }
+        if let Some(&node) = nodes.iter().find(|&&node| node >= n) {
+            return Err(Error::InvalidInput(format!(
+                "unknown node {node} (the model has {n} nodes)"
+            )));
+        }
+        if let Some(&(_, value)) = components.iter().find(|(_, v)| !v.is_finite()) {
+            return Err(Error::InvalidInput(format!(
+                "prescribed value {value} is not finite"
+            )));
+        }
+        for &node in nodes {
+            for &(dir, _) in components {
+                if std::mem::replace(&mut taken[dof(node, dir)], true) {
+                    return Err(Error::InvalidInput(format!(
+                        "node {node} direction {} is prescribed twice",
+                        ["x", "y"][dir]
+                    )));
+                }
+            }
+        }
+        for &node in nodes {
+            self.prescribed
+                .extend(
+                    components
+                        .iter()
+                        .map(|&(dir, value)| Prescribed { node, dir, value }),
+                );
+        }
+        Ok(())
     }
 
     /// A uniform line load (force per unit length) on every edge of `edges`.

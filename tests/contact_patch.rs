@@ -164,16 +164,16 @@ fn run(case: Case) -> Outcome {
             < 1e-14
     );
     let mut model = Model::new(mesh, vec![lower_mat, upper_mat], Formulation::Hybrid);
-    model.fix_dir(&lower_bottom, 1, 0.0);
-    model.fix_dir(&[corner], 0, 0.0);
+    model.fix_dir(&lower_bottom, 1, 0.0).unwrap();
+    model.fix_dir(&[corner], 0, 0.0).unwrap();
     if case.hold_ends {
         for &(node, x) in &ends {
-            model.fix_dir(&[node], 0, x * widening);
+            model.fix_dir(&[node], 0, x * widening).unwrap();
         }
     } else {
-        model.fix_dir(&[top_left], 0, 0.0);
+        model.fix_dir(&[top_left], 0, 0.0).unwrap();
     }
-    model.fix_dir(&[top_left, top_right], 1, v_top);
+    model.fix_dir(&[top_left, top_right], 1, v_top).unwrap();
     model.load_edges(&upper_top_edges, [0.0, -P]);
     let pair = ContactPair {
         a: upper_bottom.clone(),

@@ -52,7 +52,7 @@ pub fn cook_membrane_scaled(
         .first()
         .ok_or_else(|| Error::InvalidInput(format!("Cook's membrane needs an even n, got {n}")))?;
     let mut model = Model::new(mesh, vec![material], formulation);
-    model.fix(&clamped, [0.0, 0.0]);
+    model.fix(&clamped, [0.0, 0.0])?;
     // total shear `force` over the loaded edge of length 16 `length`, per unit length
     model.load_edges(&loaded, [0.0, force / (16.0 * length)]);
     let solution = model.solve()?;
@@ -115,8 +115,8 @@ pub fn cantilever(
     };
     let t = material.thickness;
     let mut model = Model::new(mesh, vec![material], formulation);
-    model.fix_dir(&left, 0, 0.0);
-    model.fix_dir(&[root], 1, 0.0);
+    model.fix_dir(&left, 0, 0.0)?;
+    model.fix_dir(&[root], 1, 0.0)?;
     // consistent forces of the (at most quadratic) end traction: Simpson's rule per edge
     let mut forces = vec![[0.0; 2]; model.mesh.n_nodes()];
     for &[a, b] in &right {

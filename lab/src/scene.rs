@@ -277,8 +277,8 @@ impl DiskOnBlock {
         let top = mesh.node_sets["disk.top"].clone();
         let bottom = mesh.node_sets["block.bottom"].clone();
         let mut model = Model::new(mesh, vec![block_material, disk_material], self.formulation);
-        model.fix(&bottom, [0.0, 0.0]);
-        model.fix(&top, [0.0, 0.0]);
+        model.fix(&bottom, [0.0, 0.0])?;
+        model.fix(&top, [0.0, 0.0])?;
         Ok(Scene {
             model,
             pair,

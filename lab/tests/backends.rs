@@ -27,7 +27,7 @@ fn cook_model(formulation: Formulation, n: usize) -> (Model, usize) {
     let loaded = mesh.edge_sets["loaded"].clone();
     let tip = mesh.node_sets["tip"][0];
     let mut model = Model::new(mesh, vec![material], formulation);
-    model.fix(&clamped, [0.0, 0.0]);
+    model.fix(&clamped, [0.0, 0.0]).unwrap();
     model.load_edges(&loaded, [0.0, 1.0 / 16.0]);
     (model, tip)
 }
@@ -93,7 +93,7 @@ fn graded_model() -> (Model, Vec<usize>) {
     trailing.insert(3, dof(bottom[0], 0));
     trailing.push(dof(bottom[1], 1));
     let mut model = Model::new(mesh, vec![material], Formulation::Hybrid);
-    model.fix(&bottom, [0.0, 0.0]);
+    model.fix(&bottom, [0.0, 0.0]).unwrap();
     (model, trailing)
 }
 

@@ -155,3 +155,34 @@ fn repeated_and_tiny_increments_converge_at_once() {
         }
     }
 }
+
+/// Refining never turns a working analysis into an error: the reference scene at R/a = 32 ran
+/// at n = 128 but failed at n = 256 under finite kinematics ("B node 17850 penetrates A segment
+/// ... more than the search distance (6.127e-4)"), because the search reached a fixed number of
+/// element sizes while the increment moved the surfaces by more. The reach now follows the
+/// increment's motion too. Both kinematics converge, and to Hertz (the finite-kinematics offset
+/// of O(a/R) included).
+#[test]
+fn refining_the_reference_scene_keeps_it_working() {
+    use hycon_lab::bench::{SweepCase, sweep_run};
+    for kinematics in [Kinematics::Small, Kinematics::Finite] {
+        let case = SweepCase {
+            radius_over_half_width: 32,
+            kinematics,
+            ..SweepCase::reference(256)
+        };
+        let run = sweep_run(&case).unwrap_or_else(|e| panic!("{}: {e}", kinematics.name()));
+        println!(
+            "{}: L2 {:.3}%, a {:+.3}%, p0 {:+.3}%",
+            kinematics.name(),
+            100.0 * run.l2_error,
+            100.0 * run.half_width_error,
+            100.0 * run.peak_error
+        );
+        let limit = match kinematics {
+            Kinematics::Small => 0.001,
+            Kinematics::Finite => 0.01,
+        };
+        assert!(run.half_width_error.abs() < limit && run.peak_error.abs() < limit);
+    }
+}

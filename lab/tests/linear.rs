@@ -33,8 +33,8 @@ fn patch_test(mesh: Mesh, formulation: Formulation, analysis: Analysis) -> (f64,
     let mut model = Model::new(mesh, vec![material], formulation);
     for &n in &boundary {
         let u = linear_field(model.mesh.nodes[n]);
-        model.fix_dir(&[n], 0, u[0]);
-        model.fix_dir(&[n], 1, u[1]);
+        model.fix_dir(&[n], 0, u[0]).unwrap();
+        model.fix_dir(&[n], 1, u[1]).unwrap();
     }
     let solution = model.solve().unwrap();
     let umax = 5e-3;
@@ -258,7 +258,7 @@ fn unsupported_body_is_reported() {
         vec![Material::new(1.0, 0.3, 1.0, Analysis::PlaneStress).unwrap()],
         Formulation::Hybrid,
     );
-    model.fix_dir(&clamped, 0, 0.0);
+    model.fix_dir(&clamped, 0, 0.0).unwrap();
     let err = model.solve().unwrap_err().to_string();
     assert!(
         err.contains("singular") && err.contains("body 0") && err.contains("2 of its 3"),

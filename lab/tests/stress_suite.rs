@@ -298,12 +298,12 @@ fn patch(case: Patch) -> hycon::Result<PatchOutcome> {
     let v_top = 0.5 * eps(&lower_mat) - case.gap + 0.5 * eps(&upper_mat);
     let widening = lower_mat.poisson * (1.0 + lower_mat.poisson) * p / lower_mat.youngs;
     let mut model = Model::new(mesh, vec![lower_mat, upper_mat], Formulation::Hybrid);
-    model.fix_dir(&lower_bottom, 1, 0.0);
-    model.fix_dir(&[corner], 0, 0.0);
+    model.fix_dir(&lower_bottom, 1, 0.0).unwrap();
+    model.fix_dir(&[corner], 0, 0.0).unwrap();
     for &(node, x) in &ends {
-        model.fix_dir(&[node], 0, x * widening);
+        model.fix_dir(&[node], 0, x * widening).unwrap();
     }
-    model.fix_dir(&[top_left, top_right], 1, v_top);
+    model.fix_dir(&[top_left, top_right], 1, v_top).unwrap();
     model.load_edges(&upper_top_edges, [0.0, -p]);
     let pair = ContactPair {
         a: upper_bottom.clone(),
@@ -813,17 +813,25 @@ fn load_magnitudes() {
 /// tolerance is relative to the increment's own motion. At factor 1e3 the first iterate
 /// penetrates (~0.4) beyond the search distance `4 h`: small kinematics pair the surfaces once
 /// in the reference configuration, where they touch, and give the exact pressure; finite
-/// kinematics cannot pair the sagged surfaces and report an error.
+/// kinematics pair the sagged surfaces because the search reaches twice the increment's motion
+/// too. Their geometry is nonlinear, so the fixed-point iteration stops within its tolerance
+/// `R <= tol` of the exact state: the pressure is exact to a few `tol` (1.8e-6 at the default
+/// 1e-6, and it follows `tol` down: the run with `tol = 1e-10` must be exact to 1e-9).
 #[test]
 fn load_magnitudes_default_options() {
     let mut failures = Vec::new();
-    for kinematics in [Kinematics::Small, Kinematics::Finite] {
+    for (kinematics, tolerance) in [
+        (Kinematics::Small, 1e-6),
+        (Kinematics::Finite, 1e-6),
+        (Kinematics::Finite, 1e-10),
+    ] {
         for factor in [1e-9, 1e3] {
             let case = Patch {
                 name: "load, default options",
                 pressure: 1e-3 * factor,
                 options: ContactOptions {
                     kinematics,
+                    tolerance,
                     ..Default::default()
                 },
                 ..Default::default()
@@ -832,12 +840,18 @@ fn load_magnitudes_default_options() {
             match patch(case) {
                 Ok(o) => {
                     let line = format!(
-                        "{kin}, factor {factor:e}: Ok with {} of {} A nodes in contact, \
-                         pressure error {:.2e}",
+                        "{kin}, tol {tolerance:e}, factor {factor:e}: Ok with {} of {} A nodes \
+                         in contact, pressure error {:.2e}",
                         o.active, o.a_nodes, o.multipliers
                     );
                     println!("{line}");
-                    if o.multipliers.is_nan() || o.multipliers >= 1e-8 {
+                    // exact to round-off, or to the iteration's tolerance for the nonlinear
+                    // finite-kinematics geometry
+                    let exact = match kinematics {
+                        Kinematics::Small => 1e-8,
+                        Kinematics::Finite => 1e-8_f64.max(10.0 * tolerance),
+                    };
+                    if o.multipliers.is_nan() || o.multipliers >= exact {
                         failures.push(line);
                     }
                 }

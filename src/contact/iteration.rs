@@ -56,6 +56,7 @@
 //! does the iteration cap. A failed increment leaves the last converged state untouched.
 
 use super::bodies::{Bodies, HostSystem};
+use super::facing;
 use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
 use crate::error::{ContactError, Error, Result};
@@ -240,7 +241,9 @@ pub struct ContactOptions {
     /// the mean A segment length.
     pub slip_tolerance: f64,
     /// Distance within which B segments are paired with an A segment, relative to the mean A
-    /// segment length.
+    /// segment length; during an increment under finite kinematics the search reaches at least
+    /// twice the increment's largest motion of a contact dof too (see `search_reach`), so a
+    /// refined mesh never loses a contact that a coarse one finds.
     pub search_distance: f64,
     /// Cycle policy: how many times per increment a cycling contact set is resolved by locking
     /// the alternating nodes (in slip: a node on the edge of the friction cone alternating
@@ -586,6 +589,9 @@ impl ContactAnalysis {
         let flexibility = bodies.flexibility(&dofs)?;
         timings.flexibility = clock.elapsed().as_secs_f64();
         let reference = evaluate_pairs(&pairs, bodies.positions(), options.search_distance)?;
+        for (i, pair) in pairs.iter().enumerate() {
+            check_facing(pair, &bodies, options.search_distance).map_err(|e| in_pair(i, e))?;
+        }
         let nodes = pairs
             .iter()
             .map(|p| {
@@ -741,6 +747,20 @@ impl ContactAnalysis {
         mean_segment(&self.pairs[p].a, xg)
     }
 
+    /// How far the pairing of pair `p` reaches during an increment: `search_distance` mean A
+    /// segment lengths, or twice the increment's largest motion of a contact dof
+    /// (`max |uc - startc|`) when that is more. Two surfaces approach each other by at most
+    /// twice that motion in an increment, so a pairing that held at its start still finds its
+    /// partner, however fine the mesh (a reach tied to the element size alone breaks exactly
+    /// when a user refines).
+    fn search_reach(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
+        let motion = uc
+            .iter()
+            .zip(startc)
+            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        (self.options.search_distance * self.mean_segment(p, xg)).max(2.0 * motion)
+    }
+
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
     /// nodes keep their reference positions: the contact geometry never reads them).
     fn positions(&self, uc: &[f64]) -> Vec<[f64; 2]> {
@@ -766,13 +786,18 @@ impl ContactAnalysis {
     /// `R_C,k = R_C,k(X) + sum_j c_kj u_j`, `normal_gap_k = -n_k . R_C,k / covered weight`
     /// (and `mean_distance` moves with `normal_gap`), with the reference pairing, frames,
     /// weights and coupling rows.
-    fn update_geometry(&self, surfaces: &mut [ContactSurface], uc: &[f64]) -> Result<()> {
+    fn update_geometry(
+        &self,
+        surfaces: &mut [ContactSurface],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<()> {
         match self.options.kinematics {
             Kinematics::Finite => {
                 let x = self.positions(uc);
                 for (p, surface) in surfaces.iter_mut().enumerate() {
                     let pair = &self.pairs[p];
-                    let distance = self.options.search_distance * mean_segment(&pair.a, &x);
+                    let distance = self.search_reach(p, &x, uc, startc);
                     geometry::evaluate_into(&pair.a, &pair.b, &x, distance, surface)?;
                 }
             }
@@ -824,6 +849,7 @@ impl ContactAnalysis {
     ) -> Result<IncrementInfo> {
         let number = self.increment + 1;
         let (u0c, force0) = self.load_solve(f, qp)?;
+        finite(&u0c, number, 0)?;
         let border = control.and_then(|c| self.border(c, force0));
         let clock = std::time::Instant::now();
         let mut states: Vec<Vec<NodeState>> = self
@@ -869,11 +895,19 @@ impl ContactAnalysis {
                     }
                 }
             }
-            self.update_geometry(&mut surfaces, &uc_new)?;
+            finite(&uc_new, number, iteration)?;
+            self.update_geometry(&mut surfaces, &uc_new, &startc)?;
             let tractions = system.tractions(&tau, states, &self.pairs);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, &startc)?;
             let changes = set.changes(&proposed);
             let r = change_ratio(&uc_new, &uc, &startc, self.options.tolerance);
+            if !r.is_finite() {
+                return Err(ContactError::NonFinite {
+                    increment: number,
+                    iteration,
+                }
+                .into());
+            }
             let (active, stick, slip) = set.count();
             let record = IterationRecord {
                 increment: number,
@@ -898,6 +932,7 @@ impl ContactAnalysis {
             if changes == 0 && r <= self.options.tolerance {
                 let states = set.states();
                 self.uncovered(&surfaces, states)?;
+                self.passed_through(&surfaces, states, &uc, &startc)?;
                 self.edge_penetration(number, &surfaces, set.locked_open(), &uc, &startc)?;
                 self.small_sliding(number, states, &uc)?;
                 self.timings.factorization += refactoring;
@@ -978,6 +1013,55 @@ fn evaluate_pairs(
         .collect()
 }
 
+/// A pair's polylines must face each other in the reference configuration: of the A nodes
+/// with a B segment within the search distance, more must see B from in front than see it
+/// running the same way (one polyline reversed) or lying behind A (back to back: two faces of
+/// one body, or both polylines reversed); see [`facing::facing`]. Touching surfaces with both
+/// polylines reversed look like correct ones here; on a model the element edges catch them.
+fn check_facing(pair: &ContactPair, bodies: &Bodies, search_distance: f64) -> Result<()> {
+    let x = bodies.positions();
+    let f = facing::facing(
+        &pair.a,
+        &pair.b,
+        x,
+        search_distance * mean_segment(&pair.a, x),
+    );
+    let judged = f.facing + f.same_way + f.behind;
+    let node = |k: Option<usize>| k.map_or(0, |k| bodies.external(pair.a[k]));
+    if f.same_way > f.facing {
+        return Err(Error::InvalidInput(format!(
+            "A and B run the same way: at {} of the {judged} A nodes near B (A node {} first) \
+             the outward normals of A and B point alike; each polyline must have its body on \
+             its left, so one of them is reversed",
+            f.same_way,
+            node(f.example)
+        )));
+    }
+    if f.behind > f.facing {
+        return Err(Error::InvalidInput(format!(
+            "B lies behind A: at {} of the {judged} A nodes near B (A node {} first) A's \
+             outward normal points away from B, which is more than half a segment behind it; \
+             the polylines are back to back (two faces of one body, or both reversed)",
+            f.behind,
+            node(f.example)
+        )));
+    }
+    Ok(())
+}
+
+/// An iterate's displacements `u` must be finite (see [`ContactError::NonFinite`]).
+fn finite(u: &[f64], increment: usize, iteration: usize) -> Result<()> {
+    if u.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(ContactError::NonFinite {
+            increment,
+            iteration,
+        }
+        .into())
+    }
+}
+
 /// Name the pair in an error of its checks.
 fn in_pair(i: usize, e: Error) -> Error {
     match e {
@@ -1018,6 +1102,7 @@ impl ContactAnalysis {
         for (p, surface) in surfaces.iter().enumerate() {
             let mu = self.pairs[p].friction;
             let h = self.mean_segment(p, xg);
+            let reach = self.search_reach(p, xg, uc, startc);
             // penetration is judged against the increment's own displacement scale
             let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
@@ -1106,12 +1191,12 @@ impl ContactAnalysis {
                     if !(1e-3..=1.0 - 1e-3).contains(&xi) || g >= -gap_tolerance {
                         continue;
                     }
-                    if g <= -self.options.search_distance * h {
+                    if g <= -reach {
                         return Err(ContactError::BeyondSearchDistance {
                             node: self.bodies.external(j),
                             segment: [self.bodies.external(w[0]), self.bodies.external(w[1])],
                             depth: -g,
-                            search_distance: self.options.search_distance * h,
+                            search_distance: reach,
                         }
                         .into());
                     }

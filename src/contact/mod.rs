@@ -9,5 +9,6 @@
 //!   its results.
 
 pub mod bodies;
+pub mod facing;
 pub mod geometry;
 pub mod iteration;

@@ -65,9 +65,14 @@ pub struct PolygonInfo {
     pub corners: usize,
 }
 
+/// The most true corners an element has: 4 (a quadrilateral; 5- and 6-node transition
+/// elements add mid-side nodes on straight edges).
+pub const MAX_CORNERS: usize = 4;
+
 /// Check that `coords` is a usable element polygon: finite coordinates, no coincident
 /// consecutive nodes, positive (counter-clockwise) area, convex, every non-corner node lying
-/// between its neighbours on a straight edge, and at least `min_corners` true corners.
+/// between its neighbours on a straight edge, and from `min_corners` to [`MAX_CORNERS`] true
+/// corners.
 ///
 /// A node is a corner when the sine of the turn between its two edges exceeds `1e-6`; a negative
 /// turn beyond that is a reflex corner (non-convex); a turn of about 180 degrees that folds back
@@ -106,6 +111,9 @@ pub fn check_polygon(coords: &[[f64; 2]], min_corners: usize) -> Result<PolygonI
     }
     if corners < min_corners {
         return Err(ShapeError::Degenerate);
+    }
+    if corners > MAX_CORNERS {
+        return Err(ShapeError::Corners { corners });
     }
     Ok(PolygonInfo {
         area,

@@ -781,6 +781,10 @@ pub unsafe extern "C" fn hycon_model_free(model: *mut HyconModel) {
 /// The values are given per increment (`prescribed` of `hycon_contact_increment`). Contact
 /// nodes may be prescribed too.
 ///
+/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for an unknown node id, unknown `directions`, or a
+/// displacement component prescribed twice (listed twice in `nodes`, prescribed by an earlier
+/// call, or tied to the plate); on an error nothing is prescribed.
+///
 /// # Safety
 /// `model` must be a live handle; `nodes` NULL or `n` readable ids.
 #[unsafe(no_mangle)]
@@ -804,14 +808,9 @@ pub unsafe extern "C" fn hycon_model_prescribe(
                 )));
             }
         };
-        let n_nodes = m.model.mesh.n_nodes();
-        if let Some(&bad) = ids.iter().find(|&&i| i >= n_nodes) {
-            return Err(Fail::invalid(format!(
-                "unknown node {bad} (the model has {n_nodes} nodes)"
-            )));
-        }
-        for &d in dirs {
-            m.model.fix_dir(ids, d, 0.0);
+        match dirs {
+            [d] => m.model.fix_dir(ids, *d, 0.0)?,
+            _ => m.model.fix(ids, [0.0, 0.0])?,
         }
         Ok(())
     })
@@ -861,6 +860,10 @@ pub unsafe extern "C" fn hycon_model_add_pair(
 /// displacement or by force. The nodes are prescribed in x and y by this call. A body held only
 /// by the plate and by contact (a pressed disk) then takes a prescribed force.
 ///
+/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for no nodes, an unknown node id, or a node already
+/// prescribed (by `hycon_model_prescribe`, twice in `nodes`, or by an earlier plate: a model
+/// has one plate); on an error the model is unchanged.
+///
 /// # Safety
 /// `model` must be a live handle; `nodes` NULL or `n` readable ids.
 #[unsafe(no_mangle)]
@@ -876,13 +879,7 @@ pub unsafe extern "C" fn hycon_model_set_plate(
         if ids.is_empty() {
             return Err(Fail::invalid("a plate needs at least one node"));
         }
-        let n_nodes = m.model.mesh.n_nodes();
-        if let Some(&bad) = ids.iter().find(|&&i| i >= n_nodes) {
-            return Err(Fail::invalid(format!(
-                "unknown node {bad} (the model has {n_nodes} nodes)"
-            )));
-        }
-        m.model.fix(ids, [0.0, 0.0]);
+        m.model.fix(ids, [0.0, 0.0])?;
         m.plate = Some(ids.to_vec());
         Ok(())
     })
@@ -1098,6 +1095,11 @@ pub unsafe extern "C" fn hycon_host_add_pair(
 /// `row_ptr[n_equations]`; `triangle` says which part is stored (`HYCON_CSR_FULL`, checked
 /// symmetric; `HYCON_CSR_LOWER`; `HYCON_CSR_UPPER`). hycon factors it once (faer, or the
 /// options' backend) when the analysis starts. Replaces an earlier matrix or solver.
+///
+/// The columns of a row may come in any order, and an entry given more than once is summed
+/// (as an assembly loop leaves it). A dof the host holds fixed is either left out of the
+/// equations (`HYCON_FIXED` in `hycon_host_add_pair`) or kept as an identity row and column
+/// (1 on the diagonal, 0 elsewhere and in the right-hand side): both work.
 ///
 /// # Safety
 /// `host` must be a live handle; the arrays NULL or of the stated lengths.
@@ -1350,8 +1352,8 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
 
 /// Apply one load increment with **total** values (from the reference state):
 /// * model API: `load` = external nodal forces over all `2 * n_nodes` dofs (`u0 v0 u1 v1 ...`),
-///   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (others
-///   ignored);
+///   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (the
+///   others are ignored, whatever they hold: NaN there is fine);
 /// * host API: `load` = the host's right-hand side over its equations (including the effect of
 ///   its prescribed displacements), `prescribed` = (NULL, 0).
 ///
@@ -1377,8 +1379,8 @@ pub unsafe extern "C" fn hycon_contact_increment(
     boundary("hycon_contact_increment", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
-        let f = unsafe { doubles(load, load_len, "load")? };
-        let qp = unsafe { doubles(prescribed, prescribed_len, "prescribed")? };
+        let f = unsafe { slice(load, load_len, "load")? };
+        let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
         let done = c.analysis.increment(f, qp)?;
         unsafe { write_optional(info, info_to_c(done)) };
         Ok(())
@@ -1407,8 +1409,8 @@ pub unsafe extern "C" fn hycon_contact_increment_plate(
     boundary("hycon_contact_increment_plate", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
-        let f = unsafe { doubles(load, load_len, "load")? };
-        let qp = unsafe { doubles(prescribed, prescribed_len, "prescribed")? };
+        let f = unsafe { slice(load, load_len, "load")? };
+        let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
         let kinds = unsafe { slice(control, 2, "control")? };
         let values = unsafe { doubles(value, 2, "value")? };
         let mut plate = [PlateControl::Displacement(0.0); 2];

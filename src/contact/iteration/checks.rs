@@ -43,12 +43,23 @@ pub(super) const ROUND_OFF: f64 = 1e4 * f64::EPSILON;
 /// round-off of the displacement itself. The floor keeps a zero or tiny increment (a host
 /// repeating its totals) from measuring round-off against round-off. 0 when nothing moved.
 pub(super) fn change_ratio(new: &[f64], old: &[f64], start: &[f64], tolerance: f64) -> f64 {
-    let norm = |it: &mut dyn Iterator<Item = f64>| it.map(|v| v * v).sum::<f64>().sqrt();
-    let change = norm(&mut new.iter().zip(old).map(|(a, b)| a - b));
-    let motion = norm(&mut new.iter().zip(start).map(|(a, b)| a - b));
-    let floor = ROUND_OFF * norm(&mut new.iter().copied()) / tolerance;
+    let difference =
+        |a: &[f64], b: &[f64]| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| x - y).collect() };
+    let change = norm2(&difference(new, old));
+    let motion = norm2(&difference(new, start));
+    let floor = ROUND_OFF * norm2(new) / tolerance;
     let scale = motion.max(floor);
     if scale == 0.0 { change } else { change / scale }
+}
+
+/// The Euclidean norm `|v|`, scaled by `max |v_i|` so that it overflows only when the result
+/// does (a vector of entries near 1e300 has a finite norm, not `inf`).
+pub(super) fn norm2(v: &[f64]) -> f64 {
+    let scale = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if scale == 0.0 || !scale.is_finite() {
+        return scale;
+    }
+    scale * v.iter().map(|x| (x / scale).powi(2)).sum::<f64>().sqrt()
 }
 
 impl ContactAnalysis {
@@ -162,6 +173,51 @@ impl ContactAnalysis {
                     return Err(ContactError::Uncovered {
                         node: self.bodies.external(node.node),
                         coverage: node.coverage,
+                    }
+                    .into());
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// No node that the pairing does not see may have passed through the opposite surface. An
+    /// open A node with no B segment within the search distance (an infinite gap) is tested at
+    /// the current positions against every B segment, without a search window
+    /// ([`facing::behind`]): penetrating B by more than the gap tolerance fails the increment,
+    /// naming the node. This catches a surface pushed through the other in one increment
+    /// (any depth, any coordinate magnitude) and, under small kinematics, a node that was out
+    /// of reach in the reference configuration and penetrates now. (B nodes over open A
+    /// segments are tested the same way by the iteration's rules.)
+    pub(super) fn passed_through(
+        &self,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<()> {
+        let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
+        for (p, (surface, states)) in surfaces.iter().zip(states).enumerate() {
+            let pair = &self.pairs[p];
+            let limit = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
+            let lost = surface
+                .nodes
+                .iter()
+                .zip(states)
+                .enumerate()
+                .filter(|(_, (node, state))| {
+                    **state == NodeState::Open && !node.normal_gap.is_finite()
+                });
+            for (k, _) in lost {
+                let n = facing::node_normal(&pair.a, k, &x);
+                if let Some((seg, depth)) = facing::behind(&pair.b, &x, x[pair.a[k]], n, limit) {
+                    let external = |i: usize| self.bodies.external(pair.b[i]);
+                    return Err(ContactError::BeyondSearchDistance {
+                        node: self.bodies.external(pair.a[k]),
+                        segment: [external(seg), external(seg + 1)],
+                        depth,
+                        search_distance: self.search_reach(p, xg, uc, startc),
                     }
                     .into());
                 }

@@ -26,7 +26,7 @@ pub(super) fn combination(new: &[f64], old: &[LoadSolve]) -> Option<Vec<f64>> {
     let gram = DMatrix::from_fn(k, k, |i, j| dot(&old[i].load, &old[j].load));
     let rhs = DVector::from_fn(k, |i, _| dot(&old[i].load, new));
     let c = gram.lu().solve(&rhs)?;
-    let norm = |v: &[f64]| dot(v, v).sqrt();
+    let norm = checks::norm2;
     let new_norm = norm(new);
     let mut residual = new.to_vec();
     for (ci, o) in c.iter().zip(old) {
@@ -39,6 +39,7 @@ pub(super) fn combination(new: &[f64], old: &[LoadSolve]) -> Option<Vec<f64>> {
         .zip(old)
         .map(|(ci, o)| ci.abs() * norm(&o.load))
         .sum();
+    // (a comparison with NaN, from loads beyond the range of the Gram matrix, is false)
     (norm(&residual) <= 1e-13 * new_norm && spread <= 4.0 * new_norm)
         .then(|| c.iter().copied().collect())
 }
@@ -65,12 +66,16 @@ impl ContactAnalysis {
                 qp.len()
             )));
         }
-        if let Some(i) = f.iter().chain(qp).position(|v| !v.is_finite()) {
-            return Err(Error::InvalidInput(format!(
-                "entry {i} of the loads and prescribed values is not finite"
-            )));
-        }
+        // the key holds `f` and `qp` at the prescribed dofs only: the other entries of `qp` are
+        // ignored, whatever they hold
         let load = self.bodies.load_key(f, qp);
+        if let Some(i) = load.iter().position(|v| !v.is_finite()) {
+            return Err(Error::InvalidInput(if i < n {
+                format!("load[{i}] = {} is not finite", f[i])
+            } else {
+                format!("prescribed[{}] = {} is not finite", i - n, qp[i - n])
+            }));
+        }
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];
             let mut force = [0.0; 2];
@@ -85,6 +90,13 @@ impl ContactAnalysis {
         }
         let clock = std::time::Instant::now();
         let u0 = self.bodies.solve(f, qp)?;
+        if u0.iter().any(|v| !v.is_finite()) {
+            return Err(ContactError::NonFinite {
+                increment: self.increment + 1,
+                iteration: 0,
+            }
+            .into());
+        }
         let plate_force = match &self.plate {
             Some(p) => plate_force(self.model()?, &p.nodes, &u0, f)?,
             None => [0.0; 2],

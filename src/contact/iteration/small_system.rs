@@ -118,9 +118,10 @@ impl SmallSystem {
         if let Some(b) = border {
             if let Some(d) = b.unheld(&self.rows) {
                 return Err(Error::Singular(format!(
-                    "the plate's {} translation is force-controlled but nothing holds it: \
-                     frictionless contact cannot resist tangential motion; control it by \
-                     displacement or add friction",
+                    "the plate's {} translation is force-controlled but no constraint of the \
+                     contact set acts along it (open nodes resist nothing; frictionless and \
+                     slipping nodes do not resist tangential motion): control it by \
+                     displacement",
                     ["x", "y"][d]
                 )));
             }
