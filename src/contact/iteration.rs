@@ -70,7 +70,7 @@ mod loads;
 mod plate;
 mod results;
 mod small_system;
-use active_set::{ActiveSet, Commit, NodeKey, count};
+use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
 pub use checks::SMALL_SLIDING_LIMIT;
 use checks::change_ratio;
 use loads::LoadSolve;
@@ -482,6 +482,15 @@ pub struct ContactAnalysis {
     flexibility: DMatrix<f64>,
     /// Converged displacement of the contact dofs (`dofs` order).
     qc: Vec<f64>,
+    /// The load (`f` and `q_p` at the prescribed dofs) of the last converged increment
+    /// without a plate, and the locks it settled with.
+    settled: Option<(Vec<f64>, Locks)>,
+    /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
+    /// scale to which the state is known (see [`ContactAnalysis::resolution`]).
+    largest_motion: f64,
+    /// The largest change of one component of `q_c` in a converged increment so far (see
+    /// `gap_scale`).
+    largest_component_motion: f64,
     /// Loads and contact forces of the last converged increment, for the full field.
     converged: Option<Converged>,
     /// The same for the increment before it (for displacement increments).
@@ -607,6 +616,9 @@ impl ContactAnalysis {
             .collect();
         Ok(ContactAnalysis {
             qc: vec![0.0; dofs.len()],
+            settled: None,
+            largest_motion: 0.0,
+            largest_component_motion: 0.0,
             converged: None,
             previous: None,
             field: None,
@@ -761,6 +773,27 @@ impl ContactAnalysis {
         (self.options.search_distance * self.mean_segment(p, xg)).max(2.0 * motion)
     }
 
+    /// A displacement scale below which an increment's iterates cannot be told apart, the
+    /// `floor` of the convergence measure [`change_ratio`]: 0 under small kinematics (given
+    /// the contact set the problem is linear and a repeated increment reproduces the state to
+    /// round-off). Under finite kinematics the geometry is nonlinear and evaluated at `X + u`:
+    /// every converged increment stopped within `tolerance` of its own motion, so an increment
+    /// is measured against at least the largest of those motions (a repeated increment then
+    /// converges at once instead of refining the last fixed point against its own tiny motion),
+    /// and against round-off of the positions, `POSITION_ROUND_OFF |X| / tolerance` (a model
+    /// far from its origin).
+    fn resolution(&self) -> f64 {
+        match self.options.kinematics {
+            Kinematics::Small => 0.0,
+            Kinematics::Finite => {
+                let x = self.bodies.positions();
+                let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d / 2][d % 2]).collect();
+                let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
+                self.largest_motion.max(round_off / self.options.tolerance)
+            }
+        }
+    }
+
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
     /// nodes keep their reference positions: the contact geometry never reads them).
     fn positions(&self, uc: &[f64]) -> Vec<[f64; 2]> {
@@ -848,7 +881,11 @@ impl ContactAnalysis {
         control: Option<[PlateControl; 2]>,
     ) -> Result<IncrementInfo> {
         let number = self.increment + 1;
-        let (u0c, force0) = self.load_solve(f, qp)?;
+        let loads::Solved {
+            u0c,
+            plate_force: force0,
+            load,
+        } = self.load_solve(f, qp)?;
         finite(&u0c, number, 0)?;
         let border = control.and_then(|c| self.border(c, force0));
         let clock = std::time::Instant::now();
@@ -859,13 +896,20 @@ impl ContactAnalysis {
             .collect();
         // iterate on the contact dofs only; geometry from the start configuration
         let startc = self.qc.clone();
+        let resolution = self.resolution();
         let mut uc = startc.clone();
         let mut surfaces = self.surfaces.clone();
         if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
             // a force-controlled body needs a support to start from: the nearest node
             self.close_nearest(&surfaces, &mut states);
         }
-        let mut set = ActiveSet::new(states, self.options.lock_rounds);
+        // the same totals again: resume with the last increment's locks, so that a contact
+        // set it settled by locking settles at once on the same state
+        let locks = match (&self.settled, control) {
+            (Some((last, locks)), None) if *last == load => locks.clone(),
+            _ => Locks::default(),
+        };
+        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds);
         let mut records = Vec::new();
         // time of the refactor-every-iteration variant, counted as factorization
         let mut refactoring = 0.0;
@@ -900,7 +944,7 @@ impl ContactAnalysis {
             let tractions = system.tractions(&tau, states, &self.pairs);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, &startc)?;
             let changes = set.changes(&proposed);
-            let r = change_ratio(&uc_new, &uc, &startc, self.options.tolerance);
+            let r = change_ratio(&uc_new, &uc, &startc, resolution, self.options.tolerance);
             if !r.is_finite() {
                 return Err(ContactError::NonFinite {
                     increment: number,
@@ -953,6 +997,7 @@ impl ContactAnalysis {
                     prescribed,
                     contact: forces,
                 };
+                self.settled = control.is_none().then(|| (load, set.locks().clone()));
                 return Ok(self.finish(
                     number,
                     iteration,
@@ -1221,6 +1266,11 @@ impl ContactAnalysis {
         converged: Converged,
         records: Vec<IterationRecord>,
     ) -> IncrementInfo {
+        let motion: Vec<f64> = uc.iter().zip(&self.qc).map(|(a, b)| a - b).collect();
+        self.largest_motion = self.largest_motion.max(checks::norm2(&motion));
+        self.largest_component_motion = motion
+            .iter()
+            .fold(self.largest_component_motion, |m, d| d.abs().max(m));
         self.qc = uc;
         self.surfaces = surfaces;
         self.previous = self.converged.replace(converged);

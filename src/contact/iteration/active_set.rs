@@ -35,14 +35,20 @@ pub(super) enum Commit {
     },
 }
 
+/// The locks of an increment.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub(super) struct Locks {
+    /// Nodes locked in slip (they may not return to stick).
+    pub(super) slip: Vec<NodeKey>,
+    /// Nodes locked open (they may not close).
+    pub(super) open: Vec<NodeKey>,
+}
+
 /// The states of every A node during one increment, with the locks and the history.
 #[derive(Debug, Clone)]
 pub(super) struct ActiveSet {
     states: Vec<Vec<NodeState>>,
-    /// Nodes locked in slip (they may not return to stick).
-    locked_slip: Vec<NodeKey>,
-    /// Nodes locked open (they may not close).
-    locked_open: Vec<NodeKey>,
+    locks: Locks,
     /// The state sets since the increment began, or since the last lock.
     history: Vec<Vec<Vec<NodeState>>>,
     /// Lock rounds used and allowed.
@@ -51,17 +57,22 @@ pub(super) struct ActiveSet {
 }
 
 impl ActiveSet {
-    /// Start an increment from `states` (the last converged ones) with at most `max_rounds`
-    /// lock rounds.
-    pub(super) fn new(states: Vec<Vec<NodeState>>, max_rounds: usize) -> Self {
+    /// Start an increment from `states` (the last converged ones) and `locks` (none, or those
+    /// of the last increment when it is repeated with the same totals: it then settles at
+    /// once on the same state) with at most `max_rounds` lock rounds.
+    pub(super) fn new(states: Vec<Vec<NodeState>>, locks: Locks, max_rounds: usize) -> Self {
         ActiveSet {
             history: vec![states.clone()],
             states,
-            locked_slip: Vec::new(),
-            locked_open: Vec::new(),
+            locks,
             rounds: 0,
             max_rounds,
         }
+    }
+
+    /// The locks so far.
+    pub(super) fn locks(&self) -> &Locks {
+        &self.locks
     }
 
     /// The current states, per pair, per A node.
@@ -71,17 +82,17 @@ impl ActiveSet {
 
     /// Whether the rules may turn slip node `node` back into stick (not locked in slip).
     pub(super) fn may_stick(&self, node: NodeKey) -> bool {
-        !self.locked_slip.contains(&node)
+        !self.locks.slip.contains(&node)
     }
 
     /// Whether the rules may close open node `node` (not locked open).
     pub(super) fn may_close(&self, node: NodeKey) -> bool {
-        !self.locked_open.contains(&node)
+        !self.locks.open.contains(&node)
     }
 
     /// The nodes locked open in this increment (their penetration is checked at convergence).
     pub(super) fn locked_open(&self) -> &[NodeKey] {
-        &self.locked_open
+        &self.locks.open
     }
 
     /// How many nodes `proposed` changes.
@@ -125,11 +136,11 @@ impl ActiveSet {
         }
         self.rounds += 1;
         for (node, slip) in flips {
-            self.locked_slip.push(node);
+            self.locks.slip.push(node);
             proposed[node.0][node.1] = slip;
         }
         for node in edges {
-            self.locked_open.push(node);
+            self.locks.open.push(node);
             proposed[node.0][node.1] = NodeState::Open;
         }
         self.history = vec![proposed.clone()];
@@ -196,7 +207,7 @@ mod tests {
     #[test]
     fn locks_resolve_benign_cycles_and_report_the_rest() {
         use NodeState::{Open, Stick};
-        let mut set = ActiveSet::new(vec![vec![Stick, Open]], 1);
+        let mut set = ActiveSet::new(vec![vec![Stick, Open]], Locks::default(), 1);
         assert_eq!(set.commit(vec![vec![SLIP, Open]]), Commit::Accepted);
         // back to the first set: node (0, 0) alternates stick/slip -> locked in slip
         assert_eq!(set.commit(vec![vec![Stick, Open]]), Commit::Accepted);
@@ -217,7 +228,7 @@ mod tests {
             "a cycle keeps the states"
         );
 
-        let mut edge = ActiveSet::new(vec![vec![Open]], 3);
+        let mut edge = ActiveSet::new(vec![vec![Open]], Locks::default(), 3);
         assert_eq!(edge.commit(vec![vec![SLIP]]), Commit::Accepted);
         assert_eq!(edge.commit(vec![vec![Open]]), Commit::Accepted);
         assert_eq!(edge.states(), &[vec![Open]]);

@@ -36,19 +36,31 @@ pub(super) const EDGE_PENETRATION: f64 = 1e-4;
 /// this times `|u|` are the same to the precision the geometry can be evaluated at.
 pub(super) const ROUND_OFF: f64 = 1e4 * f64::EPSILON;
 
+/// Round-off level of the positions, relative to their size: the contact geometry works on
+/// positions `X + u`, so where the coordinates are large (a model far from its origin) it
+/// cannot resolve displacement changes below this times `|X|`.
+pub(super) const POSITION_ROUND_OFF: f64 = 64.0 * f64::EPSILON;
+
 /// The convergence measure over the contact dofs,
-/// `R = |u_new - u_old| / max(|u_new - u_start|, ROUND_OFF |u_new| / tolerance)`: the change of
-/// the last iteration relative to the increment's motion, so that `R <= tolerance` once the
-/// iterate changes by less than `tolerance` times the increment's motion or by less than
-/// round-off of the displacement itself. The floor keeps a zero or tiny increment (a host
-/// repeating its totals) from measuring round-off against round-off. 0 when nothing moved.
-pub(super) fn change_ratio(new: &[f64], old: &[f64], start: &[f64], tolerance: f64) -> f64 {
+/// `R = |u_new - u_old| / max(|u_new - u_start|, ROUND_OFF |u_new| / tolerance, floor)`: the
+/// change of the last iteration relative to the increment's motion, so that `R <= tolerance`
+/// once the iterate changes by less than `tolerance` times the increment's motion, by less than
+/// round-off of the displacement, or by less than `tolerance` times `floor` (a scale the caller
+/// knows the iterate cannot resolve below: see `ContactAnalysis::resolution`). The lower
+/// bounds keep a zero or tiny increment (a host repeating its totals) from measuring round-off
+/// against round-off. 0 when nothing moved.
+pub(super) fn change_ratio(
+    new: &[f64],
+    old: &[f64],
+    start: &[f64],
+    floor: f64,
+    tolerance: f64,
+) -> f64 {
     let difference =
         |a: &[f64], b: &[f64]| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| x - y).collect() };
     let change = norm2(&difference(new, old));
     let motion = norm2(&difference(new, start));
-    let floor = ROUND_OFF * norm2(new) / tolerance;
-    let scale = motion.max(floor);
+    let scale = motion.max(ROUND_OFF * norm2(new) / tolerance).max(floor);
     if scale == 0.0 { change } else { change / scale }
 }
 
@@ -63,16 +75,21 @@ pub(super) fn norm2(v: &[f64]) -> f64 {
 }
 
 impl ContactAnalysis {
-    /// The length against which gaps of pair `p` are judged: the increment's largest motion of
-    /// a contact dof, bounded by the mean A segment length `h` (and by `1e-12 h` below), so
-    /// that tiny loads still close the contact and the judgement does not depend on units.
+    /// The length against which gaps of pair `p` are judged: the largest motion of a contact
+    /// dof in this increment or in any converged one, bounded by the mean A segment length `h`
+    /// (and by `1e-12 h` below), so that tiny loads still close the contact, the judgement does
+    /// not depend on units, and a repeated increment accepts the gaps its predecessors accepted
+    /// (judged against its own vanishing motion, a node left open a hair inside the tolerance
+    /// would close and reopen).
     pub(super) fn gap_scale(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
         let h = self.mean_segment(p, xg);
         let motion = uc
             .iter()
             .zip(startc)
             .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-        motion.clamp(1e-12 * h, h)
+        motion
+            .max(self.largest_component_motion)
+            .clamp(1e-12 * h, h)
     }
 
     /// Nodes locked open after an open/closed cycle must not penetrate by more than

@@ -44,6 +44,16 @@ pub(super) fn combination(new: &[f64], old: &[LoadSolve]) -> Option<Vec<f64>> {
         .then(|| c.iter().copied().collect())
 }
 
+/// What [`ContactAnalysis::load_solve`] gives an increment.
+pub(super) struct Solved {
+    /// `u0` at the contact dofs.
+    pub(super) u0c: Vec<f64>,
+    /// The force the plate exerts on the body in the `u0` solution (zero without a plate).
+    pub(super) plate_force: [f64; 2],
+    /// The load as compared between increments: `f` and `q_p` at the prescribed dofs.
+    pub(super) load: Vec<f64>,
+}
+
 /// How many load solves are kept for reuse.
 pub(super) const KEPT_LOADS: usize = 4;
 
@@ -51,7 +61,7 @@ impl ContactAnalysis {
     /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
     /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
     /// superposed on a fixed approach, costs one or two solves in all).
-    pub(super) fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<(Vec<f64>, [f64; 2])> {
+    pub(super) fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Solved> {
         let n = self.bodies.field_len();
         let n_qp = if self.bodies.as_model().is_some() {
             n
@@ -86,7 +96,11 @@ impl ContactAnalysis {
                 force[0] += ci * cached.plate_force[0];
                 force[1] += ci * cached.plate_force[1];
             }
-            return Ok((u0c, force));
+            return Ok(Solved {
+                u0c,
+                plate_force: force,
+                load,
+            });
         }
         let clock = std::time::Instant::now();
         let u0 = self.bodies.solve(f, qp)?;
@@ -111,10 +125,14 @@ impl ContactAnalysis {
             self.loads.remove(0);
         }
         self.loads.push(LoadSolve {
-            load,
+            load: load.clone(),
             u0c: u0c.clone(),
             plate_force,
         });
-        Ok((u0c, plate_force))
+        Ok(Solved {
+            u0c,
+            plate_force,
+            load,
+        })
     }
 }

@@ -1,0 +1,303 @@
+//! Property tests of the Rust contact entry points (`ContactAnalysis::new`, `increment`,
+//! `node_results`) on random two-block problems (proptest, fixed seed, 1024 cases): whatever the
+//! outcome of a problem, its variants must give the same one.
+//!
+//! The problem: a lower block `[0, 2] x [0, 1]` held at its bottom, an upper block of random
+//! width and position `gap` above it, pressed down by `depth` and moved sideways by `slide`
+//! through prescribed values on its top; A = the upper block's bottom, B = the lower block's
+//! top; random meshes, moduli, Poisson's ratios, friction and kinematics. Properties:
+//! * a zero increment (the last totals again) converges in at most 3 iterations to the same
+//!   tractions;
+//! * rigid translation of every coordinate (up to 1e3 times the body size) leaves the
+//!   tractions unchanged;
+//! * unit scaling (lengths times `s_l`, moduli times `s_e`) scales the tractions by `s_e`;
+//! * renumbering the nodes (a random permutation) leaves the tractions at each A node
+//!   unchanged;
+//! * all of these to 1e-8 of the peak traction under small kinematics (round-off: given the
+//!   contact set the problem is linear), to 1e-5 under finite kinematics (ten times the
+//!   iteration's tolerance: the nonlinear geometry's fixed point is found to that);
+//! * an error is the same error in every variant (its kind), and never a panic.
+
+use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
+use hycon::element::Formulation;
+use hycon::mesh::Mesh;
+use hycon::model::Model;
+use hycon::{Analysis, Error, Material};
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+
+/// One random problem.
+#[derive(Debug, Clone)]
+struct Problem {
+    lower: [usize; 2],
+    upper: [usize; 2],
+    left: f64,
+    width: f64,
+    gap: f64,
+    depth: f64,
+    slide: f64,
+    moduli: [f64; 2],
+    poisson: [f64; 2],
+    friction: f64,
+    kinematics: Kinematics,
+}
+
+/// A variant of a problem: coordinates `s_l (X + t)` after renumbering by `perm`
+/// (`perm[old] = new`), moduli times `s_e`.
+#[derive(Debug, Clone)]
+struct Variant {
+    translation: [f64; 2],
+    length_scale: f64,
+    modulus_scale: f64,
+    perm: Option<Vec<usize>>,
+}
+
+impl Variant {
+    fn identity() -> Self {
+        Variant {
+            translation: [0.0, 0.0],
+            length_scale: 1.0,
+            modulus_scale: 1.0,
+            perm: None,
+        }
+    }
+}
+
+/// A grid block `[x0, x0 + w] x [y0, y0 + h]` of `n[0] x n[1]` quads into `mesh`; returns its
+/// node ids row by row.
+fn block(
+    mesh: &mut Mesh,
+    x0: f64,
+    y0: f64,
+    w: f64,
+    h: f64,
+    n: [usize; 2],
+    mat: usize,
+) -> Vec<usize> {
+    let mut ids = Vec::new();
+    for j in 0..=n[1] {
+        for i in 0..=n[0] {
+            let x = x0 + w * i as f64 / n[0] as f64;
+            let y = y0 + h * j as f64 / n[1] as f64;
+            ids.push(mesh.push_node([x, y]));
+        }
+    }
+    let at = |i: usize, j: usize| ids[j * (n[0] + 1) + i];
+    for j in 0..n[1] {
+        for i in 0..n[0] {
+            mesh.push_element(
+                &[at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)],
+                mat,
+            );
+        }
+    }
+    ids
+}
+
+/// The outcome of a run: the tractions `(tn, ts)` per A node after each increment and the
+/// iterations of the zero increment, or the error's kind.
+type Outcome = std::result::Result<(Vec<Vec<(f64, f64)>>, usize), String>;
+
+fn error_kind(e: &Error) -> String {
+    match e {
+        Error::Contact(c) => format!("contact {:?}", std::mem::discriminant(c)),
+        other => format!("{:?}", std::mem::discriminant(other)),
+    }
+}
+
+fn run(p: &Problem, v: &Variant) -> Outcome {
+    let mut mesh = Mesh::new();
+    let lower = block(&mut mesh, 0.0, 0.0, 2.0, 1.0, p.lower, 0);
+    let upper = block(&mut mesh, p.left, 1.0 + p.gap, p.width, 1.0, p.upper, 1);
+    let row =
+        |ids: &[usize], n: [usize; 2], j: usize| ids[j * (n[0] + 1)..(j + 1) * (n[0] + 1)].to_vec();
+    let a = row(&upper, p.upper, 0);
+    let mut b = row(&lower, p.lower, p.lower[1]);
+    b.reverse();
+    let bottom = row(&lower, p.lower, 0);
+    let top = row(&upper, p.upper, p.upper[1]);
+    // the variant: transform the coordinates, renumber every id
+    for x in &mut mesh.nodes {
+        *x = [
+            v.length_scale * (x[0] + v.translation[0]),
+            v.length_scale * (x[1] + v.translation[1]),
+        ];
+    }
+    let n = mesh.n_nodes();
+    let perm: Vec<usize> = v.perm.clone().unwrap_or_else(|| (0..n).collect());
+    let map = |ids: &[usize]| -> Vec<usize> { ids.iter().map(|&i| perm[i]).collect() };
+    let mut renumbered = Mesh::new();
+    renumbered.nodes = vec![[0.0; 2]; n];
+    for (old, &new) in perm.iter().enumerate() {
+        renumbered.nodes[new] = mesh.nodes[old];
+    }
+    for e in 0..mesh.n_elements() {
+        renumbered.push_element(&map(mesh.element(e)), mesh.element_material[e]);
+    }
+    let materials = (0..2)
+        .map(|i| {
+            Material::new(
+                p.moduli[i] * v.modulus_scale,
+                p.poisson[i],
+                1.0,
+                Analysis::PlaneStrain,
+            )
+        })
+        .collect::<hycon::Result<Vec<_>>>()
+        .map_err(|e| error_kind(&e))?;
+    let mut model = Model::new(renumbered, materials, Formulation::Hybrid);
+    let (bottom, top) = (map(&bottom), map(&top));
+    model.fix(&bottom, [0.0, 0.0]).map_err(|e| error_kind(&e))?;
+    model.fix(&top, [0.0, 0.0]).map_err(|e| error_kind(&e))?;
+    let pair = ContactPair {
+        a: map(&a),
+        b: map(&b),
+        friction: p.friction,
+    };
+    let options = ContactOptions {
+        kinematics: p.kinematics,
+        ..ContactOptions::default()
+    };
+    let mut analysis =
+        ContactAnalysis::new(model, vec![pair], options).map_err(|e| error_kind(&e))?;
+    let f = vec![0.0; 2 * n];
+    let totals = |slide: f64| {
+        let mut qp = vec![0.0; 2 * n];
+        for &node in &top {
+            qp[2 * node] = v.length_scale * slide;
+            qp[2 * node + 1] = -v.length_scale * p.depth;
+        }
+        qp
+    };
+    let tractions = |a: &ContactAnalysis| -> Vec<(f64, f64)> {
+        let r = a.node_results(0).unwrap();
+        r.iter().map(|n| (n.tn, n.ts)).collect()
+    };
+    let mut out = Vec::new();
+    for slide in [0.0, p.slide] {
+        analysis
+            .increment(&f, &totals(slide))
+            .map_err(|e| error_kind(&e))?;
+        out.push(tractions(&analysis));
+    }
+    let zero = analysis
+        .increment(&f, &totals(p.slide))
+        .map_err(|e| format!("zero increment: {e}"))?;
+    out.push(tractions(&analysis));
+    Ok((out, zero.iterations))
+}
+
+/// `got` equals `want` times `factor` to `tol` of the peak `|tn|` of `want`.
+fn same(want: &[Vec<(f64, f64)>], got: &[Vec<(f64, f64)>], factor: f64, tol: f64) -> bool {
+    let peak = want.iter().flatten().fold(0.0f64, |m, t| m.max(t.0.abs()));
+    want.len() == got.len()
+        && want.iter().zip(got).all(|(w, g)| {
+            w.len() == g.len()
+                && w.iter().zip(g).all(|(a, b)| {
+                    (a.0 * factor - b.0).abs() <= tol * peak * factor.abs()
+                        && (a.1 * factor - b.1).abs() <= tol * peak * factor.abs()
+                })
+        })
+}
+
+fn problem() -> impl Strategy<Value = Problem> {
+    (
+        (1usize..=5, 1usize..=3, 1usize..=4, 1usize..=3),
+        (
+            0.1f64..0.8,
+            0.4f64..1.0,
+            0.0f64..1e-3,
+            1e-4f64..1e-2,
+            -0.2f64..0.2,
+        ),
+        (-2.0f64..2.0, -0.2f64..0.45, -0.2f64..0.45),
+        (prop_oneof![Just(0.0), 0.05f64..0.6], any::<bool>()),
+    )
+        .prop_map(
+            |(
+                (nxl, nyl, nxu, nyu),
+                (left, width, gap, depth, slide),
+                (log_ratio, nu0, nu1),
+                (friction, small),
+            )| {
+                Problem {
+                    lower: [nxl + 1, nyl],
+                    upper: [nxu, nyu],
+                    left,
+                    width,
+                    gap,
+                    depth: gap + depth,
+                    slide: slide * depth,
+                    moduli: [1.0, 10f64.powf(log_ratio)],
+                    poisson: [nu0, nu1],
+                    friction,
+                    kinematics: if small {
+                        Kinematics::Small
+                    } else {
+                        Kinematics::Finite
+                    },
+                }
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 1024,
+        rng_seed: RngSeed::Fixed(0x0068_7963_6f6e),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn variants_agree(
+        p in problem(),
+        translation in (-1e3f64..1e3, -1e3f64..1e3),
+        scales in (-3i32..=3, -3i32..=3),
+        seed in any::<u64>(),
+    ) {
+        let base = run(&p, &Variant::identity());
+        // to round-off under small kinematics (given the contact set the problem is linear);
+        // under finite ones to the iteration's tolerance (1e-6 of the increment's motion): the
+        // fixed point of the nonlinear geometry is found to that, and a variant's round-off may
+        // stop it one iteration earlier or later
+        let within = match p.kinematics {
+            Kinematics::Small => 1e-8,
+            Kinematics::Finite => 1e-5,
+        };
+        // the zero increment: at once, to the same tractions
+        let at_once = 3;
+        if let Ok((t, zero_iterations)) = &base {
+            prop_assert!(
+                *zero_iterations <= at_once,
+                "zero increment took {zero_iterations} iterations"
+            );
+            prop_assert!(same(&t[1..2], &t[2..3], 1.0, within), "zero increment moved: {t:?}");
+        }
+        let n = (p.lower[0] + 1) * (p.lower[1] + 1) + (p.upper[0] + 1) * (p.upper[1] + 1);
+        // a permutation from the seed (Fisher-Yates with a small LCG)
+        let mut perm: Vec<usize> = (0..n).collect();
+        let mut state = seed | 1;
+        for i in (1..n).rev() {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            perm.swap(i, (state >> 33) as usize % (i + 1));
+        }
+        let s_e = 10f64.powi(scales.1);
+        let variants = [
+            ("translation", Variant { translation: [translation.0, translation.1], ..Variant::identity() }, 1.0),
+            ("unit scaling", Variant { length_scale: 10f64.powi(scales.0), modulus_scale: s_e, ..Variant::identity() }, s_e),
+            ("renumbering", Variant { perm: Some(perm), ..Variant::identity() }, 1.0),
+        ];
+        for (name, variant, factor) in variants {
+            let other = run(&p, &variant);
+            match (&base, &other) {
+                (Ok((want, _)), Ok((got, _))) => prop_assert!(
+                    same(want, got, factor, within),
+                    "{name}: tractions differ\n{want:?}\n{got:?}"
+                ),
+                (Err(want), Err(got)) => prop_assert_eq!(want, got, "{}: different errors", name),
+                _ => prop_assert!(false, "{name}: {base:?} against {other:?}"),
+            }
+        }
+    }
+}
