@@ -2,6 +2,7 @@
 # hycon_example / hycon_test / hycon_valgrind_test / hycon_asan_test are defined):
 #   contact_bad_input.c  every bad-input class with its status and message, outputs untouched,
 #                        failed increments keeping the last converged state (shared and static)
+#   contact_randomized.c random problems and random bad calls (see below)
 #   contact_threads.c    two independent problems (model API and host API with a solve
 #                        callback) from two threads at once == the same one after the other
 # Each also runs under valgrind (memcheck) and built with ASan + UBSan; contact_threads also
@@ -31,3 +32,11 @@ if(_vg)
   hycon_test(drd_contact_threads "${VALGRIND_EXECUTABLE}" --tool=drd --error-exitcode=1
              $<TARGET_FILE:contact_threads> 1)
 endif()
+
+# contact_randomized [seconds] [seed] [max_rounds]: random two-block problems through the model
+# API: zero increments, invariance under translation, unit scaling and renumbering, and random
+# bad calls that must change nothing (seeded, bounded in time)
+hycon_example(contact_randomized contact_randomized.c C hycon::hycon)
+hycon_test(contact_randomized contact_randomized 3 1)
+hycon_valgrind_test(valgrind_contact_randomized contact_randomized 120 2 25)
+hycon_asan_test(contact_randomized contact_randomized.c C 3 3)

@@ -1,0 +1,480 @@
+/* Randomized test of the contact C API (strict C99), seeded and bounded in time:
+ *
+ *   contact_randomized [seconds = 3] [seed = 1] [max_rounds = 0: no limit]
+ *
+ * Each round draws a two-block problem (a lower block [0, 2] x [0, 1] held at its bottom, an
+ * upper block of random width, position, mesh and gap pressed down and slid through prescribed
+ * values on its top; A = the upper block's bottom, B = the lower block's top; random moduli,
+ * Poisson's ratios, friction and kinematics) and checks through the model API:
+ *  1. a zero increment (the last totals again) converges in at most 3 iterations to the same
+ *     tractions;
+ *  2. the tractions are invariant under rigid translation (up to 1e3), unit scaling (lengths and
+ *     moduli times powers of 10 in [1e-3, 1e3]: tractions scale with the moduli) and node
+ *     renumbering (a random permutation), to 1e-8 of the peak under small kinematics and 1e-5
+ *     (ten times the iteration's tolerance) under finite ones; a failing problem fails alike;
+ *  3. random bad calls between the increments (NULL pointers, wrong lengths, non-finite
+ *     values, buffers too small, unknown pairs and records, bad options, a dof prescribed
+ *     twice, bad elements) each return an error with a message, leave their output buffers
+ *     untouched and the analysis' state bit for bit as it was, and the run goes on to exactly
+ *     the results of the same run without them.
+ * It prints the seed, the rounds and the calls per class, and on a violation the seed, round and
+ * problem, exiting 1. */
+#include "hycon.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define MAXX 7 /* elements per side, at most */
+#define MAXN (2 * (MAXX + 1) * (MAXX + 1))
+#define MAXE (2 * MAXX * MAXX)
+#define MAXA (MAXX + 1)
+#define SENTINEL 12345.0
+
+/* ---------------------------------------------------------------------------------------- */
+/* Random numbers: xorshift64*, seeded */
+
+static uint64_t rng = 1;
+static uint64_t next_u64(void) {
+    rng ^= rng >> 12;
+    rng ^= rng << 25;
+    rng ^= rng >> 27;
+    return rng * 2685821657736338717ULL;
+}
+static double uniform(double lo, double hi) {
+    return lo + (hi - lo) * (double)(next_u64() >> 11) / 9007199254740992.0;
+}
+static size_t below(size_t n) { return (size_t)(next_u64() % n); }
+
+/* ---------------------------------------------------------------------------------------- */
+/* Problems and their variants */
+
+typedef struct {
+    size_t lower[2], upper[2];
+    double left, width, gap, depth, slide, moduli[2], poisson[2], friction;
+    HyconKinematics kinematics;
+} Problem;
+
+typedef struct {
+    double translation[2], length_scale, modulus_scale;
+    bool renumber;
+    size_t perm[MAXN]; /* perm[old] = new */
+} Variant;
+
+typedef struct {
+    size_t nn, ne, na, nb, nbottom, ntop;
+    double coords[2 * MAXN];
+    size_t offsets[MAXE + 1], conn[4 * MAXE], material[MAXE];
+    size_t a[MAXA], b[MAXA], bottom[MAXA], top[MAXA];
+} Mesh;
+
+static Problem draw_problem(void) {
+    Problem p;
+    p.lower[0] = 2 + below(MAXX - 1);
+    p.lower[1] = 1 + below(3);
+    p.upper[0] = 1 + below(MAXX - 1);
+    p.upper[1] = 1 + below(3);
+    p.left = uniform(0.1, 0.8);
+    p.width = uniform(0.4, 1.0);
+    p.gap = below(2) ? 0.0 : uniform(0.0, 1e-3);
+    p.depth = p.gap + pow(10.0, uniform(-4.0, -2.0));
+    p.slide = below(2) ? 0.0 : uniform(-0.2, 0.2) * (p.depth - p.gap);
+    p.moduli[0] = 1.0;
+    p.moduli[1] = pow(10.0, uniform(-2.0, 2.0));
+    p.poisson[0] = uniform(-0.2, 0.45);
+    p.poisson[1] = uniform(-0.2, 0.45);
+    p.friction = below(2) ? 0.0 : uniform(0.05, 0.6);
+    p.kinematics = below(2) ? HYCON_KINEMATICS_SMALL : HYCON_KINEMATICS_FINITE;
+    return p;
+}
+
+static void print_problem(const Problem *p) {
+    fprintf(stderr,
+            "  problem: lower %zux%zu, upper %zux%zu at [%.17g, +%.17g], gap %.17g, depth "
+            "%.17g, slide %.17g, E %.17g/%.17g, nu %.17g/%.17g, mu %.17g, kinematics %d\n",
+            p->lower[0], p->lower[1], p->upper[0], p->upper[1], p->left, p->width, p->gap,
+            p->depth, p->slide, p->moduli[0], p->moduli[1], p->poisson[0], p->poisson[1],
+            p->friction, (int)p->kinematics);
+}
+
+static Variant identity(void) {
+    Variant v;
+    memset(&v, 0, sizeof v);
+    v.length_scale = v.modulus_scale = 1.0;
+    return v;
+}
+
+/* A grid block of n[0] x n[1] quads into `m`; `ids` gets its node ids row by row. */
+static void block(Mesh *m, double x0, double y0, double w, double h, const size_t n[2],
+                  size_t mat, size_t *ids) {
+    size_t i, j, k = 0;
+    for (j = 0; j <= n[1]; ++j)
+        for (i = 0; i <= n[0]; ++i, ++k) {
+            ids[k] = m->nn++;
+            m->coords[2 * ids[k]] = x0 + w * (double)i / (double)n[0];
+            m->coords[2 * ids[k] + 1] = y0 + h * (double)j / (double)n[1];
+        }
+    for (j = 0; j < n[1]; ++j)
+        for (i = 0; i < n[0]; ++i) {
+            size_t *c = &m->conn[4 * m->ne];
+            c[0] = ids[j * (n[0] + 1) + i];
+            c[1] = ids[j * (n[0] + 1) + i + 1];
+            c[2] = ids[(j + 1) * (n[0] + 1) + i + 1];
+            c[3] = ids[(j + 1) * (n[0] + 1) + i];
+            m->material[m->ne] = mat;
+            m->ne++;
+            m->offsets[m->ne] = 4 * m->ne;
+        }
+}
+
+static void build(const Problem *p, const Variant *v, Mesh *m) {
+    size_t lower[MAXN], upper[MAXN], i, k;
+    double coords[2 * MAXN];
+    memset(m, 0, sizeof *m);
+    block(m, 0.0, 0.0, 2.0, 1.0, p->lower, 0, lower);
+    block(m, p->left, 1.0 + p->gap, p->width, 1.0, p->upper, 1, upper);
+    m->na = m->ntop = p->upper[0] + 1;
+    m->nb = m->nbottom = p->lower[0] + 1;
+    for (i = 0; i < m->na; ++i) {
+        m->a[i] = upper[i];
+        m->top[i] = upper[p->upper[1] * (p->upper[0] + 1) + i];
+    }
+    for (i = 0; i < m->nb; ++i) {
+        m->b[i] = lower[p->lower[1] * (p->lower[0] + 1) + p->lower[0] - i];
+        m->bottom[i] = lower[i];
+    }
+    for (i = 0; i < m->nn; ++i)
+        for (k = 0; k < 2; ++k)
+            m->coords[2 * i + k] = v->length_scale * (m->coords[2 * i + k] + v->translation[k]);
+    if (!v->renumber) return;
+    memcpy(coords, m->coords, sizeof coords);
+    for (i = 0; i < m->nn; ++i) {
+        m->coords[2 * v->perm[i]] = coords[2 * i];
+        m->coords[2 * v->perm[i] + 1] = coords[2 * i + 1];
+    }
+    for (i = 0; i < 4 * m->ne; ++i) m->conn[i] = v->perm[m->conn[i]];
+    for (i = 0; i < m->na; ++i) m->a[i] = v->perm[m->a[i]], m->top[i] = v->perm[m->top[i]];
+    for (i = 0; i < m->nb; ++i) m->b[i] = v->perm[m->b[i]], m->bottom[i] = v->perm[m->bottom[i]];
+}
+
+static HyconStatus make_model(const Problem *p, const Variant *v, const Mesh *m,
+                              HyconModel **out) {
+    HyconMaterial materials[2];
+    HyconStatus s;
+    size_t i;
+    for (i = 0; i < 2; ++i) {
+        materials[i].youngs = p->moduli[i] * v->modulus_scale;
+        materials[i].poisson = p->poisson[i];
+        materials[i].thickness = 1.0;
+        materials[i].analysis = HYCON_PLANE_STRAIN;
+    }
+    *out = NULL;
+    s = hycon_model_new(out, m->coords, m->nn, m->offsets, m->conn, m->ne, m->material,
+                        materials, 2, HYCON_ELEMENT_HYBRID);
+    if (s == HYCON_OK) s = hycon_model_prescribe(*out, m->bottom, m->nbottom, HYCON_XY);
+    if (s == HYCON_OK) s = hycon_model_prescribe(*out, m->top, m->ntop, HYCON_XY);
+    if (s == HYCON_OK) s = hycon_model_add_pair(*out, m->a, m->na, m->b, m->nb, p->friction, NULL);
+    return s;
+}
+
+/* the totals: the upper top moved by (slide, -depth), lengths scaled */
+static void totals(const Problem *p, const Variant *v, const Mesh *m, double slide, double *load,
+                   double *qp) {
+    size_t i;
+    memset(load, 0, 2 * m->nn * sizeof *load);
+    memset(qp, 0, 2 * m->nn * sizeof *qp);
+    for (i = 0; i < m->ntop; ++i) {
+        qp[2 * m->top[i]] = v->length_scale * slide;
+        qp[2 * m->top[i] + 1] = -v->length_scale * p->depth;
+    }
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Hostile calls: each returns whether the promises held; counts per class */
+
+#define N_CLASSES 14
+static const char *class_names[N_CLASSES] = {
+    "increment: NULL handle",        "increment: NULL load",
+    "increment: wrong length",       "increment: non-finite load",
+    "increment: non-finite prescribed", "node results: buffer too small",
+    "node results: unknown pair",    "displacement: buffer too small",
+    "records: out of range",         "b-node results: NULL buffer",
+    "contact_new: bad options",      "prescribe: dof twice",
+    "element: bad shape",            "forces: buffer too small"};
+static unsigned long calls[N_CLASSES];
+
+typedef struct {
+    double tn[MAXA], ts[MAXA], u[2 * MAXN];
+    size_t records;
+} Snapshot;
+
+static bool snapshot(HyconContact *c, const Mesh *m, Snapshot *s) {
+    HyconNodeResult r[MAXA];
+    size_t i;
+    memset(s, 0, sizeof *s);
+    if (hycon_contact_node_results(c, 0, r, m->na) != HYCON_OK) return false;
+    for (i = 0; i < m->na; ++i) s->tn[i] = r[i].tn, s->ts[i] = r[i].ts;
+    if (hycon_contact_displacement(c, s->u, 2 * m->nn) != HYCON_OK) return false;
+    return hycon_contact_record_count(c, &s->records) == HYCON_OK;
+}
+
+static bool untouched(const double *a, size_t n) {
+    size_t i;
+    for (i = 0; i < n; ++i)
+        if (a[i] != SENTINEL) return false;
+    return true;
+}
+
+static bool failed_with_message(HyconStatus s) {
+    char message[256];
+    return s != HYCON_OK && hycon_last_error_message(message, sizeof message) > 1 &&
+           strlen(message) > 0;
+}
+
+static bool hostile_call(HyconContact *c, const Problem *p, const Variant *v, const Mesh *m) {
+    static double load[2 * MAXN], qp[2 * MAXN], out[2 * MAXN + 8];
+    HyconNodeResult nodes[MAXA + 1];
+    HyconIterationRecord records[2];
+    HyconIncrementInfo info;
+    Snapshot before, after;
+    HyconStatus s = HYCON_OK;
+    size_t n = 2 * m->nn, i, k = below(N_CLASSES);
+    bool ok = true;
+    if (!snapshot(c, m, &before)) return false;
+    totals(p, v, m, p->slide, load, qp);
+    for (i = 0; i < 2 * MAXN + 8; ++i) out[i] = SENTINEL;
+    memset(&info, 0xA5, sizeof info);
+    calls[k]++;
+    switch (k) {
+    case 0: s = hycon_contact_increment(NULL, load, n, qp, n, &info); break;
+    case 1: s = hycon_contact_increment(c, NULL, n, qp, n, &info); break;
+    case 2: s = hycon_contact_increment(c, load, n - 1 - below(2), qp, n, &info); break;
+    case 3:
+        load[below(n)] = below(2) ? NAN : -INFINITY;
+        s = hycon_contact_increment(c, load, n, qp, n, &info);
+        break;
+    case 4:
+        qp[2 * m->top[below(m->ntop)] + below(2)] = below(2) ? NAN : INFINITY;
+        s = hycon_contact_increment(c, load, n, qp, n, &info);
+        break;
+    case 5:
+        for (i = 0; i <= MAXA; ++i) nodes[i].tn = SENTINEL;
+        s = hycon_contact_node_results(c, 0, nodes, m->na - 1);
+        for (i = 0; i <= MAXA; ++i) ok = ok && nodes[i].tn == SENTINEL;
+        break;
+    case 6: s = hycon_contact_node_results(c, 1 + below(3), nodes, MAXA); break;
+    case 7: s = hycon_contact_displacement(c, out, n - 1 - below(n)); break;
+    case 8: {
+        size_t count = 0;
+        hycon_contact_record_count(c, &count);
+        records[0].r = SENTINEL;
+        s = hycon_contact_records(c, count + 1 + below(3), records, 2);
+        ok = ok && records[0].r == SENTINEL;
+        break;
+    }
+    case 9: s = hycon_contact_b_node_results(c, 0, NULL, m->nb); break;
+    case 10: {
+        HyconContactOptions o;
+        HyconModel *model = NULL;
+        HyconContact *marker = (HyconContact *)(void *)&marker, *fresh = marker;
+        hycon_contact_options_default(&o);
+        switch (below(4)) {
+        case 0: o.tolerance = NAN; break;
+        case 1: o.kinematics = 0; break;
+        case 2: o.search_distance = -1.0; break;
+        default: o.backend = 77; break;
+        }
+        ok = ok && make_model(p, v, m, &model) == HYCON_OK;
+        s = hycon_contact_new(&fresh, model, &o);
+        ok = ok && fresh == marker;
+        hycon_model_free(model);
+        break;
+    }
+    case 11: {
+        HyconModel *model = NULL;
+        size_t twice[2];
+        twice[0] = twice[1] = m->a[below(m->na)];
+        ok = ok && make_model(p, v, m, &model) == HYCON_OK;
+        s = hycon_model_prescribe(model, twice, 2, HYCON_X);
+        hycon_model_free(model);
+        break;
+    }
+    case 12: {
+        /* a dart (reflex corner), a clockwise square or a pentagon of 5 corners */
+        static const double shapes[3][10] = {{0, 0, 2, 0, 0.5, 0.5, 0, 2, 0, 0},
+                                             {0, 0, 0, 1, 1, 1, 1, 0, 0, 0},
+                                             {0, 0, 1, 0, 1.5, 0.8, 0.5, 1.5, -0.5, 0.8}};
+        size_t shape = below(3);
+        s = hycon_element_check(HYCON_ELEMENT_HYBRID, shape == 2 ? 5 : 4, shapes[shape]);
+        break;
+    }
+    default: s = hycon_contact_forces(c, out, n - 1 - below(n)); break;
+    }
+    ok = ok && failed_with_message(s) && untouched(out, 2 * MAXN + 8);
+    for (i = 0; i < sizeof info; ++i) ok = ok && ((unsigned char *)&info)[i] == 0xA5;
+    ok = ok && snapshot(c, m, &after) && memcmp(&before, &after, sizeof before) == 0;
+    if (!ok) fprintf(stderr, "  hostile call \"%s\" broke a promise (status %d)\n", class_names[k],
+                     (int)s);
+    return ok;
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Runs */
+
+typedef struct {
+    HyconStatus status; /* of the first failing call, or HYCON_OK */
+    size_t na, zero_iterations;
+    double tn[3][MAXA], ts[3][MAXA];
+} Outcome;
+
+static bool hostile_ok = true;
+
+/* Press, slide, repeat the totals; `hostile` bad calls between the increments. */
+static Outcome run(const Problem *p, const Variant *v, size_t hostile) {
+    static double load[2 * MAXN], qp[2 * MAXN];
+    Outcome o;
+    Mesh m;
+    HyconModel *model = NULL;
+    HyconContact *c = NULL;
+    HyconContactOptions options;
+    size_t step, i;
+    memset(&o, 0, sizeof o);
+    build(p, v, &m);
+    o.na = m.na;
+    hycon_contact_options_default(&options);
+    options.kinematics = p->kinematics;
+    o.status = make_model(p, v, &m, &model);
+    if (o.status == HYCON_OK) o.status = hycon_contact_new(&c, model, &options);
+    hycon_model_free(model);
+    for (step = 0; step < 3 && o.status == HYCON_OK; ++step) {
+        HyconIncrementInfo info;
+        HyconNodeResult r[MAXA];
+        totals(p, v, &m, step == 0 ? 0.0 : p->slide, load, qp);
+        o.status = hycon_contact_increment(c, load, 2 * m.nn, qp, 2 * m.nn, &info);
+        if (o.status != HYCON_OK) break;
+        if (step == 2) o.zero_iterations = info.iterations;
+        o.status = hycon_contact_node_results(c, 0, r, m.na);
+        for (i = 0; i < m.na; ++i) o.tn[step][i] = r[i].tn, o.ts[step][i] = r[i].ts;
+        for (i = 0; i < hostile; ++i) hostile_ok = hostile_call(c, p, v, &m) && hostile_ok;
+    }
+    hycon_contact_free(c);
+    return o;
+}
+
+/* `got` equals `want` times `factor` to `tol` of the peak |tn| */
+static bool same(const Outcome *want, const Outcome *got, double factor, double tol) {
+    double peak = 0.0;
+    size_t s, i;
+    if (want->status != got->status) return false;
+    if (want->status != HYCON_OK) return true;
+    for (s = 0; s < 3; ++s)
+        for (i = 0; i < want->na; ++i) peak = fmax(peak, fabs(want->tn[s][i]));
+    for (s = 0; s < 3; ++s)
+        for (i = 0; i < want->na; ++i)
+            if (fabs(want->tn[s][i] * factor - got->tn[s][i]) > tol * peak * fabs(factor) ||
+                fabs(want->ts[s][i] * factor - got->ts[s][i]) > tol * peak * fabs(factor))
+                return false;
+    return true;
+}
+
+int main(int argc, char **argv) {
+    double seconds = argc > 1 ? atof(argv[1]) : 3.0;
+    uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
+    unsigned long max_rounds = argc > 3 ? strtoul(argv[3], NULL, 10) : 0;
+    unsigned long rounds = 0, failures = 0, failed_problems = 0, total = 0, by_status[100];
+    clock_t start = clock();
+    size_t k;
+    rng = seed * 0x9E3779B97F4A7C15ULL + 1;
+    memset(by_status, 0, sizeof by_status);
+    while ((double)(clock() - start) < seconds * CLOCKS_PER_SEC &&
+           (max_rounds == 0 || rounds < max_rounds)) {
+        Problem p = draw_problem();
+        Variant v = identity();
+        Outcome base = run(&p, &v, 0), other;
+        double tol = p.kinematics == HYCON_KINEMATICS_SMALL ? 1e-8 : 1e-5;
+        bool ok = true;
+        size_t i, nn = (p.lower[0] + 1) * (p.lower[1] + 1) + (p.upper[0] + 1) * (p.upper[1] + 1);
+        ++rounds;
+        if (base.status != HYCON_OK) {
+            ++failed_problems;
+            by_status[(size_t)(-base.status) % 100]++;
+        }
+        /* 1. the zero increment */
+        if (base.status == HYCON_OK) {
+            Outcome zero = base;
+            memcpy(zero.tn[1], base.tn[2], sizeof zero.tn[1]);
+            memcpy(zero.ts[1], base.ts[2], sizeof zero.ts[1]);
+            if (base.zero_iterations > 3 || !same(&base, &zero, 1.0, tol)) {
+                fprintf(stderr, "round %lu: the zero increment took %zu iterations or moved\n",
+                            rounds, base.zero_iterations);
+                ok = false;
+            }
+        }
+        /* 2. translation, unit scaling, renumbering */
+        v.translation[0] = uniform(-1e3, 1e3);
+        v.translation[1] = uniform(-1e3, 1e3);
+        other = run(&p, &v, 0);
+        if (!same(&base, &other, 1.0, tol)) {
+            fprintf(stderr, "round %lu: translation by (%g, %g) changed the results\n", rounds,
+                    v.translation[0], v.translation[1]);
+            ok = false;
+        }
+        v = identity();
+        v.length_scale = pow(10.0, (double)below(7) - 3.0);
+        v.modulus_scale = pow(10.0, (double)below(7) - 3.0);
+        other = run(&p, &v, 0);
+        if (!same(&base, &other, v.modulus_scale, tol)) {
+            fprintf(stderr, "round %lu: unit scaling (%g, %g) changed the results\n", rounds,
+                    v.length_scale, v.modulus_scale);
+            ok = false;
+        }
+        v = identity();
+        v.renumber = true;
+        for (i = 0; i < nn; ++i) v.perm[i] = i;
+        for (i = nn - 1; i > 0; --i) {
+            size_t j = below(i + 1), t = v.perm[i];
+            v.perm[i] = v.perm[j];
+            v.perm[j] = t;
+        }
+        other = run(&p, &v, 0);
+        if (!same(&base, &other, 1.0, tol)) {
+            fprintf(stderr, "round %lu: renumbering changed the results\n", rounds);
+            ok = false;
+        }
+        /* 3. hostile calls change nothing */
+        hostile_ok = true;
+        v = identity();
+        other = run(&p, &v, 1 + below(4));
+        if (!hostile_ok || !same(&base, &other, 1.0, 0.0)) {
+            fprintf(stderr, "round %lu: bad calls changed the run\n", rounds);
+            ok = false;
+        }
+        if (!ok) {
+            print_problem(&p);
+            ++failures;
+        }
+    }
+    printf("contact_randomized: seed %llu, %lu rounds (%lu problems failing alike in every "
+           "variant), %lu violations\n",
+           (unsigned long long)seed, rounds, failed_problems, failures);
+    for (k = 1; k < 100; ++k)
+        if (by_status[k] > 0)
+            printf("  failing alike with %-19s %lu\n", hycon_status_name(-(HyconStatus)k),
+                   by_status[k]);
+    for (k = 0; k < N_CLASSES; ++k) {
+        printf("  %-34s %lu\n", class_names[k], calls[k]);
+        total += calls[k];
+    }
+    printf("  %-34s %lu\n", "bad calls in all", total);
+    if (failures > 0) {
+        printf("FAILED (reproduce: contact_randomized %g %llu %lu)\n", seconds,
+               (unsigned long long)seed, rounds);
+        return 1;
+    }
+    printf("OK\n");
+    return 0;
+}
