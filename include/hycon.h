@@ -117,7 +117,9 @@ typedef struct HyconIterationRecord {
     size_t slip;
     // State changes decided after the solve.
     size_t changes;
-    // Convergence measure `R = |dU(i+1) - dU(i)| / |dU(i+1)|` over the contact dofs.
+    // Convergence measure over the contact dofs: the change of this iteration's displacement
+    // relative to the increment's motion so far (bounded below by round-off, and under finite
+    // kinematics by the largest motion of a converged increment); always finite.
     double r;
     // Estimated 1-norm condition number of the small contact system (1 when empty).
     double condition;
@@ -171,11 +173,12 @@ typedef int32_t HyconAnalysis;
 
 // Isotropic linear elastic material.
 typedef struct HyconMaterial {
-    // Young's modulus `E > 0`.
+    // Young's modulus `E > 0`, within [1e-100, 1e100] (choose units accordingly).
     double youngs;
     // Poisson's ratio, `-1 < nu < 0.5`.
     double poisson;
-    // Thickness `t > 0` (plane strain: the depth results are reported per, usually 1).
+    // Thickness `t > 0`, within [1e-100, 1e100] (plane strain: the depth results are reported
+    // per, usually 1).
     double thickness;
     // `HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS`.
     HyconAnalysis analysis;
@@ -649,7 +652,9 @@ HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, vo
 // `n_elements` indices into `materials` or NULL for all 0), with node ids of the host's
 // numbering; the node table gives, for each of the `n_nodes` nodes they use, its id
 // (`node_ids`), reference coordinates (`coords`, 2 per node) and equations (`equations`, 2 per
-// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements.
+// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements. Note the order:
+// kind and materials first, then the elements, then the node table (`hycon_model_new` takes
+// the coordinates first and the kind last).
 //
 // # Safety
 // `host` must be a live handle; every array NULL or holding the stated number of values.

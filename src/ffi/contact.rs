@@ -115,7 +115,9 @@ pub struct HyconIterationRecord {
     pub slip: usize,
     /// State changes decided after the solve.
     pub changes: usize,
-    /// Convergence measure `R = |dU(i+1) - dU(i)| / |dU(i+1)|` over the contact dofs.
+    /// Convergence measure over the contact dofs: the change of this iteration's displacement
+    /// relative to the increment's motion so far (bounded below by round-off, and under finite
+    /// kinematics by the largest motion of a converged increment); always finite.
     pub r: f64,
     /// Estimated 1-norm condition number of the small contact system (1 when empty).
     pub condition: f64,
@@ -1177,7 +1179,9 @@ pub unsafe extern "C" fn hycon_host_set_solver(
 /// `n_elements` indices into `materials` or NULL for all 0), with node ids of the host's
 /// numbering; the node table gives, for each of the `n_nodes` nodes they use, its id
 /// (`node_ids`), reference coordinates (`coords`, 2 per node) and equations (`equations`, 2 per
-/// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements.
+/// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements. Note the order:
+/// kind and materials first, then the elements, then the node table (`hycon_model_new` takes
+/// the coordinates first and the kind last).
 ///
 /// # Safety
 /// `host` must be a live handle; every array NULL or holding the stated number of values.

@@ -165,11 +165,12 @@ const fn size_checks() {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HyconMaterial {
-    /// Young's modulus `E > 0`.
+    /// Young's modulus `E > 0`, within [1e-100, 1e100] (choose units accordingly).
     pub youngs: f64,
     /// Poisson's ratio, `-1 < nu < 0.5`.
     pub poisson: f64,
-    /// Thickness `t > 0` (plane strain: the depth results are reported per, usually 1).
+    /// Thickness `t > 0`, within [1e-100, 1e100] (plane strain: the depth results are reported
+    /// per, usually 1).
     pub thickness: f64,
     /// `HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS`.
     pub analysis: HyconAnalysis,
