@@ -272,11 +272,7 @@ impl LinearSystem {
         pattern.assemble(&model.mesh, &model.materials, model.formulation, &dofs)?;
         let assembly = clock.elapsed().as_secs_f64();
         let trailing_free: Vec<usize> = trailing.iter().filter_map(|&d| dofs.equation(d)).collect();
-        let mut cholesky = if trailing_free.is_empty() {
-            SparseCholesky::analyze_on(backend, pattern.symbolic())?
-        } else {
-            SparseCholesky::analyze_with_trailing_on(backend, pattern.symbolic(), &trailing_free)?
-        };
+        let mut cholesky = SparseCholesky::analyze(pattern.symbolic(), backend, &trailing_free)?;
         cholesky.factorize(pattern.matrix())?;
         Ok(LinearSystem {
             dofs,

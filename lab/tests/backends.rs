@@ -197,7 +197,7 @@ fn singular_systems_are_errors() {
     }
     let singular = SparseColMat::try_new_from_triplets(k.nrows(), k.ncols(), &triplets).unwrap();
     for backend in BACKENDS {
-        let mut chol = SparseCholesky::analyze_on(backend, singular.symbolic()).unwrap();
+        let mut chol = SparseCholesky::analyze(singular.symbolic(), backend, &[]).unwrap();
         let err = chol.factorize(singular.as_ref()).unwrap_err();
         println!("{backend}, zero column {zero}: {err}");
         assert!(
@@ -284,7 +284,7 @@ fn timing_faer_vs_cholmod_100k() {
     println!("{n} unknowns, nnz(K lower) {}", pattern.nnz());
     for backend in BACKENDS {
         let t = Instant::now();
-        let mut chol = SparseCholesky::analyze_on(backend, pattern.symbolic()).unwrap();
+        let mut chol = SparseCholesky::analyze(pattern.symbolic(), backend, &[]).unwrap();
         let analysis = t.elapsed().as_secs_f64();
         let t = Instant::now();
         chol.factorize(pattern.matrix()).unwrap();

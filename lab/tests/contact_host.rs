@@ -208,7 +208,9 @@ fn host_csr_and_host_solver_match_the_model_path() {
         options,
     )
     .unwrap();
-    let mut factor = SparseCholesky::analyze(host.pattern.symbolic()).unwrap();
+    let mut factor =
+        SparseCholesky::analyze(host.pattern.symbolic(), hycon::solver::Backend::Faer, &[])
+            .unwrap();
     factor.factorize(host.pattern.matrix()).unwrap();
     let own = OwnSolver {
         factor,

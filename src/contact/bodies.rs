@@ -381,8 +381,7 @@ impl Bodies {
                     .iter()
                     .flat_map(|n| n.equations.into_iter().flatten())
                     .collect();
-                let mut factor =
-                    SparseCholesky::analyze_with_trailing_on(backend, lower.symbolic(), &trailing)?;
+                let mut factor = SparseCholesky::analyze(lower.symbolic(), backend, &trailing)?;
                 factor.factorize(lower.as_ref())?;
                 HostSolver::Factor { factor, lower }
             }
@@ -411,7 +410,7 @@ impl Bodies {
     pub fn external(&self, local: usize) -> usize {
         match &self.0 {
             Kind::Model { .. } => local,
-            Kind::Host(h) => h.nodes.get(local).map_or(usize::MAX, |n| n.id),
+            Kind::Host(h) => h.nodes[local].id,
         }
     }
 

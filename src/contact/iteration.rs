@@ -252,10 +252,6 @@ pub struct ContactOptions {
     pub lock_rounds: usize,
     /// Sparse Cholesky library for hycon's factorizations of `K`.
     pub backend: Backend,
-    /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
-    /// analysis: never needed (`K` does not change), it exists so that the benchmark can show
-    /// what factoring once saves.
-    pub refactor_each_iteration: bool,
 }
 
 impl ContactOptions {
@@ -310,7 +306,6 @@ impl Default for ContactOptions {
             search_distance: 4.0,
             lock_rounds: 3,
             backend: Backend::Faer,
-            refactor_each_iteration: false,
         }
     }
 }
@@ -476,12 +471,15 @@ pub struct ContactAnalysis {
     options: ContactOptions,
     /// Global dofs of the contact nodes (A and B of every pair), sorted.
     dofs: Vec<usize>,
-    /// Position of each global dof in `dofs`, `usize::MAX` elsewhere.
-    slot: Vec<usize>,
+    /// Position of each global dof in `dofs` (`None`: not a contact dof).
+    slot: Vec<Option<usize>>,
     /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs).
     flexibility: DMatrix<f64>,
     /// Converged displacement of the contact dofs (`dofs` order).
     qc: Vec<f64>,
+    /// Factor `K` again in every iteration (a benchmark's control, see
+    /// [`ContactAnalysis::set_refactor_each_iteration`]).
+    refactor_each_iteration: bool,
     /// The load (`f` and `q_p` at the prescribed dofs) of the last converged increment
     /// without a plate, and the locks it settled with.
     settled: Option<(Vec<f64>, Locks)>,
@@ -588,9 +586,9 @@ impl ContactAnalysis {
         dofs: Vec<usize>,
         options: ContactOptions,
     ) -> Result<Self> {
-        let mut slot = vec![usize::MAX; 2 * bodies.positions().len()];
+        let mut slot = vec![None; 2 * bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
-            slot[d] = i;
+            slot[d] = Some(i);
         }
         let mut timings = Timings::default();
         [timings.assembly, timings.factorization] = bodies.setup_seconds();
@@ -617,6 +615,7 @@ impl ContactAnalysis {
         Ok(ContactAnalysis {
             qc: vec![0.0; dofs.len()],
             settled: None,
+            refactor_each_iteration: false,
             largest_motion: 0.0,
             largest_component_motion: 0.0,
             converged: None,
@@ -638,6 +637,13 @@ impl ContactAnalysis {
             plate: None,
             monitor: None,
         })
+    }
+
+    /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
+    /// analysis. Never needed (`K` does not change): a benchmark's control, not an option, so
+    /// that `hycon bench skip` can show what factoring once saves.
+    pub fn set_refactor_each_iteration(&mut self, on: bool) {
+        self.refactor_each_iteration = on;
     }
 
     /// Call `monitor` with every iteration record from now on (`None` removes it). When it
@@ -852,12 +858,18 @@ impl ContactAnalysis {
         Ok(())
     }
 
+    /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
+    /// only, so every dof asked for has one.
+    fn contact_slot(&self, d: usize) -> usize {
+        self.slot[d].expect("a dof of a contact node")
+    }
+
     /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
     fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> [f64; 2] {
         coupling.iter().fold([0.0, 0.0], |acc, &(j, c)| {
             [
-                acc[0] + c * uc[self.slot[dof(j, 0)]],
-                acc[1] + c * uc[self.slot[dof(j, 1)]],
+                acc[0] + c * uc[self.contact_slot(dof(j, 0))],
+                acc[1] + c * uc[self.contact_slot(dof(j, 1))],
             ]
         })
     }
@@ -914,7 +926,7 @@ impl ContactAnalysis {
         // time of the refactor-every-iteration variant, counted as factorization
         let mut refactoring = 0.0;
         for iteration in 1..=self.options.max_iterations {
-            if self.options.refactor_each_iteration && iteration > 1 {
+            if self.refactor_each_iteration && iteration > 1 {
                 let clock = std::time::Instant::now();
                 self.bodies.refactorize()?;
                 self.flexibility = self.bodies.flexibility(&self.dofs)?;

@@ -567,7 +567,6 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
         search_distance: o.search_distance,
         lock_rounds: o.lock_rounds as usize,
         backend,
-        refactor_each_iteration: false,
     };
     options.validate()?;
     let monitor = o.monitor.map(|monitor| {

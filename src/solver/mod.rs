@@ -92,7 +92,7 @@ pub struct SparseCholesky {
     engine: Engine,
     factorizations: usize,
     factored: bool,
-    /// Number of unknowns ordered last (see [`SparseCholesky::analyze_with_trailing`]).
+    /// Number of unknowns ordered last (see [`SparseCholesky::analyze`]).
     trailing: usize,
 }
 
@@ -123,18 +123,31 @@ impl std::fmt::Debug for SparseCholesky {
 }
 
 impl SparseCholesky {
-    /// Symbolic analysis (AMD ordering, elimination tree, supernodes) of the lower-triangle
-    /// pattern, with faer.
-    pub fn analyze(pattern: SymbolicSparseColMatRef<'_, usize>) -> Result<Self> {
-        Self::analyze_on(Backend::Faer, pattern)
+    /// Symbolic analysis (fill-reducing ordering, elimination tree, supernodes) of the
+    /// lower-triangle pattern with the given backend: faer's AMD, or CHOLMOD's default strategy
+    /// (AMD, METIS when AMD fills badly). An unavailable backend is an [`Error::Solver`].
+    ///
+    /// The unknowns `trailing` (none: `&[]`) are eliminated last, in the order given, the
+    /// others keeping the backend's own order. After [`factorize`](Self::factorize), the
+    /// trailing block `L22` of the factor gives the condensed (Schur complement) matrix of those
+    /// unknowns, `S = K22 - K21 K11^-1 K12 = L22 L22^T`: see
+    /// [`condensed_inverse`](Self::condensed_inverse).
+    pub fn analyze(
+        pattern: SymbolicSparseColMatRef<'_, usize>,
+        backend: Backend,
+        trailing: &[usize],
+    ) -> Result<Self> {
+        if trailing.is_empty() {
+            Self::analyze_plain(pattern, backend)
+        } else {
+            Self::analyze_with_trailing(pattern, backend, trailing)
+        }
     }
 
-    /// Symbolic analysis of the lower-triangle pattern with the given backend: faer's AMD, or
-    /// CHOLMOD's default strategy (AMD, METIS when AMD fills badly). An unavailable backend is
-    /// an [`Error::Solver`].
-    pub fn analyze_on(
-        backend: Backend,
+    /// [`analyze`](Self::analyze) with no trailing unknowns: the backend's own ordering.
+    fn analyze_plain(
         pattern: SymbolicSparseColMatRef<'_, usize>,
+        backend: Backend,
     ) -> Result<Self> {
         backend.check_available()?;
         let engine = match backend {
@@ -149,24 +162,11 @@ impl SparseCholesky {
         Ok(Self::with_engine(engine, 0))
     }
 
-    /// Symbolic analysis with the unknowns `trailing` eliminated last, in the given order (the
-    /// others in AMD order), with faer. After [`factorize`](Self::factorize), the trailing
-    /// block `L22` of the factor gives the condensed (Schur complement) matrix of those
-    /// unknowns, `S = K22 - K21 K11^-1 K12 = L22 L22^T`: see
-    /// [`condensed_inverse`](Self::condensed_inverse).
-    pub fn analyze_with_trailing(
+    /// [`analyze`](Self::analyze) with trailing unknowns: the backend's order with them moved
+    /// to the end.
+    fn analyze_with_trailing(
         pattern: SymbolicSparseColMatRef<'_, usize>,
-        trailing: &[usize],
-    ) -> Result<Self> {
-        Self::analyze_with_trailing_on(Backend::Faer, pattern, trailing)
-    }
-
-    /// [`analyze_with_trailing`](Self::analyze_with_trailing) with the given backend. The other
-    /// unknowns keep the backend's own fill-reducing order (with the trailing ones removed);
-    /// the trailing ones follow, in the order given.
-    pub fn analyze_with_trailing_on(
         backend: Backend,
-        pattern: SymbolicSparseColMatRef<'_, usize>,
         trailing: &[usize],
     ) -> Result<Self> {
         backend.check_available()?;
@@ -235,7 +235,7 @@ impl SparseCholesky {
     }
 
     /// The inverse of the condensed matrix of the trailing unknowns (in the order given to
-    /// [`analyze_with_trailing`](Self::analyze_with_trailing)): `S^-1 = (K^-1)_22`, the
+    /// [`analyze`](Self::analyze) with trailing unknowns): `S^-1 = (K^-1)_22`, the
     /// flexibility of those unknowns with all others free and unloaded. Computed from the
     /// factor's trailing block, `S^-1 = L22^-T L22^-1`: no solves with `K`.
     pub fn condensed_inverse(&self) -> Result<Mat<f64>> {
@@ -542,7 +542,7 @@ mod tests {
     fn solves_many_rhs_and_counts_factorizations() {
         let n = 200;
         let (a, full) = laplacian(n);
-        let mut chol = SparseCholesky::analyze(a.symbolic()).unwrap();
+        let mut chol = SparseCholesky::analyze(a.symbolic(), Backend::Faer, &[]).unwrap();
         chol.factorize(a.as_ref()).unwrap();
         let b = Mat::<f64>::from_fn(n, 150, |i, j| ((i * 7 + j * 3) % 11) as f64 - 5.0);
         let mut x = b.clone();
@@ -570,10 +570,10 @@ mod tests {
             }
             let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &t).unwrap();
             let trailing: Vec<usize> = vec![n / 2, 3, n - 1, n / 3, 7];
-            let mut chol = SparseCholesky::analyze_with_trailing(a.symbolic(), &trailing).unwrap();
+            let mut chol = SparseCholesky::analyze(a.symbolic(), Backend::Faer, &trailing).unwrap();
             #[allow(irrefutable_let_patterns)] // irrefutable without the CHOLMOD variant
             let Engine::Faer(f) = &chol.engine else {
-                panic!("analyze_with_trailing must use faer")
+                panic!("analyze on faer must use faer")
             };
             let supernodal = matches!(f.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_));
             assert_eq!(
@@ -604,7 +604,7 @@ mod tests {
             Triplet::new(1, 1, 1.0),
         ];
         let a = SparseColMat::<usize, f64>::try_new_from_triplets(2, 2, &t).unwrap();
-        let mut chol = SparseCholesky::analyze(a.symbolic()).unwrap();
+        let mut chol = SparseCholesky::analyze(a.symbolic(), Backend::Faer, &[]).unwrap();
         let err = chol.factorize(a.as_ref()).unwrap_err();
         assert!(matches!(err, Error::Singular(_)), "{err}");
         let mut x = Mat::<f64>::zeros(2, 1);
@@ -634,10 +634,9 @@ mod tests {
         let expected = Error::Solver(
             "hycon was built without the `suitesparse` feature: CHOLMOD is not available".into(),
         );
-        let err = SparseCholesky::analyze_on(Backend::Cholmod, a.symbolic()).unwrap_err();
+        let err = SparseCholesky::analyze(a.symbolic(), Backend::Cholmod, &[]).unwrap_err();
         assert_eq!(err, expected);
-        let err = SparseCholesky::analyze_with_trailing_on(Backend::Cholmod, a.symbolic(), &[1])
-            .unwrap_err();
+        let err = SparseCholesky::analyze(a.symbolic(), Backend::Cholmod, &[1]).unwrap_err();
         assert_eq!(err, expected);
     }
 
@@ -657,9 +656,7 @@ mod tests {
                 .collect();
             let mut results = Vec::new();
             for backend in [Backend::Faer, Backend::Cholmod] {
-                let mut chol =
-                    SparseCholesky::analyze_with_trailing_on(backend, a.symbolic(), &trailing)
-                        .unwrap();
+                let mut chol = SparseCholesky::analyze(a.symbolic(), backend, &trailing).unwrap();
                 assert_eq!(chol.backend(), backend);
                 assert_eq!(chol.n(), n);
                 chol.factorize(a.as_ref()).unwrap();
@@ -681,14 +678,14 @@ mod tests {
             assert!((sf - sc).norm_max() <= 1e-12 * sf.norm_max(), "n = {n}");
         }
         let empty = SparseColMat::<usize, f64>::try_new_from_triplets(0, 0, &[]).unwrap();
-        let mut chol = SparseCholesky::analyze_on(Backend::Cholmod, empty.symbolic()).unwrap();
+        let mut chol = SparseCholesky::analyze(empty.symbolic(), Backend::Cholmod, &[]).unwrap();
         chol.factorize(empty.as_ref()).unwrap();
         chol.solve_in_place(Mat::<f64>::zeros(0, 3).as_mut())
             .unwrap();
         assert_eq!(chol.condensed_inverse().unwrap().nrows(), 0);
 
         let (a, _) = laplacian(4);
-        let mut chol = SparseCholesky::analyze_on(Backend::Cholmod, a.symbolic()).unwrap();
+        let mut chol = SparseCholesky::analyze(a.symbolic(), Backend::Cholmod, &[]).unwrap();
         let (other, _) = laplacian(5);
         assert!(matches!(
             chol.factorize(other.as_ref()),
@@ -705,7 +702,7 @@ mod tests {
             Err(Error::InvalidInput(_))
         ));
         assert!(matches!(
-            SparseCholesky::analyze_with_trailing_on(Backend::Cholmod, a.symbolic(), &[1, 1]),
+            SparseCholesky::analyze(a.symbolic(), Backend::Cholmod, &[1, 1]),
             Err(Error::InvalidInput(_))
         ));
     }
@@ -727,7 +724,7 @@ mod tests {
         let errs: Vec<Error> = [Backend::Faer, Backend::Cholmod]
             .into_iter()
             .map(|backend| {
-                let mut chol = SparseCholesky::analyze_on(backend, a.symbolic()).unwrap();
+                let mut chol = SparseCholesky::analyze(a.symbolic(), backend, &[]).unwrap();
                 let err = chol.factorize(a.as_ref()).unwrap_err();
                 assert_eq!(chol.factorizations(), 0);
                 assert!(

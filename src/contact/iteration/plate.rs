@@ -129,7 +129,7 @@ impl ContactAnalysis {
         let n = analysis.bodies.field_len();
         for &node in &plate {
             let held = node < n / 2 && (0..2).all(|d| !analysis.bodies.is_free(dof(node, d)));
-            if !held || analysis.slot[dof(node, 0)] != usize::MAX {
+            if !held || analysis.slot[dof(node, 0)].is_some() {
                 return Err(Error::InvalidInput(format!(
                     "plate node {node} must exist, be prescribed in x and y, and not be a \
                      contact node"

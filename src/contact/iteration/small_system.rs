@@ -207,8 +207,8 @@ impl ContactAnalysis {
             .iter()
             .flat_map(|&(j, c)| {
                 [
-                    (self.slot[dof(j, 0)], c * d[0]),
-                    (self.slot[dof(j, 1)], c * d[1]),
+                    (self.contact_slot(dof(j, 0)), c * d[0]),
+                    (self.contact_slot(dof(j, 1)), c * d[1]),
                 ]
             })
             .collect()
