@@ -226,26 +226,12 @@ pub enum Phase {
     Slide,
 }
 
-/// Contact state of a node.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum State {
-    /// Not in contact.
-    Open,
-    /// In contact, sticking.
-    Stick,
-    /// In contact, slipping.
-    Slip,
-}
-
-impl From<NodeState> for State {
-    fn from(s: NodeState) -> Self {
-        match s {
-            NodeState::Open => State::Open,
-            NodeState::Stick => State::Stick,
-            NodeState::Slip { .. } => State::Slip,
-        }
-    }
+/// A node state as its name (`"open"`, `"stick"`, `"slip"`) in the JSON summary.
+fn state_name<S: serde::Serializer>(
+    state: &NodeState,
+    s: S,
+) -> std::result::Result<S::Ok, S::Error> {
+    s.serialize_str(state.name())
 }
 
 /// One converged increment.
@@ -407,7 +393,8 @@ pub struct NodeRow {
     /// `ts`).
     pub q: f64,
     /// Contact state.
-    pub state: State,
+    #[serde(serialize_with = "state_name")]
+    pub state: NodeState,
     /// Hertz pressure at `x`.
     pub p_exact: f64,
     /// Closed-form shear at `x`.
@@ -664,13 +651,13 @@ fn evaluate(
             p: -n.tn,
             p_forces: -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight,
             q: n.ts,
-            state: n.state.into(),
+            state: n.state,
             p_exact: closed_form.pressure(n.position[0]),
             q_exact: closed_form.shear(n.position[0]),
         })
         .collect();
-    let count = |s: State| nodes.iter().filter(|n| n.state == s).count();
-    let (stick, slip) = (count(State::Stick), count(State::Slip));
+    let count = |name: &str| nodes.iter().filter(|n| n.state.name() == name).count();
+    let (stick, slip) = (count("stick"), count("slip"));
     let shear_l2_error = (friction > 0.0).then(|| {
         let (mut num, mut den) = (0.0, 0.0);
         for (row, n) in nodes.iter().zip(&sorted) {
@@ -682,7 +669,7 @@ fn evaluate(
     // partial slip only: some node sticks (full slip has no stick zone to compare)
     let stick_zone = ratio.filter(|r| r.abs() < 1.0 && stick > 0).map(|_| {
         let stick_idx: Vec<usize> = (0..nodes.len())
-            .filter(|&i| nodes[i].state == State::Stick)
+            .filter(|&i| nodes[i].state == NodeState::Stick)
             .collect();
         let measured = match (stick_idx.first(), stick_idx.last()) {
             (Some(&l), Some(&r)) => {

@@ -325,6 +325,17 @@ pub enum NodeState {
     },
 }
 
+impl NodeState {
+    /// `"open"`, `"stick"` or `"slip"`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            NodeState::Open => "open",
+            NodeState::Stick => "stick",
+            NodeState::Slip { .. } => "slip",
+        }
+    }
+}
+
 /// Converged contact results at one A node.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NodeResult {
