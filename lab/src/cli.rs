@@ -954,17 +954,18 @@ fn print_run(run: &Run) {
         println!("{row}");
     }
     let t = &run.timings;
+    let p = &t.phases;
     println!(
         "   time: assembly {:.3} s, factorization {:.3} s ({}x), flexibility {:.3} s, load solves \
          {:.3} s, iterations {:.3} s, recovery {:.3} s; total {:.3} s over {} increments \
          (calibration included)",
-        t.assembly,
-        t.factorization,
+        p.assembly,
+        p.factorization,
         t.factorizations,
-        t.flexibility,
-        t.load_solves,
-        t.iterations,
-        t.recovery,
+        p.flexibility,
+        p.load_solves,
+        p.iterations,
+        p.recovery,
         t.total,
         t.increments
     );

@@ -19,7 +19,7 @@
 
 use crate::scene::{DiskOnBlock, HertzComparison, Scene};
 use hycon::contact::iteration::{
-    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState,
+    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState, Timings,
 };
 use hycon::error::{Error, Result};
 use hycon::model::{LinearSystem, Model};
@@ -402,21 +402,12 @@ pub struct NodeRow {
 }
 
 /// Where the time of an analysis went, against a linear analysis of the same model.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy)]
 pub struct TimeSplit {
-    /// Sparse assembly of `K`.
-    pub assembly: f64,
-    /// Factorization of `K` (once).
-    pub factorization: f64,
-    /// Contact-boundary flexibility (read off the factor, once).
-    pub flexibility: f64,
-    /// Load solves `K^-1 (f - K_fp q_p)` (at most one per increment).
-    pub load_solves: f64,
-    /// Contact iterations (small dense algebra, geometry).
-    pub iterations: f64,
-    /// Full-field recovery (one solve per displacement field kept).
-    pub recovery: f64,
-    /// Sum of the above.
+    /// The analysis' own split (assembly, factorization, flexibility, load solves, iterations,
+    /// recovery).
+    pub phases: Timings,
+    /// Sum of the phases.
     pub total: f64,
     /// Increments solved (calibration included).
     pub increments: usize,
@@ -429,6 +420,32 @@ pub struct TimeSplit {
     pub linear: f64,
     /// `total / linear`.
     pub ratio: f64,
+}
+
+/// In the JSON summary the phases sit beside the other fields, as one flat object.
+impl Serialize for TimeSplit {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let p = &self.phases;
+        let mut m = s.serialize_struct("TimeSplit", 12)?;
+        for (name, value) in [
+            ("assembly", p.assembly),
+            ("factorization", p.factorization),
+            ("flexibility", p.flexibility),
+            ("load_solves", p.load_solves),
+            ("iterations", p.iterations),
+            ("recovery", p.recovery),
+            ("total", self.total),
+        ] {
+            m.serialize_field(name, &value)?;
+        }
+        m.serialize_field("increments", &self.increments)?;
+        m.serialize_field("factorizations", &self.factorizations)?;
+        m.serialize_field("one_solve", &self.one_solve)?;
+        m.serialize_field("linear", &self.linear)?;
+        m.serialize_field("ratio", &self.ratio)?;
+        m.end()
+    }
 }
 
 /// The analysis's time split, and a linear analysis of the same model timed for reference:
@@ -448,12 +465,7 @@ fn time_split(
     let one_solve = clock.elapsed().as_secs_f64();
     let linear = setup + one_solve;
     Ok(TimeSplit {
-        assembly: t.assembly,
-        factorization: t.factorization,
-        flexibility: t.flexibility,
-        load_solves: t.load_solves,
-        iterations: t.iterations,
-        recovery: t.recovery,
+        phases: t,
         total: t.total(),
         increments,
         factorizations: analysis.factorizations(),
