@@ -414,12 +414,17 @@ impl SweepRun {
     /// One CSV line (no newline), columns as [`SWEEP_CSV_HEADER`].
     pub fn csv_row(&self) -> String {
         let c = &self.case;
-        let t = &self.timings;
         let cap = c
             .max_element_size
             .map_or(String::new(), |v| format!("{v:e}"));
+        let phases: String = self
+            .timings
+            .phases()
+            .iter()
+            .map(|(_, t)| format!("{t:.6},"))
+            .collect();
         format!(
-            "{},{},{},{},{},{cap},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},\
+            "{},{},{},{},{},{cap},{},{},{},{},{},{},{:.6},{phases}\
              {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e},{},{}",
             c.formulation.name(),
             mesh_name(c.transition),
@@ -433,12 +438,6 @@ impl SweepRun {
             self.iterations,
             self.factorizations,
             self.mesh,
-            t.assembly,
-            t.factorization,
-            t.flexibility,
-            t.load_solves,
-            t.iterations,
-            t.recovery,
             self.total,
             self.peak_rss,
             self.start_rss,

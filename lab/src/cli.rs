@@ -1313,20 +1313,19 @@ fn contact_scale(
                 ..parse_config(config, n)?
             };
             let r = hycon_lab::bench::sweep_run_in_child(&exe, &case)?;
-            let t = r.timings;
+            let phases: String = r
+                .timings
+                .phases()
+                .iter()
+                .map(|(_, t)| format!(" {t:>8.3}"))
+                .collect();
             println!(
-                "{:<28} {:>3} {:>9} {:>6} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.3} {:>8.1} {:>6.3}%",
+                "{:<28} {:>3} {:>9} {:>6} {:>8.3}{phases} {:>8.3} {:>8.1} {:>6.3}%",
                 hycon_lab::bench::series_name(&case),
                 k,
                 r.dofs,
                 r.contact_dofs,
                 r.mesh,
-                t.assembly,
-                t.factorization,
-                t.flexibility,
-                t.load_solves,
-                t.iterations,
-                t.recovery,
                 r.total,
                 r.peak_rss,
                 100.0 * r.l2_error
@@ -1348,20 +1347,19 @@ fn contact_scale(
          |---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     );
     for (k, r) in &runs {
-        let t = r.timings;
+        let phases: String = r
+            .timings
+            .phases()
+            .iter()
+            .map(|(_, t)| format!(" {t:.3} |"))
+            .collect();
         let _ = writeln!(
             md,
-            "| {} | {k} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.0} | {:.3}% |",
+            "| {} | {k} | {} | {} | {:.3} |{phases} {:.3} | {:.0} | {:.3}% |",
             r.case.backend.name(),
             r.dofs,
             r.elements,
             r.mesh,
-            t.assembly,
-            t.factorization,
-            t.flexibility,
-            t.load_solves,
-            t.iterations,
-            t.recovery,
             r.total,
             r.peak_rss,
             100.0 * r.l2_error

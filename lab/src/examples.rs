@@ -426,19 +426,11 @@ pub struct TimeSplit {
 impl Serialize for TimeSplit {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
-        let p = &self.phases;
         let mut m = s.serialize_struct("TimeSplit", 12)?;
-        for (name, value) in [
-            ("assembly", p.assembly),
-            ("factorization", p.factorization),
-            ("flexibility", p.flexibility),
-            ("load_solves", p.load_solves),
-            ("iterations", p.iterations),
-            ("recovery", p.recovery),
-            ("total", self.total),
-        ] {
+        for (name, value) in self.phases.phases() {
             m.serialize_field(name, &value)?;
         }
+        m.serialize_field("total", &self.total)?;
         m.serialize_field("increments", &self.increments)?;
         m.serialize_field("factorizations", &self.factorizations)?;
         m.serialize_field("one_solve", &self.one_solve)?;

@@ -429,14 +429,21 @@ pub struct Timings {
 }
 
 impl Timings {
+    /// The parts with their field names, in field order (for tables, CSV and JSON writers).
+    pub fn phases(&self) -> [(&'static str, f64); 6] {
+        [
+            ("assembly", self.assembly),
+            ("factorization", self.factorization),
+            ("flexibility", self.flexibility),
+            ("load_solves", self.load_solves),
+            ("iterations", self.iterations),
+            ("recovery", self.recovery),
+        ]
+    }
+
     /// Sum of all parts.
     pub fn total(&self) -> f64 {
-        self.assembly
-            + self.factorization
-            + self.flexibility
-            + self.load_solves
-            + self.iterations
-            + self.recovery
+        self.phases().iter().map(|(_, t)| t).sum()
     }
 }
 
