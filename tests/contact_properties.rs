@@ -317,3 +317,33 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 256,
+        rng_seed: RngSeed::Fixed(0x0068_7963_6f6f),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    /// Load scaling: with touching surfaces and small kinematics the problem is positively
+    /// homogeneous in the load, so pressing and sliding `s` times as far gives `s` times the
+    /// tractions with the same contact states, for `s` from 1e-6 to 1e9 (every tolerance of
+    /// the iteration is relative to the increment's own motion or tractions).
+    #[test]
+    fn load_scaling(p in problem(), k in -6i32..=9) {
+        let p = Problem { gap: 0.0, kinematics: Kinematics::Small, ..p };
+        let s = 10f64.powi(k);
+        let scaled = Problem { depth: s * p.depth, slide: s * p.slide, ..p.clone() };
+        let base = run(&p, &Variant::identity());
+        let other = run(&scaled, &Variant::identity());
+        match (&base, &other) {
+            (Ok((want, _)), Ok((got, _))) => prop_assert!(
+                same(want, got, s, 1e-8),
+                "scaled by {s:e}: tractions differ\n{want:?}\n{got:?}"
+            ),
+            (Err(want), Err(got)) => prop_assert_eq!(want, got, "scaled by {}: different errors", s),
+            _ => prop_assert!(false, "scaled by {s:e}: {base:?} against {other:?}"),
+        }
+    }
+}

@@ -719,6 +719,18 @@ struct Summary<'a> {
     examples: &'a [Example],
 }
 
+/// The main job's sliding example: pressed, then moved 2a in 8 increments.
+fn main_slide(n: usize, friction: f64, output: &Output) -> SlideCase {
+    SlideCase {
+        n,
+        friction,
+        increments: 8,
+        distance: 2.0,
+        fields: output.fields(),
+        ..Default::default()
+    }
+}
+
 /// The main job: the four contact examples, tables, time split, files.
 fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
     let start = Instant::now();
@@ -732,28 +744,8 @@ fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
             },
             Some(&mut progress),
         )?,
-        examples::slide(
-            &SlideCase {
-                n,
-                friction: 0.0,
-                increments: 8,
-                distance: 2.0,
-                fields: output.fields(),
-                ..Default::default()
-            },
-            Some(&mut progress),
-        )?,
-        examples::slide(
-            &SlideCase {
-                n,
-                friction: 0.3,
-                increments: 8,
-                distance: 2.0,
-                fields: output.fields(),
-                ..Default::default()
-            },
-            Some(&mut progress),
-        )?,
+        examples::slide(&main_slide(n, 0.0, &output), Some(&mut progress))?,
+        examples::slide(&main_slide(n, 0.3, &output), Some(&mut progress))?,
         examples::cattaneo_mindlin(
             &CattaneoCase {
                 n,

@@ -237,8 +237,10 @@ pub struct ContactOptions {
     pub tension_tolerance: f64,
     /// Friction-cone tolerance, relative to `mu |tn|`.
     pub friction_tolerance: f64,
-    /// A slip node returns to stick when its slip has reversed by more than this, relative to
-    /// the mean A segment length.
+    /// A slip node returns to stick when its slip has reversed by more than this, and a node
+    /// closes in slip when it has slid more than this since the increment began, relative to
+    /// the increment's motion scale (the largest motion of a contact dof in this increment or
+    /// any converged one): scaling every load scales the threshold with the slips.
     pub slip_tolerance: f64,
     /// Distance within which B segments are paired with an A segment, relative to the mean A
     /// segment length; during an increment under finite kinematics the search reaches at least
@@ -1176,7 +1178,7 @@ impl ContactAnalysis {
         let xg = self.geometry_positions(&x);
         for (p, surface) in surfaces.iter().enumerate() {
             let mu = self.pairs[p].friction;
-            let h = self.mean_segment(p, xg);
+            let slip_tolerance = self.options.slip_tolerance * self.motion_scale(p, xg, uc, startc);
             let reach = self.search_reach(p, xg, uc, startc);
             // penetration is judged against the increment's own displacement scale
             let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
@@ -1192,7 +1194,7 @@ impl ContactAnalysis {
                 let slip = slip_since_start(node);
                 if mu == 0.0 {
                     NodeState::Slip { sign: 1 }
-                } else if slip.abs() > self.options.slip_tolerance * h {
+                } else if slip.abs() > slip_tolerance {
                     NodeState::Slip {
                         sign: if slip > 0.0 { 1 } else { -1 },
                     }
@@ -1228,8 +1230,7 @@ impl ContactAnalysis {
                     }
                     NodeState::Slip { sign } if mu > 0.0 => {
                         if set.may_stick((p, k))
-                            && f64::from(sign) * slip_since_start(node)
-                                < -self.options.slip_tolerance * h
+                            && f64::from(sign) * slip_since_start(node) < -slip_tolerance
                         {
                             new[p][k] = NodeState::Stick;
                         }

@@ -432,16 +432,23 @@ fn balance(layout: &Layout, leaves: &mut BTreeSet<Cell>) -> HashSet<Key> {
     }
 }
 
-/// Number the nodes, emit the elements and boundary sets, straighten the transition edges.
-fn build<P>(layout: &Layout, leaves: &BTreeSet<Cell>, corners: &HashSet<Key>, place: P) -> Mesh
-where
-    P: Fn(usize, [u64; 2]) -> [f64; 2],
-{
+/// The leaves in the order their elements are emitted: by patch, then row by row (lower-left
+/// corner's `y`, then `x`), so node and element numbers grow across each patch.
+fn emission_order(leaves: &BTreeSet<Cell>) -> Vec<&Cell> {
     let mut order: Vec<&Cell> = leaves.iter().collect();
     order.sort_by_key(|c| {
         let x = c.corners()[0];
         (c.patch, x[1], x[0])
     });
+    order
+}
+
+/// Number the nodes, emit the elements and boundary sets, straighten the transition edges.
+fn build<P>(layout: &Layout, leaves: &BTreeSet<Cell>, corners: &HashSet<Key>, place: P) -> Mesh
+where
+    P: Fn(usize, [u64; 2]) -> [f64; 2],
+{
+    let order = emission_order(leaves);
     let mut mesh = Mesh::new();
     let mut ids: HashMap<Key, usize> = HashMap::new();
     let mut node = |mesh: &mut Mesh, p: usize, x: [u64; 2]| {
@@ -494,11 +501,7 @@ fn build_quads<P>(
 where
     P: Fn(usize, [u64; 2]) -> [f64; 2],
 {
-    let mut order: Vec<&Cell> = leaves.iter().collect();
-    order.sort_by_key(|c| {
-        let x = c.corners()[0];
-        (c.patch, x[1], x[0])
-    });
+    let order = emission_order(leaves);
     let mut mesh = Mesh::new();
     let mut ids: HashMap<Key, usize> = HashMap::new();
     let mut sides: BTreeMap<String, Vec<[usize; 2]>> = BTreeMap::new();

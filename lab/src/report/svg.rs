@@ -8,8 +8,9 @@
 //! increment) to red (last).
 
 use super::{ReportError, Result, write_file};
-use crate::examples::{Example, Increment, Phase, Run};
+use crate::examples::{ClosedForm, Example, Increment, NodeRow, Phase, Run};
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -114,46 +115,21 @@ fn pressure_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, run: &Run) -> Plot<
         }
     }
     let y1 = 1.15 * y1.max(1e-12);
-    let mut chart = ChartBuilder::on(area)
-        .caption(
-            format!("{}: pressure (lines Hertz, dots FE)", run.label),
-            (FONT, 14),
-        )
-        .margin(8)
-        .x_label_area_size(36)
-        .y_label_area_size(52)
-        .build_cartesian_2d(range.0..range.1, 0.0..y1)?;
-    chart
-        .configure_mesh()
-        .x_desc("x / a")
-        .y_desc("p / p0")
-        .label_style((FONT, 12))
-        .draw()?;
-    let n = run.increments.len();
-    for (k, inc) in run.increments.iter().enumerate() {
-        let c = colour(k, n);
-        let cf = inc.closed_form;
-        chart
-            .draw_series(LineSeries::new(
-                samples(range, a).map(|x| (x / a, cf.pressure(x) / p0)),
-                c.stroke_width(1),
-            ))?
-            .label(label(inc, a))
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2)));
-        chart.draw_series(
-            inc.nodes
-                .iter()
-                .filter(|p| (range.0..=range.1).contains(&(p.x / a)))
-                .map(|p| Circle::new((p.x / a, p.p / p0), 2, c.filled())),
-        )?;
-    }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.4))
-        .label_font((FONT, 10))
-        .draw()?;
+    let mut chart = panel(
+        area,
+        format!("{}: pressure (lines Hertz, dots FE)", run.label),
+        range,
+        0.0..y1,
+        "p / p0",
+    )?;
+    draw_increments(
+        &mut chart,
+        run,
+        |cf, x| cf.pressure(x),
+        |p| p.p,
+        |inc| label(inc, a),
+    )?;
+    draw_legend(&mut chart)?;
     Ok(())
 }
 
@@ -176,24 +152,16 @@ fn shear_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, run: &Run) -> Plot<()>
         }
     }
     let span = (y1 - y0).max(1e-12);
-    let mut chart = ChartBuilder::on(area)
-        .caption(
-            format!(
-                "{}: shear (lines Cattaneo-Mindlin / mu p, dots FE)",
-                run.label
-            ),
-            (FONT, 14),
-        )
-        .margin(8)
-        .x_label_area_size(36)
-        .y_label_area_size(52)
-        .build_cartesian_2d(range.0..range.1, (y0 - 0.05 * span)..(y1 + 0.2 * span))?;
-    chart
-        .configure_mesh()
-        .x_desc("x / a")
-        .y_desc("q / p0")
-        .label_style((FONT, 12))
-        .draw()?;
+    let mut chart = panel(
+        area,
+        format!(
+            "{}: shear (lines Cattaneo-Mindlin / mu p, dots FE)",
+            run.label
+        ),
+        range,
+        (y0 - 0.05 * span)..(y1 + 0.2 * span),
+        "q / p0",
+    )?;
     if let Some(last) = run.increments.last().filter(|_| mu > 0.0) {
         let cf = last.closed_form;
         chart
@@ -206,28 +174,78 @@ fn shear_panel(area: &DrawingArea<SVGBackend<'_>, Shift>, run: &Run) -> Plot<()>
             .label(format!("mu p (slip bound), increment {}", last.number))
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], BLACK.mix(0.5)));
     }
+    draw_increments(
+        &mut chart,
+        run,
+        |cf, x| cf.shear(x),
+        |p| p.q,
+        |inc| match inc.q_over_mu_p {
+            Some(r) => format!("{}, Q/muP {r:.2}", label(inc, a)),
+            None => label(inc, a),
+        },
+    )?;
+    draw_legend(&mut chart)?;
+    Ok(())
+}
+
+/// An empty panel: caption, axes over `range` (in `a`) and `y`, mesh and labels.
+fn panel<'a, 'b>(
+    area: &'a DrawingArea<SVGBackend<'b>, Shift>,
+    caption: String,
+    range: (f64, f64),
+    y: std::ops::Range<f64>,
+    y_desc: &str,
+) -> Plot<Chart<'a, 'b>> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, (FONT, 14))
+        .margin(8)
+        .x_label_area_size(36)
+        .y_label_area_size(52)
+        .build_cartesian_2d(range.0..range.1, y)?;
+    chart
+        .configure_mesh()
+        .x_desc("x / a")
+        .y_desc(y_desc)
+        .label_style((FONT, 12))
+        .draw()?;
+    Ok(chart)
+}
+
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// Per increment of `run`, in its colour: the closed form `closed(cf, x)` as a line (labelled
+/// `name(increment)`) and the nodal values `value(node)` as dots, both divided by `p0`.
+fn draw_increments(
+    chart: &mut Chart<'_, '_>,
+    run: &Run,
+    closed: impl Fn(&ClosedForm, f64) -> f64,
+    value: impl Fn(&NodeRow) -> f64,
+    name: impl Fn(&Increment) -> String,
+) -> Plot<()> {
+    let (a, p0, range) = scales(run);
     let n = run.increments.len();
     for (k, inc) in run.increments.iter().enumerate() {
         let c = colour(k, n);
         let cf = inc.closed_form;
-        let mut name = label(inc, a);
-        if let Some(r) = inc.q_over_mu_p {
-            name += &format!(", Q/muP {r:.2}");
-        }
         chart
             .draw_series(LineSeries::new(
-                samples(range, a).map(|x| (x / a, cf.shear(x) / p0)),
+                samples(range, a).map(|x| (x / a, closed(&cf, x) / p0)),
                 c.stroke_width(1),
             ))?
-            .label(name)
+            .label(name(inc))
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2)));
         chart.draw_series(
             inc.nodes
                 .iter()
                 .filter(|p| (range.0..=range.1).contains(&(p.x / a)))
-                .map(|p| Circle::new((p.x / a, p.q / p0), 2, c.filled())),
+                .map(|p| Circle::new((p.x / a, value(p) / p0), 2, c.filled())),
         )?;
     }
+    Ok(())
+}
+
+/// The legend box in the upper right corner.
+fn draw_legend<'a, 'b: 'a>(chart: &mut Chart<'a, 'b>) -> Plot<()> {
     chart
         .configure_series_labels()
         .position(SeriesLabelPosition::UpperRight)

@@ -75,21 +75,33 @@ pub(super) fn norm2(v: &[f64]) -> f64 {
 }
 
 impl ContactAnalysis {
-    /// The length against which gaps of pair `p` are judged: the largest motion of a contact
-    /// dof in this increment or in any converged one, bounded by the mean A segment length `h`
-    /// (and by `1e-12 h` below), so that tiny loads still close the contact, the judgement does
-    /// not depend on units, and a repeated increment accepts the gaps its predecessors accepted
-    /// (judged against its own vanishing motion, a node left open a hair inside the tolerance
-    /// would close and reopen).
+    /// The length against which gaps of pair `p` are judged: the
+    /// [`motion_scale`](Self::motion_scale) bounded above by the mean A segment length `h`, so
+    /// that tiny loads still close the contact, the judgement does not depend on units, and a
+    /// repeated increment accepts the gaps its predecessors accepted (judged against its own
+    /// vanishing motion, a node left open a hair inside the tolerance would close and reopen).
     pub(super) fn gap_scale(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
+        let h = self.mean_segment(p, xg);
+        self.motion_scale(p, xg, uc, startc).min(h)
+    }
+
+    /// The length against which slips of pair `p` are judged: the largest motion of a contact
+    /// dof in this increment or in any converged one, bounded below by `1e-12 h`. Unbounded
+    /// above, so that a slip is told from round-off however far the bodies move, and
+    /// scaling every load by `s` scales the slips and their threshold alike.
+    pub(super) fn motion_scale(
+        &self,
+        p: usize,
+        xg: &[[f64; 2]],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> f64 {
         let h = self.mean_segment(p, xg);
         let motion = uc
             .iter()
             .zip(startc)
             .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-        motion
-            .max(self.largest_component_motion)
-            .clamp(1e-12 * h, h)
+        motion.max(self.largest_component_motion).max(1e-12 * h)
     }
 
     /// Nodes locked open after an open/closed cycle must not penetrate by more than
