@@ -1237,3 +1237,68 @@ pub fn skip_table(n: usize, repeats: usize) -> Result<Vec<SkipRow>> {
         },
     ])
 }
+
+/// One run of [`edge_sweep`]: the reference Hertz scene pressed so that the Hertz edge falls
+/// at a chosen place between two A nodes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EdgeRun {
+    /// Elements per target half-width.
+    pub n: usize,
+    /// Hertz half-width at the computed load, in element sizes at the contact.
+    pub half_width_over_h: f64,
+    /// L2 error of the multiplier pressure.
+    pub l2_error: f64,
+    /// L2 error of the best approximation on the same nodes
+    /// ([`crate::scene::best_approximation`]).
+    pub best_l2_error: f64,
+    /// Half-width error against Hertz (second moment, relative).
+    pub half_width_error: f64,
+    /// Peak error against Hertz (relative).
+    pub peak_error: f64,
+}
+
+impl EdgeRun {
+    /// Where the edge falls between the last node inside and the first outside, in `[0, 1)`.
+    pub fn edge_position(&self) -> f64 {
+        self.half_width_over_h - self.half_width_over_h.floor()
+    }
+}
+
+/// The L2 error against where the contact edge falls between two nodes: the reference scene
+/// (frictionless, small kinematics, `R / a = 64`, equal moduli) at `n` elements per half-width,
+/// pressed so that the Hertz half-width `a_H` lies at `positions` evenly spaced places of one
+/// element (`a_H / h = k + (j + 1/2) / positions`, the approach scaled by `(a_H / a_0)^2` from
+/// the calibrated one: `P` grows about linearly with the approach and `a_H` as `sqrt(P)`).
+pub fn edge_sweep(n: usize, positions: usize) -> Result<Vec<EdgeRun>> {
+    use crate::scene::DiskOnBlock;
+    use hycon::contact::iteration::ContactOptions;
+    let scene = DiskOnBlock {
+        elements_per_half_width: n,
+        ..Default::default()
+    }
+    .build()?;
+    let mut analysis = scene.analysis(ContactOptions::default())?;
+    let approach = scene.calibrated_approach(&mut analysis)?;
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    let h = scene.half_width / n as f64;
+    let mut press = |approach: f64| -> Result<EdgeRun> {
+        analysis.increment(&f, &scene.prescribed(approach, 0.0))?;
+        let c = scene.compare(&analysis)?;
+        Ok(EdgeRun {
+            n,
+            half_width_over_h: c.hertz.half_width / h,
+            l2_error: c.l2_error,
+            best_l2_error: c.best_l2_error,
+            half_width_error: c.half_width / c.hertz.half_width - 1.0,
+            peak_error: c.peak / c.hertz.peak - 1.0,
+        })
+    };
+    let first = press(approach)?;
+    let k = first.half_width_over_h.floor();
+    (0..positions)
+        .map(|j| {
+            let target = k + (j as f64 + 0.5) / positions as f64;
+            press(approach * (target / first.half_width_over_h).powi(2))
+        })
+        .collect()
+}

@@ -185,6 +185,17 @@ enum Bench {
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
         n: Vec<usize>,
     },
+    /// The L2 error of the contact pressure against where the Hertz edge falls between two
+    /// nodes (frictionless reference scene, small kinematics): the method and the best
+    /// approximation on the same nodes, at evenly spaced edge positions within one element.
+    Edge {
+        /// Elements per half-width, comma separated (powers of two).
+        #[arg(long, value_delimiter = ',', default_values_t = [16, 32, 64, 128])]
+        n: Vec<usize>,
+        /// Edge positions per element.
+        #[arg(long, default_value_t = 8)]
+        positions: usize,
+    },
     /// What skipping unneeded work saves, on the reference Hertz scene (frictionless, a = R/64,
     /// calibration + 3 increments): each figure the fastest of --repeats runs.
     Skip {
@@ -538,6 +549,44 @@ fn beam(
     Ok(())
 }
 
+/// `bench edge`: a row per run and a summary per n.
+fn edge(ns: &[usize], positions: usize) -> AnyResult {
+    println!(
+        "{:>4} {:>8} {:>5} {:>8} {:>8} {:>6} {:>8} {:>8}",
+        "n", "a_H/h", "edge", "L2 %", "best %", "ratio", "a %", "p0 %"
+    );
+    for &n in ns {
+        let runs = hycon_lab::bench::edge_sweep(n, positions)?;
+        for r in &runs {
+            println!(
+                "{:>4} {:>8.3} {:>5.2} {:>8.4} {:>8.4} {:>6.2} {:>+8.4} {:>+8.4}",
+                r.n,
+                r.half_width_over_h,
+                r.edge_position(),
+                100.0 * r.l2_error,
+                100.0 * r.best_l2_error,
+                r.l2_error / r.best_l2_error,
+                100.0 * r.half_width_error,
+                100.0 * r.peak_error
+            );
+        }
+        let stats = |f: &dyn Fn(&hycon_lab::bench::EdgeRun) -> f64| {
+            let v: Vec<f64> = runs.iter().map(f).collect();
+            let mean = v.iter().sum::<f64>() / v.len() as f64;
+            let (lo, hi) = v
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(l, h), x| (l.min(*x), h.max(*x)));
+            (mean, lo, hi)
+        };
+        let (m, lo, hi) = stats(&|r| 100.0 * r.l2_error);
+        let (bm, blo, bhi) = stats(&|r| 100.0 * r.best_l2_error);
+        println!(
+            "n = {n}: L2 mean {m:.3}% (min {lo:.3}, max {hi:.3}); best approximation mean {bm:.3}% (min {blo:.3}, max {bhi:.3})"
+        );
+    }
+    Ok(())
+}
+
 fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
     let out = out.unwrap_or(Path::new("docs/bench"));
     match what {
@@ -620,6 +669,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             }
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,
+        Bench::Edge { n, positions } => edge(&n, positions)?,
         Bench::Contact { n } => {
             println!(
                 "{:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",
