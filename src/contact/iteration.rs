@@ -57,6 +57,7 @@
 
 use super::bodies::{Bodies, HostSystem};
 use super::facing;
+use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
 use crate::error::{ContactError, Error, Result};
@@ -139,14 +140,17 @@ impl ContactPair {
     }
 
     fn check_friction(&self) -> Result<()> {
-        if self.friction.is_finite() && self.friction >= 0.0 {
-            Ok(())
-        } else {
-            Err(Error::InvalidInput(format!(
-                "friction = {} must be finite and >= 0",
-                self.friction
-            )))
-        }
+        self.friction_law().map(drop)
+    }
+
+    /// The friction law between the pair's surfaces: Coulomb with coefficient
+    /// [`friction`](Self::friction). (A new law is a type implementing [`FrictionLaw`], chosen
+    /// here.)
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a bad coefficient.
+    pub fn friction_law(&self) -> Result<Box<dyn FrictionLaw>> {
+        Ok(Box::new(Coulomb::new(self.friction)?))
     }
 
     fn check_disjoint(&self) -> Result<()> {
@@ -488,6 +492,8 @@ pub struct ContactAnalysis {
     bodies: Bodies,
     /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
     pairs: Vec<ContactPair>,
+    /// The friction law of each pair: all the iteration knows of its friction.
+    laws: Vec<Box<dyn FrictionLaw>>,
     options: ContactOptions,
     /// Global dofs of the contact nodes (A and B of every pair), sorted.
     dofs: Vec<usize>,
@@ -619,6 +625,10 @@ impl ContactAnalysis {
         for (i, pair) in pairs.iter().enumerate() {
             check_facing(pair, &bodies, options.search_distance).map_err(|e| in_pair(i, e))?;
         }
+        let laws = pairs
+            .iter()
+            .map(ContactPair::friction_law)
+            .collect::<Result<_>>()?;
         let nodes = pairs
             .iter()
             .map(|p| {
@@ -644,6 +654,7 @@ impl ContactAnalysis {
             loads: Vec::new(),
             bodies,
             pairs,
+            laws,
             options,
             flexibility,
             dofs,
@@ -973,7 +984,7 @@ impl ContactAnalysis {
             }
             finite(&uc_new, number, iteration)?;
             self.update_geometry(&mut surfaces, &uc_new, &startc)?;
-            let tractions = system.tractions(&tau, states, &self.pairs);
+            let tractions = system.tractions(&tau, states, &self.laws);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, &startc)?;
             let changes = set.changes(&proposed);
             let r = change_ratio(&uc_new, &uc, &startc, resolution, self.options.tolerance);
@@ -1177,7 +1188,7 @@ impl ContactAnalysis {
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
         for (p, surface) in surfaces.iter().enumerate() {
-            let mu = self.pairs[p].friction;
+            let law = &*self.laws[p];
             let slip_tolerance = self.options.slip_tolerance * self.motion_scale(p, xg, uc, startc);
             let reach = self.search_reach(p, xg, uc, startc);
             // penetration is judged against the increment's own displacement scale
@@ -1192,7 +1203,7 @@ impl ContactAnalysis {
             // closing without relative motion sticks
             let closed = |node: &geometry::ContactNode| {
                 let slip = slip_since_start(node);
-                if mu == 0.0 {
+                if law.is_frictionless() {
                     NodeState::Slip { sign: 1 }
                 } else if slip.abs() > slip_tolerance {
                     NodeState::Slip {
@@ -1222,13 +1233,14 @@ impl ContactAnalysis {
                         new[p][k] = NodeState::Open;
                     }
                     NodeState::Stick => {
-                        if ts.abs() > mu * tn.abs() * (1.0 + self.options.friction_tolerance) {
+                        if ts.abs() > law.stick_limit(tn) * (1.0 + self.options.friction_tolerance)
+                        {
                             new[p][k] = NodeState::Slip {
                                 sign: if ts > 0.0 { -1 } else { 1 },
                             };
                         }
                     }
-                    NodeState::Slip { sign } if mu > 0.0 => {
+                    NodeState::Slip { sign } if !law.is_frictionless() => {
                         if set.may_stick((p, k))
                             && f64::from(sign) * slip_since_start(node) < -slip_tolerance
                         {

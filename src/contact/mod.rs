@@ -5,10 +5,12 @@
 //!   the mortar matrices `F^A` and `F^B`, the weighted gap `R_C`, coverage and the coupling rows.
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
+//! * [`friction`]: the friction laws the iteration asks about (Coulomb).
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
 //!   its results.
 
 pub mod bodies;
 pub mod facing;
+pub mod friction;
 pub mod geometry;
 pub mod iteration;

@@ -173,13 +173,13 @@ impl SmallSystem {
         f
     }
 
-    /// `(tn, ts)` of every A node from the unknowns (zero at open nodes; `ts = mu sign tn` at
-    /// slip nodes).
+    /// `(tn, ts)` of every A node from the unknowns (zero at open nodes; `ts = c tn` at slip
+    /// nodes, `c` the pair's [`FrictionLaw::slip_coefficient`]).
     pub(super) fn tractions(
         &self,
         tau: &[f64],
         states: &[Vec<NodeState>],
-        pairs: &[ContactPair],
+        laws: &[Box<dyn FrictionLaw>],
     ) -> Vec<Vec<(f64, f64)>> {
         let mut t: Vec<Vec<(f64, f64)>> =
             states.iter().map(|s| vec![(0.0, 0.0); s.len()]).collect();
@@ -192,7 +192,7 @@ impl SmallSystem {
         for (p, s) in states.iter().enumerate() {
             for (k, state) in s.iter().enumerate() {
                 if let NodeState::Slip { sign } = state {
-                    t[p][k].1 = pairs[p].friction * f64::from(*sign) * t[p][k].0;
+                    t[p][k].1 = laws[p].slip_coefficient(*sign) * t[p][k].0;
                 }
             }
         }
@@ -229,7 +229,7 @@ impl ContactAnalysis {
             b: Vec::new(),
         };
         for (p, surface) in surfaces.iter().enumerate() {
-            let mu = self.pairs[p].friction;
+            let law = &*self.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
                 let state = states[p][k];
                 if state == NodeState::Open {
@@ -240,9 +240,9 @@ impl ContactAnalysis {
                 let b = dot(&normal, uc) - rg;
                 let tangent = || self.directed(&node.coupling, node.tangent);
                 let col = match state {
-                    NodeState::Slip { sign } if mu > 0.0 => {
+                    NodeState::Slip { sign } if !law.is_frictionless() => {
                         let mut c = normal.clone();
-                        let w = mu * f64::from(sign);
+                        let w = law.slip_coefficient(sign);
                         c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
                         c
                     }
