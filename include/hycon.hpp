@@ -25,9 +25,10 @@
  *   exceptions are enabled the trampoline catches everything and reports a failure, which
  *   hycon turns into HYCON_ERROR_CALLBACK.
  *
- * Thread safety: as the C API's. One handle object (Model, Host, Contact) may be used by one
- * thread at a time and may move between threads; distinct handles share nothing and may be
- * used from different threads at once. The error message behind a Status is read from the
+ * Thread safety: as the C API's. A non-const member needs its object exclusively; the const
+ * queries of a Contact (displacement, node_results, records, ...) may run on one Contact from
+ * several threads at once. Objects may move between threads; distinct ones share nothing and
+ * may be used from different threads at once. The error message behind a Status is read from the
  * calling thread's last error right after the failing call. Callbacks (monitor, solver) run on
  * the thread that called into the Contact.
  *

@@ -188,7 +188,7 @@ fn declared_names(header: &str) -> Vec<String> {
                 .map_or(0, |j| j + 1);
             names.push(head[start..].to_string());
         } else if s.starts_with("typedef") {
-            let head = s.trim_end_matches(|c: char| c == ' ' || c == '{');
+            let head = s.trim_end_matches([' ', '{']);
             let start = head
                 .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
                 .map_or(0, |j| j + 1);

@@ -242,7 +242,8 @@ impl From<ShapeError> for Fail {
 }
 
 thread_local! {
-    /// Message of the last failed call on this thread (empty after a successful one).
+    /// Message of the last status-returning call on this thread: its failure, or empty after a
+    /// success (see `hycon_last_error_message`).
     static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
     /// How many [`boundary`] frames are active on this thread (panics inside are silent).
     static BOUNDARY_DEPTH: Cell<u32> = const { Cell::new(0) };
