@@ -148,8 +148,8 @@ typedef struct Snapshot {
 static void snapshot(HyconContact *c, const DiskMesh *m, const long *eq, const double *qp,
                      double *field, size_t n_field, Snapshot *s) {
     size_t k;
-    CHECK(hycon_contact_node_results(c, 0, s->nodes, m->n_a));
-    CHECK(hycon_contact_displacement(c, field, n_field));
+    CHECK(hycon_contact_node_results(c, 0, s->nodes, m->n_a, NULL));
+    CHECK(hycon_contact_displacement(c, field, n_field, NULL));
     for (k = 0; k < 2 * m->n_nodes; ++k)
         s->u[k] = eq == NULL ? field[k] : eq[k] >= 0 ? field[eq[k]] : qp[k];
 }
@@ -220,6 +220,9 @@ int main(int argc, char **argv) {
     HyconHost *host_cb = NULL, *host_csr = NULL;
     HyconContact *c_cb = NULL, *c_csr = NULL, *c_model = NULL;
     HyconContactOptions options;
+    HyconElementBlock q4_elements;
+    HyconHostNodes a_nodes, b_nodes;
+    HyconPolyline a_line, b_line;
     Snapshot s_cb, s_csr, s_model;
     long *eq;
     int64_t *a_eq, *b_eq;
@@ -348,10 +351,28 @@ int main(int argc, char **argv) {
     }
     CHECK(hycon_contact_options_default(&options));
 
+    /* the views of the mesh and of the contact pair, shared by the three paths */
+    q4_elements.offsets = m.offsets;
+    q4_elements.nodes = m.nodes;
+    q4_elements.n_elements = m.n_elements;
+    q4_elements.materials = m.materials;
+    q4_elements.kind = HYCON_ELEMENT_Q4;
+    a_nodes.ids = m.a;
+    a_nodes.coords = a_xy;
+    a_nodes.equations = a_eq;
+    a_nodes.n = m.n_a;
+    b_nodes.ids = m.b;
+    b_nodes.coords = b_xy;
+    b_nodes.equations = b_eq;
+    b_nodes.n = m.n_b;
+    a_line.nodes = m.a;
+    a_line.n = m.n_a;
+    b_line.nodes = m.b;
+    b_line.n = m.n_b;
+
     /* path 1: the solve callback (CHOLMOD) */
     CHECK(hycon_host_new(&host_cb, n_eq));
-    CHECK(hycon_host_add_pair(host_cb, m.a, a_xy, a_eq, m.n_a, m.b, b_xy, b_eq, m.n_b, 0.0,
-                              NULL));
+    CHECK(hycon_host_add_pair(host_cb, &a_nodes, &b_nodes, 0.0, NULL));
     CHECK(hycon_host_set_solver(host_cb, cholmod_solve_cb, chol));
     CHECK(hycon_contact_new_host(&c_cb, host_cb, &options));
     hycon_host_free(host_cb); /* the analysis is independent of the description */
@@ -363,8 +384,7 @@ int main(int argc, char **argv) {
     for (k = 0; k <= n_eq; ++k) row_ptr[k] = (size_t)((int *)kff->p)[k];
     for (k = 0; k < row_ptr[n_eq]; ++k) columns[k] = (size_t)((int *)kff->i)[k];
     CHECK(hycon_host_new(&host_csr, n_eq));
-    CHECK(hycon_host_add_pair(host_csr, m.a, a_xy, a_eq, m.n_a, m.b, b_xy, b_eq, m.n_b, 0.0,
-                              NULL));
+    CHECK(hycon_host_add_pair(host_csr, &a_nodes, &b_nodes, 0.0, NULL));
     CHECK(hycon_host_set_csr(host_csr, row_ptr, columns, (const double *)kff->x,
                              HYCON_CSR_LOWER));
     { /* the host's elements (as hycon's Q4), so that hycon also gives the tractions from the
@@ -373,9 +393,8 @@ int main(int argc, char **argv) {
         int64_t *node_eq = xcalloc(2 * m.n_nodes, sizeof *node_eq);
         for (k = 0; k < m.n_nodes; ++k) ids[k] = k;
         for (k = 0; k < 2 * m.n_nodes; ++k) node_eq[k] = eq[k] < 0 ? HYCON_FIXED : eq[k];
-        CHECK(hycon_host_set_elements(host_csr, HYCON_ELEMENT_Q4, materials, 2, m.materials,
-                                      m.offsets, m.nodes, m.n_elements, ids, m.coords, node_eq,
-                                      m.n_nodes));
+        const HyconHostNodes table = {ids, m.coords, node_eq, m.n_nodes};
+        CHECK(hycon_host_set_elements(host_csr, &table, &q4_elements, materials, 2));
         free(ids);
         free(node_eq);
     }
@@ -385,14 +404,13 @@ int main(int argc, char **argv) {
     free(columns);
 
     /* path 3: the model API, HYCON_ELEMENT_Q4 on the same mesh */
-    CHECK(hycon_model_new(&model, m.coords, m.n_nodes, m.offsets, m.nodes, m.n_elements,
-                          m.materials, materials, 2, HYCON_ELEMENT_Q4));
+    CHECK(hycon_model_new(&model, m.coords, m.n_nodes, &q4_elements, materials, 2));
     CHECK(hycon_model_prescribe(model, m.bottom, m.n_bottom, HYCON_XY));
     CHECK(hycon_model_prescribe(model, m.top, m.n_top, HYCON_XY));
-    CHECK(hycon_model_add_pair(model, m.a, m.n_a, m.b, m.n_b, 0.0, NULL));
+    CHECK(hycon_model_add_pair(model, &a_line, &b_line, 0.0, NULL));
     CHECK(hycon_contact_new(&c_model, model, &options));
     hycon_model_free(model);
-    CHECK(hycon_contact_field_len(c_model, &n_model_field));
+    CHECK(hycon_contact_displacement(c_model, NULL, 0, &n_model_field)); /* the size query */
     if (n_model_field != 2 * m.n_nodes) {
         printf("wrong value: model field length %lu\n", (unsigned long)n_model_field);
         ++failures;
@@ -443,8 +461,8 @@ int main(int argc, char **argv) {
            * against the model API */
             double *ta = xcalloc(2 * m.n_a, sizeof *ta), *tb = xcalloc(2 * m.n_a, sizeof *tb);
             double peak = 0.0, diff = 0.0;
-            CHECK(hycon_contact_stress_tractions(c_csr, 0, ta, 2 * m.n_a));
-            CHECK(hycon_contact_stress_tractions(c_model, 0, tb, 2 * m.n_a));
+            CHECK(hycon_contact_stress_tractions(c_csr, 0, ta, 2 * m.n_a, NULL));
+            CHECK(hycon_contact_stress_tractions(c_model, 0, tb, 2 * m.n_a, NULL));
             for (k = 0; k < 2 * m.n_a; ++k) {
                 peak = fmax(peak, fabs(tb[k]));
                 diff = fmax(diff, fabs(ta[k] - tb[k]));
@@ -478,7 +496,7 @@ int main(int argc, char **argv) {
                 p[k] = -s_cb.nodes[k].tn;
             }
             fa = hertz_compare(x, p, m.n_a, load, radius, e_star);
-            CHECK(hycon_contact_b_node_results(c_cb, 0, bn, m.n_b));
+            CHECK(hycon_contact_b_node_results(c_cb, 0, bn, m.n_b, NULL));
             for (k = 0; k < m.n_b; ++k) {
                 x[k] = m.coords[2 * bn[k].node] + s_cb.u[2 * bn[k].node] - centre;
                 p[k] = bn[k].pressure;
@@ -501,7 +519,7 @@ int main(int argc, char **argv) {
         HyconNodeResult *before = xcalloc(m.n_a, sizeof *before);
         char message[256];
         HyconStatus status;
-        CHECK(hycon_contact_node_results(c_cb, 0, before, m.n_a));
+        CHECK(hycon_contact_node_results(c_cb, 0, before, m.n_a, NULL));
         /* a load that is not a combination of earlier ones (those hycon answers without a
          * solve): 10 % more approach and a small force at equation 0, in the block */
         for (k = 0; k < n_eq; ++k) rhs[k] = 1.1 * deltas[1] * rhs_unit[k];
@@ -511,7 +529,7 @@ int main(int argc, char **argv) {
         hycon_last_error_message(message, sizeof message);
         printf("a solve that fails (returns 4): %s, \"%s\"\n", hycon_status_name(status),
                message);
-        CHECK(hycon_contact_node_results(c_cb, 0, s_cb.nodes, m.n_a));
+        CHECK(hycon_contact_node_results(c_cb, 0, s_cb.nodes, m.n_a, NULL));
         if (status != HYCON_ERROR_CALLBACK ||
             memcmp(before, s_cb.nodes, m.n_a * sizeof *before) != 0) {
             printf("wrong value: a failing solve must give HYCON_ERROR_CALLBACK and keep the "

@@ -59,6 +59,14 @@ static bool status_is_in(HyconStatus got, HyconStatus want, const char *fn, cons
 /* as STATUS, and the message starts with the name of the function called */
 #define STATUS_FN(fn, args, want, part) status_is_in(fn args, (want), #fn, (part))
 
+/* The input views, built in place (C99 compound literals) so that a call reads like the
+ * argument list it stands for. */
+#define BLOCK(offsets, nodes, n_elements, materials, kind)                                     \
+    (&(HyconElementBlock){(offsets), (nodes), (n_elements), (materials), (kind)})
+#define LINE(nodes, n) (&(HyconPolyline){(nodes), (n)})
+#define HOST_NODES(ids, coords, equations, n)                                                  \
+    (&(HyconHostNodes){(ids), (coords), (equations), (n)})
+
 static const double sentinel = 12345.0;
 static const unsigned char sentinel_byte = 0xA5;
 
@@ -162,15 +170,14 @@ enum { HOLD_UPPER = 1, WITH_PAIR = 2, WITH_PLATE = 4 };
 /* A valid model (NULL on an unexpected failure, reported). */
 static HyconModel *make_model(int what) {
     HyconModel *m = NULL;
-    HyconStatus s = hycon_model_new(&m, coords, NN, offsets, conn, NE, NULL, &steel, 1,
-                                    HYCON_ELEMENT_HYBRID);
+    HyconStatus s = hycon_model_new(&m, coords, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1);
     if (s != HYCON_OK) goto fail;
     if ((s = hycon_model_prescribe(m, bottom, NBOTTOM, HYCON_XY)) != HYCON_OK) goto fail;
     if ((what & HOLD_UPPER) && (s = hycon_model_prescribe(m, top, NTOP, HYCON_XY)) != HYCON_OK)
         goto fail;
     if ((what & WITH_PLATE) && (s = hycon_model_set_plate(m, top, NTOP)) != HYCON_OK) goto fail;
     if ((what & WITH_PAIR) &&
-        (s = hycon_model_add_pair(m, pair_a, NA, pair_b, NB, FRICTION, NULL)) != HYCON_OK)
+        (s = hycon_model_add_pair(m, LINE(pair_a, NA), LINE(pair_b, NB), FRICTION, NULL)) != HYCON_OK)
         goto fail;
     return m;
 fail : {
@@ -321,7 +328,7 @@ static HyconHost *make_host(const Host *h) {
     int64_t a_eq[2 * NA], b_eq[2 * NB];
     host_pair_arrays(h, a_xy, a_eq, b_xy, b_eq);
     if (hycon_host_new(&d, h->n) != HYCON_OK) return NULL;
-    if (hycon_host_add_pair(d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, FRICTION, NULL) !=
+    if (hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), FRICTION, NULL) !=
         HYCON_OK) {
         hycon_host_free(d);
         return NULL;
@@ -391,13 +398,13 @@ typedef struct {
 static bool snapshot(HyconContact *c, State *s) {
     size_t n = 0;
     memset(s, 0, sizeof *s);
-    EXPECT(hycon_contact_field_len(c, &n) == HYCON_OK && n <= NDOF);
-    EXPECT(hycon_contact_node_results(c, 0, s->a, NA) == HYCON_OK);
-    EXPECT(hycon_contact_b_node_results(c, 0, s->b, NB) == HYCON_OK);
-    EXPECT(hycon_contact_displacement(c, s->u, n) == HYCON_OK);
-    EXPECT(hycon_contact_displacement_increment(c, s->du, n) == HYCON_OK); /* a new solve */
-    EXPECT(hycon_contact_forces(c, s->f, n) == HYCON_OK);
-    EXPECT(hycon_contact_record_count(c, &s->records) == HYCON_OK);
+    EXPECT(hycon_contact_displacement(c, NULL, 0, &n) == HYCON_OK && n <= NDOF);
+    EXPECT(hycon_contact_node_results(c, 0, s->a, NA, NULL) == HYCON_OK);
+    EXPECT(hycon_contact_b_node_results(c, 0, s->b, NB, NULL) == HYCON_OK);
+    EXPECT(hycon_contact_displacement(c, s->u, n, NULL) == HYCON_OK);
+    EXPECT(hycon_contact_displacement_increment(c, s->du, n, NULL) == HYCON_OK); /* a new solve */
+    EXPECT(hycon_contact_forces(c, s->f, n, NULL) == HYCON_OK);
+    EXPECT(hycon_contact_records(c, 0, NULL, 0, &s->records) == HYCON_OK);
     return true;
 }
 
@@ -466,30 +473,66 @@ static bool test_options_default(void) {
 /* ---------------------------------------------------------------------------------------- */
 /* Model API: hycon_model_new */
 
+/* NULL view structs: each is a required pointer named by its argument */
+static bool test_null_views(void) {
+    HyconModel *m = MARKER(HyconModel), *model = make_model(HOLD_UPPER);
+    HyconHost *d = make_host(&host);
+    double a_xy[2 * NA], b_xy[2 * NB];
+    int64_t a_eq[2 * NA], b_eq[2 * NB];
+    size_t index = 777;
+    bool ok = true;
+    EXPECT(model != NULL && d != NULL);
+    host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
+    ok = ok && STATUS_FN(hycon_model_new, (&m, coords, NN, NULL, &steel, 1),
+                         HYCON_ERROR_NULL_POINTER, "elements is NULL");
+    ok = ok && m == MARKER(HyconModel);
+    ok = ok && STATUS_FN(hycon_model_add_pair, (model, NULL, LINE(pair_b, NB), 0.1, &index),
+                         HYCON_ERROR_NULL_POINTER, "a is NULL");
+    ok = ok && STATUS_FN(hycon_model_add_pair, (model, LINE(pair_a, NA), NULL, 0.1, &index),
+                         HYCON_ERROR_NULL_POINTER, "b is NULL");
+    ok = ok && STATUS_FN(hycon_host_add_pair,
+                         (d, NULL, HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         HYCON_ERROR_NULL_POINTER, "a is NULL");
+    ok = ok && STATUS_FN(hycon_host_add_pair,
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), NULL, 0.1, &index),
+                         HYCON_ERROR_NULL_POINTER, "b is NULL");
+    /* a misaligned optional output is rejected like a required one, and nothing is added */
+    ok = ok && STATUS_FN(hycon_model_add_pair,
+                         (model, LINE(pair_a, NA), LINE(pair_b, NB), 0.1,
+                          (size_t *)(void *)((char *)&index + 1)),
+                         HYCON_ERROR_INVALID_ARGUMENT, "index is misaligned");
+    ok = ok && index == 777;
+    ok = ok && STATUS(hycon_model_add_pair(model, LINE(pair_a, NA), LINE(pair_b, NB), 0.1, &index),
+                      HYCON_OK, NULL) &&
+         index == 0; /* the failed call added no pair */
+    hycon_model_free(model);
+    hycon_host_free(d);
+    return ok;
+}
+
 static bool test_model_new_null_pointers(void) {
     HyconModel *m = MARKER(HyconModel);
     EXPECT(STATUS_FN(hycon_model_new,
-                     (NULL, coords, NN, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (NULL, coords, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_NULL_POINTER, "out is NULL"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, NULL, NN, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, NULL, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_NULL_POINTER, "coords is NULL"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, NULL, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
-                     HYCON_ERROR_NULL_POINTER, "element_offsets is NULL"));
+                     (&m, coords, NN, BLOCK(NULL, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
+                     HYCON_ERROR_NULL_POINTER, "elements.offsets is NULL"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, NULL, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
-                     HYCON_ERROR_NULL_POINTER, "element_nodes is NULL"));
+                     (&m, coords, NN, BLOCK(offsets, NULL, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
+                     HYCON_ERROR_NULL_POINTER, "elements.nodes is NULL"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, conn, NE, NULL, NULL, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), NULL, 1),
                      HYCON_ERROR_NULL_POINTER, "materials is NULL"));
     EXPECT(m == MARKER(HyconModel));
     /* element_materials NULL means material 0 everywhere; a given array is read */
     {
         size_t mat[NE];
         memset(mat, 0, sizeof mat);
-        EXPECT(STATUS_FN(hycon_model_new, (&m, coords, NN, offsets, conn, NE, mat, &steel, 1,
-                                           HYCON_ELEMENT_HYBRID),
+        EXPECT(STATUS_FN(hycon_model_new, (&m, coords, NN, BLOCK(offsets, conn, NE, mat, HYCON_ELEMENT_HYBRID), &steel, 1),
                          HYCON_OK, NULL));
         EXPECT(m != NULL && m != MARKER(HyconModel));
         hycon_model_free(m);
@@ -500,22 +543,21 @@ static bool test_model_new_null_pointers(void) {
 static bool test_model_new_zero_lengths(void) {
     HyconModel *m = MARKER(HyconModel);
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, 0, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, 0, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "needs nodes"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, conn, 0, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, conn, 0, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "elements and materials are needed"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, conn, NE, NULL, &steel, 0, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 0),
                      HYCON_ERROR_INVALID_ARGUMENT, "elements and materials are needed"));
     /* (NULL, 0) arrays are empty, which is the same error */
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, NULL, 0, NULL, NULL, 0, NULL, NULL, 0, HYCON_ELEMENT_HYBRID),
+                     (&m, NULL, 0, BLOCK(NULL, NULL, 0, NULL, HYCON_ELEMENT_HYBRID), NULL, 0),
                      HYCON_ERROR_INVALID_ARGUMENT, "needs nodes"));
     /* fewer nodes than the elements use: the ids beyond are unknown */
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN - 1, offsets, conn, NE, NULL, &steel, 1,
-                      HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN - 1, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "unknown node 23"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -527,12 +569,12 @@ static bool test_model_new_inconsistent_offsets(void) {
     memcpy(off, offsets, sizeof off);
     off[0] = 1; /* must start at 0 */
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, off, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
-                     HYCON_ERROR_INVALID_ARGUMENT, "element_offsets must start at 0"));
+                     (&m, coords, NN, BLOCK(off, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
+                     HYCON_ERROR_INVALID_ARGUMENT, "elements.offsets must start at 0"));
     memcpy(off, offsets, sizeof off);
     off[3] = off[2] - 1; /* decreasing */
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, off, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(off, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "nondecreasing"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -545,16 +587,14 @@ static bool test_model_new_element_node_count(void) {
     const double xy5[10] = {0, 0, 1, 0, 2, 0, 2, 1, 0, 1};
     const size_t off5[2] = {0, 5}, nodes5[5] = {0, 1, 2, 3, 4};
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, xy5, 5, off5, nodes5, 1, NULL, &steel, 1, HYCON_ELEMENT_Q4),
+                     (&m, xy5, 5, BLOCK(off5, nodes5, 1, NULL, HYCON_ELEMENT_Q4), &steel, 1),
                      HYCON_ERROR_BAD_ELEMENT, "element 0: 5 nodes"));
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, xy5, 5, off5, nodes5, 1, NULL, &steel, 1,
-                      HYCON_ELEMENT_PIAN_SUMIHARA),
+                     (&m, xy5, 5, BLOCK(off5, nodes5, 1, NULL, HYCON_ELEMENT_PIAN_SUMIHARA), &steel, 1),
                      HYCON_ERROR_BAD_ELEMENT, "element 0: 5 nodes"));
     EXPECT(m == MARKER(HyconModel));
     /* the hybrid element takes it */
-    EXPECT(STATUS(hycon_model_new(&m, xy5, 5, off5, nodes5, 1, NULL, &steel, 1,
-                                  HYCON_ELEMENT_HYBRID),
+    EXPECT(STATUS(hycon_model_new(&m, xy5, 5, BLOCK(off5, nodes5, 1, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                   HYCON_OK, NULL));
     hycon_model_free(m);
     return true;
@@ -569,10 +609,9 @@ static bool test_model_new_three_node_element(void) {
     memcpy(off, offsets, sizeof off);
     off[3] = off[2] + 3;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, off, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(off, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_BAD_ELEMENT, "element 2"));
-    EXPECT(STATUS(hycon_model_new(&m, coords, NN, off, conn, NE, NULL, &steel, 1,
-                                  HYCON_ELEMENT_HYBRID),
+    EXPECT(STATUS(hycon_model_new(&m, coords, NN, BLOCK(off, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                   HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -586,7 +625,7 @@ static bool test_model_new_repeated_node_in_element(void) {
     memcpy(c, conn, sizeof c);
     c[4 * 6 + 2] = c[4 * 6 + 1];
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, c, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, c, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_BAD_ELEMENT, "element 6"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -598,12 +637,12 @@ static bool test_model_new_non_finite_coordinates(void) {
     memcpy(c, coords, sizeof c);
     c[7] = NAN;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, c, NN, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, c, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "coords[7]"));
     c[7] = coords[7];
     c[40] = -INFINITY;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, c, NN, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, c, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "not finite"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -615,10 +654,9 @@ static bool test_model_new_unknown_node(void) {
     memcpy(c, conn, sizeof c);
     c[4 * 5 + 2] = 99;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, c, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, c, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "unknown node 99"));
-    EXPECT(STATUS(hycon_model_new(&m, coords, NN, offsets, c, NE, NULL, &steel, 1,
-                                  HYCON_ELEMENT_HYBRID),
+    EXPECT(STATUS(hycon_model_new(&m, coords, NN, BLOCK(offsets, c, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                   HYCON_ERROR_INVALID_ARGUMENT, "element 5"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -634,9 +672,9 @@ static bool test_model_new_inverted_element(void) {
     c[4 * 3 + 3] = conn[4 * 3 + 1];
     for (kind = HYCON_ELEMENT_HYBRID; kind <= HYCON_ELEMENT_Q4; ++kind) {
         EXPECT(STATUS_FN(hycon_model_new,
-                         (&m, coords, NN, offsets, c, NE, NULL, &steel, 1, kind),
+                         (&m, coords, NN, BLOCK(offsets, c, NE, NULL, kind), &steel, 1),
                          HYCON_ERROR_BAD_ELEMENT, "element 3"));
-        EXPECT(STATUS(hycon_model_new(&m, coords, NN, offsets, c, NE, NULL, &steel, 1, kind),
+        EXPECT(STATUS(hycon_model_new(&m, coords, NN, BLOCK(offsets, c, NE, NULL, kind), &steel, 1),
                       HYCON_ERROR_BAD_ELEMENT, "inverted"));
     }
     EXPECT(m == MARKER(HyconModel));
@@ -652,17 +690,16 @@ static bool test_model_new_degenerate_element(void) {
     xy[2 * corner] = coords[2 * below];
     xy[2 * corner + 1] = coords[2 * below + 1];
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, xy, NN, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, xy, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_BAD_ELEMENT, "element 11"));
-    EXPECT(STATUS(hycon_model_new(&m, xy, NN, offsets, conn, NE, NULL, &steel, 1,
-                                  HYCON_ELEMENT_HYBRID),
+    EXPECT(STATUS(hycon_model_new(&m, xy, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                   HYCON_ERROR_BAD_ELEMENT, "degenerate"));
     /* a non-convex element 0: its top right corner pulled inside */
     memcpy(xy, coords, sizeof xy);
     xy[2 * lower_node(1, 1)] = 0.2;
     xy[2 * lower_node(1, 1) + 1] = 0.1;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, xy, NN, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, xy, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_BAD_ELEMENT, "element 0"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -672,23 +709,23 @@ static bool test_model_new_unknown_kind_and_bad_material(void) {
     HyconModel *m = MARKER(HyconModel);
     HyconMaterial bad = steel;
     size_t mat[NE];
-    EXPECT(STATUS_FN(hycon_model_new, (&m, coords, NN, offsets, conn, NE, NULL, &steel, 1, 0),
+    EXPECT(STATUS_FN(hycon_model_new, (&m, coords, NN, BLOCK(offsets, conn, NE, NULL, 0), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 0"));
-    EXPECT(STATUS_FN(hycon_model_new, (&m, coords, NN, offsets, conn, NE, NULL, &steel, 1, 4),
+    EXPECT(STATUS_FN(hycon_model_new, (&m, coords, NN, BLOCK(offsets, conn, NE, NULL, 4), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 4"));
     bad.youngs = 0.0;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, conn, NE, NULL, &bad, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &bad, 1),
                      HYCON_ERROR_INVALID_MATERIAL, "material"));
     bad = steel;
     bad.analysis = 0;
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, conn, NE, NULL, &bad, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &bad, 1),
                      HYCON_ERROR_INVALID_MATERIAL, "unknown analysis 0"));
     memset(mat, 0, sizeof mat);
     mat[9] = 1; /* only material 0 exists */
     EXPECT(STATUS_FN(hycon_model_new,
-                     (&m, coords, NN, offsets, conn, NE, mat, &steel, 1, HYCON_ELEMENT_HYBRID),
+                     (&m, coords, NN, BLOCK(offsets, conn, NE, mat, HYCON_ELEMENT_HYBRID), &steel, 1),
                      HYCON_ERROR_INVALID_ARGUMENT, "element 9 uses material 1"));
     EXPECT(m == MARKER(HyconModel));
     return true;
@@ -765,16 +802,16 @@ static bool test_add_pair_null_pointers(void) {
     size_t index = 777;
     bool ok = true;
     EXPECT(m != NULL);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (NULL, pair_a, NA, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (NULL, LINE(pair_a, NA), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_NULL_POINTER, "model is NULL");
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, NULL, NA, pair_b, NB, 0.1, &index),
-                         HYCON_ERROR_NULL_POINTER, "a is NULL");
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, pair_a, NA, NULL, NB, 0.1, &index),
-                         HYCON_ERROR_NULL_POINTER, "b is NULL");
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(NULL, NA), LINE(pair_b, NB), 0.1, &index),
+                         HYCON_ERROR_NULL_POINTER, "a.nodes is NULL");
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(pair_a, NA), LINE(NULL, NB), 0.1, &index),
+                         HYCON_ERROR_NULL_POINTER, "b.nodes is NULL");
     ok = ok && index == 777;
     /* index NULL is allowed; the next pair gets index 1 */
-    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, pair_b, NB, 0.1, NULL), HYCON_OK, NULL);
-    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, pair_b, NB, 0.1, &index), HYCON_OK,
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(pair_a, NA), LINE(pair_b, NB), 0.1, NULL), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(pair_a, NA), LINE(pair_b, NB), 0.1, &index), HYCON_OK,
                       NULL) &&
          index == 1;
     hycon_model_free(m);
@@ -786,13 +823,13 @@ static bool test_add_pair_lengths(void) {
     size_t index = 777;
     bool ok = true;
     EXPECT(m != NULL);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, NULL, 0, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(NULL, 0), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "A polyline has 0 node(s)");
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, pair_a, NA, pair_b, 1, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(pair_a, NA), LINE(pair_b, 1), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "B polyline has 1 node(s)");
     ok = ok && index == 777;
     /* no pair was added by the failed calls */
-    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, pair_b, NB, 0.1, &index), HYCON_OK,
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(pair_a, NA), LINE(pair_b, NB), 0.1, &index), HYCON_OK,
                       NULL) &&
          index == 0;
     hycon_model_free(m);
@@ -811,21 +848,21 @@ static bool test_add_pair_not_a_chain(void) {
     bool ok = true;
     EXPECT(m != NULL);
     sprintf(part, "node %u appears twice", (unsigned)pair_a[1]);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, repeated, 4, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(repeated, 4), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
-    ok = ok && STATUS(hycon_model_add_pair(m, repeated, 4, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(repeated, 4), LINE(pair_b, NB), 0.1, &index),
                       HYCON_ERROR_INVALID_ARGUMENT, "A polyline is not a chain");
     sprintf(part, "%u -> %u is not an edge", (unsigned)pair_a[0], (unsigned)pair_a[2]);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, skipping, 2, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(skipping, 2), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     /* the right edges in the wrong order: the body would be on the right */
     sprintf(part, "%u -> %u is not an edge", (unsigned)pair_a[2], (unsigned)pair_a[1]);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, reversed, NA, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(reversed, NA), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
-    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, reversed, NA, 0.1, &index),
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(pair_a, NA), LINE(reversed, NA), 0.1, &index),
                       HYCON_ERROR_INVALID_ARGUMENT, "B polyline is not a chain");
     sprintf(part, "node %u is in both polylines", (unsigned)pair_b[0]);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, lower_a, 3, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(lower_a, 3), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     ok = ok && index == 777;
     hycon_model_free(m);
@@ -838,9 +875,9 @@ static bool test_add_pair_unknown_node(void) {
     size_t index = 777;
     bool ok = true;
     EXPECT(m != NULL);
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, a, NA, pair_b, NB, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(a, NA), LINE(pair_b, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "unknown node 99");
-    ok = ok && STATUS_FN(hycon_model_add_pair, (m, pair_a, NA, a, NA, 0.1, &index),
+    ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(pair_a, NA), LINE(a, NA), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "unknown node 99");
     ok = ok && index == 777;
     hycon_model_free(m);
@@ -854,10 +891,10 @@ static bool test_add_pair_bad_friction(void) {
     bool ok = true;
     EXPECT(m != NULL);
     for (i = 0; i < 4; ++i)
-        ok = ok && STATUS_FN(hycon_model_add_pair, (m, pair_a, NA, pair_b, NB, bad[i], &index),
+        ok = ok && STATUS_FN(hycon_model_add_pair, (m, LINE(pair_a, NA), LINE(pair_b, NB), bad[i], &index),
                              HYCON_ERROR_INVALID_ARGUMENT, "friction");
     ok = ok && index == 777;
-    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, pair_b, NB, 0.0, &index), HYCON_OK,
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(pair_a, NA), LINE(pair_b, NB), 0.0, &index), HYCON_OK,
                       NULL);
     hycon_model_free(m);
     return ok;
@@ -972,13 +1009,13 @@ static bool test_contact_new_no_pair(void) {
     hycon_model_free(m);
     EXPECT(ok && c != NULL);
     fill_bytes(a, sizeof a);
-    ok = ok && STATUS_FN(hycon_contact_pair_size, (c, 0, &n_a, NULL),
+    ok = ok && STATUS_FN(hycon_contact_node_results, (c, 0, NULL, 0, &n_a),
                          HYCON_ERROR_INVALID_ARGUMENT, "contact pair 0 does not exist (0 pairs)");
-    ok = ok && STATUS_FN(hycon_contact_node_results, (c, 0, a, NA),
+    ok = ok && STATUS_FN(hycon_contact_node_results, (c, 0, a, NA, NULL),
                          HYCON_ERROR_INVALID_ARGUMENT, "contact pair 0 does not exist");
     ok = ok && n_a == 777 && bytes_untouched(a, sizeof a);
     ok = ok && STATUS(press(c, PRESS, 0.0, NULL), HYCON_OK, NULL);
-    ok = ok && STATUS(hycon_contact_displacement(c, u, NDOF), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_contact_displacement(c, u, NDOF, NULL), HYCON_OK, NULL);
     ok = ok && fabs(u[2 * top[0] + 1] + PRESS) == 0.0; /* the prescribed value */
     hycon_contact_free(c);
     return ok;
@@ -1064,7 +1101,7 @@ static bool test_increment_wrong_lengths(void) {
     ok = ok && STATUS_FN(hycon_contact_increment, (c, load, NDOF, NULL, 0, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "got 48 and 0");
     ok = ok && bytes_untouched(&info, sizeof info);
-    ok = ok && hycon_contact_record_count(c, &records) == HYCON_OK && records == 0;
+    ok = ok && hycon_contact_records(c, 0, NULL, 0, &records) == HYCON_OK && records == 0;
     hycon_contact_free(c);
     return ok;
 }
@@ -1104,6 +1141,9 @@ static bool test_increment_non_finite(void) {
 /* ---------------------------------------------------------------------------------------- */
 /* Results */
 
+/* A pointer one byte past an aligned one: misaligned for every type wider than a byte. */
+static void *misaligned(void *p) { return (char *)p + 1; }
+
 static bool test_result_functions_null_pointers(void) {
     HyconContact *c = make_contact(NULL);
     double buf[NDOF];
@@ -1112,8 +1152,9 @@ static bool test_result_functions_null_pointers(void) {
     HyconContactNode en[NA];
     HyconIterationRecord r[4];
     HyconCouplingEntry ce[64];
+    HyconConstraintEntry ke[64];
     HyconTimings t;
-    size_t n = 777, row_ptr[2 * NA + 1], cols[64];
+    size_t n = 777, words[2];
     bool ok = true;
     EXPECT(c != NULL);
     EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
@@ -1123,140 +1164,146 @@ static bool test_result_functions_null_pointers(void) {
     fill_bytes(en, sizeof en);
     fill_bytes(r, sizeof r);
     fill_bytes(ce, sizeof ce);
+    fill_bytes(ke, sizeof ke);
     fill_bytes(&t, sizeof t);
-    fill_bytes(row_ptr, sizeof row_ptr);
-    fill_bytes(cols, sizeof cols);
 #define NULL_CONTACT(fn, args)                                                                 \
     ok = ok && STATUS_FN(fn, args, HYCON_ERROR_NULL_POINTER, "contact is NULL")
-    NULL_CONTACT(hycon_contact_field_len, (NULL, &n));
-    NULL_CONTACT(hycon_contact_displacement, (NULL, buf, NDOF));
-    NULL_CONTACT(hycon_contact_displacement_increment, (NULL, buf, NDOF));
-    NULL_CONTACT(hycon_contact_forces, (NULL, buf, NDOF));
-    NULL_CONTACT(hycon_contact_pair_size, (NULL, 0, &n, &n));
-    NULL_CONTACT(hycon_contact_node_results, (NULL, 0, a, NA));
-    NULL_CONTACT(hycon_contact_b_node_results, (NULL, 0, b, NB));
-    NULL_CONTACT(hycon_contact_stress_tractions, (NULL, 0, buf, NDOF));
-    NULL_CONTACT(hycon_contact_record_count, (NULL, &n));
-    NULL_CONTACT(hycon_contact_records, (NULL, 0, r, 1));
+    NULL_CONTACT(hycon_contact_displacement, (NULL, buf, NDOF, &n));
+    NULL_CONTACT(hycon_contact_displacement, (NULL, NULL, 0, &n)); /* also the size query */
+    NULL_CONTACT(hycon_contact_displacement_increment, (NULL, buf, NDOF, &n));
+    NULL_CONTACT(hycon_contact_forces, (NULL, buf, NDOF, &n));
+    NULL_CONTACT(hycon_contact_node_results, (NULL, 0, a, NA, &n));
+    NULL_CONTACT(hycon_contact_b_node_results, (NULL, 0, b, NB, &n));
+    NULL_CONTACT(hycon_contact_stress_tractions, (NULL, 0, buf, NDOF, &n));
+    NULL_CONTACT(hycon_contact_records, (NULL, 0, NULL, 0, &n));
+    NULL_CONTACT(hycon_contact_records, (NULL, 0, r, 1, &n));
     NULL_CONTACT(hycon_contact_timings, (NULL, &t, &n));
-    NULL_CONTACT(hycon_contact_element_nodes, (NULL, 0, en, NA));
-    NULL_CONTACT(hycon_contact_coupling, (NULL, 0, ce, 64, &n));
-    NULL_CONTACT(hycon_contact_kc, (NULL, 0, row_ptr, 2 * NA + 1, cols, buf, NDOF, &n));
+    NULL_CONTACT(hycon_contact_surface_nodes, (NULL, 0, en, NA, &n));
+    NULL_CONTACT(hycon_contact_surface_coupling, (NULL, 0, ce, 64, &n));
+    NULL_CONTACT(hycon_contact_constraint_rows, (NULL, 0, ke, 64, &n));
     NULL_CONTACT(hycon_contact_plate, (NULL, buf, buf + 2));
-    NULL_CONTACT(hycon_contact_increment_plate, (NULL, NULL, 0, NULL, 0, NULL, NULL, NULL));
+    NULL_CONTACT(hycon_contact_increment_with_plate, (NULL, NULL, 0, NULL, 0, NULL, NULL, NULL));
 #undef NULL_CONTACT
-    /* required outputs */
-    ok = ok && STATUS_FN(hycon_contact_field_len, (c, NULL), HYCON_ERROR_NULL_POINTER,
-                         "n is NULL");
-    ok = ok && STATUS_FN(hycon_contact_record_count, (c, NULL), HYCON_ERROR_NULL_POINTER,
-                         "count is NULL");
-    ok = ok && STATUS_FN(hycon_contact_coupling, (c, 0, ce, 64, NULL), HYCON_ERROR_NULL_POINTER,
-                         "count is NULL");
-    ok = ok && STATUS_FN(hycon_contact_kc, (c, 0, row_ptr, 2 * NA + 1, cols, buf, NDOF, NULL),
-                         HYCON_ERROR_NULL_POINTER, "nnz is NULL");
-    /* array outputs NULL with a nonzero length */
-    ok = ok && STATUS_FN(hycon_contact_displacement, (c, NULL, NDOF), HYCON_ERROR_NULL_POINTER,
-                         "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_displacement_increment, (c, NULL, NDOF),
-                         HYCON_ERROR_NULL_POINTER, "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_forces, (c, NULL, NDOF), HYCON_ERROR_NULL_POINTER,
-                         "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_node_results, (c, 0, NULL, NA), HYCON_ERROR_NULL_POINTER,
-                         "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_b_node_results, (c, 0, NULL, NB),
-                         HYCON_ERROR_NULL_POINTER, "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, NULL, 2 * NA),
-                         HYCON_ERROR_NULL_POINTER, "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_records, (c, 0, NULL, 1), HYCON_ERROR_NULL_POINTER,
-                         "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_element_nodes, (c, 0, NULL, NA),
-                         HYCON_ERROR_NULL_POINTER, "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_coupling, (c, 0, NULL, 64, &n), HYCON_ERROR_NULL_POINTER,
-                         "out is NULL");
-    ok = ok && STATUS_FN(hycon_contact_kc, (c, 0, NULL, 2 * NA + 1, cols, buf, NDOF, &n),
-                         HYCON_ERROR_NULL_POINTER, "row_ptr is NULL");
-    ok = ok && STATUS_FN(hycon_contact_kc, (c, 0, row_ptr, 2 * NA + 1, NULL, buf, NDOF, &n),
-                         HYCON_ERROR_NULL_POINTER, "columns is NULL");
-    ok = ok && STATUS_FN(hycon_contact_kc, (c, 0, row_ptr, 2 * NA + 1, cols, NULL, NDOF, &n),
-                         HYCON_ERROR_NULL_POINTER, "values is NULL");
+    /* array outputs NULL with a nonzero length (NULL and 0 is the size query) */
+#define NULL_OUT(fn, args)                                                                     \
+    ok = ok && STATUS_FN(fn, args, HYCON_ERROR_NULL_POINTER, "out is NULL but len is")
+    NULL_OUT(hycon_contact_displacement, (c, NULL, NDOF, &n));
+    NULL_OUT(hycon_contact_displacement_increment, (c, NULL, NDOF, &n));
+    NULL_OUT(hycon_contact_forces, (c, NULL, NDOF, &n));
+    NULL_OUT(hycon_contact_node_results, (c, 0, NULL, NA, &n));
+    NULL_OUT(hycon_contact_b_node_results, (c, 0, NULL, NB, &n));
+    NULL_OUT(hycon_contact_stress_tractions, (c, 0, NULL, 2 * NA, &n));
+    NULL_OUT(hycon_contact_records, (c, 0, NULL, 1, &n));
+    NULL_OUT(hycon_contact_surface_nodes, (c, 0, NULL, NA, &n));
+    NULL_OUT(hycon_contact_surface_coupling, (c, 0, NULL, 64, &n));
+    NULL_OUT(hycon_contact_constraint_rows, (c, 0, NULL, 64, &n));
+#undef NULL_OUT
+    /* one rule for misaligned pointers: rejected by name, optional ones (needed, timings,
+     * factorizations) as well as required ones, with nothing written */
+#define MISALIGNED(fn, args, name)                                                            \
+    ok = ok && STATUS_FN(fn, args, HYCON_ERROR_INVALID_ARGUMENT, name " is misaligned")
+    MISALIGNED(hycon_contact_displacement, (c, buf, NDOF, (size_t *)misaligned(words)), "needed");
+    MISALIGNED(hycon_contact_displacement, (c, NULL, 0, (size_t *)misaligned(words)), "needed");
+    MISALIGNED(hycon_contact_displacement, (c, (double *)misaligned(buf), NDOF - 1, &n), "out");
+    MISALIGNED(hycon_contact_node_results, (c, 0, a, NA, (size_t *)misaligned(words)), "needed");
+    MISALIGNED(hycon_contact_records, (c, 0, r, 4, (size_t *)misaligned(words)), "needed");
+    MISALIGNED(hycon_contact_surface_coupling,
+               (c, 0, (HyconCouplingEntry *)misaligned(ce), 63, &n), "out");
+    MISALIGNED(hycon_contact_constraint_rows, (c, 0, ke, 64, (size_t *)misaligned(words)),
+               "needed");
+    MISALIGNED(hycon_contact_timings, (c, (HyconTimings *)misaligned(&t), NULL), "timings");
+    MISALIGNED(hycon_contact_timings, (c, &t, (size_t *)misaligned(words)), "factorizations");
+    MISALIGNED(hycon_contact_timings, (c, NULL, (size_t *)misaligned(words)), "factorizations");
+#undef MISALIGNED
     ok = ok && n == 777;
     ok = ok && untouched(buf, NDOF) && bytes_untouched(a, sizeof a) &&
          bytes_untouched(b, sizeof b) && bytes_untouched(en, sizeof en) &&
          bytes_untouched(r, sizeof r) && bytes_untouched(ce, sizeof ce) &&
-         bytes_untouched(&t, sizeof t) && bytes_untouched(row_ptr, sizeof row_ptr) &&
-         bytes_untouched(cols, sizeof cols);
-    /* optional outputs may be NULL */
-    ok = ok && STATUS(hycon_contact_pair_size(c, 0, NULL, NULL), HYCON_OK, NULL);
+         bytes_untouched(ke, sizeof ke) && bytes_untouched(&t, sizeof t);
+    /* optional outputs may be NULL: needed, timings, factorizations */
+    ok = ok && STATUS(hycon_contact_node_results(c, 0, a, NA, NULL), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_contact_surface_coupling(c, 0, ce, 64, NULL), HYCON_OK, NULL);
     ok = ok && STATUS(hycon_contact_timings(c, NULL, NULL), HYCON_OK, NULL);
     hycon_contact_free(c);
     return ok;
 }
 
+/* The size convention, function by function: the query (NULL, 0, &needed) writes only
+ * *needed; a short buffer is HYCON_ERROR_BUFFER_TOO_SMALL with the count in the message and in
+ * *needed, the buffer untouched; a large one receives exactly needed elements. */
 static bool test_result_buffers_too_small(void) {
     HyconContact *c = make_contact(NULL);
-    double buf[NDOF];
+    double buf[NDOF + 4];
     HyconNodeResult a[NA];
     HyconBNodeResult b[NB];
     HyconContactNode en[NA];
     HyconIterationRecord r[1];
     HyconCouplingEntry ce[128];
-    double vals[128];
-    size_t n = 777, count = 0, nnz = 0, row_ptr[2 * NA + 1], cols[128];
+    HyconConstraintEntry ke[128];
+    size_t n = 777, count = 0, nnz = 0, i;
     char part[32];
     bool ok = true;
     EXPECT(c != NULL);
     EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
-    fill(buf, NDOF);
+    fill(buf, NDOF + 4);
     fill_bytes(a, sizeof a);
     fill_bytes(b, sizeof b);
     fill_bytes(en, sizeof en);
     fill_bytes(r, sizeof r);
     fill_bytes(ce, sizeof ce);
-    fill_bytes(row_ptr, sizeof row_ptr);
-    fill_bytes(cols, sizeof cols);
-    ok = ok && STATUS_FN(hycon_contact_displacement, (c, buf, NDOF - 1),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "48 needed");
-    ok = ok && STATUS_FN(hycon_contact_displacement, (c, NULL, 0), HYCON_ERROR_BUFFER_TOO_SMALL,
-                         "48 needed");
-    ok = ok && STATUS_FN(hycon_contact_displacement_increment, (c, buf, NDOF - 1),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "out has length 47, 48 needed");
-    ok = ok && STATUS_FN(hycon_contact_forces, (c, buf, 3), HYCON_ERROR_BUFFER_TOO_SMALL,
-                         "48 needed");
-    ok = ok && STATUS_FN(hycon_contact_node_results, (c, 0, a, NA - 1),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "3 needed");
-    ok = ok && STATUS_FN(hycon_contact_b_node_results, (c, 0, b, NB - 1),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "5 needed");
-    ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, buf, 2 * NA - 1),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "6 needed");
-    ok = ok && STATUS_FN(hycon_contact_element_nodes, (c, 0, en, 0),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "3 needed");
+    fill_bytes(ke, sizeof ke);
+#define SHORT(fn, args, part, count)                                                           \
+    ok = ok && STATUS_FN(fn, args, HYCON_ERROR_BUFFER_TOO_SMALL, part) && n == (count);       \
+    n = 777
+#define QUERY(fn, args, count)                                                                 \
+    ok = ok && STATUS(fn args, HYCON_OK, NULL) && n == (count);                                \
+    n = 777
+    SHORT(hycon_contact_displacement, (c, buf, NDOF - 1, &n), "48 needed", NDOF);
+    QUERY(hycon_contact_displacement, (c, NULL, 0, &n), NDOF);
+    SHORT(hycon_contact_displacement_increment, (c, buf, NDOF - 1, &n),
+          "out has length 47, 48 needed", NDOF);
+    QUERY(hycon_contact_displacement_increment, (c, NULL, 0, &n), NDOF);
+    SHORT(hycon_contact_forces, (c, buf, 3, &n), "48 needed", NDOF);
+    QUERY(hycon_contact_forces, (c, NULL, 0, &n), NDOF);
+    SHORT(hycon_contact_node_results, (c, 0, a, NA - 1, &n), "3 needed", NA);
+    QUERY(hycon_contact_node_results, (c, 0, NULL, 0, &n), NA);
+    SHORT(hycon_contact_b_node_results, (c, 0, b, NB - 1, &n), "5 needed", NB);
+    QUERY(hycon_contact_b_node_results, (c, 0, NULL, 0, &n), NB);
+    SHORT(hycon_contact_stress_tractions, (c, 0, buf, 2 * NA - 1, &n), "6 needed", 2 * NA);
+    QUERY(hycon_contact_stress_tractions, (c, 0, NULL, 0, &n), 2 * NA);
+    /* a non-NULL buffer of length 0 is a short buffer, not the query */
+    SHORT(hycon_contact_surface_nodes, (c, 0, en, 0, &n), "3 needed", NA);
+    QUERY(hycon_contact_surface_nodes, (c, 0, NULL, 0, &n), NA);
     /* coupling: the count query, then a buffer one short */
-    ok = ok && STATUS(hycon_contact_coupling(c, 0, NULL, 0, &count), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_contact_surface_coupling(c, 0, NULL, 0, &count), HYCON_OK, NULL);
     ok = ok && count > 1 && count <= 128;
     sprintf(part, "%u needed", (unsigned)count);
-    ok = ok && STATUS_FN(hycon_contact_coupling, (c, 0, ce, count - 1, &n),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, part);
-    /* Kc: the nnz query, then short row_ptr, short columns / values */
-    ok = ok && STATUS(hycon_contact_kc(c, 0, NULL, 0, NULL, NULL, 0, &nnz), HYCON_OK, NULL);
+    SHORT(hycon_contact_surface_coupling, (c, 0, ce, count - 1, &n), part, count);
+    /* Kc: the entry count query, then a buffer one short */
+    ok = ok && STATUS(hycon_contact_constraint_rows(c, 0, NULL, 0, &nnz), HYCON_OK, NULL);
     ok = ok && nnz > 1 && nnz <= 128;
-    fill(vals, 128);
-    ok = ok && STATUS_FN(hycon_contact_kc, (c, 0, row_ptr, 2 * NA, cols, vals, 128, &n),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, "row_ptr has length 6, 7 needed");
     sprintf(part, "%u needed", (unsigned)nnz);
-    ok = ok && STATUS_FN(hycon_contact_kc, (c, 0, row_ptr, 2 * NA + 1, cols, vals, nnz - 1, &n),
-                         HYCON_ERROR_BUFFER_TOO_SMALL, part);
-    ok = ok && untouched(vals, 128);
-    ok = ok && n == 777;
-    ok = ok && untouched(buf, NDOF) && bytes_untouched(a, sizeof a) &&
+    SHORT(hycon_contact_constraint_rows, (c, 0, ke, nnz - 1, &n), part, nnz);
+#undef SHORT
+#undef QUERY
+    ok = ok && untouched(buf, NDOF + 4) && bytes_untouched(a, sizeof a) &&
          bytes_untouched(b, sizeof b) && bytes_untouched(en, sizeof en) &&
          bytes_untouched(r, sizeof r) && bytes_untouched(ce, sizeof ce) &&
-         bytes_untouched(row_ptr, sizeof row_ptr) && bytes_untouched(cols, sizeof cols);
-    /* with the right sizes all of them work */
-    ok = ok && STATUS(hycon_contact_displacement(c, buf, NDOF), HYCON_OK, NULL);
-    ok = ok && STATUS(hycon_contact_coupling(c, 0, ce, count, &n), HYCON_OK, NULL) && n == count;
-    ok = ok && STATUS(hycon_contact_kc(c, 0, row_ptr, 2 * NA + 1, cols, vals, nnz, &n), HYCON_OK,
-                      NULL) &&
-         n == nnz && row_ptr[2 * NA] == nnz;
+         bytes_untouched(ke, sizeof ke);
+    /* with the right sizes or more all of them work and write exactly `needed` elements */
+    ok = ok && STATUS(hycon_contact_displacement(c, buf, NDOF + 4, &n), HYCON_OK, NULL) &&
+         n == NDOF && untouched(buf + NDOF, 4);
+    ok = ok && STATUS(hycon_contact_surface_coupling(c, 0, ce, 128, &n), HYCON_OK, NULL) &&
+         n == count && bytes_untouched(ce + count, (128 - count) * sizeof *ce);
+    ok = ok && STATUS(hycon_contact_constraint_rows(c, 0, ke, 128, &n), HYCON_OK, NULL) &&
+         n == nnz && bytes_untouched(ke + nnz, (128 - nnz) * sizeof *ke);
+    /* Kc entries: row-major, rows in 0 .. 2 NA, columns strictly ascending within a row */
+    for (i = 0; ok && i < nnz; ++i) {
+        ok = ke[i].row < 2 * NA && ke[i].column < NDOF;
+        if (i > 0)
+            ok = ok && (ke[i - 1].row < ke[i].row ||
+                        (ke[i - 1].row == ke[i].row && ke[i - 1].column < ke[i].column));
+    }
     hycon_contact_free(c);
     return ok;
 }
@@ -1268,7 +1315,8 @@ static bool test_unknown_pair(void) {
     HyconBNodeResult b[NB];
     HyconContactNode en[NA];
     HyconCouplingEntry ce[64];
-    size_t n_a = 777, n_b = 777, n = 777, row_ptr[2 * NA + 1], cols[64];
+    HyconConstraintEntry ke[64];
+    size_t n_a = 777, n_b = 777, n = 777;
     bool ok = true;
     EXPECT(c != NULL);
     EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
@@ -1277,24 +1325,27 @@ static bool test_unknown_pair(void) {
     fill_bytes(b, sizeof b);
     fill_bytes(en, sizeof en);
     fill_bytes(ce, sizeof ce);
-    fill_bytes(row_ptr, sizeof row_ptr);
+    fill_bytes(ke, sizeof ke);
 #define NO_PAIR(fn, args)                                                                      \
     ok = ok && STATUS_FN(fn, args, HYCON_ERROR_INVALID_ARGUMENT, "contact pair 1 does not exist")
-    NO_PAIR(hycon_contact_pair_size, (c, 1, &n_a, &n_b));
-    NO_PAIR(hycon_contact_node_results, (c, 1, a, NA));
-    NO_PAIR(hycon_contact_b_node_results, (c, 1, b, NB));
-    NO_PAIR(hycon_contact_stress_tractions, (c, 1, buf, NDOF));
-    NO_PAIR(hycon_contact_element_nodes, (c, 1, en, NA));
-    NO_PAIR(hycon_contact_coupling, (c, 1, ce, 64, &n));
-    NO_PAIR(hycon_contact_kc, (c, 1, row_ptr, 2 * NA + 1, cols, buf, NDOF, &n));
+    NO_PAIR(hycon_contact_node_results, (c, 1, NULL, 0, &n_a)); /* the size query too */
+    NO_PAIR(hycon_contact_b_node_results, (c, 1, NULL, 0, &n_b));
+    NO_PAIR(hycon_contact_node_results, (c, 1, a, NA, &n));
+    NO_PAIR(hycon_contact_b_node_results, (c, 1, b, NB, &n));
+    NO_PAIR(hycon_contact_stress_tractions, (c, 1, buf, NDOF, &n));
+    NO_PAIR(hycon_contact_surface_nodes, (c, 1, en, NA, &n));
+    NO_PAIR(hycon_contact_surface_coupling, (c, 1, ce, 64, &n));
+    NO_PAIR(hycon_contact_constraint_rows, (c, 1, ke, 64, &n));
 #undef NO_PAIR
-    ok = ok && STATUS_FN(hycon_contact_pair_size, (c, (size_t)-1, &n_a, &n_b),
+    ok = ok && STATUS_FN(hycon_contact_node_results, (c, (size_t)-1, NULL, 0, &n_a),
                          HYCON_ERROR_INVALID_ARGUMENT, "does not exist (1 pairs)");
     ok = ok && n_a == 777 && n_b == 777 && n == 777;
     ok = ok && untouched(buf, NDOF) && bytes_untouched(a, sizeof a) &&
          bytes_untouched(b, sizeof b) && bytes_untouched(en, sizeof en) &&
-         bytes_untouched(ce, sizeof ce) && bytes_untouched(row_ptr, sizeof row_ptr);
-    ok = ok && STATUS(hycon_contact_pair_size(c, 0, &n_a, &n_b), HYCON_OK, NULL) && n_a == NA &&
+         bytes_untouched(ce, sizeof ce) && bytes_untouched(ke, sizeof ke);
+    ok = ok && STATUS(hycon_contact_node_results(c, 0, NULL, 0, &n_a), HYCON_OK, NULL) &&
+         n_a == NA;
+    ok = ok && STATUS(hycon_contact_b_node_results(c, 0, NULL, 0, &n_b), HYCON_OK, NULL) &&
          n_b == NB;
     hycon_contact_free(c);
     return ok;
@@ -1303,27 +1354,29 @@ static bool test_unknown_pair(void) {
 static bool test_records_out_of_range(void) {
     HyconContact *c = make_contact(NULL);
     HyconIterationRecord r[64];
-    size_t count = 0;
+    size_t count = 0, n = 777;
     char part[64];
     bool ok = true;
     EXPECT(c != NULL);
     EXPECT(press(c, PRESS, 0.0, NULL) == HYCON_OK);
-    EXPECT(hycon_contact_record_count(c, &count) == HYCON_OK && count > 0 && count < 64);
+    EXPECT(hycon_contact_records(c, 0, NULL, 0, &count) == HYCON_OK && count > 0 && count < 64);
     fill_bytes(r, sizeof r);
-    sprintf(part, "records 0 .. 0 + %u requested, %u exist", (unsigned)(count + 1),
-            (unsigned)count);
-    ok = ok && STATUS_FN(hycon_contact_records, (c, 0, r, count + 1),
+    sprintf(part, "first = %u, but %u records exist", (unsigned)(count + 1), (unsigned)count);
+    ok = ok && STATUS_FN(hycon_contact_records, (c, count + 1, r, 64, NULL),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
-    ok = ok && STATUS_FN(hycon_contact_records, (c, count, r, 1), HYCON_ERROR_INVALID_ARGUMENT,
-                         "requested");
-    /* first + len overflows */
-    ok = ok && STATUS_FN(hycon_contact_records, (c, (size_t)-1, r, 2),
-                         HYCON_ERROR_INVALID_ARGUMENT, "requested");
+    ok = ok && STATUS_FN(hycon_contact_records, (c, count + 1, NULL, 0, &n),
+                         HYCON_ERROR_INVALID_ARGUMENT, part); /* the size query too */
+    ok = ok && STATUS_FN(hycon_contact_records, (c, (size_t)-1, r, 2, NULL),
+                         HYCON_ERROR_INVALID_ARGUMENT, "records exist");
+    /* from `first` on: count - first records */
+    ok = ok && STATUS(hycon_contact_records(c, 1, NULL, 0, &n), HYCON_OK, NULL) && n == count - 1;
+    n = 777;
+    ok = ok && STATUS(hycon_contact_records(c, count, r, 1, &n), HYCON_OK, NULL) && n == 0;
     ok = ok && bytes_untouched(r, sizeof r);
-    ok = ok && STATUS(hycon_contact_records(c, 0, r, count), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_contact_records(c, 0, r, count, NULL), HYCON_OK, NULL);
     ok = ok && r[count - 1].increment == 1 && r[count - 1].changes == 0;
     /* (NULL, 0) past the end is an empty range */
-    ok = ok && STATUS(hycon_contact_records(c, count, NULL, 0), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_contact_records(c, count, NULL, 0, NULL), HYCON_OK, NULL);
     hycon_contact_free(c);
     return ok;
 }
@@ -1337,12 +1390,11 @@ static bool test_length_overflow(void) {
     const size_t half = (size_t)1 << (sizeof(size_t) * 8 - 1); /* 2 * half == 0 */
     bool ok = true;
     ok = STATUS_FN(hycon_model_new,
-                   (&m, coords, NN, offsets, conn, SIZE_MAX, NULL, &steel, 1,
-                    HYCON_ELEMENT_HYBRID),
+                   (&m, coords, NN, BLOCK(offsets, conn, SIZE_MAX, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                    HYCON_ERROR_INVALID_ARGUMENT, NULL) &&
          ok;
     ok = STATUS_FN(hycon_model_new,
-                   (&m, coords, half, offsets, conn, NE, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+                   (&m, coords, half, BLOCK(offsets, conn, NE, NULL, HYCON_ELEMENT_HYBRID), &steel, 1),
                    HYCON_ERROR_INVALID_ARGUMENT, "n_nodes") &&
          ok;
     ok = m == MARKER(HyconModel) && ok;
@@ -1427,7 +1479,7 @@ static bool test_pair_on_one_body(void) {
     bool ok = true;
     EXPECT(m != NULL);
     for (i = 0; i < NTOP; ++i) b[i] = top[NTOP - 1 - i];
-    ok = ok && STATUS(hycon_model_add_pair(m, pair_a, NA, b, NTOP, 0.0, NULL), HYCON_OK, NULL);
+    ok = ok && STATUS(hycon_model_add_pair(m, LINE(pair_a, NA), LINE(b, NTOP), 0.0, NULL), HYCON_OK, NULL);
     ok = ok && STATUS_FN(hycon_contact_new, (&c, m, NULL), HYCON_ERROR_INVALID_ARGUMENT,
                          "B lies behind A");
     ok = ok && c == MARKER(HyconContact);
@@ -1453,8 +1505,7 @@ static bool test_host_reversed_a(void) {
         r_eq[2 * i + 1] = a_eq[2 * (NA - 1 - i) + 1];
     }
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
-    ok = ok && STATUS(hycon_host_add_pair(d, a, r_xy, r_eq, NA, pair_b, b_xy, b_eq, NB, 0.0,
-                                          NULL),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(a, r_xy, r_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0, NULL),
                       HYCON_OK, NULL);
     ok = ok && STATUS(hycon_host_set_solver(d, host_solve, &host), HYCON_OK, NULL);
     ok = ok && STATUS_FN(hycon_contact_new_host, (&c, d, NULL), HYCON_ERROR_INVALID_ARGUMENT,
@@ -1653,24 +1704,24 @@ static bool test_plate_bad_input(void) {
     fill(f, 2);
     ok = ok && STATUS_FN(hycon_contact_increment, (c, load, NDOF, qp, NDOF, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "increment_with_plate");
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, qp, NDOF, NULL, value, &info), HYCON_ERROR_NULL_POINTER,
                          "control is NULL");
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, qp, NDOF, disp, NULL, &info), HYCON_ERROR_NULL_POINTER,
                          "value is NULL");
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, qp, NDOF, bad0, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "control[0] = 0");
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, qp, NDOF, bad1, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "control[1] = 3");
     value[1] = NAN;
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, qp, NDOF, disp, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "value[1]");
     value[1] = -PRESS;
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF - 2, qp, NDOF, disp, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "the load vector needs 48 entries");
     ok = ok && bytes_untouched(&info, sizeof info);
@@ -1679,14 +1730,14 @@ static bool test_plate_bad_input(void) {
                          "displacement is NULL");
     ok = ok && untouched(f, 2);
     /* a plate call on an analysis without a plate */
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (plain, load, NDOF, qp, NDOF, disp, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "with_plate");
     ok = ok && STATUS_FN(hycon_contact_plate, (plain, u, f), HYCON_ERROR_INVALID_ARGUMENT,
                          "has no plate");
     ok = ok && bytes_untouched(&info, sizeof info) && untouched(u, 2) && untouched(f, 2);
     /* the good call */
-    ok = ok && STATUS(hycon_contact_increment_plate(c, load, NDOF, qp, NDOF, disp, value, &info),
+    ok = ok && STATUS(hycon_contact_increment_with_plate(c, load, NDOF, qp, NDOF, disp, value, &info),
                       HYCON_OK, NULL);
     ok = ok && info.increment == 1 && info.active == NA;
     ok = ok && STATUS(hycon_contact_plate(c, u, f), HYCON_OK, NULL) && u[1] == -PRESS &&
@@ -1711,10 +1762,10 @@ static bool test_plate_short_prescribed(void) {
     memset(load, 0, sizeof load);
     memset(qp, 0, sizeof qp);
     fill_bytes(&info, sizeof info);
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, qp, 10, disp, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "prescribed vector needs 48");
-    ok = ok && STATUS_FN(hycon_contact_increment_plate,
+    ok = ok && STATUS_FN(hycon_contact_increment_with_plate,
                          (c, load, NDOF, NULL, 0, disp, value, &info),
                          HYCON_ERROR_INVALID_ARGUMENT, "prescribed vector needs 48");
     ok = ok && bytes_untouched(&info, sizeof info);
@@ -1766,23 +1817,22 @@ static bool test_host_add_pair_null_pointers(void) {
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
 #define HOST_NULL(args, part)                                                                  \
     ok = ok && STATUS_FN(hycon_host_add_pair, args, HYCON_ERROR_NULL_POINTER, part)
-    HOST_NULL((NULL, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+    HOST_NULL((NULL, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
               "host is NULL");
-    HOST_NULL((d, NULL, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index), "a_nodes is NULL");
-    HOST_NULL((d, pair_a, NULL, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
-              "a_coords is NULL");
-    HOST_NULL((d, pair_a, a_xy, NULL, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
-              "a_equations is NULL");
-    HOST_NULL((d, pair_a, a_xy, a_eq, NA, NULL, b_xy, b_eq, NB, 0.1, &index), "b_nodes is NULL");
-    HOST_NULL((d, pair_a, a_xy, a_eq, NA, pair_b, NULL, b_eq, NB, 0.1, &index),
-              "b_coords is NULL");
-    HOST_NULL((d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, NULL, NB, 0.1, &index),
-              "b_equations is NULL");
+    HOST_NULL((d, HOST_NODES(NULL, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index), "a.ids is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, NULL, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+              "a.coords is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, NULL, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+              "a.equations is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(NULL, b_xy, b_eq, NB), 0.1, &index), "b.ids is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, NULL, b_eq, NB), 0.1, &index),
+              "b.coords is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, NULL, NB), 0.1, &index),
+              "b.equations is NULL");
 #undef HOST_NULL
     ok = ok && index == 777;
     /* nothing was added: the good call gets index 0 */
-    ok = ok && STATUS(hycon_host_add_pair(d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1,
-                                          &index),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                       HYCON_OK, NULL) &&
          index == 0;
     hycon_host_free(d);
@@ -1798,10 +1848,10 @@ static bool test_host_add_pair_lengths(void) {
     host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, NULL, NULL, NULL, 0, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(NULL, NULL, NULL, 0), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "A polyline has 0 node(s)");
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, 1, 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, 1), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "B polyline has 1 node(s)");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -1818,13 +1868,13 @@ static bool test_host_add_pair_non_finite(void) {
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     a_xy[1] = NAN;
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
-                         HYCON_ERROR_INVALID_ARGUMENT, "a_coords[1]");
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         HYCON_ERROR_INVALID_ARGUMENT, "a.coords[1]");
     a_xy[1] = coords[2 * pair_a[0] + 1];
     b_xy[4] = INFINITY;
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
-                         HYCON_ERROR_INVALID_ARGUMENT, "b_coords[4] = inf is not finite");
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         HYCON_ERROR_INVALID_ARGUMENT, "b.coords[4] = inf is not finite");
     ok = ok && index == 777;
     hycon_host_free(d);
     return ok;
@@ -1844,24 +1894,23 @@ static bool test_host_add_pair_not_a_chain(void) {
     a[2] = a[0];
     sprintf(part, "node %u appears twice", (unsigned)a[0]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     /* a node in both polylines */
     memcpy(a, pair_a, sizeof a);
     a[1] = pair_b[3];
     sprintf(part, "node %u is in both polylines", (unsigned)pair_b[3]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     /* a zero-length segment: the second B node on the third */
     b_xy[2] = b_xy[4];
     b_xy[3] = b_xy[5];
     sprintf(part, "segment %u -> %u has zero length", (unsigned)pair_b[1], (unsigned)pair_b[2]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
-    ok = ok && STATUS(hycon_host_add_pair(d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1,
-                                          &index),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                       HYCON_ERROR_INVALID_ARGUMENT, "B polyline is not a chain");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -1883,20 +1932,19 @@ static bool test_host_add_pair_unknown_ids(void) {
     bad[3] = (int64_t)host.n;
     sprintf(part, "equation %u is out of range", (unsigned)host.n);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, bad, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     bad[3] = -2;
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, bad, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "equation -2 is out of range");
     memcpy(bad, a_eq, sizeof bad);
     bad[2] = b_eq[0]; /* an A dof on a B node's equation */
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, bad, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "shares an equation");
     ok = ok && index == 777;
-    ok = ok && STATUS(hycon_host_add_pair(d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1,
-                                          &index),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                       HYCON_OK, NULL) &&
          index == 0;
     /* the same nodes again with other coordinates */
@@ -1904,7 +1952,7 @@ static bool test_host_add_pair_unknown_ids(void) {
     moved[2] += 0.01;
     sprintf(part, "A node %u was given before", (unsigned)pair_a[1]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, moved, a_eq, NA, pair_b, b_xy, b_eq, NB, 0.1, &index),
+                         (d, HOST_NODES(pair_a, moved, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     ok = ok && index == 0;
     hycon_host_free(d);
@@ -1920,10 +1968,10 @@ static bool test_host_add_pair_bad_friction(void) {
     host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, NAN, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), NAN, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "friction");
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, pair_a, a_xy, a_eq, NA, pair_b, b_xy, b_eq, NB, -1.0, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), -1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "friction");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -2000,27 +2048,47 @@ static bool test_host_set_elements_bad_input(void) {
     EXPECT(d != NULL);
 #define BAD_EL(args, status, part) \
     ok = ok && STATUS_FN(hycon_host_set_elements, args, status, part)
-    BAD_EL((NULL, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+    BAD_EL((NULL, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
            HYCON_ERROR_NULL_POINTER, "host is NULL");
-    BAD_EL((d, 0, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4), HYCON_ERROR_INVALID_ARGUMENT,
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, 0), &mat, 1), HYCON_ERROR_INVALID_ARGUMENT,
            "unknown element kind");
-    BAD_EL((d, HYCON_ELEMENT_Q4, NULL, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), NULL, 1),
            HYCON_ERROR_NULL_POINTER, "materials is NULL");
-    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, unknown, 1, ids, xy, eqs, 4),
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, unknown, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
            HYCON_ERROR_INVALID_ARGUMENT, "not in the node table");
-    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, cw, 1, ids, xy, eqs, 4),
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, cw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
            HYCON_ERROR_BAD_ELEMENT, "inverted");
     eqs[3] = (int64_t)host.n + 5;
-    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
            HYCON_ERROR_INVALID_ARGUMENT, "out of range");
     eqs[3] = HYCON_FIXED;
     xy[5] = NAN;
-    BAD_EL((d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1, ids, xy, eqs, 4),
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
            HYCON_ERROR_INVALID_ARGUMENT, "not finite");
     xy[5] = 1.0;
+    /* NULL views, and NULL arrays inside a view with a nonzero count */
+    BAD_EL((d, NULL, BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
+           HYCON_ERROR_NULL_POINTER, "nodes is NULL");
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), NULL, &mat, 1), HYCON_ERROR_NULL_POINTER,
+           "elements is NULL");
+    BAD_EL((d, HOST_NODES(ids, NULL, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4),
+            &mat, 1),
+           HYCON_ERROR_NULL_POINTER, "nodes.coords is NULL");
+    BAD_EL((d, HOST_NODES(ids, xy, NULL, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4),
+            &mat, 1),
+           HYCON_ERROR_NULL_POINTER, "nodes.equations is NULL");
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 0), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4),
+            &mat, 1),
+           HYCON_ERROR_INVALID_ARGUMENT, "nodes.n = 0");
+    BAD_EL((d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, NULL, 1, NULL, HYCON_ELEMENT_Q4),
+            &mat, 1),
+           HYCON_ERROR_NULL_POINTER, "elements.nodes is NULL");
+    /* a misaligned array inside a view is rejected by name */
+    BAD_EL((d, HOST_NODES(ids, (const double *)(const void *)((const char *)xy + 1), eqs, 4),
+            BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
+           HYCON_ERROR_INVALID_ARGUMENT, "nodes.coords is misaligned");
 #undef BAD_EL
-    ok = ok && STATUS(hycon_host_set_elements(d, HYCON_ELEMENT_Q4, &mat, 1, NULL, offsets, ccw, 1,
-                                              ids, xy, eqs, 4),
+    ok = ok && STATUS(hycon_host_set_elements(d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
                       HYCON_OK, NULL);
     hycon_host_free(d);
     return ok;
@@ -2126,9 +2194,9 @@ static bool test_host_callback_fails_later(void) {
         double u[NDOF];
         fill(u, NDOF);
         host.fail = 5;
-        EXPECT(STATUS_FN(hycon_contact_displacement, (c, u, host.n), HYCON_ERROR_CALLBACK,
+        EXPECT(STATUS_FN(hycon_contact_displacement, (c, u, host.n, NULL), HYCON_ERROR_CALLBACK,
                          "the solve callback returned 5"));
-        EXPECT(STATUS_FN(hycon_contact_displacement_increment, (c, u, host.n),
+        EXPECT(STATUS_FN(hycon_contact_displacement_increment, (c, u, host.n, NULL),
                          HYCON_ERROR_CALLBACK, "the solve callback returned 5"));
         host.fail = 0;
         EXPECT(untouched(u, NDOF));
@@ -2168,7 +2236,7 @@ static bool test_host_increment_bad_input(void) {
     char part[64];
     bool ok = true;
     EXPECT(c != NULL);
-    EXPECT(hycon_contact_field_len(c, &n) == HYCON_OK && n == host.n);
+    EXPECT(hycon_contact_displacement(c, NULL, 0, &n) == HYCON_OK && n == host.n);
     host_rhs(&host, rhs, PRESS, 0.0);
     fill_bytes(&info, sizeof info);
     fill(buf, NDOF);
@@ -2182,11 +2250,11 @@ static bool test_host_increment_bad_input(void) {
                          HYCON_ERROR_INVALID_ARGUMENT, "load[4]");
     ok = ok && bytes_untouched(&info, sizeof info);
     sprintf(part, "%u needed", (unsigned)host.n);
-    ok = ok && STATUS_FN(hycon_contact_displacement, (c, buf, host.n - 1),
+    ok = ok && STATUS_FN(hycon_contact_displacement, (c, buf, host.n - 1, NULL),
                          HYCON_ERROR_BUFFER_TOO_SMALL, part);
     ok = ok && untouched(buf, NDOF);
     /* tractions from element stresses need the elements of body A (none handed over) */
-    ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, buf, 2 * NA),
+    ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, buf, 2 * NA, NULL),
                          HYCON_ERROR_INVALID_ARGUMENT, "elements of body A");
     ok = ok && untouched(buf, NDOF);
     hycon_contact_free(c);
@@ -2231,6 +2299,7 @@ int main(void) {
     } tests[] = {
         {"options_default", test_options_default},
         {"model_new_null_pointers", test_model_new_null_pointers},
+        {"null_views", test_null_views},
         {"model_new_zero_lengths", test_model_new_zero_lengths},
         {"model_new_inconsistent_offsets", test_model_new_inconsistent_offsets},
         {"model_new_element_node_count", test_model_new_element_node_count},

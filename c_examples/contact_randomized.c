@@ -186,11 +186,21 @@ static HyconStatus make_model(const Problem *p, const Variant *v, const Mesh *m,
         materials[i].analysis = HYCON_PLANE_STRAIN;
     }
     *out = NULL;
-    s = hycon_model_new(out, m->coords, m->nn, m->offsets, m->conn, m->ne, m->material,
-                        materials, 2, HYCON_ELEMENT_HYBRID);
+    HyconElementBlock elements;
+    HyconPolyline a, b;
+    elements.offsets = m->offsets;
+    elements.nodes = m->conn;
+    elements.n_elements = m->ne;
+    elements.materials = m->material;
+    elements.kind = HYCON_ELEMENT_HYBRID;
+    a.nodes = m->a;
+    a.n = m->na;
+    b.nodes = m->b;
+    b.n = m->nb;
+    s = hycon_model_new(out, m->coords, m->nn, &elements, materials, 2);
     if (s == HYCON_OK) s = hycon_model_prescribe(*out, m->bottom, m->nbottom, HYCON_XY);
     if (s == HYCON_OK) s = hycon_model_prescribe(*out, m->top, m->ntop, HYCON_XY);
-    if (s == HYCON_OK) s = hycon_model_add_pair(*out, m->a, m->na, m->b, m->nb, p->friction, NULL);
+    if (s == HYCON_OK) s = hycon_model_add_pair(*out, &a, &b, p->friction, NULL);
     return s;
 }
 
@@ -231,10 +241,10 @@ static bool snapshot(HyconContact *c, const Mesh *m, Snapshot *s) {
     HyconNodeResult r[MAXA];
     size_t i;
     memset(s, 0, sizeof *s);
-    if (hycon_contact_node_results(c, 0, r, m->na) != HYCON_OK) return false;
+    if (hycon_contact_node_results(c, 0, r, m->na, NULL) != HYCON_OK) return false;
     for (i = 0; i < m->na; ++i) s->tn[i] = r[i].tn, s->ts[i] = r[i].ts;
-    if (hycon_contact_displacement(c, s->u, 2 * m->nn) != HYCON_OK) return false;
-    return hycon_contact_record_count(c, &s->records) == HYCON_OK;
+    if (hycon_contact_displacement(c, s->u, 2 * m->nn, NULL) != HYCON_OK) return false;
+    return hycon_contact_records(c, 0, NULL, 0, &s->records) == HYCON_OK;
 }
 
 static bool untouched(const double *a, size_t n) {
@@ -278,20 +288,20 @@ static bool hostile_call(HyconContact *c, const Problem *p, const Variant *v, co
         break;
     case 5:
         for (i = 0; i <= MAXA; ++i) nodes[i].tn = SENTINEL;
-        s = hycon_contact_node_results(c, 0, nodes, m->na - 1);
+        s = hycon_contact_node_results(c, 0, nodes, m->na - 1, NULL);
         for (i = 0; i <= MAXA; ++i) ok = ok && nodes[i].tn == SENTINEL;
         break;
-    case 6: s = hycon_contact_node_results(c, 1 + below(3), nodes, MAXA); break;
-    case 7: s = hycon_contact_displacement(c, out, n - 1 - below(n)); break;
+    case 6: s = hycon_contact_node_results(c, 1 + below(3), nodes, MAXA, NULL); break;
+    case 7: s = hycon_contact_displacement(c, out, n - 1 - below(n), NULL); break;
     case 8: {
         size_t count = 0;
-        hycon_contact_record_count(c, &count);
+        hycon_contact_records(c, 0, NULL, 0, &count);
         records[0].r = SENTINEL;
-        s = hycon_contact_records(c, count + 1 + below(3), records, 2);
+        s = hycon_contact_records(c, count + 1 + below(3), records, 2, NULL);
         ok = ok && records[0].r == SENTINEL;
         break;
     }
-    case 9: s = hycon_contact_b_node_results(c, 0, NULL, m->nb); break;
+    case 9: s = hycon_contact_b_node_results(c, 0, NULL, m->nb, NULL); break;
     case 10: {
         HyconContactOptions o;
         HyconModel *model = NULL;
@@ -327,7 +337,7 @@ static bool hostile_call(HyconContact *c, const Problem *p, const Variant *v, co
         s = hycon_element_check(HYCON_ELEMENT_HYBRID, shape == 2 ? 5 : 4, shapes[shape]);
         break;
     }
-    default: s = hycon_contact_forces(c, out, n - 1 - below(n)); break;
+    default: s = hycon_contact_forces(c, out, n - 1 - below(n), NULL); break;
     }
     ok = ok && failed_with_message(s) && untouched(out, 2 * MAXN + 8);
     for (i = 0; i < sizeof info; ++i) ok = ok && ((unsigned char *)&info)[i] == 0xA5;
@@ -372,7 +382,7 @@ static Outcome run(const Problem *p, const Variant *v, size_t hostile) {
         o.status = hycon_contact_increment(c, load, 2 * m.nn, qp, 2 * m.nn, &info);
         if (o.status != HYCON_OK) break;
         if (step == 2) o.zero_iterations = info.iterations;
-        o.status = hycon_contact_node_results(c, 0, r, m.na);
+        o.status = hycon_contact_node_results(c, 0, r, m.na, NULL);
         for (i = 0; i < m.na; ++i) o.tn[step][i] = r[i].tn, o.ts[step][i] = r[i].ts;
         for (i = 0; i < hostile; ++i) hostile_ok = hostile_call(c, p, v, &m) && hostile_ok;
     }

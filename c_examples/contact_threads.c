@@ -280,17 +280,17 @@ static bool check(Run *r, HyconStatus s, const char *what) {
 
 /* The results of the increment just converged. */
 static bool record_increment(Run *r, HyconContact *c, size_t k) {
-    return check(r, hycon_contact_node_results(c, 0, r->a + k * r->na, r->na), "node results") &&
-           check(r, hycon_contact_b_node_results(c, 0, r->b + k * r->nb, r->nb),
+    return check(r, hycon_contact_node_results(c, 0, r->a + k * r->na, r->na, NULL), "node results") &&
+           check(r, hycon_contact_b_node_results(c, 0, r->b + k * r->nb, r->nb, NULL),
                  "B node results") &&
-           check(r, hycon_contact_displacement(c, r->u + k * r->nfield, r->nfield),
+           check(r, hycon_contact_displacement(c, r->u + k * r->nfield, r->nfield, NULL),
                  "displacement");
 }
 
 static bool record_history(Run *r, HyconContact *c) {
-    if (!check(r, hycon_contact_record_count(c, &r->nrecords), "record count")) return false;
+    if (!check(r, hycon_contact_records(c, 0, NULL, 0, &r->nrecords), "record count")) return false;
     r->records = (HyconIterationRecord *)xcalloc(r->nrecords, sizeof(HyconIterationRecord));
-    return check(r, hycon_contact_records(c, 0, r->records, r->nrecords), "records");
+    return check(r, hycon_contact_records(c, 0, r->records, r->nrecords, NULL), "records");
 }
 
 static void run_init(Run *r, const Problem *p, const Mesh *m, size_t nfield) {
@@ -311,8 +311,59 @@ typedef struct {
     pthread_barrier_t *start; /* NULL: no waiting */
     Run model, host;
     bool own_error;    /* the last error message stayed this thread's */
+    bool concurrent;   /* concurrent const queries on one handle agreed with a sequential one */
     double start_time, end_time; /* seconds (CLOCK_MONOTONIC) */
 } Job;
+
+/* Const queries on one handle from two threads at once (displacement recovery racing to fill
+ * the handle's cache, then displacement increments, each a solve under the handle's lock). */
+typedef struct {
+    const HyconContact *c;
+    size_t n;
+    double *u, *du;
+    HyconStatus status;
+} Query;
+
+static void *query_const(void *arg) {
+    Query *q = (Query *)arg;
+    q->status = hycon_contact_displacement(q->c, q->u, q->n, NULL);
+    if (q->status == HYCON_OK)
+        q->status = hycon_contact_displacement_increment(q->c, q->du, q->n, NULL);
+    return NULL;
+}
+
+/* After a repeated increment (the cache is empty again), two threads query `c` at once; their
+ * results must equal each other and a later sequential query, bit for bit. */
+static bool concurrent_queries(HyconContact *c, const double *load, const double *qp, size_t n) {
+    Query q[2];
+    pthread_t t[2];
+    double *u = (double *)xcalloc(n, sizeof(double));
+    bool ok = hycon_contact_increment(c, load, n, qp, n, NULL) == HYCON_OK;
+    int i;
+    for (i = 0; i < 2; ++i) {
+        q[i].c = c;
+        q[i].n = n;
+        q[i].u = (double *)xcalloc(n, sizeof(double));
+        q[i].du = (double *)xcalloc(n, sizeof(double));
+        q[i].status = HYCON_ERROR_PANIC;
+    }
+    for (i = 0; ok && i < 2; ++i) ok = pthread_create(&t[i], NULL, query_const, &q[i]) == 0;
+    if (ok) {
+        pthread_join(t[0], NULL);
+        pthread_join(t[1], NULL);
+        ok = q[0].status == HYCON_OK && q[1].status == HYCON_OK &&
+             hycon_contact_displacement(c, u, n, NULL) == HYCON_OK &&
+             memcmp(q[0].u, q[1].u, n * sizeof(double)) == 0 &&
+             memcmp(q[0].u, u, n * sizeof(double)) == 0 &&
+             memcmp(q[0].du, q[1].du, n * sizeof(double)) == 0;
+    }
+    for (i = 0; i < 2; ++i) {
+        free(q[i].u);
+        free(q[i].du);
+    }
+    free(u);
+    return ok;
+}
 
 static double now(void) {
     struct timespec t;
@@ -332,6 +383,9 @@ static void *solve_problem(void *arg) {
     HyconContact *cm = NULL, *ch = NULL;
     double *load, *qp, *rhs, *a_xy, *b_xy;
     int64_t *a_eq, *b_eq;
+    HyconElementBlock elements;
+    HyconPolyline a_line, b_line;
+    HyconHostNodes a_nodes, b_nodes;
     size_t i, k;
 
     if (job->start != NULL) pthread_barrier_wait(job->start);
@@ -358,20 +412,37 @@ static void *solve_problem(void *arg) {
     a_eq = (int64_t *)xcalloc(2 * mesh.na, sizeof(int64_t));
     b_eq = (int64_t *)xcalloc(2 * mesh.nb, sizeof(int64_t));
 
+    elements.offsets = mesh.offsets;
+    elements.nodes = mesh.conn;
+    elements.n_elements = mesh.n_elements;
+    elements.materials = NULL; /* all use material 0 */
+    elements.kind = HYCON_ELEMENT_HYBRID;
+    a_line.nodes = mesh.a;
+    a_line.n = mesh.na;
+    b_line.nodes = mesh.b;
+    b_line.n = mesh.nb;
+    a_nodes.ids = mesh.a;
+    a_nodes.coords = a_xy;
+    a_nodes.equations = a_eq;
+    a_nodes.n = mesh.na;
+    b_nodes.ids = mesh.b;
+    b_nodes.coords = b_xy;
+    b_nodes.equations = b_eq;
+    b_nodes.n = mesh.nb;
+
     /* model API, with a monitor */
     hycon_contact_options_default(&options);
     options.monitor = monitor;
     options.monitor_data = &mon;
     if (check(&job->model,
-              hycon_model_new(&model, mesh.coords, mesh.n_nodes, mesh.offsets, mesh.conn,
-                              mesh.n_elements, NULL, &steel, 1, HYCON_ELEMENT_HYBRID),
+              hycon_model_new(&model, mesh.coords, mesh.n_nodes, &elements, &steel, 1),
               "hycon_model_new") &&
         check(&job->model, hycon_model_prescribe(model, mesh.bottom, mesh.nbottom, HYCON_XY),
               "prescribe bottom") &&
         check(&job->model, hycon_model_prescribe(model, mesh.top, mesh.ntop, HYCON_XY),
               "prescribe top") &&
         check(&job->model,
-              hycon_model_add_pair(model, mesh.a, mesh.na, mesh.b, mesh.nb, p->friction, NULL),
+              hycon_model_add_pair(model, &a_line, &b_line, p->friction, NULL),
               "add pair"))
         check(&job->model, hycon_contact_new(&cm, model, &options), "hycon_contact_new");
     hycon_model_free(model);
@@ -391,8 +462,7 @@ static void *solve_problem(void *arg) {
     }
     if (check(&job->host, hycon_host_new(&desc, host.n), "hycon_host_new") &&
         check(&job->host,
-              hycon_host_add_pair(desc, mesh.a, a_xy, a_eq, mesh.na, mesh.b, b_xy, b_eq, mesh.nb,
-                                  p->friction, NULL),
+              hycon_host_add_pair(desc, &a_nodes, &b_nodes, p->friction, NULL),
               "host add pair") &&
         check(&job->host, hycon_host_set_solver(desc, host_solve, &host), "set solver"))
         check(&job->host, hycon_contact_new_host(&ch, desc, NULL), "hycon_contact_new_host");
@@ -413,13 +483,19 @@ static void *solve_problem(void *arg) {
     }
     if (job->model.ok) record_history(&job->model, cm);
     if (job->host.ok) record_history(&job->host, ch);
+    /* the model handle (no callback) queried from two more threads at once */
+    job->concurrent = !job->model.ok || p->increments == 0;
+    if (job->model.ok && p->increments > 0) {
+        prescribed_values(&mesh, qp, p->press[p->increments - 1], p->slide[p->increments - 1]);
+        job->concurrent = concurrent_queries(cm, load, qp, 2 * mesh.n_nodes);
+    }
 
     /* the last error message is this thread's own */
     {
         char expected[64], message[256];
         HyconNodeResult dummy;
         sprintf(expected, "contact pair %u does not exist", (unsigned)p->bad_pair);
-        job->own_error = hycon_contact_node_results(cm, p->bad_pair, &dummy, 1) ==
+        job->own_error = hycon_contact_node_results(cm, p->bad_pair, &dummy, 1, NULL) ==
                          HYCON_ERROR_INVALID_ARGUMENT;
         hycon_contact_free(cm);
         hycon_contact_free(ch);
@@ -593,7 +669,8 @@ int main(int argc, char **argv) {
         reference[i].p = &problems[i];
         solve_problem(&reference[i]);
         if (!meaningful(&reference[i].model, "reference model run") ||
-            !meaningful(&reference[i].host, "reference host run") || !reference[i].own_error) {
+            !meaningful(&reference[i].host, "reference host run") || !reference[i].own_error ||
+            !reference[i].concurrent) {
             printf("reference %s FAILED\n", problems[i].name);
             return 1;
         }
@@ -629,6 +706,12 @@ int main(int argc, char **argv) {
             ok = same_run(&reference[i].model, &jobs[i].model, label, &st) && ok;
             sprintf(label, "round %d problem %s host API", round, problems[i].name);
             ok = same_run(&reference[i].host, &jobs[i].host, label, &st) && ok;
+            if (!jobs[i].concurrent) {
+                fprintf(stderr, "  round %d problem %s: concurrent const queries on one handle "
+                                "FAILED\n",
+                        round, problems[i].name);
+                ok = false;
+            }
             if (!jobs[i].own_error) {
                 fprintf(stderr, "  round %d problem %s: the last error message is not the "
                                 "thread's own\n",

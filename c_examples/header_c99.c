@@ -88,6 +88,20 @@ HYCON_STATIC_ASSERT(HyconCouplingEntry_first, offsetof(HyconCouplingEntry, row) 
 HYCON_ORDER(HyconCouplingEntry, row, node);
 HYCON_ORDER(HyconCouplingEntry, node, side);
 HYCON_ORDER(HyconCouplingEntry, side, value);
+HYCON_STATIC_ASSERT(HyconConstraintEntry_first, offsetof(HyconConstraintEntry, row) == 0);
+HYCON_ORDER(HyconConstraintEntry, row, column);
+HYCON_ORDER(HyconConstraintEntry, column, value);
+HYCON_STATIC_ASSERT(HyconElementBlock_first, offsetof(HyconElementBlock, offsets) == 0);
+HYCON_ORDER(HyconElementBlock, offsets, nodes);
+HYCON_ORDER(HyconElementBlock, nodes, n_elements);
+HYCON_ORDER(HyconElementBlock, n_elements, materials);
+HYCON_ORDER(HyconElementBlock, materials, kind);
+HYCON_STATIC_ASSERT(HyconPolyline_first, offsetof(HyconPolyline, nodes) == 0);
+HYCON_ORDER(HyconPolyline, nodes, n);
+HYCON_STATIC_ASSERT(HyconHostNodes_first, offsetof(HyconHostNodes, ids) == 0);
+HYCON_ORDER(HyconHostNodes, ids, coords);
+HYCON_ORDER(HyconHostNodes, coords, equations);
+HYCON_ORDER(HyconHostNodes, equations, n);
 HYCON_STATIC_ASSERT(enum_sizes, sizeof(HyconBackend) == 4 && sizeof(HyconKinematics) == 4 &&
                                     sizeof(HyconDirections) == 4 &&
                                     sizeof(HyconNodeState) == 4 && sizeof(HyconSide) == 4 &&
@@ -124,18 +138,16 @@ static const HyconSolveFn solve_fn = solve_stub;
 static HyconStatus (*const fn_version)(int32_t *) = hycon_version;
 static size_t (*const fn_last_error_message)(char *, size_t) = hycon_last_error_message;
 static const char *(*const fn_status_name)(HyconStatus) = hycon_status_name;
-static HyconStatus (*const fn_debug_panic)(void) = hycon_debug_panic;
 static HyconStatus (*const fn_options_default)(HyconContactOptions *) =
     hycon_contact_options_default;
-static HyconStatus (*const fn_model_new)(HyconModel **, const double *, size_t, const size_t *,
-                                         const size_t *, size_t, const size_t *,
-                                         const HyconMaterial *, size_t,
-                                         HyconElementKind) = hycon_model_new;
+static HyconStatus (*const fn_model_new)(HyconModel **, const double *, size_t,
+                                         const HyconElementBlock *, const HyconMaterial *,
+                                         size_t) = hycon_model_new;
 static void (*const fn_model_free)(HyconModel *) = hycon_model_free;
 static HyconStatus (*const fn_model_prescribe)(HyconModel *, const size_t *, size_t,
                                                HyconDirections) = hycon_model_prescribe;
-static HyconStatus (*const fn_model_add_pair)(HyconModel *, const size_t *, size_t,
-                                              const size_t *, size_t, double,
+static HyconStatus (*const fn_model_add_pair)(HyconModel *, const HyconPolyline *,
+                                              const HyconPolyline *, double,
                                               size_t *) = hycon_model_add_pair;
 static HyconStatus (*const fn_model_set_plate)(HyconModel *, const size_t *, size_t) =
     hycon_model_set_plate;
@@ -143,59 +155,55 @@ static HyconStatus (*const fn_contact_new)(HyconContact **, const HyconModel *,
                                            const HyconContactOptions *) = hycon_contact_new;
 static HyconStatus (*const fn_host_new)(HyconHost **, size_t) = hycon_host_new;
 static void (*const fn_host_free)(HyconHost *) = hycon_host_free;
-static HyconStatus (*const fn_host_add_pair)(HyconHost *, const size_t *, const double *,
-                                             const int64_t *, size_t, const size_t *,
-                                             const double *, const int64_t *, size_t, double,
+static HyconStatus (*const fn_host_add_pair)(HyconHost *, const HyconHostNodes *,
+                                             const HyconHostNodes *, double,
                                              size_t *) = hycon_host_add_pair;
 static HyconStatus (*const fn_host_set_csr)(HyconHost *, const size_t *, const size_t *,
                                             const double *, HyconTriangle) = hycon_host_set_csr;
 static HyconStatus (*const fn_host_set_solver)(HyconHost *, HyconSolveFn, void *) =
     hycon_host_set_solver;
-static HyconStatus (*const fn_host_set_elements)(HyconHost *, HyconElementKind,
-                                                 const HyconMaterial *, size_t, const size_t *,
-                                                 const size_t *, const size_t *, size_t,
-                                                 const size_t *, const double *, const int64_t *,
+static HyconStatus (*const fn_host_set_elements)(HyconHost *, const HyconHostNodes *,
+                                                 const HyconElementBlock *,
+                                                 const HyconMaterial *,
                                                  size_t) = hycon_host_set_elements;
 static HyconStatus (*const fn_contact_new_host)(HyconContact **, const HyconHost *,
                                                 const HyconContactOptions *) =
     hycon_contact_new_host;
 static void (*const fn_contact_free)(HyconContact *) = hycon_contact_free;
-static HyconStatus (*const fn_field_len)(const HyconContact *, size_t *) =
-    hycon_contact_field_len;
 static HyconStatus (*const fn_increment)(HyconContact *, const double *, size_t, const double *,
                                          size_t, HyconIncrementInfo *) = hycon_contact_increment;
-static HyconStatus (*const fn_increment_plate)(HyconContact *, const double *, size_t,
-                                               const double *, size_t, const HyconPlateControl *,
-                                               const double *, HyconIncrementInfo *) =
-    hycon_contact_increment_plate;
+static HyconStatus (*const fn_increment_with_plate)(HyconContact *, const double *, size_t,
+                                                    const double *, size_t,
+                                                    const HyconPlateControl *, const double *,
+                                                    HyconIncrementInfo *) =
+    hycon_contact_increment_with_plate;
 static HyconStatus (*const fn_plate)(const HyconContact *, double *, double *) =
     hycon_contact_plate;
-static HyconStatus (*const fn_displacement)(HyconContact *, double *, size_t) =
+static HyconStatus (*const fn_displacement)(const HyconContact *, double *, size_t, size_t *) =
     hycon_contact_displacement;
-static HyconStatus (*const fn_displacement_increment)(HyconContact *, double *, size_t) =
+static HyconStatus (*const fn_displacement_increment)(const HyconContact *, double *, size_t,
+                                                      size_t *) =
     hycon_contact_displacement_increment;
-static HyconStatus (*const fn_forces)(const HyconContact *, double *, size_t) =
+static HyconStatus (*const fn_forces)(const HyconContact *, double *, size_t, size_t *) =
     hycon_contact_forces;
-static HyconStatus (*const fn_pair_size)(const HyconContact *, size_t, size_t *, size_t *) =
-    hycon_contact_pair_size;
 static HyconStatus (*const fn_node_results)(const HyconContact *, size_t, HyconNodeResult *,
-                                            size_t) = hycon_contact_node_results;
+                                            size_t, size_t *) = hycon_contact_node_results;
 static HyconStatus (*const fn_b_node_results)(const HyconContact *, size_t, HyconBNodeResult *,
-                                              size_t) = hycon_contact_b_node_results;
-static HyconStatus (*const fn_stress_tractions)(HyconContact *, size_t, double *, size_t) =
-    hycon_contact_stress_tractions;
-static HyconStatus (*const fn_record_count)(const HyconContact *, size_t *) =
-    hycon_contact_record_count;
+                                              size_t, size_t *) = hycon_contact_b_node_results;
+static HyconStatus (*const fn_stress_tractions)(const HyconContact *, size_t, double *, size_t,
+                                                size_t *) = hycon_contact_stress_tractions;
 static HyconStatus (*const fn_records)(const HyconContact *, size_t, HyconIterationRecord *,
-                                       size_t) = hycon_contact_records;
-static HyconStatus (*const fn_timings)(HyconContact *, HyconTimings *, size_t *) =
+                                       size_t, size_t *) = hycon_contact_records;
+static HyconStatus (*const fn_timings)(const HyconContact *, HyconTimings *, size_t *) =
     hycon_contact_timings;
-static HyconStatus (*const fn_element_nodes)(const HyconContact *, size_t, HyconContactNode *,
-                                             size_t) = hycon_contact_element_nodes;
-static HyconStatus (*const fn_coupling)(const HyconContact *, size_t, HyconCouplingEntry *,
-                                        size_t, size_t *) = hycon_contact_coupling;
-static HyconStatus (*const fn_kc)(const HyconContact *, size_t, size_t *, size_t, size_t *,
-                                  double *, size_t, size_t *) = hycon_contact_kc;
+static HyconStatus (*const fn_surface_nodes)(const HyconContact *, size_t, HyconContactNode *,
+                                             size_t, size_t *) = hycon_contact_surface_nodes;
+static HyconStatus (*const fn_surface_coupling)(const HyconContact *, size_t,
+                                                HyconCouplingEntry *, size_t, size_t *) =
+    hycon_contact_surface_coupling;
+static HyconStatus (*const fn_constraint_rows)(const HyconContact *, size_t,
+                                               HyconConstraintEntry *, size_t, size_t *) =
+    hycon_contact_constraint_rows;
 static HyconStatus (*const fn_element_check)(HyconElementKind, size_t, const double *) =
     hycon_element_check;
 static HyconStatus (*const fn_element_stiffness)(HyconElementKind, size_t, const double *,
@@ -220,20 +228,20 @@ int main(void) {
      * pointer types is allowed; each one is only ever called through its own type). */
     const any_function functions[] = {
         (any_function)fn_version, (any_function)fn_last_error_message,
-        (any_function)fn_status_name, (any_function)fn_debug_panic,
+        (any_function)fn_status_name,
         (any_function)fn_options_default, (any_function)fn_model_new, (any_function)fn_model_free,
         (any_function)fn_model_prescribe, (any_function)fn_model_add_pair,
         (any_function)fn_model_set_plate, (any_function)fn_contact_new, (any_function)fn_host_new,
         (any_function)fn_host_free, (any_function)fn_host_add_pair, (any_function)fn_host_set_csr,
         (any_function)fn_host_set_solver, (any_function)fn_host_set_elements,
         (any_function)fn_contact_new_host,
-        (any_function)fn_contact_free, (any_function)fn_field_len, (any_function)fn_increment,
-        (any_function)fn_increment_plate, (any_function)fn_plate, (any_function)fn_displacement,
-        (any_function)fn_displacement_increment, (any_function)fn_forces,
-        (any_function)fn_pair_size, (any_function)fn_node_results, (any_function)fn_b_node_results,
-        (any_function)fn_stress_tractions, (any_function)fn_record_count, (any_function)fn_records,
-        (any_function)fn_timings, (any_function)fn_element_nodes, (any_function)fn_coupling,
-        (any_function)fn_kc, (any_function)fn_element_check, (any_function)fn_element_stiffness,
+        (any_function)fn_contact_free, (any_function)fn_increment,
+        (any_function)fn_increment_with_plate, (any_function)fn_plate,
+        (any_function)fn_displacement, (any_function)fn_displacement_increment,
+        (any_function)fn_forces, (any_function)fn_node_results, (any_function)fn_b_node_results,
+        (any_function)fn_stress_tractions, (any_function)fn_records, (any_function)fn_timings,
+        (any_function)fn_surface_nodes, (any_function)fn_surface_coupling,
+        (any_function)fn_constraint_rows, (any_function)fn_element_check, (any_function)fn_element_stiffness,
         (any_function)fn_element_stress, (any_function)fn_element_stress_params,
         (any_function)fn_element_edge_traction, (any_function)monitor_fn, (any_function)solve_fn};
     int32_t v[3] = {-1, -1, -1};

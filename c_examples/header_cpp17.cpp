@@ -33,7 +33,8 @@ constexpr bool all_plain =
     ((std::is_standard_layout_v<T> && std::is_trivially_copyable_v<T>) && ...);
 static_assert(all_plain<HyconIterationRecord, HyconContactOptions, HyconIncrementInfo,
                         HyconNodeResult, HyconBNodeResult, HyconTimings, HyconContactNode,
-                        HyconCouplingEntry>,
+                        HyconCouplingEntry, HyconConstraintEntry, HyconElementBlock,
+                        HyconPolyline, HyconHostNodes>,
               "contact structs are plain data");
 static_assert(std::is_same_v<HyconMonitorFn,
                              std::int32_t (*)(void *, const HyconIterationRecord *)>,
@@ -41,16 +42,25 @@ static_assert(std::is_same_v<HyconMonitorFn,
 static_assert(std::is_same_v<HyconSolveFn, std::int32_t (*)(void *, std::size_t, std::size_t,
                                                            const double *, double *)>,
               "HyconSolveFn");
-static_assert(std::is_same_v<decltype(&hycon_contact_increment_plate),
+static_assert(std::is_same_v<decltype(&hycon_contact_increment_with_plate),
                              HyconStatus (*)(HyconContact *, const double *, std::size_t,
                                              const double *, std::size_t,
                                              const HyconPlateControl *, const double *,
                                              HyconIncrementInfo *)>,
-              "hycon_contact_increment_plate signature");
+              "hycon_contact_increment_with_plate signature");
 static_assert(std::is_same_v<decltype(&hycon_contact_node_results),
                              HyconStatus (*)(const HyconContact *, std::size_t, HyconNodeResult *,
-                                             std::size_t)>,
+                                             std::size_t, std::size_t *)>,
               "hycon_contact_node_results signature");
+static_assert(std::is_same_v<decltype(&hycon_contact_displacement),
+                             HyconStatus (*)(const HyconContact *, double *, std::size_t,
+                                             std::size_t *)>,
+              "hycon_contact_displacement signature (const handle, size convention)");
+static_assert(std::is_same_v<decltype(&hycon_model_new),
+                             HyconStatus (*)(HyconModel **, const double *, std::size_t,
+                                             const HyconElementBlock *, const HyconMaterial *,
+                                             std::size_t)>,
+              "hycon_model_new signature (nodes, elements, materials)");
 static_assert(std::is_same_v<decltype(&hycon_host_set_solver),
                              HyconStatus (*)(HyconHost *, HyconSolveFn, void *)>,
               "hycon_host_set_solver signature");

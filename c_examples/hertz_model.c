@@ -93,9 +93,9 @@ static void read_curves(HyconContact *c, const DiskMesh *m, HyconNodeResult *nod
                         HyconBNodeResult *bnodes, double *tractions, Curves *cv) {
     size_t k;
     double wsum = 0.0, wx = 0.0;
-    CHECK(hycon_contact_node_results(c, 0, nodes, m->n_a));
-    CHECK(hycon_contact_b_node_results(c, 0, bnodes, m->n_b));
-    CHECK(hycon_contact_stress_tractions(c, 0, tractions, 2 * m->n_a));
+    CHECK(hycon_contact_node_results(c, 0, nodes, m->n_a, NULL));
+    CHECK(hycon_contact_b_node_results(c, 0, bnodes, m->n_b, NULL));
+    CHECK(hycon_contact_stress_tractions(c, 0, tractions, 2 * m->n_a, NULL));
     cv->load = 0.0;
     cv->vertical = 0.0;
     cv->active = 0;
@@ -201,11 +201,17 @@ int main(int argc, char **argv) {
         materials[k].thickness = 1.0;
         materials[k].analysis = HYCON_PLANE_STRAIN;
     }
-    CHECK(hycon_model_new(&model, m.coords, m.n_nodes, m.offsets, m.nodes, m.n_elements,
-                          m.materials, materials, 2, HYCON_ELEMENT_HYBRID));
+    {
+        const HyconElementBlock elements = {m.offsets, m.nodes, m.n_elements, m.materials,
+                                            HYCON_ELEMENT_HYBRID};
+        CHECK(hycon_model_new(&model, m.coords, m.n_nodes, &elements, materials, 2));
+    }
     CHECK(hycon_model_prescribe(model, m.bottom, m.n_bottom, HYCON_XY));
     CHECK(hycon_model_set_plate(model, m.top, m.n_top));
-    CHECK(hycon_model_add_pair(model, m.a, m.n_a, m.b, m.n_b, 0.0, NULL));
+    {
+        const HyconPolyline a = {m.a, m.n_a}, b = {m.b, m.n_b};
+        CHECK(hycon_model_add_pair(model, &a, &b, 0.0, NULL));
+    }
 
     log = xcalloc(1, sizeof *log);
     CHECK(hycon_contact_options_default(&options));
@@ -217,7 +223,7 @@ int main(int argc, char **argv) {
     hycon_model_free(model); /* the analysis keeps its own copy */
     model = NULL;
 
-    CHECK(hycon_contact_field_len(c, &n_field));
+    CHECK(hycon_contact_displacement(c, NULL, 0, &n_field)); /* the size query */
     load = xcalloc(n_field, sizeof *load);
     prescribed = xcalloc(n_field, sizeof *prescribed);
     nodes = xcalloc(m.n_a, sizeof *nodes);
@@ -241,8 +247,8 @@ int main(int argc, char **argv) {
         value[0] = 0.0;
         value[1] = -applied;
         printf("increment %lu: plate force -%.6e in y, x held\n", (unsigned long)step, applied);
-        CHECK(hycon_contact_increment_plate(c, load, n_field, prescribed, n_field, control, value,
-                                            &info));
+        CHECK(hycon_contact_increment_with_plate(c, load, n_field, prescribed, n_field, control,
+                                                 value, &info));
         CHECK(hycon_contact_plate(c, plate_u, plate_f));
         read_curves(c, &m, nodes, bnodes, tractions, &cv);
         printf("  converged in %lu iterations: %lu active nodes, plate displacement (%.3e, %.6e),"
@@ -303,9 +309,9 @@ int main(int argc, char **argv) {
     }
 
     /* the records: as many as the monitor saw, and the same */
-    CHECK(hycon_contact_record_count(c, &n_records));
+    CHECK(hycon_contact_records(c, 0, NULL, 0, &n_records)); /* the size query */
     records = xcalloc(n_records, sizeof *records);
-    CHECK(hycon_contact_records(c, 0, records, n_records));
+    CHECK(hycon_contact_records(c, 0, records, n_records, NULL));
     if (n_records != log->count) {
         printf("wrong value: %lu records, the monitor saw %lu\n", (unsigned long)n_records,
                (unsigned long)log->count);

@@ -169,7 +169,7 @@ struct Drive {
 hycon::Result<HyconIncrementInfo> advance(hycon::Contact &contact, const std::vector<double> &zeros,
                                           Drive from, Drive to, int depth, Counters &counters) {
     const std::size_t calls = counters.monitor_calls;
-    auto info = contact.increment_plate(zeros, zeros, hycon::plate_displacement(to.slide),
+    auto info = contact.increment_with_plate(zeros, zeros, hycon::plate_displacement(to.slide),
                                         hycon::plate_force(to.force));
     if (info || info.code() != HYCON_ERROR_CONTACT || depth == 0) return info;
     counters.failed_calls += counters.monitor_calls - calls;
@@ -268,7 +268,7 @@ int main(int argc, char **argv) {
         ++step;
         const int retries = counters.retries;
         const HyconIncrementInfo info =
-            take(advance(contact, zeros, current, drive, 3, counters), "increment_plate");
+            take(advance(contact, zeros, current, drive, 3, counters), "increment_with_plate");
         const double direction = drive.slide > current.slide   ? 1.0
                                  : drive.slide < current.slide ? -1.0
                                                                : 0.0;

@@ -15,18 +15,38 @@
  * - Status codes: every function except the few that return a length or a string returns a
  *   HyconStatus: 0 (HYCON_OK) on success, < 0 (HYCON_ERROR_*) on failure, > 0 a warning (the
  *   call succeeded and wrote its outputs; 1..99 reserved, none produced yet).
- *   hycon_last_error_message(buf, len) copies the message of the last failed call on this
- *   thread into buf and returns the length needed (with the NUL); (NULL, 0) queries it.
- *   hycon_status_name(status) gives the constant's name as a static string.
- * - Arrays are (pointer, length) pairs, or a pointer whose length is fixed by other arguments
- *   (stated per function). (NULL, 0) is an empty array.
- * - Outputs are written only on success; on an error every output is left untouched.
+ *   Every status-returning call sets this thread's error message: to a description of the
+ *   failure when it fails, to the empty string when it succeeds (see
+ *   hycon_last_error_message, which copies it; it, hycon_status_name and the _free functions
+ *   leave it unchanged). hycon_status_name(status) gives the constant's name as a static string.
+ * - Input arrays are (pointer, length) pairs, or a pointer whose length is fixed by other
+ *   arguments (stated per function). (NULL, 0) is an empty array. Inputs that travel together
+ *   come as small view structs (HyconElementBlock, HyconPolyline, HyconHostNodes), in one
+ *   order wherever a mesh is given: nodes, elements, materials.
+ * - Size convention: every function that fills a variable-length array takes
+ *   (T *out, size_t len, size_t *needed), len counted in elements of T:
+ *   - needed (may be NULL) receives the element count of the full result, on success and on
+ *     HYCON_ERROR_BUFFER_TOO_SMALL;
+ *   - out == NULL && len == 0 is the size query: HYCON_OK, only *needed is written;
+ *   - out == NULL with len > 0 is HYCON_ERROR_NULL_POINTER;
+ *   - len < needed (out non-NULL) is HYCON_ERROR_BUFFER_TOO_SMALL, the count in the message,
+ *     out untouched;
+ *   - len >= needed writes exactly needed elements (the rest of out is untouched).
+ *   So: hycon_X(..., NULL, 0, &n); allocate n; hycon_X(..., buf, n, NULL).
+ * - Pointers: a NULL required pointer is HYCON_ERROR_NULL_POINTER; a NULL optional one (stated
+ *   per function) means "not wanted". Any non-NULL pointer, required or optional, input or
+ *   output, that is not aligned for its type is HYCON_ERROR_INVALID_ARGUMENT naming it.
+ * - Outputs are written only on success; on an error every output is left untouched (the one
+ *   exception: *needed on HYCON_ERROR_BUFFER_TOO_SMALL).
  * - Ownership: the caller owns all memory it passes; the library never frees a caller pointer.
  * - Thread safety: the element routines are reentrant and thread-safe; the last error message
- *   is thread-local. Handles (HyconModel, HyconHost, HyconContact) are not locked inside: one
- *   handle may be used by one thread at a time (it may move between threads); distinct handles
- *   share nothing and may be used from different threads at once. Callbacks (solve, monitor)
- *   run on the thread that called into the handle.
+ *   is thread-local. A function taking a non-const handle (HyconModel *, HyconHost *,
+ *   HyconContact *) needs it exclusively: no other call on that handle at the same time.
+ *   Functions taking a const handle (every result query of a HyconContact) may run on one
+ *   handle from several threads at once (solves for displacement recovery are serialized
+ *   inside, so a solve callback is never entered concurrently). Handles may move between
+ *   threads; distinct handles share nothing. Callbacks (solve, monitor) run on the thread that
+ *   called into the handle.
  * - Handles: hycon_X_new creates, hycon_X_free destroys; hycon_X_free(NULL) is a no-op. Using a
  *   handle after freeing it, or freeing it twice, is undefined behaviour (as with free()).
  * - Caller memory: arrays passed in are copied or read during the call only. The exception is
@@ -48,21 +68,17 @@
 #include <stdint.h>
 #include <stddef.h>
 
-// The most true corners an element has: 4 (a quadrilateral; 5- and 6-node transition
-// elements add mid-side nodes on straight edges).
-#define MAX_CORNERS 4
-
 // Major version of the library this header belongs to (from `Cargo.toml`).
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 3
+#define HYCON_VERSION_MINOR 4
 
 // Patch version of the library this header belongs to.
 #define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 300
+#define HYCON_VERSION 400
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6
@@ -78,9 +94,12 @@
 
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
-// `hycon_contact_free`. Thread safety: a `HyconContact` may be moved between threads but must
-// not be used from two threads at once (no internal locking); distinct handles share nothing
-// and may run concurrently. Callbacks run on the calling thread.
+// `hycon_contact_free`. Thread safety: the functions taking `HyconContact *` (increments,
+// free) need the handle exclusively; the queries taking `const HyconContact *` may run on one
+// handle from several threads at once (the displacement recovery's solves are serialized by
+// a lock inside, so a solve callback is never entered concurrently, though it may be entered
+// from any querying thread). Distinct handles share nothing. Callbacks run on the calling
+// thread.
 typedef struct HyconContact HyconContact;
 
 // A host's contact description (host-assembly API): its contact polylines and its stiffness
@@ -168,6 +187,26 @@ typedef struct HyconContactOptions {
     void *monitor_data;
 } HyconContactOptions;
 
+// Element formulation selector, one of the `HYCON_ELEMENT_*` values.
+typedef int32_t HyconElementKind;
+
+// Elements of one formulation in compressed form: element `e` has the nodes
+// `nodes[offsets[e] .. offsets[e + 1]]` (4 to 6 node ids, counter-clockwise: corners plus
+// mid-side nodes of transition elements, in boundary order).
+typedef struct HyconElementBlock {
+    // `n_elements + 1` offsets into `nodes`, starting at 0, nondecreasing.
+    const size_t *offsets;
+    // `offsets[n_elements]` node ids.
+    const size_t *nodes;
+    // Number of elements (at least 1).
+    size_t n_elements;
+    // `n_elements` indices into the call's materials, or NULL: every element uses material 0.
+    const size_t *materials;
+    // The formulation of every element (`HYCON_ELEMENT_*`; Pian-Sumihara and Q4 take 4-node
+    // elements only).
+    HyconElementKind kind;
+} HyconElementBlock;
+
 // Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`.
 typedef int32_t HyconAnalysis;
 
@@ -184,11 +223,30 @@ typedef struct HyconMaterial {
     HyconAnalysis analysis;
 } HyconMaterial;
 
-// Element formulation selector, one of the `HYCON_ELEMENT_*` values.
-typedef int32_t HyconElementKind;
-
 // Directions of a prescribed displacement, a bit mask.
 typedef int32_t HyconDirections;
+
+// A polyline of node ids (model API contact pairs), ordered with its body on the left.
+typedef struct HyconPolyline {
+    // `n` node ids.
+    const size_t *nodes;
+    // Number of nodes.
+    size_t n;
+} HyconPolyline;
+
+// Nodes in a host's numbering (host-assembly API): ids, reference coordinates and equation
+// numbers.
+typedef struct HyconHostNodes {
+    // `n` node ids.
+    const size_t *ids;
+    // `2 n` reference coordinates `x0 y0 x1 y1 ...` (finite).
+    const double *coords;
+    // `2 n` equation numbers (`u_x`, `u_y` per node) in `0 .. n_equations`, or `HYCON_FIXED`
+    // for a dof the host holds at zero.
+    const int64_t *equations;
+    // Number of nodes.
+    size_t n;
+} HyconHostNodes;
 
 // Which part of a symmetric CSR matrix is given, one of `HYCON_CSR_*`.
 typedef int32_t HyconTriangle;
@@ -321,6 +379,16 @@ typedef struct HyconCouplingEntry {
     double value;
 } HyconCouplingEntry;
 
+// One constraint entry of `Kc` (see `hycon_contact_constraint_rows`).
+typedef struct HyconConstraintEntry {
+    // Row: `2 k` the normal and `2 k + 1` the tangential constraint of A node `k`.
+    size_t row;
+    // Column: a field index (model dof `2 node + direction`, or host equation).
+    size_t column;
+    // The value.
+    double value;
+} HyconConstraintEntry;
+
 
 
 // Success.
@@ -434,11 +502,6 @@ typedef struct HyconCouplingEntry {
 // The value is the total force on the plate in that direction (its motion is solved for).
 #define HYCON_PLATE_FORCE 2
 
-// The range `E` and `t` must lie in: wide enough for any system of units, narrow enough that
-// the element matrices (`H ~ t A / E`, `G ~ t h`, `K ~ E t` for elements of area `A` and size
-// `h`) stay finite and normal in double precision for element sizes far beyond any mesh's.
-#define SCALE_RANGE { 1e-100, 1e100, }
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -455,10 +518,16 @@ HyconStatus hycon_version(int32_t *out);
 // Copy this thread's last error message into `buf` and return the length it needs, including
 // the terminating NUL.
 //
+// What the message is: every function that returns a `HyconStatus` sets it when it returns,
+// to `"<function name>: <description>"` when it fails (a negative status) and to the empty
+// string when it succeeds. So it describes the last status-returning call on this thread, and
+// is empty (return value 1) unless that call failed. This function, `hycon_status_name` and
+// the `_free` functions do not change it. It is thread-local: a call on another thread never
+// changes it.
+//
 // At most `len - 1` bytes plus a NUL are written (nothing if `buf` is NULL or `len` is 0), so
 // `hycon_last_error_message(NULL, 0)` asks for the size and a return value greater than `len`
-// means the copy was truncated. The message is empty (return value 1) when the last
-// status-returning call on this thread succeeded; this function does not change it.
+// means the copy was truncated (at a UTF-8 character boundary).
 //
 // # Safety
 // `buf` must be NULL or point to `len` writable bytes.
@@ -469,46 +538,36 @@ size_t hycon_last_error_message(char *buf, size_t len);
 // string is owned by the library and valid for the life of the process; do not free it.
 const char *hycon_status_name(HyconStatus status);
 
-// For tests only: panics inside the boundary and so returns `HYCON_ERROR_PANIC`, with the
-// panic message in the last error message. Proves that panics never cross into the host and
-// are not printed to its stderr. Do not call it in production code.
-HyconStatus hycon_debug_panic(void);
-
 // Fill `out` with the default options (the values documented per field, no monitor).
 //
 // # Safety
 // `out` must be NULL or point to a writable `HyconContactOptions`.
 HyconStatus hycon_contact_options_default(struct HyconContactOptions *out);
 
-// Create a model from its mesh and materials.
+// Create a model from its mesh and materials (the order of every call that takes a mesh:
+// nodes, elements, materials).
 //
 // * `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`;
-// * elements in compressed form: element `e` has the nodes
-//   `element_nodes[element_offsets[e] .. element_offsets[e + 1]]` (4 to 6 node ids,
-//   counter-clockwise: corners plus mid-side nodes of transition elements, in boundary
-//   order); `element_offsets` has `n_elements + 1` entries starting at 0;
-// * `element_materials`: `n_elements` indices into `materials`, or NULL (all use material 0);
-// * `kind`: the formulation of every element (`HYCON_ELEMENT_*`; Pian-Sumihara and Q4 take
-//   4-node elements only).
+// * `elements`: the elements (`HyconElementBlock`: compressed node lists, their material
+//   indices or NULL for all 0, the formulation);
+// * `materials`: `n_materials` materials.
 //
-// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT`
-// (lengths, unknown node ids, non-finite coordinates, unknown kind),
+// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `coords`, `elements`,
+// `materials`, or an array of `elements` with a nonzero length), `HYCON_ERROR_INVALID_ARGUMENT`
+// (lengths, unknown node ids, non-finite coordinates, unknown kind, misaligned pointers),
 // `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex
 // element, named by index).
 //
 // # Safety
-// `out` must point to a writable pointer; each array must be NULL or hold the stated number of
-// readable values.
+// `out` must point to a writable pointer; `coords` NULL or `2 n_nodes` readable doubles;
+// `elements` NULL or a readable view whose arrays hold the stated counts; `materials` NULL or
+// `n_materials` readable structs.
 HyconStatus hycon_model_new(struct HyconModel **out,
                             const double *coords,
                             size_t n_nodes,
-                            const size_t *element_offsets,
-                            const size_t *element_nodes,
-                            size_t n_elements,
-                            const size_t *element_materials,
+                            const struct HyconElementBlock *elements,
                             const struct HyconMaterial *materials,
-                            size_t n_materials,
-                            HyconElementKind kind);
+                            size_t n_materials);
 
 // Free a model (NULL is a no-op). Analyses made from it keep their own copy.
 //
@@ -537,22 +596,22 @@ HyconStatus hycon_model_prescribe(struct HyconModel *model,
 // friction coefficient `friction >= 0` (0: frictionless). The pair's index (0, 1, ...) is
 // written to `index` unless it is NULL.
 //
-// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for unknown node ids, fewer than 2 nodes, repeated
-// nodes, a node in both polylines, consecutive nodes that are not an element edge with the
-// body on the left (naming the segment), a bad friction coefficient.
+// Errors: `HYCON_ERROR_NULL_POINTER` (`model`, `a`, `b`, or their `nodes` with `n > 0`);
+// `HYCON_ERROR_INVALID_ARGUMENT` for unknown node ids, fewer than 2 nodes, repeated nodes, a
+// node in both polylines, consecutive nodes that are not an element edge with the body on the
+// left (naming the segment), a bad friction coefficient, a misaligned pointer.
 //
 // # Safety
-// `model` must be a live handle; `a`, `b` NULL or holding `n_a`, `n_b` ids.
+// `model` must be a live handle; `a`, `b` NULL or readable views holding `n` ids each;
+// `index` NULL or writable.
 HyconStatus hycon_model_add_pair(struct HyconModel *model,
-                                 const size_t *a,
-                                 size_t n_a,
-                                 const size_t *b,
-                                 size_t n_b,
+                                 const struct HyconPolyline *a,
+                                 const struct HyconPolyline *b,
                                  double friction,
                                  size_t *index);
 
 // Tie `nodes` (a face of one body, none of them a contact node) to a rigid plate whose x and
-// y translations are driven per increment by `hycon_contact_increment_plate`, each by
+// y translations are driven per increment by `hycon_contact_increment_with_plate`, each by
 // displacement or by force. The nodes are prescribed in x and y by this call. A body held only
 // by the plate and by contact (a pressed disk) then takes a prescribed force.
 //
@@ -593,24 +652,24 @@ HyconStatus hycon_host_new(struct HyconHost **out, size_t n_equations);
 // `host` must be NULL or a live handle from `hycon_host_new`, not used afterwards.
 void hycon_host_free(struct HyconHost *host);
 
-// Add a contact pair in the host's numbering: for each polyline (A, the multiplier side, and
-// B), `n` node ids, their `2 n` reference coordinates `x0 y0 x1 y1 ...` and `2 n` equation
-// numbers (`u_x`, `u_y` per node; `HYCON_FIXED` for a dof the host holds at zero). Each
-// polyline is ordered with its body on the left. A node in several pairs must be given the
-// same coordinates and equations each time. `friction >= 0` is the Coulomb coefficient. The
-// pair's index is written to `index` unless it is NULL. The arrays are copied.
+// Add a contact pair in the host's numbering: the polylines `a` (the multiplier side) and `b`,
+// each a `HyconHostNodes` (node ids, reference coordinates, equation numbers with
+// `HYCON_FIXED` for a dof the host holds at zero), ordered with its body on the left. A node
+// in several pairs must be given the same coordinates and equations each time. `friction >= 0`
+// is the Coulomb coefficient. The pair's index is written to `index` unless it is NULL. The
+// arrays are copied; on an error the host is unchanged.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
+// `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
+// fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
+// a bad friction coefficient, a misaligned pointer).
 //
 // # Safety
-// `host` must be a live handle; every array NULL or holding the stated number of values.
+// `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
+// counts; `index` NULL or writable.
 HyconStatus hycon_host_add_pair(struct HyconHost *host,
-                                const size_t *a_nodes,
-                                const double *a_coords,
-                                const int64_t *a_equations,
-                                size_t n_a,
-                                const size_t *b_nodes,
-                                const double *b_coords,
-                                const int64_t *b_equations,
-                                size_t n_b,
+                                const struct HyconHostNodes *a,
+                                const struct HyconHostNodes *b,
                                 double friction,
                                 size_t *index);
 
@@ -646,30 +705,25 @@ HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, vo
 
 // Optionally hand over the elements of body A along the A polylines (at least those owning an
 // A segment), so that `hycon_contact_stress_tractions` can recover the tractions from their
-// stresses (the paper's way (a)) from the host's displacements. The elements must be hycon
-// element formulations (`kind`), counter-clockwise, in compressed form as in
-// `hycon_model_new` (`element_offsets` has `n_elements + 1` entries, `element_materials`
-// `n_elements` indices into `materials` or NULL for all 0), with node ids of the host's
-// numbering; the node table gives, for each of the `n_nodes` nodes they use, its id
-// (`node_ids`), reference coordinates (`coords`, 2 per node) and equations (`equations`, 2 per
-// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements. Note the order:
-// kind and materials first, then the elements, then the node table (`hycon_model_new` takes
-// the coordinates first and the kind last).
+// stresses (the paper's way (a)) from the host's displacements. The same order as
+// `hycon_model_new`: nodes, elements, materials. `nodes` is the node table of every node the
+// elements use (ids, reference coordinates, equations with `HYCON_FIXED` for a held dof);
+// `elements` the elements (hycon formulations, counter-clockwise, node ids of the host's
+// numbering); `materials` the `n_materials` materials the elements' indices refer to. Copied;
+// replaces earlier elements.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, a view, an array of a view with a nonzero count,
+// `materials`), `HYCON_ERROR_INVALID_ARGUMENT` (counts, unknown ids, equations, non-finite
+// coordinates, misaligned pointers), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`.
 //
 // # Safety
-// `host` must be a live handle; every array NULL or holding the stated number of values.
+// `host` must be a live handle; `nodes` and `elements` NULL or readable views whose arrays
+// hold the stated counts; `materials` NULL or `n_materials` readable structs.
 HyconStatus hycon_host_set_elements(struct HyconHost *host,
-                                    HyconElementKind kind,
+                                    const struct HyconHostNodes *nodes,
+                                    const struct HyconElementBlock *elements,
                                     const struct HyconMaterial *materials,
-                                    size_t n_materials,
-                                    const size_t *element_materials,
-                                    const size_t *element_offsets,
-                                    const size_t *element_nodes,
-                                    size_t n_elements,
-                                    const size_t *node_ids,
-                                    const double *coords,
-                                    const int64_t *equations,
-                                    size_t n_nodes);
+                                    size_t n_materials);
 
 // Start a contact analysis of a host's system: factor its CSR matrix once (the contact
 // equations last) and read the flexibility off the factor, or build the flexibility from
@@ -692,19 +746,15 @@ HyconStatus hycon_contact_new_host(struct HyconContact **out,
 // `contact` must be NULL or a live handle, not used afterwards.
 void hycon_contact_free(struct HyconContact *contact);
 
-// Length of the load and displacement vectors: `2 * n_nodes` (model API) or `n_equations`
-// (host API).
-//
-// # Safety
-// `contact` must be a live handle, `n` writable.
-HyconStatus hycon_contact_field_len(const struct HyconContact *contact, size_t *n);
-
 // Apply one load increment with **total** values (from the reference state):
 // * model API: `load` = external nodal forces over all `2 * n_nodes` dofs (`u0 v0 u1 v1 ...`),
 //   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (the
 //   others are ignored, whatever they hold: NaN there is fine);
 // * host API: `load` = the host's right-hand side over its equations (including the effect of
 //   its prescribed displacements), `prescribed` = (NULL, 0).
+//
+// `load_len` is the field length, which the size query of the displacement gives:
+// `hycon_contact_displacement(contact, NULL, 0, &load_len)`.
 //
 // On success the converged state advances and `info` (unless NULL) gets the summary. On
 // failure the last converged state is kept and the status says why: `HYCON_ERROR_CONTACT` (no
@@ -730,14 +780,14 @@ HyconStatus hycon_contact_increment(struct HyconContact *contact,
 //
 // # Safety
 // As `hycon_contact_increment`; `control` and `value` must hold 2 values each.
-HyconStatus hycon_contact_increment_plate(struct HyconContact *contact,
-                                          const double *load,
-                                          size_t load_len,
-                                          const double *prescribed,
-                                          size_t prescribed_len,
-                                          const HyconPlateControl *control,
-                                          const double *value,
-                                          struct HyconIncrementInfo *info);
+HyconStatus hycon_contact_increment_with_plate(struct HyconContact *contact,
+                                               const double *load,
+                                               size_t load_len,
+                                               const double *prescribed,
+                                               size_t prescribed_len,
+                                               const HyconPlateControl *control,
+                                               const double *value,
+                                               struct HyconIncrementInfo *info);
 
 // The converged plate displacement and the force the plate exerts on the body (2 values each,
 // x then y).
@@ -749,140 +799,182 @@ HyconStatus hycon_contact_plate(const struct HyconContact *contact,
                                 double *force);
 
 // The displacement of the last converged increment (total, from the reference state; zero
-// before the first) over the field (`hycon_contact_field_len` values): all dofs of a model,
-// the host's equations. Costs one solve on the first call after an increment.
+// before the first) over the field: all `2 * n_nodes` dofs of a model (`u0 v0 u1 v1 ...`), the
+// host's `n_equations` equations. The size query `(NULL, 0, &needed)` gives that length, which
+// is also the `load_len` of `hycon_contact_increment`. The first call after an increment
+// recovers the field (one solve; a host's solve callback is called), later calls copy it.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-HyconStatus hycon_contact_displacement(struct HyconContact *contact, double *out, size_t len);
+// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_displacement(const struct HyconContact *contact,
+                                       double *out,
+                                       size_t len,
+                                       size_t *needed);
 
 // The displacement increment of the last converged increment (its total displacement minus
-// the previous increment's; the total at the first), same layout as
-// `hycon_contact_displacement`. One solve per call.
+// the previous increment's; the total at the first), same layout and length as
+// `hycon_contact_displacement`. One solve per call (not for the size query).
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-HyconStatus hycon_contact_displacement_increment(struct HyconContact *contact,
+// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_displacement_increment(const struct HyconContact *contact,
                                                  double *out,
-                                                 size_t len);
+                                                 size_t len,
+                                                 size_t *needed);
 
 // The contact forces of the last converged increment over the field (zero at a host's fixed
-// dofs): adding them to the load gives the right-hand side whose solution is the displacement
-// (`K u = load + forces`), for hosts that recover displacements and stresses themselves.
+// dofs; same length as `hycon_contact_displacement`): adding them to the load gives the
+// right-hand side whose solution is the displacement (`K u = load + forces`), for hosts that
+// recover displacements and stresses themselves. Rust: `ContactAnalysis::contact_forces`.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-HyconStatus hycon_contact_forces(const struct HyconContact *contact, double *out, size_t len);
-
-// Sizes of pair `pair`: nodes of its A and B polylines (either output may be NULL).
-//
-// # Safety
-// `contact` must be a live handle; outputs NULL or writable.
-HyconStatus hycon_contact_pair_size(const struct HyconContact *contact,
-                                    size_t pair,
-                                    size_t *n_a,
-                                    size_t *n_b);
+// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_forces(const struct HyconContact *contact,
+                                 double *out,
+                                 size_t len,
+                                 size_t *needed);
 
 // Tractions way (b), the multipliers: converged results at the A nodes of `pair` (states,
-// `tn`, `ts`, frames, gaps, nodal forces); `out` needs the A node count.
+// `tn`, `ts`, frames, gaps, nodal forces), one per A node in polyline order: the size query
+// gives the A node count.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable structs.
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
 HyconStatus hycon_contact_node_results(const struct HyconContact *contact,
                                        size_t pair,
                                        struct HyconNodeResult *out,
-                                       size_t len);
+                                       size_t len,
+                                       size_t *needed);
 
-// Tractions way (c), the B side: nodal forces, weights and pressures at the B nodes of `pair`;
-// `out` needs the B node count.
+// Tractions way (c), the B side: nodal forces, weights and pressures at the B nodes of `pair`,
+// one per B node in polyline order: the size query gives the B node count.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable structs.
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
 HyconStatus hycon_contact_b_node_results(const struct HyconContact *contact,
                                          size_t pair,
                                          struct HyconBNodeResult *out,
-                                         size_t len);
+                                         size_t len,
+                                         size_t *needed);
 
 // Tractions way (a), from the element stresses of body A: `tn ts` per A node of `pair` in its
-// nodal frame, `2 * n_a` doubles. Model API; host API when the host handed over the elements
-// along A (`hycon_host_set_elements`). Costs the displacement recovery (one solve) if not done
-// yet.
+// nodal frame, `2 * n_a` doubles (the size query gives `2 * n_a`). Model API; host API when
+// the host handed over the elements along A (`hycon_host_set_elements`, else
+// `HYCON_ERROR_INVALID_ARGUMENT`, not for the size query). Costs the displacement recovery
+// (one solve) if not done yet.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-HyconStatus hycon_contact_stress_tractions(struct HyconContact *contact,
+// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_stress_tractions(const struct HyconContact *contact,
                                            size_t pair,
                                            double *out,
-                                           size_t len);
+                                           size_t len,
+                                           size_t *needed);
 
-// Number of iteration records so far (all increments, failed ones excluded).
+// The iteration records from number `first` on (0-based; all increments in order, failed ones
+// excluded): the full result has `count - first` records, `count` the number so far, so the
+// size query with `first = 0` gives the count and a monitor-free host can fetch only the new
+// records of each increment. `first` may equal the count (nothing to copy).
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` when `first` exceeds the count.
 //
 // # Safety
-// `contact` must be a live handle; `count` writable.
-HyconStatus hycon_contact_record_count(const struct HyconContact *contact, size_t *count);
-
-// Copy the iteration records `first .. first + len` into `out` (`first + len` must not exceed
-// `hycon_contact_record_count`).
-//
-// # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable structs.
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
 HyconStatus hycon_contact_records(const struct HyconContact *contact,
                                   size_t first,
                                   struct HyconIterationRecord *out,
-                                  size_t len);
+                                  size_t len,
+                                  size_t *needed);
 
 // Where the time went so far, and the number of numeric factorizations of `K` done by hycon
 // (1 per analysis; 0 when a host solves itself); either output may be NULL.
 //
+// Errors: `HYCON_ERROR_NULL_POINTER` (`contact`), `HYCON_ERROR_INVALID_ARGUMENT` (a misaligned
+// output).
+//
 // # Safety
 // `contact` must be a live handle; outputs NULL or writable.
-HyconStatus hycon_contact_timings(struct HyconContact *contact,
+HyconStatus hycon_contact_timings(const struct HyconContact *contact,
                                   struct HyconTimings *timings,
                                   size_t *factorizations);
 
 // Contact-element quantities of the A nodes of `pair` in the converged configuration (the
-// reference one before the first increment): weights, frames, weighted gaps `R_C`, coverage.
-// `out` needs the A node count.
+// reference one before the first increment): weights, frames, weighted gaps `R_C`, coverage;
+// one per A node (the size query gives the A node count). Rust:
+// `ContactAnalysis::surface(pair).nodes`.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable structs.
-HyconStatus hycon_contact_element_nodes(const struct HyconContact *contact,
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_surface_nodes(const struct HyconContact *contact,
                                         size_t pair,
                                         struct HyconContactNode *out,
-                                        size_t len);
+                                        size_t len,
+                                        size_t *needed);
 
 // The contact-element matrices `F^A` and `F^B` of `pair` (converged configuration) as a list
-// of entries (row `k`, node `j`, side, value). Call with `out` NULL and `len` 0 to get the
-// entry count in `count`; then with a buffer of at least that many.
+// of entries (row `k`, node `j`, side, value), rows in A node order. Rust:
+// `ContactAnalysis::surface(pair)`, the `coupling` of each node.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 //
 // # Safety
-// `contact` must be a live handle; `out` NULL or `len` writable structs; `count` writable.
-HyconStatus hycon_contact_coupling(const struct HyconContact *contact,
-                                   size_t pair,
-                                   struct HyconCouplingEntry *out,
-                                   size_t len,
-                                   size_t *count);
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_surface_coupling(const struct HyconContact *contact,
+                                           size_t pair,
+                                           struct HyconCouplingEntry *out,
+                                           size_t len,
+                                           size_t *needed);
 
-// The constraint matrix `Kc` of `pair` (converged configuration) in CSR form: `2 n_a` rows,
-// row `2k` the normal constraint `n_k . (sum_j F^A_kj u_j - sum_j F^B_kj u_j)` and row `2k + 1`
-// the tangential one with `s_k`; columns are field indices (model dofs `2 node + direction`,
-// or host equations; a host's fixed dofs are left out). The mixed system of a host that
-// assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]` with the active rows.
-// Call with `row_ptr`, `columns` and `values` all NULL to get the entry count in `nnz`; then
-// with `row_ptr` of `2 n_a + 1` entries and `columns`, `values` of at least `nnz` (NULL with
-// capacity 0 when `nnz` is 0).
+// The constraint matrix `Kc` of `pair` (converged configuration) as a list of entries
+// (`HyconConstraintEntry`: row, column, value). It has `2 n_a` rows: row `2k` the normal
+// constraint `n_k . (sum_j F^A_kj u_j - sum_j F^B_kj u_j)` and row `2k + 1` the tangential one
+// with `s_k`; columns are field indices (model dofs `2 node + direction`, or host equations;
+// a host's fixed dofs are left out). The entries are in row-major order, rows ascending and
+// columns strictly ascending within a row, so they are CSR-ready: `columns[i] = out[i].column`,
+// `values[i] = out[i].value`, and `row_ptr[r + 1]` counts the entries with `row <= r`. The
+// mixed system of a host that assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]`
+// with the active rows. Rust: `ContactAnalysis::constraint_rows`.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 //
 // # Safety
-// `contact` must be a live handle; `row_ptr` NULL or `row_ptr_len` writable; `columns` and
-// `values` NULL or `capacity` writable each; `nnz` writable.
-HyconStatus hycon_contact_kc(const struct HyconContact *contact,
-                             size_t pair,
-                             size_t *row_ptr,
-                             size_t row_ptr_len,
-                             size_t *columns,
-                             double *values,
-                             size_t capacity,
-                             size_t *nnz);
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_contact_constraint_rows(const struct HyconContact *contact,
+                                          size_t pair,
+                                          struct HyconConstraintEntry *out,
+                                          size_t len,
+                                          size_t *needed);
 
 // Check one element's shape for a formulation: node count, finite coordinates, positive area,
 // counter-clockwise order, convexity (tolerances relative to the element size).
@@ -947,22 +1039,22 @@ HyconStatus hycon_element_stress(HyconElementKind kind,
 // (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): 7 for the hybrid element with 4 or 5
 // nodes, 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
 //
-// `beta_out`, `beta_len`: output array (`HYCON_MAX_BETA` always suffices; `(NULL, 0)` is fine
-// for Q4). `n_beta` receives the count. Both are written only on success; a short array gives
-// `HYCON_ERROR_BUFFER_TOO_SMALL` with the count needed in the message.
+// `out`, `len`, `needed`: the header's size convention (`HYCON_MAX_BETA` always suffices; the
+// size query `(NULL, 0, &needed)` gives the count, 0 for Q4).
+//
+// Errors: as `hycon_element_stress`, and `HYCON_ERROR_BUFFER_TOO_SMALL`.
 //
 // # Safety
 // `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
-// a readable struct; `beta_out` NULL or writable for `beta_len` doubles; `n_beta` NULL or
-// writable.
+// a readable struct; `out` NULL or writable for `len` doubles; `needed` NULL or writable.
 HyconStatus hycon_element_stress_params(HyconElementKind kind,
                                         size_t n_nodes,
                                         const double *coords,
                                         const struct HyconMaterial *material,
                                         const double *q,
-                                        double *beta_out,
-                                        size_t beta_len,
-                                        size_t *n_beta);
+                                        double *out,
+                                        size_t len,
+                                        size_t *needed);
 
 // Traction `{tx, ty} = sigma n` (outward unit normal `n`) at parameter `s` in `[0, 1]` along
 // boundary edge `edge` of an element, the edge running from local node `edge` to local node

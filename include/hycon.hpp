@@ -25,9 +25,10 @@
  *   exceptions are enabled the trampoline catches everything and reports a failure, which
  *   hycon turns into HYCON_ERROR_CALLBACK.
  *
- * Thread safety: as the C API's. One handle object (Model, Host, Contact) may be used by one
- * thread at a time and may move between threads; distinct handles share nothing and may be
- * used from different threads at once. The error message behind a Status is read from the
+ * Thread safety: as the C API's. A non-const member needs its object exclusively; the const
+ * queries of a Contact (displacement, node_results, records, ...) may run on one Contact from
+ * several threads at once. Objects may move between threads; distinct ones share nothing and
+ * may be used from different threads at once. The error message behind a Status is read from the
  * calling thread's last error right after the failing call. Callbacks (monitor, solver) run on
  * the thread that called into the Contact.
  *
@@ -309,10 +310,15 @@ class Model {
             return detail::invalid("element_nodes must hold element_offsets.back() ids");
         if (!element_materials.empty() && element_materials.size() != n_elements)
             return detail::invalid("element_materials must be empty or hold one index per element");
+        const HyconElementBlock elements = {element_offsets.data(), element_nodes.data(),
+                                            n_elements,
+                                            element_materials.empty() ? nullptr
+                                                                      : element_materials.data(),
+                                            kind};
         HyconModel *raw = nullptr;
-        const Status s = Status::from(hycon_model_new(
-            &raw, coords.data(), coords.size() / 2, element_offsets.data(), element_nodes.data(),
-            n_elements, element_materials.data(), materials.data(), materials.size(), kind));
+        const Status s = Status::from(hycon_model_new(&raw, coords.data(), coords.size() / 2,
+                                                      &elements, materials.data(),
+                                                      materials.size()));
         if (!s.ok()) return s;
         return Model(ModelPtr(raw));
     }
@@ -325,13 +331,14 @@ class Model {
     // Add a contact pair (A the multiplier side, each polyline with its body on the left);
     // returns the pair's index.
     Result<std::size_t> add_pair(View<std::size_t> a, View<std::size_t> b, double friction) {
+        const HyconPolyline pa = {a.data(), a.size()};
+        const HyconPolyline pb = {b.data(), b.size()};
         std::size_t index = 0;
-        const Status s = Status::from(hycon_model_add_pair(get(), a.data(), a.size(), b.data(),
-                                                           b.size(), friction, &index));
+        const Status s = Status::from(hycon_model_add_pair(get(), &pa, &pb, friction, &index));
         return Result<std::size_t>(s, index);
     }
 
-    // Tie `nodes` to a rigid plate driven by Contact::increment_plate.
+    // Tie `nodes` to a rigid plate driven by Contact::increment_with_plate.
     Status set_plate(View<std::size_t> nodes) {
         return Status::from(hycon_model_set_plate(get(), nodes.data(), nodes.size()));
     }
@@ -369,11 +376,12 @@ class Host {
         if (a_coords.size() != 2 * a_nodes.size() || a_equations.size() != 2 * a_nodes.size() ||
             b_coords.size() != 2 * b_nodes.size() || b_equations.size() != 2 * b_nodes.size())
             return detail::invalid("each polyline needs 2 coordinates and 2 equations per node");
+        const HyconHostNodes a = {a_nodes.data(), a_coords.data(), a_equations.data(),
+                                  a_nodes.size()};
+        const HyconHostNodes b = {b_nodes.data(), b_coords.data(), b_equations.data(),
+                                  b_nodes.size()};
         std::size_t index = 0;
-        const Status s = Status::from(hycon_host_add_pair(
-            get(), a_nodes.data(), a_coords.data(), a_equations.data(), a_nodes.size(),
-            b_nodes.data(), b_coords.data(), b_equations.data(), b_nodes.size(), friction,
-            &index));
+        const Status s = Status::from(hycon_host_add_pair(get(), &a, &b, friction, &index));
         return Result<std::size_t>(s, index);
     }
 
@@ -389,12 +397,14 @@ class Host {
     }
 
     // The elements of body A along its contact polylines (hycon formulations, counter-clockwise,
-    // host node ids), so that Contact::stress_tractions works on this host: the node table
-    // gives each node's id, coordinates (2 each) and equations (2 each, HYCON_FIXED if held).
-    Status set_elements(HyconElementKind kind, View<HyconMaterial> materials,
-                        View<std::size_t> element_offsets, View<std::size_t> element_nodes,
-                        View<std::size_t> node_ids, View<double> coords,
-                        View<std::int64_t> equations,
+    // host node ids), so that Contact::stress_tractions works on this host. The order of
+    // hycon_host_set_elements (and of Model::create): nodes, elements, materials. The node
+    // table gives each node's id, coordinates (2 each) and equations (2 each, HYCON_FIXED if
+    // held).
+    Status set_elements(View<std::size_t> node_ids, View<double> coords,
+                        View<std::int64_t> equations, View<std::size_t> element_offsets,
+                        View<std::size_t> element_nodes, HyconElementKind kind,
+                        View<HyconMaterial> materials,
                         View<std::size_t> element_materials = {}) {
         if (element_offsets.size() < 2)
             return detail::invalid("element_offsets needs n_elements + 1 >= 2 entries");
@@ -405,11 +415,15 @@ class Host {
             return detail::invalid("element_materials must be empty or hold one index per element");
         if (coords.size() != 2 * node_ids.size() || equations.size() != 2 * node_ids.size())
             return detail::invalid("coords and equations must hold 2 values per node id");
-        return Status::from(hycon_host_set_elements(
-            get(), kind, materials.data(), materials.size(),
-            element_materials.empty() ? nullptr : element_materials.data(), element_offsets.data(),
-            element_nodes.data(), n_elements, node_ids.data(), coords.data(), equations.data(),
-            node_ids.size()));
+        const HyconHostNodes nodes = {node_ids.data(), coords.data(), equations.data(),
+                                      node_ids.size()};
+        const HyconElementBlock elements = {element_offsets.data(), element_nodes.data(),
+                                            n_elements,
+                                            element_materials.empty() ? nullptr
+                                                                      : element_materials.data(),
+                                            kind};
+        return Status::from(
+            hycon_host_set_elements(get(), &nodes, &elements, materials.data(), materials.size()));
     }
 
     // The host's own solver: `solve(std::size_t n, std::size_t nrhs, const double *rhs,
@@ -467,13 +481,6 @@ struct Timings {
     std::size_t factorizations = 0;
 };
 
-// A matrix in CSR form (hycon_contact_kc).
-struct Csr {
-    std::vector<std::size_t> row_ptr;
-    std::vector<std::size_t> columns;
-    std::vector<double> values;
-};
-
 // A contact analysis: K factored once, the converged state, the records.
 class Contact {
   public:
@@ -497,10 +504,10 @@ class Contact {
         return Contact(ContactPtr(raw));
     }
 
-    // Length of the load and displacement vectors.
+    // Length of the load and displacement vectors (the size query of hycon_contact_displacement).
     Result<std::size_t> field_len() const {
         std::size_t n = 0;
-        const Status s = Status::from(hycon_contact_field_len(get(), &n));
+        const Status s = Status::from(hycon_contact_displacement(get(), nullptr, 0, &n));
         return Result<std::size_t>(s, n);
     }
 
@@ -513,14 +520,14 @@ class Contact {
     }
 
     // One increment of a model with a plate, its x and y translations driven by `x` and `y`.
-    Result<HyconIncrementInfo> increment_plate(View<double> load, View<double> prescribed,
-                                               PlateDrive x, PlateDrive y) {
+    Result<HyconIncrementInfo> increment_with_plate(View<double> load, View<double> prescribed,
+                                                    PlateDrive x, PlateDrive y) {
         const HyconPlateControl control[2] = {x.control, y.control};
         const double value[2] = {x.value, y.value};
         HyconIncrementInfo info{};
         const Status s = Status::from(
-            hycon_contact_increment_plate(get(), load.data(), load.size(), prescribed.data(),
-                                          prescribed.size(), control, value, &info));
+            hycon_contact_increment_with_plate(get(), load.data(), load.size(), prescribed.data(),
+                                               prescribed.size(), control, value, &info));
         return Result<HyconIncrementInfo>(s, info);
     }
 
@@ -532,109 +539,94 @@ class Contact {
     }
 
     // Total displacement of the last converged increment over the field.
-    Result<std::vector<double>> displacement() {
-        return field([this](double *out, std::size_t n) {
-            return hycon_contact_displacement(get(), out, n);
+    Result<std::vector<double>> displacement() const {
+        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
+            return hycon_contact_displacement(get(), out, n, needed);
         });
     }
 
     // The last converged increment's displacement minus the previous one's (one solve).
-    Result<std::vector<double>> displacement_increment() {
-        return field([this](double *out, std::size_t n) {
-            return hycon_contact_displacement_increment(get(), out, n);
+    Result<std::vector<double>> displacement_increment() const {
+        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
+            return hycon_contact_displacement_increment(get(), out, n, needed);
         });
     }
 
     // Contact forces of the last converged increment over the field.
     Result<std::vector<double>> forces() const {
-        return field(
-            [this](double *out, std::size_t n) { return hycon_contact_forces(get(), out, n); });
+        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
+            return hycon_contact_forces(get(), out, n, needed);
+        });
     }
 
+    // Node counts of the A and B polylines of `pair` (the size queries of the node results).
     Result<PairSize> pair_size(std::size_t pair) const {
         PairSize size;
-        const Status s = Status::from(hycon_contact_pair_size(get(), pair, &size.a, &size.b));
+        Status s = Status::from(hycon_contact_node_results(get(), pair, nullptr, 0, &size.a));
+        if (s.ok())
+            s = Status::from(hycon_contact_b_node_results(get(), pair, nullptr, 0, &size.b));
         return Result<PairSize>(s, size);
     }
 
     // The multipliers and states at the A nodes of `pair`.
     Result<std::vector<HyconNodeResult>> node_results(std::size_t pair) const {
-        return per_node<HyconNodeResult>(pair, false, 1, [this, pair](HyconNodeResult *out,
-                                                                      std::size_t n) {
-            return hycon_contact_node_results(get(), pair, out, n);
-        });
+        return fetch<HyconNodeResult>(
+            [this, pair](HyconNodeResult *out, std::size_t n, std::size_t *needed) {
+                return hycon_contact_node_results(get(), pair, out, n, needed);
+            });
     }
 
     // Forces, weights and pressures at the B nodes of `pair`.
     Result<std::vector<HyconBNodeResult>> b_node_results(std::size_t pair) const {
-        return per_node<HyconBNodeResult>(pair, true, 1, [this, pair](HyconBNodeResult *out,
-                                                                      std::size_t n) {
-            return hycon_contact_b_node_results(get(), pair, out, n);
-        });
+        return fetch<HyconBNodeResult>(
+            [this, pair](HyconBNodeResult *out, std::size_t n, std::size_t *needed) {
+                return hycon_contact_b_node_results(get(), pair, out, n, needed);
+            });
     }
 
-    // tn ts per A node of `pair` from body A's element stresses (model API), 2 n_a values.
-    Result<std::vector<double>> stress_tractions(std::size_t pair) {
-        return per_node<double>(pair, false, 2, [this, pair](double *out, std::size_t n) {
-            return hycon_contact_stress_tractions(get(), pair, out, n);
+    // tn ts per A node of `pair` from body A's element stresses, 2 n_a values.
+    Result<std::vector<double>> stress_tractions(std::size_t pair) const {
+        return fetch<double>([this, pair](double *out, std::size_t n, std::size_t *needed) {
+            return hycon_contact_stress_tractions(get(), pair, out, n, needed);
         });
     }
 
     // Contact-element quantities of the A nodes of `pair`.
-    Result<std::vector<HyconContactNode>> element_nodes(std::size_t pair) const {
-        return per_node<HyconContactNode>(pair, false, 1, [this, pair](HyconContactNode *out,
-                                                                       std::size_t n) {
-            return hycon_contact_element_nodes(get(), pair, out, n);
-        });
+    Result<std::vector<HyconContactNode>> surface_nodes(std::size_t pair) const {
+        return fetch<HyconContactNode>(
+            [this, pair](HyconContactNode *out, std::size_t n, std::size_t *needed) {
+                return hycon_contact_surface_nodes(get(), pair, out, n, needed);
+            });
     }
 
     // The iteration records from `first` on (all increments, failed ones excluded).
     Result<std::vector<HyconIterationRecord>> records(std::size_t first = 0) const {
-        std::size_t count = 0;
-        Status s = Status::from(hycon_contact_record_count(get(), &count));
-        if (!s.ok()) return s;
-        if (first > count) return detail::invalid("records: first is past the record count");
-        std::vector<HyconIterationRecord> out(count - first);
-        s = Status::from(hycon_contact_records(get(), first, out.data(), out.size()));
-        if (!s.ok()) return s;
-        return out;
+        return fetch<HyconIterationRecord>(
+            [this, first](HyconIterationRecord *out, std::size_t n, std::size_t *needed) {
+                return hycon_contact_records(get(), first, out, n, needed);
+            });
     }
 
-    Result<Timings> timings() {
+    Result<Timings> timings() const {
         Timings t;
         const Status s = Status::from(hycon_contact_timings(get(), &t.seconds, &t.factorizations));
         return Result<Timings>(s, t);
     }
 
     // The entries of F^A and F^B of `pair`.
-    Result<std::vector<HyconCouplingEntry>> coupling(std::size_t pair) const {
-        std::size_t count = 0;
-        Status s = Status::from(hycon_contact_coupling(get(), pair, nullptr, 0, &count));
-        if (!s.ok()) return s;
-        std::vector<HyconCouplingEntry> out(count);
-        s = Status::from(hycon_contact_coupling(get(), pair, out.data(), out.size(), &count));
-        if (!s.ok()) return s;
-        out.resize(count);
-        return out;
+    Result<std::vector<HyconCouplingEntry>> surface_coupling(std::size_t pair) const {
+        return fetch<HyconCouplingEntry>(
+            [this, pair](HyconCouplingEntry *out, std::size_t n, std::size_t *needed) {
+                return hycon_contact_surface_coupling(get(), pair, out, n, needed);
+            });
     }
 
-    // The constraint matrix Kc of `pair` (2 n_a rows).
-    Result<Csr> kc(std::size_t pair) const {
-        const Result<PairSize> size = pair_size(pair);
-        if (!size) return size.status();
-        std::size_t nnz = 0;
-        Status s = Status::from(
-            hycon_contact_kc(get(), pair, nullptr, 0, nullptr, nullptr, 0, &nnz));
-        if (!s.ok()) return s;
-        Csr m;
-        m.row_ptr.assign(2 * size->a + 1, 0);
-        if (nnz == 0) return m;  // (NULL, NULL, 0) would be read as the size query
-        m.columns.resize(nnz);
-        m.values.resize(nnz);
-        s = Status::from(hycon_contact_kc(get(), pair, m.row_ptr.data(), m.row_ptr.size(),
-                                          m.columns.data(), m.values.data(), nnz, &nnz));
-        if (!s.ok()) return s;
-        return m;
+    // The constraint matrix Kc of `pair` (2 n_a rows) as row-major entries (CSR-ready).
+    Result<std::vector<HyconConstraintEntry>> constraint_rows(std::size_t pair) const {
+        return fetch<HyconConstraintEntry>(
+            [this, pair](HyconConstraintEntry *out, std::size_t n, std::size_t *needed) {
+                return hycon_contact_constraint_rows(get(), pair, out, n, needed);
+            });
     }
 
     HyconContact *get() const noexcept { return handle_.get(); }
@@ -642,23 +634,15 @@ class Contact {
     HyconContact *release() noexcept { return handle_.release(); }
 
   private:
-    template <class Fill>
-    Result<std::vector<double>> field(Fill fill) const {
-        const Result<std::size_t> n = field_len();
-        if (!n) return n.status();
-        std::vector<double> out(*n);
-        const Status s = Status::from(fill(out.data(), out.size()));
-        if (!s.ok()) return s;
-        return out;
-    }
-
+    // The size convention: ask for the size with (NULL, 0, &n), then fill n elements.
     template <class T, class Fill>
-    Result<std::vector<T>> per_node(std::size_t pair, bool b_side, std::size_t per,
-                                    Fill fill) const {
-        const Result<PairSize> size = pair_size(pair);
-        if (!size) return size.status();
-        std::vector<T> out(per * (b_side ? size->b : size->a));
-        const Status s = Status::from(fill(out.data(), out.size()));
+    Result<std::vector<T>> fetch(Fill fill) const {
+        std::size_t n = 0;
+        Status s = Status::from(fill(nullptr, 0, &n));
+        if (!s.ok()) return s;
+        std::vector<T> out(n);
+        if (n == 0) return out;
+        s = Status::from(fill(out.data(), out.size(), nullptr));
         if (!s.ok()) return s;
         return out;
     }

@@ -181,6 +181,10 @@ rust_structs! {
     HyconBNodeResult { node, weight, force, pressure, position },
     HyconContactNode { node, weight, coverage, normal, tangent, gap, normal_gap },
     HyconCouplingEntry { row, node, side, value },
+    HyconConstraintEntry { row, column, value },
+    HyconElementBlock { offsets, nodes, n_elements, materials, kind },
+    HyconPolyline { nodes, n },
+    HyconHostNodes { ids, coords, equations, n },
     HyconTimings { assembly, factorization, flexibility, load_solves, iterations, recovery },
 }
 

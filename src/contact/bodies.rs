@@ -24,6 +24,7 @@ use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
 use faer::sparse::{SparseColMat, Triplet};
 use nalgebra::DMatrix;
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// A host's linear solver: `K X = B` for many right-hand sides at once.
 pub trait HostSolve: Send {
@@ -277,7 +278,9 @@ struct Host {
     equations: usize,
     nodes: Vec<HostNode>,
     positions: Vec<[f64; 2]>,
-    solver: HostSolver,
+    /// Locked so that solves (displacement recovery) can run from `&self` queries, one at a
+    /// time: a host's callback is never entered concurrently.
+    solver: Mutex<HostSolver>,
     elements: Option<ElementPatch>,
 }
 
@@ -297,7 +300,8 @@ enum Kind {
     /// hycon's own model and `K_ff`, factored with the contact dofs last.
     Model {
         model: Box<Model>,
-        system: Box<LinearSystem>,
+        /// Locked so that solves can run from `&self` queries, one at a time.
+        system: Mutex<Box<LinearSystem>>,
     },
     /// A host's system.
     Host(Box<Host>),
@@ -306,7 +310,7 @@ enum Kind {
 impl std::fmt::Debug for Bodies {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match &self.0 {
-            Kind::Model { system, .. } => write!(f, "Bodies::Model({system:?})"),
+            Kind::Model { system, .. } => write!(f, "Bodies::Model({:?})", lock(system)),
             Kind::Host(h) => write!(
                 f,
                 "Bodies::Host({} equations, {} contact nodes)",
@@ -315,6 +319,17 @@ impl std::fmt::Debug for Bodies {
             ),
         }
     }
+}
+
+/// Lock a solver for one solve. A panic inside an earlier solve (caught at the C boundary)
+/// leaves the factor as it was (solves only use scratch space), so a poisoned lock is taken.
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// The solver of a `&mut self` method: no lock needed.
+fn unlocked<T>(m: &mut Mutex<T>) -> &mut T {
+    m.get_mut().unwrap_or_else(PoisonError::into_inner)
 }
 
 /// Batch size of flexibility solves through a host callback: at most this many columns, and
@@ -327,7 +342,7 @@ impl Bodies {
         let system = LinearSystem::with_trailing_on(&model, trailing, backend)?;
         Ok(Bodies(Kind::Model {
             model: Box::new(model),
-            system: Box::new(system),
+            system: Mutex::new(Box::new(system)),
         }))
     }
 
@@ -392,7 +407,7 @@ impl Bodies {
             equations,
             nodes,
             positions,
-            solver,
+            solver: Mutex::new(solver),
             elements,
         }))))
     }
@@ -442,7 +457,7 @@ impl Bodies {
     /// Whether dof `d` is free (an unknown of `K`).
     pub fn is_free(&self, d: usize) -> bool {
         match &self.0 {
-            Kind::Model { system, .. } => system.dofs().equation(d).is_some(),
+            Kind::Model { system, .. } => lock(system).dofs().equation(d).is_some(),
             Kind::Host(_) => self.field_index(d).is_some(),
         }
     }
@@ -495,8 +510,8 @@ impl Bodies {
     pub fn flexibility(&mut self, dofs: &[usize]) -> Result<DMatrix<f64>> {
         let free: Vec<usize> = (0..dofs.len()).filter(|&i| self.is_free(dofs[i])).collect();
         let condensed = match &mut self.0 {
-            Kind::Model { system, .. } => system.condensed_flexibility()?,
-            Kind::Host(h) => match &mut h.solver {
+            Kind::Model { system, .. } => unlocked(system).condensed_flexibility()?,
+            Kind::Host(h) => match unlocked(&mut h.solver) {
                 HostSolver::Factor { factor, .. } => factor.condensed_inverse()?,
                 HostSolver::Callback(s) => {
                     let eqs: Vec<usize> = free
@@ -518,10 +533,11 @@ impl Bodies {
 
     /// The displacement field for loads `f` (and, for a model, prescribed values `qp`, read at
     /// the prescribed dofs): one solve.
-    pub fn solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+    /// Solves are serialized by a lock, so this takes `&self`.
+    pub fn solve(&self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
         let n = self.field_len();
-        match &mut self.0 {
-            Kind::Model { model, system } => Ok(system.solve_for(model, f, qp)?.q),
+        match &self.0 {
+            Kind::Model { model, system } => Ok(lock(system).solve_for(model, f, qp)?.q),
             Kind::Host(h) => {
                 if f.len() != n || !qp.is_empty() {
                     return Err(Error::InvalidInput(format!(
@@ -532,7 +548,7 @@ impl Bodies {
                     )));
                 }
                 let mut x = vec![0.0; n];
-                match &mut h.solver {
+                match &mut *lock(&h.solver) {
                     HostSolver::Factor { factor, .. } => {
                         let mut rhs = Mat::from_fn(n, 1, |i, _| f[i]);
                         factor.solve_in_place(rhs.as_mut())?;
@@ -552,6 +568,7 @@ impl Bodies {
     pub fn load_key(&self, f: &[f64], qp: &[f64]) -> Vec<f64> {
         match &self.0 {
             Kind::Model { system, .. } => {
+                let system = lock(system);
                 let dofs = system.dofs();
                 f.iter()
                     .copied()
@@ -569,10 +586,10 @@ impl Bodies {
     }
 
     /// Numeric factorizations of `K` done by hycon (0 for a host that solves itself).
-    pub fn factorizations(&mut self) -> usize {
-        match &mut self.0 {
-            Kind::Model { system, .. } => system.cholesky().factorizations(),
-            Kind::Host(h) => match &h.solver {
+    pub fn factorizations(&self) -> usize {
+        match &self.0 {
+            Kind::Model { system, .. } => lock(system).cholesky().factorizations(),
+            Kind::Host(h) => match &*lock(&h.solver) {
                 HostSolver::Factor { factor, .. } => factor.factorizations(),
                 HostSolver::Callback(_) => 0,
             },
@@ -583,8 +600,8 @@ impl Bodies {
     /// factor. Only the benchmark's refactor-every-iteration variant does this.
     pub fn refactorize(&mut self) -> Result<()> {
         match &mut self.0 {
-            Kind::Model { model, system } => system.refactorize(model),
-            Kind::Host(h) => match &mut h.solver {
+            Kind::Model { model, system } => unlocked(system).refactorize(model),
+            Kind::Host(h) => match unlocked(&mut h.solver) {
                 HostSolver::Factor { factor, lower } => factor.factorize(lower.as_ref()),
                 HostSolver::Callback(_) => Ok(()),
             },
@@ -594,7 +611,7 @@ impl Bodies {
     /// Seconds spent on `[assembly, analysis + factorization]` when the bodies were set up.
     pub fn setup_seconds(&self) -> [f64; 2] {
         match &self.0 {
-            Kind::Model { system, .. } => system.setup_seconds(),
+            Kind::Model { system, .. } => lock(system).setup_seconds(),
             Kind::Host(_) => [0.0; 2],
         }
     }

@@ -64,6 +64,7 @@ use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 mod active_set;
 mod checks;
@@ -519,8 +520,11 @@ pub struct ContactAnalysis {
     converged: Option<Converged>,
     /// The same for the increment before it (for displacement increments).
     previous: Option<Converged>,
-    /// The full displacement field of the last converged increment, once asked for.
-    field: Option<Vec<f64>>,
+    /// The full displacement field of the last converged increment, once asked for, with the
+    /// seconds its recovery took (set from `&self` queries; taken when an increment converges).
+    field: OnceLock<(Vec<f64>, f64)>,
+    /// Seconds of displacement recoveries not kept in `field` (displacement increments).
+    recovery: Mutex<f64>,
     /// Recent load solves, reused when a new load is a combination of their loads.
     loads: Vec<LoadSolve>,
     /// Converged node data, per pair, per A node.
@@ -536,7 +540,9 @@ pub struct ContactAnalysis {
     records: Vec<IterationRecord>,
     timings: Timings,
     plate: Option<Plate>,
-    monitor: Option<Monitor>,
+    /// Behind a lock only so that the analysis is `Sync` (a `Monitor` is `Send`, not `Sync`):
+    /// it is only called from `&mut self`.
+    monitor: Mutex<Option<Monitor>>,
 }
 
 impl std::fmt::Debug for ContactAnalysis {
@@ -650,7 +656,8 @@ impl ContactAnalysis {
             largest_component_motion: 0.0,
             converged: None,
             previous: None,
-            field: None,
+            field: OnceLock::new(),
+            recovery: Mutex::new(0.0),
             loads: Vec::new(),
             bodies,
             pairs,
@@ -666,7 +673,7 @@ impl ContactAnalysis {
             records: Vec::new(),
             timings,
             plate: None,
-            monitor: None,
+            monitor: Mutex::new(None),
         })
     }
 
@@ -681,7 +688,10 @@ impl ContactAnalysis {
     /// returns `false` the increment stops with [`Error::Callback`] and the last converged
     /// state is kept.
     pub fn set_monitor(&mut self, monitor: Option<Monitor>) {
-        self.monitor = monitor;
+        *self
+            .monitor
+            .get_mut()
+            .unwrap_or_else(PoisonError::into_inner) = monitor;
     }
 
     /// The model (mesh, materials, boundary conditions); an error for a host's system.
@@ -696,20 +706,22 @@ impl ContactAnalysis {
     /// The displacement field of the last converged increment (zero before the first): over
     /// all dofs of a model, over the equations of a host. Recovered on the first call after an
     /// increment (one solve), then kept: the iteration itself needs only the contact dofs.
-    pub fn displacement(&mut self) -> Result<&[f64]> {
-        if self.field.is_none() {
-            let clock = std::time::Instant::now();
-            let q = match &self.converged {
-                Some(c) => {
-                    let total = self.total_load(c);
-                    self.bodies.solve(&total, &c.prescribed)?
-                }
-                None => vec![0.0; self.bodies.field_len()],
-            };
-            self.timings.recovery += clock.elapsed().as_secs_f64();
-            self.field = Some(q);
+    /// Takes `&self`: concurrent calls are safe (the solves are serialized by a lock; two
+    /// first calls may both solve, one result is kept).
+    pub fn displacement(&self) -> Result<&[f64]> {
+        if let Some((q, _)) = self.field.get() {
+            return Ok(q);
         }
-        Ok(self.field.as_deref().unwrap_or_default())
+        let clock = std::time::Instant::now();
+        let q = match &self.converged {
+            Some(c) => {
+                let total = self.total_load(c);
+                self.bodies.solve(&total, &c.prescribed)?
+            }
+            None => vec![0.0; self.bodies.field_len()],
+        };
+        let seconds = clock.elapsed().as_secs_f64();
+        Ok(&self.field.get_or_init(|| (q, seconds)).0)
     }
 
     /// Length of load and displacement vectors: `2 n_nodes` for a model, the host's equation
@@ -742,7 +754,7 @@ impl ContactAnalysis {
     /// before; the whole field at the first increment), same layout as
     /// [`displacement`](Self::displacement). One solve, with the difference of the two
     /// increments' loads (the response is linear in them).
-    pub fn displacement_increment(&mut self) -> Result<Vec<f64>> {
+    pub fn displacement_increment(&self) -> Result<Vec<f64>> {
         let Some(c) = &self.converged else {
             return Ok(vec![0.0; self.bodies.field_len()]);
         };
@@ -758,7 +770,8 @@ impl ContactAnalysis {
         }
         let clock = std::time::Instant::now();
         let du = self.bodies.solve(&load, &prescribed)?;
-        self.timings.recovery += clock.elapsed().as_secs_f64();
+        *self.recovery.lock().unwrap_or_else(PoisonError::into_inner) +=
+            clock.elapsed().as_secs_f64();
         Ok(du)
     }
 
@@ -776,7 +789,10 @@ impl ContactAnalysis {
 
     /// Where the time went so far.
     pub fn timings(&self) -> Timings {
-        self.timings
+        let mut t = self.timings;
+        t.recovery += self.field.get().map_or(0.0, |f| f.1)
+            + *self.recovery.lock().unwrap_or_else(PoisonError::into_inner);
+        t
     }
 
     /// Every iteration record so far, in order.
@@ -786,7 +802,7 @@ impl ContactAnalysis {
 
     /// Number of numeric factorizations of `K` performed by hycon (1 per analysis; 0 when a
     /// host solves with its own solver).
-    pub fn factorizations(&mut self) -> usize {
+    pub fn factorizations(&self) -> usize {
         self.bodies.factorizations()
     }
 
@@ -1007,7 +1023,10 @@ impl ContactAnalysis {
                 condition,
             };
             records.push(record);
-            if let Some(monitor) = &mut self.monitor
+            if let Some(monitor) = self
+                .monitor
+                .get_mut()
+                .unwrap_or_else(PoisonError::into_inner)
                 && !monitor(&record)
             {
                 return Err(Error::Callback(format!(
@@ -1317,7 +1336,9 @@ impl ContactAnalysis {
         self.qc = uc;
         self.surfaces = surfaces;
         self.previous = self.converged.replace(converged);
-        self.field = None;
+        if let Some((_, seconds)) = self.field.take() {
+            self.timings.recovery += seconds;
+        }
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {
                 let (tn, ts) = tractions[p][k];

@@ -309,6 +309,66 @@ pub struct HyconTimings {
     pub recovery: f64,
 }
 
+/// One constraint entry of `Kc` (see `hycon_contact_constraint_rows`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct HyconConstraintEntry {
+    /// Row: `2 k` the normal and `2 k + 1` the tangential constraint of A node `k`.
+    pub row: usize,
+    /// Column: a field index (model dof `2 node + direction`, or host equation).
+    pub column: usize,
+    /// The value.
+    pub value: f64,
+}
+
+// ------------------------------------------------------------------------------------------
+// Input views: a few pointers and lengths that travel together, read during the call only
+
+/// Elements of one formulation in compressed form: element `e` has the nodes
+/// `nodes[offsets[e] .. offsets[e + 1]]` (4 to 6 node ids, counter-clockwise: corners plus
+/// mid-side nodes of transition elements, in boundary order).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct HyconElementBlock {
+    /// `n_elements + 1` offsets into `nodes`, starting at 0, nondecreasing.
+    pub offsets: *const usize,
+    /// `offsets[n_elements]` node ids.
+    pub nodes: *const usize,
+    /// Number of elements (at least 1).
+    pub n_elements: usize,
+    /// `n_elements` indices into the call's materials, or NULL: every element uses material 0.
+    pub materials: *const usize,
+    /// The formulation of every element (`HYCON_ELEMENT_*`; Pian-Sumihara and Q4 take 4-node
+    /// elements only).
+    pub kind: HyconElementKind,
+}
+
+/// A polyline of node ids (model API contact pairs), ordered with its body on the left.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct HyconPolyline {
+    /// `n` node ids.
+    pub nodes: *const usize,
+    /// Number of nodes.
+    pub n: usize,
+}
+
+/// Nodes in a host's numbering (host-assembly API): ids, reference coordinates and equation
+/// numbers.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct HyconHostNodes {
+    /// `n` node ids.
+    pub ids: *const usize,
+    /// `2 n` reference coordinates `x0 y0 x1 y1 ...` (finite).
+    pub coords: *const f64,
+    /// `2 n` equation numbers (`u_x`, `u_y` per node) in `0 .. n_equations`, or `HYCON_FIXED`
+    /// for a dof the host holds at zero.
+    pub equations: *const i64,
+    /// Number of nodes.
+    pub n: usize,
+}
+
 // ------------------------------------------------------------------------------------------
 // Handles
 
@@ -340,9 +400,12 @@ enum HostSource {
 
 /// A contact analysis: `K` factored once (or the host's solver), the converged state, the
 /// records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
-/// `hycon_contact_free`. Thread safety: a `HyconContact` may be moved between threads but must
-/// not be used from two threads at once (no internal locking); distinct handles share nothing
-/// and may run concurrently. Callbacks run on the calling thread.
+/// `hycon_contact_free`. Thread safety: the functions taking `HyconContact *` (increments,
+/// free) need the handle exclusively; the queries taking `const HyconContact *` may run on one
+/// handle from several threads at once (the displacement recovery's solves are serialized by
+/// a lock inside, so a solve callback is never entered concurrently, though it may be entered
+/// from any querying thread). Distinct handles share nothing. Callbacks run on the calling
+/// thread.
 pub struct HyconContact {
     analysis: ContactAnalysis,
 }
@@ -411,127 +474,7 @@ fn record_to_c(r: &IterationRecord) -> HyconIterationRecord {
 }
 
 // ------------------------------------------------------------------------------------------
-// Checked access to caller memory
-
-/// A caller array `(ptr, len)` as a slice for the duration of the call. `(NULL, 0)` is empty.
-///
-/// # Safety
-/// If `ptr` is non-null it must point to `len` readable, initialised values that stay
-/// unchanged during the call.
-unsafe fn slice<'a, T>(ptr: *const T, len: usize, name: &str) -> Result<&'a [T], Fail> {
-    if len == 0 {
-        return Ok(&[]);
-    }
-    if len > isize::MAX as usize / std::mem::size_of::<T>().max(1) {
-        return Err(Fail::invalid(format!("{name}: length {len} is too large")));
-    }
-    check_pointer(ptr, name)?;
-    // SAFETY: non-null and aligned (checked); `len` readable values (caller contract).
-    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
-}
-
-/// `count * per + extra`, the length of an array sized by another argument, or an error naming
-/// `name` when it overflows.
-fn length(count: usize, per: usize, extra: usize, name: &str) -> Result<usize, Fail> {
-    count
-        .checked_mul(per)
-        .and_then(|n| n.checked_add(extra))
-        .ok_or_else(|| Fail::invalid(format!("{name} = {count} is too large")))
-}
-
-/// [`slice`] of doubles, checked finite.
-///
-/// # Safety
-/// As [`slice`].
-unsafe fn doubles<'a>(ptr: *const f64, len: usize, name: &str) -> Result<&'a [f64], Fail> {
-    // SAFETY: forwarded contract.
-    let values = unsafe { slice(ptr, len, name)? };
-    check_finite(values, name)?;
-    Ok(values)
-}
-
-/// A handle argument as a shared reference.
-///
-/// # Safety
-/// `ptr` must be NULL or a live handle from the matching `_new` function.
-unsafe fn handle<'a, T>(ptr: *const T, name: &str) -> Result<&'a T, Fail> {
-    check_pointer(ptr, name)?;
-    // SAFETY: non-null, aligned, and a live handle (caller contract).
-    Ok(unsafe { &*ptr })
-}
-
-/// A handle argument as an exclusive reference.
-///
-/// # Safety
-/// As [`handle`], and not used by anyone else during the call.
-unsafe fn handle_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T, Fail> {
-    check_pointer(ptr.cast_const(), name)?;
-    // SAFETY: non-null, aligned, live and exclusively ours during the call (caller contract).
-    Ok(unsafe { &mut *ptr })
-}
-
-/// Write one value to a caller pointer.
-///
-/// # Safety
-/// `ptr` must be NULL or point to a writable `T`.
-unsafe fn write<T>(ptr: *mut T, value: T, name: &str) -> Result<(), Fail> {
-    check_pointer(ptr.cast_const(), name)?;
-    // SAFETY: non-null, aligned (checked) and writable (contract).
-    unsafe { ptr.write(value) };
-    Ok(())
-}
-
-/// Write an optional output (NULL: not wanted).
-///
-/// # Safety
-/// `ptr` must be NULL or point to a writable `T`.
-unsafe fn write_optional<T>(ptr: *mut T, value: T) {
-    if !ptr.is_null() && ptr.is_aligned() {
-        // SAFETY: non-null, aligned and writable (contract).
-        unsafe { ptr.write(value) };
-    }
-}
-
-/// Copy `values` into a caller array `(out, len)` after checking its length.
-///
-/// # Safety
-/// `out` must be NULL or point to `len` writable `T`.
-unsafe fn write_all<T: Copy>(
-    out: *mut T,
-    len: usize,
-    values: &[T],
-    name: &str,
-) -> Result<(), Fail> {
-    check_output(out, len, values.len(), name)?;
-    if !values.is_empty() {
-        // SAFETY: checked non-null, aligned and long enough; `values` is our own memory.
-        unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), out, values.len()) };
-    }
-    Ok(())
-}
-
-/// Box a new handle and hand it to the caller.
-///
-/// # Safety
-/// `out` must be NULL or point to a writable pointer.
-unsafe fn hand_out<T>(out: *mut *mut T, value: T) -> Result<(), Fail> {
-    check_pointer(out.cast_const(), "out")?;
-    // SAFETY: checked non-null and aligned; writable (contract). Ownership passes to the caller,
-    // who returns it through the matching `_free`.
-    unsafe { out.write(Box::into_raw(Box::new(value))) };
-    Ok(())
-}
-
-/// Free a handle made by [`hand_out`]; NULL is a no-op.
-///
-/// # Safety
-/// `ptr` must be NULL or a live handle of type `T`, not used afterwards.
-unsafe fn free_handle<T>(ptr: *mut T) {
-    if !ptr.is_null() {
-        // SAFETY: made by `Box::into_raw` in `hand_out` and not freed before (contract).
-        drop(unsafe { Box::from_raw(ptr) });
-    }
-}
+// Reading the inputs
 
 fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Monitor>), Fail> {
     let backend = match o.backend {
@@ -582,44 +525,46 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
 /// Elements in compressed form with their materials, read from caller arrays and checked
 /// (offsets start at 0 and do not decrease, material indices in range).
 struct ElementArrays {
+    formulation: Formulation,
     offsets: Vec<usize>,
     nodes: Vec<usize>,
     element_material: Vec<usize>,
     materials: Vec<Material>,
 }
 
-/// Read `n_elements` elements in compressed form (`element_offsets`: `n_elements + 1` entries;
-/// `element_nodes`: `element_offsets[n_elements]` ids; `element_materials`: `n_elements`
-/// indices or NULL for all 0) and `n_materials` materials.
+/// Read and check an element block view (`name`: the argument) and its `n_materials`
+/// materials.
 ///
 /// # Safety
-/// Each array must be NULL or hold the stated number of readable values.
-unsafe fn read_elements(
-    element_offsets: *const usize,
-    element_nodes: *const usize,
-    n_elements: usize,
-    element_materials: *const usize,
+/// `block` must be NULL or point to a readable view whose arrays hold the stated number of
+/// values; `materials` NULL or `n_materials` readable structs.
+unsafe fn read_block(
+    block: *const HyconElementBlock,
+    name: &str,
     materials: *const HyconMaterial,
     n_materials: usize,
 ) -> Result<ElementArrays, Fail> {
+    // SAFETY (all reads): forwarded contract.
+    let b = unsafe { handle(block, name)? };
+    let formulation = formulation(b.kind)?;
+    let n_elements = b.n_elements;
     if n_elements == 0 || n_materials == 0 {
         return Err(Fail::invalid(format!(
             "elements and materials are needed (got {n_elements} and {n_materials})"
         )));
     }
-    let n_offsets = length(n_elements, 1, 1, "n_elements")?;
-    // SAFETY (all reads): forwarded contract.
-    let offsets = unsafe { slice(element_offsets, n_offsets, "element_offsets")? };
+    let n_offsets = length(n_elements, 1, 1, &format!("{name}.n_elements"))?;
+    let offsets = unsafe { slice(b.offsets, n_offsets, &format!("{name}.offsets"))? };
     if offsets[0] != 0 || offsets.windows(2).any(|w| w[1] < w[0]) {
-        return Err(Fail::invalid(
-            "element_offsets must start at 0 and be nondecreasing",
-        ));
+        return Err(Fail::invalid(format!(
+            "{name}.offsets must start at 0 and be nondecreasing"
+        )));
     }
-    let nodes = unsafe { slice(element_nodes, offsets[n_elements], "element_nodes")? };
-    let element_material = if element_materials.is_null() {
+    let nodes = unsafe { slice(b.nodes, offsets[n_elements], &format!("{name}.nodes"))? };
+    let element_material = if b.materials.is_null() {
         vec![0; n_elements]
     } else {
-        unsafe { slice(element_materials, n_elements, "element_materials")? }.to_vec()
+        unsafe { slice(b.materials, n_elements, &format!("{name}.materials"))? }.to_vec()
     };
     let materials = unsafe { slice(materials, n_materials, "materials")? }
         .iter()
@@ -635,11 +580,69 @@ unsafe fn read_elements(
         )));
     }
     Ok(ElementArrays {
+        formulation,
         offsets: offsets.to_vec(),
         nodes: nodes.to_vec(),
         element_material,
         materials,
     })
+}
+
+/// Read and check a polyline view (`name`: the argument).
+///
+/// # Safety
+/// `polyline` must be NULL or point to a readable view whose `nodes` holds `n` ids.
+unsafe fn read_polyline<'a>(
+    polyline: *const HyconPolyline,
+    name: &str,
+) -> Result<&'a [usize], Fail> {
+    // SAFETY (both): forwarded contract.
+    let p = unsafe { handle(polyline, name)? };
+    unsafe { slice(p.nodes, p.n, &format!("{name}.nodes")) }
+}
+
+/// Read and check a host node view (`name`: the argument; `side`: how messages name its
+/// nodes) for a system of `n_equations` equations: ids, finite coordinates, and equations in
+/// range or `HYCON_FIXED` (the one place `HYCON_FIXED` is decoded).
+///
+/// # Safety
+/// `view` must be NULL or point to a readable view whose arrays hold the stated number of
+/// values.
+unsafe fn read_host_nodes(
+    view: *const HyconHostNodes,
+    name: &str,
+    side: &str,
+    n_equations: usize,
+) -> Result<Vec<HostNode>, Fail> {
+    // SAFETY (all reads): forwarded contract.
+    let v = unsafe { handle(view, name)? };
+    let per_node = length(v.n, 2, 0, &format!("{name}.n"))?;
+    let ids = unsafe { slice(v.ids, v.n, &format!("{name}.ids"))? };
+    let xy = unsafe { doubles(v.coords, per_node, &format!("{name}.coords"))? };
+    let eqs = unsafe { slice(v.equations, per_node, &format!("{name}.equations"))? };
+    ids.iter()
+        .enumerate()
+        .map(|(i, &id)| {
+            let mut equations = [None; 2];
+            for (d, e) in equations.iter_mut().enumerate() {
+                *e = match eqs[2 * i + d] {
+                    HYCON_FIXED => None,
+                    r if r >= 0 && (r as u64) < n_equations as u64 => Some(r as usize),
+                    r => {
+                        return Err(Fail::invalid(format!(
+                            "{side} node {id}: equation {r} is out of range (0..{n_equations} \
+                             or HYCON_FIXED)"
+                        )));
+                    }
+                };
+            }
+            Ok(HostNode {
+                id,
+                position: [xy[2 * i], xy[2 * i + 1]],
+                equations,
+            })
+        })
+        .collect()
 }
 
 /// Read the options argument (NULL: defaults).
@@ -695,56 +698,41 @@ pub unsafe extern "C" fn hycon_contact_options_default(
 // ------------------------------------------------------------------------------------------
 // Model API
 
-/// Create a model from its mesh and materials.
+/// Create a model from its mesh and materials (the order of every call that takes a mesh:
+/// nodes, elements, materials).
 ///
 /// * `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`;
-/// * elements in compressed form: element `e` has the nodes
-///   `element_nodes[element_offsets[e] .. element_offsets[e + 1]]` (4 to 6 node ids,
-///   counter-clockwise: corners plus mid-side nodes of transition elements, in boundary
-///   order); `element_offsets` has `n_elements + 1` entries starting at 0;
-/// * `element_materials`: `n_elements` indices into `materials`, or NULL (all use material 0);
-/// * `kind`: the formulation of every element (`HYCON_ELEMENT_*`; Pian-Sumihara and Q4 take
-///   4-node elements only).
+/// * `elements`: the elements (`HyconElementBlock`: compressed node lists, their material
+///   indices or NULL for all 0, the formulation);
+/// * `materials`: `n_materials` materials.
 ///
-/// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT`
-/// (lengths, unknown node ids, non-finite coordinates, unknown kind),
+/// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `coords`, `elements`,
+/// `materials`, or an array of `elements` with a nonzero length), `HYCON_ERROR_INVALID_ARGUMENT`
+/// (lengths, unknown node ids, non-finite coordinates, unknown kind, misaligned pointers),
 /// `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex
 /// element, named by index).
 ///
 /// # Safety
-/// `out` must point to a writable pointer; each array must be NULL or hold the stated number of
-/// readable values.
+/// `out` must point to a writable pointer; `coords` NULL or `2 n_nodes` readable doubles;
+/// `elements` NULL or a readable view whose arrays hold the stated counts; `materials` NULL or
+/// `n_materials` readable structs.
 #[unsafe(no_mangle)]
-#[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hycon_model_new(
     out: *mut *mut HyconModel,
     coords: *const f64,
     n_nodes: usize,
-    element_offsets: *const usize,
-    element_nodes: *const usize,
-    n_elements: usize,
-    element_materials: *const usize,
+    elements: *const HyconElementBlock,
     materials: *const HyconMaterial,
     n_materials: usize,
-    kind: HyconElementKind,
 ) -> HyconStatus {
     boundary("hycon_model_new", || {
-        let formulation = formulation(kind)?;
+        check_pointer(out.cast_const(), "out")?;
         if n_nodes == 0 {
             return Err(Fail::invalid("a model needs nodes (n_nodes = 0)"));
         }
         // SAFETY (all reads below): the caller's contract on the arrays and lengths.
         let xy = unsafe { doubles(coords, length(n_nodes, 2, 0, "n_nodes")?, "coords")? };
-        let elements = unsafe {
-            read_elements(
-                element_offsets,
-                element_nodes,
-                n_elements,
-                element_materials,
-                materials,
-                n_materials,
-            )?
-        };
+        let elements = unsafe { read_block(elements, "elements", materials, n_materials)? };
         let mut mesh = Mesh::new();
         for p in xy.chunks_exact(2) {
             mesh.push_node([p[0], p[1]]);
@@ -752,7 +740,7 @@ pub unsafe extern "C" fn hycon_model_new(
         mesh.element_offsets = elements.offsets;
         mesh.element_nodes = elements.nodes;
         mesh.element_material = elements.element_material;
-        let model = Model::new(mesh, elements.materials, formulation);
+        let model = Model::new(mesh, elements.materials, elements.formulation);
         model.validate()?;
         // SAFETY: the caller's contract on `out`.
         unsafe {
@@ -823,26 +811,27 @@ pub unsafe extern "C" fn hycon_model_prescribe(
 /// friction coefficient `friction >= 0` (0: frictionless). The pair's index (0, 1, ...) is
 /// written to `index` unless it is NULL.
 ///
-/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for unknown node ids, fewer than 2 nodes, repeated
-/// nodes, a node in both polylines, consecutive nodes that are not an element edge with the
-/// body on the left (naming the segment), a bad friction coefficient.
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`model`, `a`, `b`, or their `nodes` with `n > 0`);
+/// `HYCON_ERROR_INVALID_ARGUMENT` for unknown node ids, fewer than 2 nodes, repeated nodes, a
+/// node in both polylines, consecutive nodes that are not an element edge with the body on the
+/// left (naming the segment), a bad friction coefficient, a misaligned pointer.
 ///
 /// # Safety
-/// `model` must be a live handle; `a`, `b` NULL or holding `n_a`, `n_b` ids.
+/// `model` must be a live handle; `a`, `b` NULL or readable views holding `n` ids each;
+/// `index` NULL or writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hycon_model_add_pair(
     model: *mut HyconModel,
-    a: *const usize,
-    n_a: usize,
-    b: *const usize,
-    n_b: usize,
+    a: *const HyconPolyline,
+    b: *const HyconPolyline,
     friction: f64,
     index: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_model_add_pair", || {
-        // SAFETY: the caller's contract.
+        // SAFETY (all): the caller's contract.
         let m = unsafe { handle_mut(model, "model")? };
-        let (a, b) = unsafe { (slice(a, n_a, "a")?, slice(b, n_b, "b")?) };
+        let index = optional(index, "index")?;
+        let (a, b) = unsafe { (read_polyline(a, "a")?, read_polyline(b, "b")?) };
         let pair = ContactPair {
             a: a.to_vec(),
             b: b.to_vec(),
@@ -850,14 +839,13 @@ pub unsafe extern "C" fn hycon_model_add_pair(
         };
         pair.check_on(&m.model.mesh)?;
         m.pairs.push(pair);
-        // SAFETY: the caller's contract on `index`.
-        unsafe { write_optional(index, m.pairs.len() - 1) };
+        unsafe { put(index, m.pairs.len() - 1) };
         Ok(())
     })
 }
 
 /// Tie `nodes` (a face of one body, none of them a contact node) to a rigid plate whose x and
-/// y translations are driven per increment by `hycon_contact_increment_plate`, each by
+/// y translations are driven per increment by `hycon_contact_increment_with_plate`, each by
 /// displacement or by force. The nodes are prescribed in x and y by this call. A body held only
 /// by the plate and by contact (a pressed disk) then takes a prescribed force.
 ///
@@ -967,36 +955,11 @@ pub unsafe extern "C" fn hycon_host_free(host: *mut HyconHost) {
 
 impl HyconHost {
     /// Register the nodes of one polyline: new nodes are added, known ones must agree.
-    fn merge_nodes(
-        &mut self,
-        ids: &[usize],
-        xy: &[f64],
-        eqs: &[i64],
-        side: &str,
-    ) -> Result<(), Fail> {
-        for (i, &id) in ids.iter().enumerate() {
-            let mut equations = [None; 2];
-            for (d, e) in equations.iter_mut().enumerate() {
-                let raw = eqs[2 * i + d];
-                *e = match raw {
-                    HYCON_FIXED => None,
-                    r if r >= 0 && (r as u64) < self.equations as u64 => Some(r as usize),
-                    r => {
-                        return Err(Fail::invalid(format!(
-                            "{side} node {id}: equation {r} is out of range (0..{} or \
-                             HYCON_FIXED)",
-                            self.equations
-                        )));
-                    }
-                };
-            }
-            let node = HostNode {
-                id,
-                position: [xy[2 * i], xy[2 * i + 1]],
-                equations,
-            };
+    fn merge_nodes(&mut self, nodes: &[HostNode], side: &str) -> Result<(), Fail> {
+        for node in nodes {
+            let id = node.id;
             match self.nodes.iter().find(|n| n.id == id) {
-                Some(known) if *known != node => {
+                Some(known) if known != node => {
                     return Err(Fail::invalid(format!(
                         "{side} node {id} was given before with other coordinates or equations"
                     )));
@@ -1007,14 +970,14 @@ impl HyconHost {
                         n.equations
                             .iter()
                             .flatten()
-                            .any(|e| equations.contains(&Some(*e)))
+                            .any(|e| node.equations.contains(&Some(*e)))
                     }) {
                         return Err(Fail::invalid(format!(
                             "{side} node {id} shares an equation with node {}",
                             other.id
                         )));
                     }
-                    self.nodes.push(node)
+                    self.nodes.push(*node)
                 }
             }
         }
@@ -1022,71 +985,61 @@ impl HyconHost {
     }
 }
 
-/// Add a contact pair in the host's numbering: for each polyline (A, the multiplier side, and
-/// B), `n` node ids, their `2 n` reference coordinates `x0 y0 x1 y1 ...` and `2 n` equation
-/// numbers (`u_x`, `u_y` per node; `HYCON_FIXED` for a dof the host holds at zero). Each
-/// polyline is ordered with its body on the left. A node in several pairs must be given the
-/// same coordinates and equations each time. `friction >= 0` is the Coulomb coefficient. The
-/// pair's index is written to `index` unless it is NULL. The arrays are copied.
+/// Add a contact pair in the host's numbering: the polylines `a` (the multiplier side) and `b`,
+/// each a `HyconHostNodes` (node ids, reference coordinates, equation numbers with
+/// `HYCON_FIXED` for a dof the host holds at zero), ordered with its body on the left. A node
+/// in several pairs must be given the same coordinates and equations each time. `friction >= 0`
+/// is the Coulomb coefficient. The pair's index is written to `index` unless it is NULL. The
+/// arrays are copied; on an error the host is unchanged.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
+/// `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
+/// fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
+/// a bad friction coefficient, a misaligned pointer).
 ///
 /// # Safety
-/// `host` must be a live handle; every array NULL or holding the stated number of values.
+/// `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
+/// counts; `index` NULL or writable.
 #[unsafe(no_mangle)]
-#[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hycon_host_add_pair(
     host: *mut HyconHost,
-    a_nodes: *const usize,
-    a_coords: *const f64,
-    a_equations: *const i64,
-    n_a: usize,
-    b_nodes: *const usize,
-    b_coords: *const f64,
-    b_equations: *const i64,
-    n_b: usize,
+    a: *const HyconHostNodes,
+    b: *const HyconHostNodes,
     friction: f64,
     index: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_host_add_pair", || {
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
-        let a = unsafe { slice(a_nodes, n_a, "a_nodes")? };
-        let b = unsafe { slice(b_nodes, n_b, "b_nodes")? };
+        let index = optional(index, "index")?;
+        let a = unsafe { read_host_nodes(a, "a", "A", h.equations)? };
+        let b = unsafe { read_host_nodes(b, "b", "B", h.equations)? };
+        let ids = |nodes: &[HostNode]| nodes.iter().map(|n| n.id).collect::<Vec<_>>();
         let pair = ContactPair {
-            a: a.to_vec(),
-            b: b.to_vec(),
+            a: ids(&a),
+            b: ids(&b),
             friction,
         };
         pair.check()?;
-        let (len_a, len_b) = (length(n_a, 2, 0, "n_a")?, length(n_b, 2, 0, "n_b")?);
-        let a_xy = unsafe { doubles(a_coords, len_a, "a_coords")? };
-        let b_xy = unsafe { doubles(b_coords, len_b, "b_coords")? };
-        let a_eq = unsafe { slice(a_equations, len_a, "a_equations")? };
-        let b_eq = unsafe { slice(b_equations, len_b, "b_equations")? };
-        for (ids, xy, side) in [(a, a_xy, "A"), (b, b_xy, "B")] {
-            if let Some(w) = ids
-                .windows(2)
-                .enumerate()
-                .find(|(i, _)| xy[2 * i] == xy[2 * i + 2] && xy[2 * i + 1] == xy[2 * i + 3])
-            {
+        for (nodes, side) in [(&a, "A"), (&b, "B")] {
+            if let Some(w) = nodes.windows(2).find(|w| w[0].position == w[1].position) {
                 return Err(Fail::invalid(format!(
                     "the {side} polyline is not a chain: segment {} -> {} has zero length",
-                    w.1[0], w.1[1]
+                    w[0].id, w[1].id
                 )));
             }
         }
         // all-or-nothing: merge into a copy
         let mut nodes = h.nodes.clone();
         std::mem::swap(&mut nodes, &mut h.nodes);
-        let merged = h
-            .merge_nodes(a, a_xy, a_eq, "A")
-            .and_then(|_| h.merge_nodes(b, b_xy, b_eq, "B"));
+        let merged = h.merge_nodes(&a, "A").and_then(|_| h.merge_nodes(&b, "B"));
         if let Err(e) = merged {
             h.nodes = nodes;
             return Err(e);
         }
         h.pairs.push(pair);
         // SAFETY: the caller's contract on `index`.
-        unsafe { write_optional(index, h.pairs.len() - 1) };
+        unsafe { put(index, h.pairs.len() - 1) };
         Ok(())
     })
 }
@@ -1172,82 +1125,38 @@ pub unsafe extern "C" fn hycon_host_set_solver(
 
 /// Optionally hand over the elements of body A along the A polylines (at least those owning an
 /// A segment), so that `hycon_contact_stress_tractions` can recover the tractions from their
-/// stresses (the paper's way (a)) from the host's displacements. The elements must be hycon
-/// element formulations (`kind`), counter-clockwise, in compressed form as in
-/// `hycon_model_new` (`element_offsets` has `n_elements + 1` entries, `element_materials`
-/// `n_elements` indices into `materials` or NULL for all 0), with node ids of the host's
-/// numbering; the node table gives, for each of the `n_nodes` nodes they use, its id
-/// (`node_ids`), reference coordinates (`coords`, 2 per node) and equations (`equations`, 2 per
-/// node, `HYCON_FIXED` for a held dof). Copied; replaces earlier elements. Note the order:
-/// kind and materials first, then the elements, then the node table (`hycon_model_new` takes
-/// the coordinates first and the kind last).
+/// stresses (the paper's way (a)) from the host's displacements. The same order as
+/// `hycon_model_new`: nodes, elements, materials. `nodes` is the node table of every node the
+/// elements use (ids, reference coordinates, equations with `HYCON_FIXED` for a held dof);
+/// `elements` the elements (hycon formulations, counter-clockwise, node ids of the host's
+/// numbering); `materials` the `n_materials` materials the elements' indices refer to. Copied;
+/// replaces earlier elements.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, a view, an array of a view with a nonzero count,
+/// `materials`), `HYCON_ERROR_INVALID_ARGUMENT` (counts, unknown ids, equations, non-finite
+/// coordinates, misaligned pointers), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`.
 ///
 /// # Safety
-/// `host` must be a live handle; every array NULL or holding the stated number of values.
+/// `host` must be a live handle; `nodes` and `elements` NULL or readable views whose arrays
+/// hold the stated counts; `materials` NULL or `n_materials` readable structs.
 #[unsafe(no_mangle)]
-#[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hycon_host_set_elements(
     host: *mut HyconHost,
-    kind: HyconElementKind,
+    nodes: *const HyconHostNodes,
+    elements: *const HyconElementBlock,
     materials: *const HyconMaterial,
     n_materials: usize,
-    element_materials: *const usize,
-    element_offsets: *const usize,
-    element_nodes: *const usize,
-    n_elements: usize,
-    node_ids: *const usize,
-    coords: *const f64,
-    equations: *const i64,
-    n_nodes: usize,
 ) -> HyconStatus {
     boundary("hycon_host_set_elements", || {
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
-        let formulation = formulation(kind)?;
-        if n_nodes == 0 {
-            return Err(Fail::invalid("elements need nodes (n_nodes = 0)"));
+        let node_table = unsafe { read_host_nodes(nodes, "nodes", "element", h.equations)? };
+        if node_table.is_empty() {
+            return Err(Fail::invalid("elements need nodes (nodes.n = 0)"));
         }
-        let elements = unsafe {
-            read_elements(
-                element_offsets,
-                element_nodes,
-                n_elements,
-                element_materials,
-                materials,
-                n_materials,
-            )?
-        };
-        let ids = unsafe { slice(node_ids, n_nodes, "node_ids")? };
-        let per_node = length(n_nodes, 2, 0, "n_nodes")?;
-        let xy = unsafe { doubles(coords, per_node, "coords")? };
-        let eqs = unsafe { slice(equations, per_node, "equations")? };
-        let node_table = ids
-            .iter()
-            .enumerate()
-            .map(|(i, &id)| {
-                let mut equations = [None; 2];
-                for (d, e) in equations.iter_mut().enumerate() {
-                    *e = match eqs[2 * i + d] {
-                        HYCON_FIXED => None,
-                        r if r >= 0 && (r as u64) < h.equations as u64 => Some(r as usize),
-                        r => {
-                            return Err(Fail::invalid(format!(
-                                "element node {id}: equation {r} is out of range (0..{} or \
-                                 HYCON_FIXED)",
-                                h.equations
-                            )));
-                        }
-                    };
-                }
-                Ok(HostNode {
-                    id,
-                    position: [xy[2 * i], xy[2 * i + 1]],
-                    equations,
-                })
-            })
-            .collect::<Result<Vec<_>, Fail>>()?;
+        let elements = unsafe { read_block(elements, "elements", materials, n_materials)? };
         let elements = HostElements {
-            formulation,
+            formulation: elements.formulation,
             materials: elements.materials,
             element_material: elements.element_material,
             offsets: elements.offsets,
@@ -1326,24 +1235,6 @@ pub unsafe extern "C" fn hycon_contact_free(contact: *mut HyconContact) {
     unsafe { free_handle(contact) }
 }
 
-/// Length of the load and displacement vectors: `2 * n_nodes` (model API) or `n_equations`
-/// (host API).
-///
-/// # Safety
-/// `contact` must be a live handle, `n` writable.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_field_len(
-    contact: *const HyconContact,
-    n: *mut usize,
-) -> HyconStatus {
-    boundary("hycon_contact_field_len", || {
-        // SAFETY: the caller's contract.
-        let c = unsafe { handle(contact, "contact")? };
-        let len = c.analysis.field_len();
-        unsafe { write(n, len, "n") }
-    })
-}
-
 fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo {
     HyconIncrementInfo {
         increment: i.increment,
@@ -1359,6 +1250,9 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
 ///   others are ignored, whatever they hold: NaN there is fine);
 /// * host API: `load` = the host's right-hand side over its equations (including the effect of
 ///   its prescribed displacements), `prescribed` = (NULL, 0).
+///
+/// `load_len` is the field length, which the size query of the displacement gives:
+/// `hycon_contact_displacement(contact, NULL, 0, &load_len)`.
 ///
 /// On success the converged state advances and `info` (unless NULL) gets the summary. On
 /// failure the last converged state is kept and the status says why: `HYCON_ERROR_CONTACT` (no
@@ -1382,10 +1276,11 @@ pub unsafe extern "C" fn hycon_contact_increment(
     boundary("hycon_contact_increment", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
+        let info = optional(info, "info")?;
         let f = unsafe { slice(load, load_len, "load")? };
         let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
         let done = c.analysis.increment(f, qp)?;
-        unsafe { write_optional(info, info_to_c(done)) };
+        unsafe { put(info, info_to_c(done)) };
         Ok(())
     })
 }
@@ -1399,7 +1294,7 @@ pub unsafe extern "C" fn hycon_contact_increment(
 /// As `hycon_contact_increment`; `control` and `value` must hold 2 values each.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn hycon_contact_increment_plate(
+pub unsafe extern "C" fn hycon_contact_increment_with_plate(
     contact: *mut HyconContact,
     load: *const f64,
     load_len: usize,
@@ -1409,9 +1304,10 @@ pub unsafe extern "C" fn hycon_contact_increment_plate(
     value: *const f64,
     info: *mut HyconIncrementInfo,
 ) -> HyconStatus {
-    boundary("hycon_contact_increment_plate", || {
+    boundary("hycon_contact_increment_with_plate", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
+        let info = optional(info, "info")?;
         let f = unsafe { slice(load, load_len, "load")? };
         let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
         let kinds = unsafe { slice(control, 2, "control")? };
@@ -1430,7 +1326,7 @@ pub unsafe extern "C" fn hycon_contact_increment_plate(
             };
         }
         let done = c.analysis.increment_with_plate(f, qp, plate)?;
-        unsafe { write_optional(info, info_to_c(done)) };
+        unsafe { put(info, info_to_c(done)) };
         Ok(())
     })
 }
@@ -1452,259 +1348,285 @@ pub unsafe extern "C" fn hycon_contact_plate(
         let Some((u, f)) = c.analysis.plate() else {
             return Err(Fail::invalid("this analysis has no plate"));
         };
-        check_output(displacement, 2, 2, "displacement")?;
-        check_output(force, 2, 2, "force")?;
-        unsafe { write_all(displacement, 2, &u, "displacement")? };
-        unsafe { write_all(force, 2, &f, "force") }
-    })
-}
-
-/// The displacement of the last converged increment (total, from the reference state; zero
-/// before the first) over the field (`hycon_contact_field_len` values): all dofs of a model,
-/// the host's equations. Costs one solve on the first call after an increment.
-///
-/// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_displacement(
-    contact: *mut HyconContact,
-    out: *mut f64,
-    len: usize,
-) -> HyconStatus {
-    boundary("hycon_contact_displacement", || {
-        // SAFETY (all): the caller's contract.
-        let c = unsafe { handle_mut(contact, "contact")? };
-        let needed = c.analysis.field_len();
-        check_output(out, len, needed, "out")?;
-        let q = c.analysis.displacement()?;
-        unsafe { write_all(out, len, q, "out") }
-    })
-}
-
-/// The displacement increment of the last converged increment (its total displacement minus
-/// the previous increment's; the total at the first), same layout as
-/// `hycon_contact_displacement`. One solve per call.
-///
-/// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_displacement_increment(
-    contact: *mut HyconContact,
-    out: *mut f64,
-    len: usize,
-) -> HyconStatus {
-    boundary("hycon_contact_displacement_increment", || {
-        // SAFETY (all): the caller's contract.
-        let c = unsafe { handle_mut(contact, "contact")? };
-        check_output(out, len, c.analysis.field_len(), "out")?;
-        let du = c.analysis.displacement_increment()?;
-        unsafe { write_all(out, len, &du, "out") }
-    })
-}
-
-/// The contact forces of the last converged increment over the field (zero at a host's fixed
-/// dofs): adding them to the load gives the right-hand side whose solution is the displacement
-/// (`K u = load + forces`), for hosts that recover displacements and stresses themselves.
-///
-/// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable doubles.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_forces(
-    contact: *const HyconContact,
-    out: *mut f64,
-    len: usize,
-) -> HyconStatus {
-    boundary("hycon_contact_forces", || {
-        // SAFETY (all): the caller's contract.
-        let c = unsafe { handle(contact, "contact")? };
-        unsafe { write_all(out, len, &c.analysis.contact_forces(), "out") }
-    })
-}
-
-/// Sizes of pair `pair`: nodes of its A and B polylines (either output may be NULL).
-///
-/// # Safety
-/// `contact` must be a live handle; outputs NULL or writable.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_pair_size(
-    contact: *const HyconContact,
-    pair: usize,
-    n_a: *mut usize,
-    n_b: *mut usize,
-) -> HyconStatus {
-    boundary("hycon_contact_pair_size", || {
-        // SAFETY (all): the caller's contract.
-        let c = unsafe { handle(contact, "contact")? };
-        let (a, b) = c.analysis.pair_size(pair)?;
+        check_pointer(displacement.cast_const(), "displacement")?;
+        check_pointer(force.cast_const(), "force")?;
+        // SAFETY: both checked non-null and aligned, writable for 2 doubles (contract).
         unsafe {
-            write_optional(n_a, a);
-            write_optional(n_b, b);
+            write_doubles(displacement, &u);
+            write_doubles(force, &f);
         }
         Ok(())
     })
 }
 
-/// Tractions way (b), the multipliers: converged results at the A nodes of `pair` (states,
-/// `tn`, `ts`, frames, gaps, nodal forces); `out` needs the A node count.
+/// The displacement of the last converged increment (total, from the reference state; zero
+/// before the first) over the field: all `2 * n_nodes` dofs of a model (`u0 v0 u1 v1 ...`), the
+/// host's `n_equations` equations. The size query `(NULL, 0, &needed)` gives that length, which
+/// is also the `load_len` of `hycon_contact_increment`. The first call after an increment
+/// recovers the field (one solve; a host's solve callback is called), later calls copy it.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
 ///
 /// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable structs.
+/// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_contact_displacement(
+    contact: *const HyconContact,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_contact_displacement", || {
+        // SAFETY (all): the caller's contract.
+        let c = unsafe { handle(contact, "contact")? };
+        let count = c.analysis.field_len();
+        unsafe {
+            fill(out, len, needed, "out", count, || {
+                Ok(c.analysis.displacement()?.to_vec())
+            })
+        }
+    })
+}
+
+/// The displacement increment of the last converged increment (its total displacement minus
+/// the previous increment's; the total at the first), same layout and length as
+/// `hycon_contact_displacement`. One solve per call (not for the size query).
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+///
+/// # Safety
+/// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_contact_displacement_increment(
+    contact: *const HyconContact,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_contact_displacement_increment", || {
+        // SAFETY (all): the caller's contract.
+        let c = unsafe { handle(contact, "contact")? };
+        let count = c.analysis.field_len();
+        unsafe {
+            fill(out, len, needed, "out", count, || {
+                Ok(c.analysis.displacement_increment()?)
+            })
+        }
+    })
+}
+
+/// The contact forces of the last converged increment over the field (zero at a host's fixed
+/// dofs; same length as `hycon_contact_displacement`): adding them to the load gives the
+/// right-hand side whose solution is the displacement (`K u = load + forces`), for hosts that
+/// recover displacements and stresses themselves. Rust: `ContactAnalysis::contact_forces`.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+///
+/// # Safety
+/// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_contact_forces(
+    contact: *const HyconContact,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_contact_forces", || {
+        // SAFETY (all): the caller's contract.
+        let c = unsafe { handle(contact, "contact")? };
+        let count = c.analysis.field_len();
+        unsafe {
+            fill(out, len, needed, "out", count, || {
+                Ok(c.analysis.contact_forces())
+            })
+        }
+    })
+}
+
+/// Tractions way (b), the multipliers: converged results at the A nodes of `pair` (states,
+/// `tn`, `ts`, frames, gaps, nodal forces), one per A node in polyline order: the size query
+/// gives the A node count.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
+///
+/// # Safety
+/// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hycon_contact_node_results(
     contact: *const HyconContact,
     pair: usize,
     out: *mut HyconNodeResult,
     len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_contact_node_results", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let results: Vec<HyconNodeResult> = c
-            .analysis
-            .node_results(pair)?
-            .iter()
-            .map(|r| {
-                let (state, slip_sign) = match r.state {
-                    NodeState::Open => (HYCON_NODE_OPEN, 0),
-                    NodeState::Stick => (HYCON_NODE_STICK, 0),
-                    NodeState::Slip { sign } => (HYCON_NODE_SLIP, i32::from(sign)),
-                };
-                HyconNodeResult {
-                    node: r.node,
-                    state,
-                    slip_sign,
-                    tn: r.tn,
-                    ts: r.ts,
-                    normal: r.normal,
-                    tangent: r.tangent,
-                    position: r.position,
-                    weight: r.weight,
-                    gap: r.gap,
-                    force: r.force,
-                }
-            })
-            .collect();
-        unsafe { write_all(out, len, &results, "out") }
+        let (n_a, _) = c.analysis.pair_size(pair)?;
+        let results = || -> Result<Vec<HyconNodeResult>, Fail> {
+            Ok(c.analysis
+                .node_results(pair)?
+                .iter()
+                .map(|r| {
+                    let (state, slip_sign) = match r.state {
+                        NodeState::Open => (HYCON_NODE_OPEN, 0),
+                        NodeState::Stick => (HYCON_NODE_STICK, 0),
+                        NodeState::Slip { sign } => (HYCON_NODE_SLIP, i32::from(sign)),
+                    };
+                    HyconNodeResult {
+                        node: r.node,
+                        state,
+                        slip_sign,
+                        tn: r.tn,
+                        ts: r.ts,
+                        normal: r.normal,
+                        tangent: r.tangent,
+                        position: r.position,
+                        weight: r.weight,
+                        gap: r.gap,
+                        force: r.force,
+                    }
+                })
+                .collect())
+        };
+        unsafe { fill(out, len, needed, "out", n_a, results) }
     })
 }
 
-/// Tractions way (c), the B side: nodal forces, weights and pressures at the B nodes of `pair`;
-/// `out` needs the B node count.
+/// Tractions way (c), the B side: nodal forces, weights and pressures at the B nodes of `pair`,
+/// one per B node in polyline order: the size query gives the B node count.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 ///
 /// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable structs.
+/// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hycon_contact_b_node_results(
     contact: *const HyconContact,
     pair: usize,
     out: *mut HyconBNodeResult,
     len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_contact_b_node_results", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let results: Vec<HyconBNodeResult> = c
-            .analysis
-            .b_node_results(pair)?
-            .iter()
-            .map(|r| HyconBNodeResult {
-                node: r.node,
-                weight: r.weight,
-                force: r.force,
-                pressure: r.pressure,
-                position: r.position,
-            })
-            .collect();
-        unsafe { write_all(out, len, &results, "out") }
+        let (_, n_b) = c.analysis.pair_size(pair)?;
+        let results = || -> Result<Vec<HyconBNodeResult>, Fail> {
+            Ok(c.analysis
+                .b_node_results(pair)?
+                .iter()
+                .map(|r| HyconBNodeResult {
+                    node: r.node,
+                    weight: r.weight,
+                    force: r.force,
+                    pressure: r.pressure,
+                    position: r.position,
+                })
+                .collect())
+        };
+        unsafe { fill(out, len, needed, "out", n_b, results) }
     })
 }
 
 /// Tractions way (a), from the element stresses of body A: `tn ts` per A node of `pair` in its
-/// nodal frame, `2 * n_a` doubles. Model API; host API when the host handed over the elements
-/// along A (`hycon_host_set_elements`). Costs the displacement recovery (one solve) if not done
-/// yet.
+/// nodal frame, `2 * n_a` doubles (the size query gives `2 * n_a`). Model API; host API when
+/// the host handed over the elements along A (`hycon_host_set_elements`, else
+/// `HYCON_ERROR_INVALID_ARGUMENT`, not for the size query). Costs the displacement recovery
+/// (one solve) if not done yet.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 ///
 /// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable doubles.
+/// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hycon_contact_stress_tractions(
-    contact: *mut HyconContact,
+    contact: *const HyconContact,
     pair: usize,
     out: *mut f64,
     len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_contact_stress_tractions", || {
         // SAFETY (all): the caller's contract.
-        let c = unsafe { handle_mut(contact, "contact")? };
-        let (n_a, _) = c.analysis.pair_size(pair)?;
-        check_output(out, len, 2 * n_a, "out")?;
-        let t: Vec<f64> = c
-            .analysis
-            .stress_tractions(pair)?
-            .iter()
-            .flat_map(|&(tn, ts)| [tn, ts])
-            .collect();
-        unsafe { write_all(out, len, &t, "out") }
-    })
-}
-
-/// Number of iteration records so far (all increments, failed ones excluded).
-///
-/// # Safety
-/// `contact` must be a live handle; `count` writable.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_record_count(
-    contact: *const HyconContact,
-    count: *mut usize,
-) -> HyconStatus {
-    boundary("hycon_contact_record_count", || {
-        // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        unsafe { write(count, c.analysis.records().len(), "count") }
+        let (n_a, _) = c.analysis.pair_size(pair)?;
+        let tractions = || -> Result<Vec<f64>, Fail> {
+            Ok(c.analysis
+                .stress_tractions(pair)?
+                .iter()
+                .flat_map(|&(tn, ts)| [tn, ts])
+                .collect())
+        };
+        unsafe { fill(out, len, needed, "out", 2 * n_a, tractions) }
     })
 }
 
-/// Copy the iteration records `first .. first + len` into `out` (`first + len` must not exceed
-/// `hycon_contact_record_count`).
+/// The iteration records from number `first` on (0-based; all increments in order, failed ones
+/// excluded): the full result has `count - first` records, `count` the number so far, so the
+/// size query with `first = 0` gives the count and a monitor-free host can fetch only the new
+/// records of each increment. `first` may equal the count (nothing to copy).
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` when `first` exceeds the count.
 ///
 /// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable structs.
+/// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hycon_contact_records(
     contact: *const HyconContact,
     first: usize,
     out: *mut HyconIterationRecord,
     len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_contact_records", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
         let all = c.analysis.records();
-        let Some(records) = first.checked_add(len).and_then(|end| all.get(first..end)) else {
+        let Some(records) = all.get(first..) else {
             return Err(Fail::invalid(format!(
-                "records {first} .. {first} + {len} requested, {} exist",
+                "first = {first}, but {} records exist",
                 all.len()
             )));
         };
-        let records: Vec<HyconIterationRecord> = records.iter().map(record_to_c).collect();
-        unsafe { write_all(out, len, &records, "out") }
+        unsafe {
+            fill(out, len, needed, "out", records.len(), || {
+                Ok(records.iter().map(record_to_c).collect())
+            })
+        }
     })
 }
 
 /// Where the time went so far, and the number of numeric factorizations of `K` done by hycon
 /// (1 per analysis; 0 when a host solves itself); either output may be NULL.
 ///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`contact`), `HYCON_ERROR_INVALID_ARGUMENT` (a misaligned
+/// output).
+///
 /// # Safety
 /// `contact` must be a live handle; outputs NULL or writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hycon_contact_timings(
-    contact: *mut HyconContact,
+    contact: *const HyconContact,
     timings: *mut HyconTimings,
     factorizations: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_contact_timings", || {
         // SAFETY (all): the caller's contract.
-        let c = unsafe { handle_mut(contact, "contact")? };
+        let c = unsafe { handle(contact, "contact")? };
+        let timings = optional(timings, "timings")?;
+        let factorizations = optional(factorizations, "factorizations")?;
         let t = c.analysis.timings();
         let out = HyconTimings {
             assembly: t.assembly,
@@ -1714,29 +1636,34 @@ pub unsafe extern "C" fn hycon_contact_timings(
             iterations: t.iterations,
             recovery: t.recovery,
         };
-        let count = c.analysis.factorizations();
         unsafe {
-            write_optional(timings, out);
-            write_optional(factorizations, count);
+            put(timings, out);
+            put(factorizations, c.analysis.factorizations());
         }
         Ok(())
     })
 }
 
 /// Contact-element quantities of the A nodes of `pair` in the converged configuration (the
-/// reference one before the first increment): weights, frames, weighted gaps `R_C`, coverage.
-/// `out` needs the A node count.
+/// reference one before the first increment): weights, frames, weighted gaps `R_C`, coverage;
+/// one per A node (the size query gives the A node count). Rust:
+/// `ContactAnalysis::surface(pair).nodes`.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 ///
 /// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable structs.
+/// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_element_nodes(
+pub unsafe extern "C" fn hycon_contact_surface_nodes(
     contact: *const HyconContact,
     pair: usize,
     out: *mut HyconContactNode,
     len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
-    boundary("hycon_contact_element_nodes", || {
+    boundary("hycon_contact_surface_nodes", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
         let nodes: Vec<HyconContactNode> = c
@@ -1754,28 +1681,31 @@ pub unsafe extern "C" fn hycon_contact_element_nodes(
                 normal_gap: n.normal_gap,
             })
             .collect();
-        unsafe { write_all(out, len, &nodes, "out") }
+        unsafe { fill(out, len, needed, "out", nodes.len(), || Ok(nodes)) }
     })
 }
 
 /// The contact-element matrices `F^A` and `F^B` of `pair` (converged configuration) as a list
-/// of entries (row `k`, node `j`, side, value). Call with `out` NULL and `len` 0 to get the
-/// entry count in `count`; then with a buffer of at least that many.
+/// of entries (row `k`, node `j`, side, value), rows in A node order. Rust:
+/// `ContactAnalysis::surface(pair)`, the `coupling` of each node.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 ///
 /// # Safety
-/// `contact` must be a live handle; `out` NULL or `len` writable structs; `count` writable.
+/// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hycon_contact_coupling(
+pub unsafe extern "C" fn hycon_contact_surface_coupling(
     contact: *const HyconContact,
     pair: usize,
     out: *mut HyconCouplingEntry,
     len: usize,
-    count: *mut usize,
+    needed: *mut usize,
 ) -> HyconStatus {
-    boundary("hycon_contact_coupling", || {
+    boundary("hycon_contact_surface_coupling", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        check_pointer(count.cast_const(), "count")?;
         let surface = c.analysis.surface(pair)?;
         let a_ids: std::collections::HashSet<usize> =
             surface.nodes.iter().map(|n| n.node).collect();
@@ -1800,53 +1730,55 @@ pub unsafe extern "C" fn hycon_contact_coupling(
                 })
             })
             .collect();
-        if !(out.is_null() && len == 0) {
-            unsafe { write_all(out, len, &entries, "out")? };
-        }
-        unsafe { write(count, entries.len(), "count") }
+        unsafe { fill(out, len, needed, "out", entries.len(), || Ok(entries)) }
     })
 }
 
-/// The constraint matrix `Kc` of `pair` (converged configuration) in CSR form: `2 n_a` rows,
-/// row `2k` the normal constraint `n_k . (sum_j F^A_kj u_j - sum_j F^B_kj u_j)` and row `2k + 1`
-/// the tangential one with `s_k`; columns are field indices (model dofs `2 node + direction`,
-/// or host equations; a host's fixed dofs are left out). The mixed system of a host that
-/// assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]` with the active rows.
-/// Call with `row_ptr`, `columns` and `values` all NULL to get the entry count in `nnz`; then
-/// with `row_ptr` of `2 n_a + 1` entries and `columns`, `values` of at least `nnz` (NULL with
-/// capacity 0 when `nnz` is 0).
+/// The constraint matrix `Kc` of `pair` (converged configuration) as a list of entries
+/// (`HyconConstraintEntry`: row, column, value). It has `2 n_a` rows: row `2k` the normal
+/// constraint `n_k . (sum_j F^A_kj u_j - sum_j F^B_kj u_j)` and row `2k + 1` the tangential one
+/// with `s_k`; columns are field indices (model dofs `2 node + direction`, or host equations;
+/// a host's fixed dofs are left out). The entries are in row-major order, rows ascending and
+/// columns strictly ascending within a row, so they are CSR-ready: `columns[i] = out[i].column`,
+/// `values[i] = out[i].value`, and `row_ptr[r + 1]` counts the entries with `row <= r`. The
+/// mixed system of a host that assembles it itself reads `[K  -Kc^T; -Kc  0] [u; t] = [f; -g]`
+/// with the active rows. Rust: `ContactAnalysis::constraint_rows`.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
 ///
 /// # Safety
-/// `contact` must be a live handle; `row_ptr` NULL or `row_ptr_len` writable; `columns` and
-/// `values` NULL or `capacity` writable each; `nnz` writable.
+/// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+/// writable.
 #[unsafe(no_mangle)]
-#[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn hycon_contact_kc(
+pub unsafe extern "C" fn hycon_contact_constraint_rows(
     contact: *const HyconContact,
     pair: usize,
-    row_ptr: *mut usize,
-    row_ptr_len: usize,
-    columns: *mut usize,
-    values: *mut f64,
-    capacity: usize,
-    nnz: *mut usize,
+    out: *mut HyconConstraintEntry,
+    len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
-    boundary("hycon_contact_kc", || {
+    boundary("hycon_contact_constraint_rows", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        check_pointer(nnz.cast_const(), "nnz")?;
         let rows = c.analysis.constraint_rows(pair)?;
-        let query = row_ptr.is_null() && columns.is_null() && values.is_null();
-        if !query {
-            check_output(row_ptr, row_ptr_len, rows.row_ptr.len(), "row_ptr")?;
-            check_output(columns, capacity, rows.columns.len(), "columns")?;
-            check_output(values, capacity, rows.values.len(), "values")?;
-            unsafe {
-                write_all(row_ptr, row_ptr_len, &rows.row_ptr, "row_ptr")?;
-                write_all(columns, capacity, &rows.columns, "columns")?;
-                write_all(values, capacity, &rows.values, "values")?;
+        let mut entries = Vec::with_capacity(rows.columns.len());
+        for (row, range) in rows.row_ptr.windows(2).enumerate() {
+            let mut row_entries: Vec<(usize, f64)> = (range[0]..range[1])
+                .map(|i| (rows.columns[i], rows.values[i]))
+                .collect();
+            row_entries.sort_by_key(|e| e.0);
+            for (column, value) in row_entries {
+                match entries.last_mut() {
+                    Some(HyconConstraintEntry {
+                        row: r,
+                        column: col,
+                        value: v,
+                    }) if *r == row && *col == column => *v += value,
+                    _ => entries.push(HyconConstraintEntry { row, column, value }),
+                }
             }
         }
-        unsafe { write(nnz, rows.columns.len(), "nnz") }
+        unsafe { fill(out, len, needed, "out", entries.len(), || Ok(entries)) }
     })
 }

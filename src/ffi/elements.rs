@@ -30,6 +30,20 @@ impl ElementInput {
         })
     }
 
+    /// [`read`](Self::read) and the material.
+    ///
+    /// # Safety
+    /// As [`read`](Self::read); `material` NULL or a readable struct.
+    unsafe fn read_with(
+        kind: HyconElementKind,
+        n_nodes: usize,
+        coords: *const f64,
+        material: *const HyconMaterial,
+    ) -> Result<(Self, Material), Fail> {
+        // SAFETY: forwarded contract.
+        unsafe { Ok((Self::read(kind, n_nodes, coords)?, read_material(material)?)) }
+    }
+
     fn coords(&self) -> &[[f64; 2]] {
         &self.coords[..self.n]
     }
@@ -121,10 +135,8 @@ pub unsafe extern "C" fn hycon_element_stiffness(
     k_len: usize,
 ) -> HyconStatus {
     boundary("hycon_element_stiffness", || {
-        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
-        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
-        // SAFETY: the caller's contract on `material` (a readable struct).
-        let material = unsafe { read_material(material)? };
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles) and `material`.
+        let (e, material) = unsafe { ElementInput::read_with(kind, n_nodes, coords, material)? };
         let n_dof = 2 * e.n;
         check_output(k_out, k_len, n_dof * n_dof, "k_out")?;
         let mut k = element::ElementMatrix::zeros();
@@ -167,10 +179,8 @@ pub unsafe extern "C" fn hycon_element_stress(
     out: *mut f64,
 ) -> HyconStatus {
     boundary("hycon_element_stress", || {
-        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
-        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
-        // SAFETY: the caller's contract on `material` (a readable struct).
-        let material = unsafe { read_material(material)? };
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles) and `material`.
+        let (e, material) = unsafe { ElementInput::read_with(kind, n_nodes, coords, material)? };
         check_finite_scalar(px, "px")?;
         check_finite_scalar(py, "py")?;
         check_pointer(out.cast_const(), "out")?;
@@ -188,14 +198,14 @@ pub unsafe extern "C" fn hycon_element_stress(
 /// (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): 7 for the hybrid element with 4 or 5
 /// nodes, 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
 ///
-/// `beta_out`, `beta_len`: output array (`HYCON_MAX_BETA` always suffices; `(NULL, 0)` is fine
-/// for Q4). `n_beta` receives the count. Both are written only on success; a short array gives
-/// `HYCON_ERROR_BUFFER_TOO_SMALL` with the count needed in the message.
+/// `out`, `len`, `needed`: the header's size convention (`HYCON_MAX_BETA` always suffices; the
+/// size query `(NULL, 0, &needed)` gives the count, 0 for Q4).
+///
+/// Errors: as `hycon_element_stress`, and `HYCON_ERROR_BUFFER_TOO_SMALL`.
 ///
 /// # Safety
 /// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
-/// a readable struct; `beta_out` NULL or writable for `beta_len` doubles; `n_beta` NULL or
-/// writable.
+/// a readable struct; `out` NULL or writable for `len` doubles; `needed` NULL or writable.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)] // flat C signature
 pub unsafe extern "C" fn hycon_element_stress_params(
@@ -204,28 +214,19 @@ pub unsafe extern "C" fn hycon_element_stress_params(
     coords: *const f64,
     material: *const HyconMaterial,
     q: *const f64,
-    beta_out: *mut f64,
-    beta_len: usize,
-    n_beta: *mut usize,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_element_stress_params", || {
-        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
-        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
-        // SAFETY: the caller's contract on `material` (a readable struct).
-        let material = unsafe { read_material(material)? };
-        check_pointer(n_beta.cast_const(), "n_beta")?;
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles) and `material`.
+        let (e, material) = unsafe { ElementInput::read_with(kind, n_nodes, coords, material)? };
         // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
         let field = unsafe { e.stress_field(&material, q)? };
         let beta = field.beta();
-        check_output(beta_out, beta_len, beta.len(), "beta_out")?;
         check_result(beta, "beta")?;
-        // SAFETY: `beta_out` was checked for `beta.len()` values; `n_beta` is non-null and
-        // aligned (checked) and writable (contract).
-        unsafe {
-            write_doubles(beta_out, beta);
-            n_beta.write(beta.len());
-        }
-        Ok(())
+        // SAFETY: the caller's contract on `out` and `needed`.
+        unsafe { fill(out, len, needed, "out", beta.len(), || Ok(beta.to_vec())) }
     })
 }
 
@@ -250,10 +251,8 @@ pub unsafe extern "C" fn hycon_element_edge_traction(
     out: *mut f64,
 ) -> HyconStatus {
     boundary("hycon_element_edge_traction", || {
-        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles).
-        let e = unsafe { ElementInput::read(kind, n_nodes, coords)? };
-        // SAFETY: the caller's contract on `material` (a readable struct).
-        let material = unsafe { read_material(material)? };
+        // SAFETY: the caller's contract on `coords` (2 n_nodes doubles) and `material`.
+        let (e, material) = unsafe { ElementInput::read_with(kind, n_nodes, coords, material)? };
         if edge >= e.n {
             return Err(Fail::invalid(format!(
                 "edge {edge} of a {}-node element (edges are 0 to {})",

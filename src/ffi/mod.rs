@@ -15,21 +15,26 @@
 //! * Functions return a [`HyconStatus`]: `0` ([`HYCON_OK`]) on success, a negative
 //!   `HYCON_ERROR_*` code on failure, and a positive value for a warning (the call succeeded,
 //!   outputs were written, but something deserves attention; codes `1..=99` are reserved, none
-//!   is produced yet). [`hycon_last_error_message`] copies a readable description of the last
-//!   call's failure into a caller buffer.
+//!   is produced yet). Every status-returning call sets this thread's message (a description
+//!   when it fails, empty when it succeeds); [`hycon_last_error_message`] copies it.
 //! * Arrays are (pointer, length) pairs, or a pointer whose length is fixed by other arguments
 //!   (stated per function). `(NULL, 0)` is an empty array.
-//! * Outputs are written only on success: on an error, every output buffer is left untouched.
+//! * Variable-length outputs follow one size convention, `(out, len, needed)` ([`fill`]).
+//! * One pointer rule ([`pointer`]): NULL required pointers are `HYCON_ERROR_NULL_POINTER`,
+//!   misaligned pointers (required or optional) `HYCON_ERROR_INVALID_ARGUMENT`.
+//! * Outputs are written only on success: on an error, every output buffer is left untouched
+//!   (except `*needed` on `HYCON_ERROR_BUFFER_TOO_SMALL`).
 //! * Inputs are read during the call only; the caller keeps ownership of all memory. The only
 //!   pointers kept are a solve callback's and a monitor's user data (documented there).
 //! * Thread safety: the element functions are reentrant and may be called from several threads
-//!   at once; a handle (`HyconModel`, `HyconHost`, `HyconContact`) is used by one thread at a
-//!   time (it may move between threads), distinct handles are independent. The last error
-//!   message is thread-local.
+//!   at once; a function taking a mutable handle needs it exclusively, the const queries of a
+//!   `HyconContact` may run concurrently (the analysis is `Sync`; solves are serialized inside);
+//!   distinct handles are independent. The last error message is thread-local.
 //! * Doubles must be finite (no NaN, no infinity); this is checked.
 //! * Rust panics never cross the boundary: an internal error becomes
 //!   [`HYCON_ERROR_PANIC`], and the panic message goes to the last error message, not to
-//!   stderr (see `boundary` and `install_panic_hook` for the quiet panic hook).
+//!   stderr (see `boundary` and `install_panic_hook` for the quiet panic hook; the unit test
+//!   `panic_becomes_status_quietly` proves it in a child process).
 //!
 //! # Element node and dof order
 //! An element is the counter-clockwise polygon of its boundary nodes, coordinates interleaved
@@ -70,11 +75,11 @@ const fn parse_component(s: &str) -> i32 {
 /// Major version of the library this header belongs to (from `Cargo.toml`).
 pub const HYCON_VERSION_MAJOR: i32 = 0;
 /// Minor version of the library this header belongs to.
-pub const HYCON_VERSION_MINOR: i32 = 3;
+pub const HYCON_VERSION_MINOR: i32 = 4;
 /// Patch version of the library this header belongs to.
 pub const HYCON_VERSION_PATCH: i32 = 0;
 /// The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-pub const HYCON_VERSION: i32 = 300;
+pub const HYCON_VERSION: i32 = 400;
 
 // The literals above are what cbindgen can put into the header; `version_checks` (evaluated at
 // compile time in `hycon_version`) compares them with the single source, `version` in
@@ -237,7 +242,8 @@ impl From<ShapeError> for Fail {
 }
 
 thread_local! {
-    /// Message of the last failed call on this thread (empty after a successful one).
+    /// Message of the last status-returning call on this thread: its failure, or empty after a
+    /// success (see `hycon_last_error_message`).
     static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
     /// How many [`boundary`] frames are active on this thread (panics inside are silent).
     static BOUNDARY_DEPTH: Cell<u32> = const { Cell::new(0) };
@@ -357,16 +363,193 @@ fn node_count(f: Formulation, n_nodes: usize) -> Result<usize, Fail> {
     }
 }
 
-fn check_pointer<T>(ptr: *const T, name: &str) -> Result<(), Fail> {
+/// The one pointer rule, for required and optional pointers alike: NULL is
+/// `HYCON_ERROR_NULL_POINTER` when `required` and "absent" (`Ok(false)`) otherwise; a non-NULL
+/// pointer not aligned for `T` is `HYCON_ERROR_INVALID_ARGUMENT` naming the argument.
+fn pointer<T>(ptr: *const T, name: &str, required: bool) -> Result<bool, Fail> {
     if ptr.is_null() {
-        Err(Fail::new(
-            HYCON_ERROR_NULL_POINTER,
-            format!("{name} is NULL"),
-        ))
+        if required {
+            Err(Fail::new(
+                HYCON_ERROR_NULL_POINTER,
+                format!("{name} is NULL"),
+            ))
+        } else {
+            Ok(false)
+        }
     } else if !ptr.is_aligned() {
         Err(Fail::invalid(format!("{name} is misaligned")))
     } else {
-        Ok(())
+        Ok(true)
+    }
+}
+
+/// A required pointer argument: non-NULL and aligned ([`pointer`]).
+fn check_pointer<T>(ptr: *const T, name: &str) -> Result<(), Fail> {
+    pointer(ptr, name, true).map(|_| ())
+}
+
+/// An optional output (NULL: not wanted), checked by [`pointer`] before any work is done so
+/// that a bad one fails the call with nothing written; write it with [`put`].
+fn optional<T>(ptr: *mut T, name: &str) -> Result<Option<*mut T>, Fail> {
+    Ok(pointer(ptr.cast_const(), name, false)?.then_some(ptr))
+}
+
+/// Write an output checked by [`optional`].
+///
+/// # Safety
+/// The pointer, if any, must be writable for one `T`.
+unsafe fn put<T>(out: Option<*mut T>, value: T) {
+    if let Some(ptr) = out {
+        // SAFETY: non-null and aligned (checked by `optional`), writable (contract).
+        unsafe { ptr.write(value) };
+    }
+}
+
+/// Write one value to a required output pointer.
+///
+/// # Safety
+/// `ptr` must be NULL or point to a writable `T`.
+unsafe fn write<T>(ptr: *mut T, value: T, name: &str) -> Result<(), Fail> {
+    check_pointer(ptr.cast_const(), name)?;
+    // SAFETY: non-null, aligned (checked) and writable (contract).
+    unsafe { ptr.write(value) };
+    Ok(())
+}
+
+/// A caller array `(ptr, len)` as a slice for the duration of the call. `(NULL, 0)` is empty.
+///
+/// # Safety
+/// If `ptr` is non-null it must point to `len` readable, initialised values that stay
+/// unchanged during the call.
+unsafe fn slice<'a, T>(ptr: *const T, len: usize, name: &str) -> Result<&'a [T], Fail> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    if len > isize::MAX as usize / std::mem::size_of::<T>().max(1) {
+        return Err(Fail::invalid(format!("{name}: length {len} is too large")));
+    }
+    check_pointer(ptr, name)?;
+    // SAFETY: non-null and aligned (checked); `len` readable values (caller contract).
+    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
+}
+
+/// [`slice`] of doubles, checked finite.
+///
+/// # Safety
+/// As [`slice`].
+unsafe fn doubles<'a>(ptr: *const f64, len: usize, name: &str) -> Result<&'a [f64], Fail> {
+    // SAFETY: forwarded contract.
+    let values = unsafe { slice(ptr, len, name)? };
+    check_finite(values, name)?;
+    Ok(values)
+}
+
+/// `count * per + extra`, the length of an array sized by another argument, or an error naming
+/// `name` when it overflows.
+fn length(count: usize, per: usize, extra: usize, name: &str) -> Result<usize, Fail> {
+    count
+        .checked_mul(per)
+        .and_then(|n| n.checked_add(extra))
+        .ok_or_else(|| Fail::invalid(format!("{name} = {count} is too large")))
+}
+
+/// A handle (or input struct) argument as a shared reference.
+///
+/// # Safety
+/// `ptr` must be NULL or point to a live, readable `T` (a handle from the matching `_new`).
+unsafe fn handle<'a, T>(ptr: *const T, name: &str) -> Result<&'a T, Fail> {
+    check_pointer(ptr, name)?;
+    // SAFETY: non-null, aligned, and live (caller contract).
+    Ok(unsafe { &*ptr })
+}
+
+/// A handle argument as an exclusive reference.
+///
+/// # Safety
+/// As [`handle`], and not used by anyone else during the call.
+unsafe fn handle_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T, Fail> {
+    check_pointer(ptr.cast_const(), name)?;
+    // SAFETY: non-null, aligned, live and exclusively ours during the call (caller contract).
+    Ok(unsafe { &mut *ptr })
+}
+
+/// The one size convention of every function that fills a variable-length array
+/// `(out, len, needed)`:
+/// * `needed` (optional, checked by [`optional`]) receives `count`, the element count of the
+///   full result, on success and on `HYCON_ERROR_BUFFER_TOO_SMALL`;
+/// * `out == NULL && len == 0` is the size query: `HYCON_OK`, nothing else written, and
+///   `values` is not evaluated;
+/// * `out == NULL` with `len > 0` is `HYCON_ERROR_NULL_POINTER`; a misaligned `out` is
+///   `HYCON_ERROR_INVALID_ARGUMENT`;
+/// * `len < count` is `HYCON_ERROR_BUFFER_TOO_SMALL`, the count in the message, `out` untouched;
+/// * otherwise exactly `count` elements are written (the rest of `out` is untouched).
+///
+/// # Safety
+/// `out` must be NULL or point to `len` writable `T`; `needed` NULL or a writable `size_t`.
+unsafe fn fill<T: Copy>(
+    out: *mut T,
+    len: usize,
+    needed: *mut usize,
+    name: &str,
+    count: usize,
+    values: impl FnOnce() -> Result<Vec<T>, Fail>,
+) -> Result<(), Fail> {
+    let needed = optional(needed, "needed")?;
+    if out.is_null() && len == 0 {
+        // SAFETY: checked by `optional`; writable (contract).
+        unsafe { put(needed, count) };
+        return Ok(());
+    }
+    if out.is_null() {
+        return Err(Fail::new(
+            HYCON_ERROR_NULL_POINTER,
+            format!("{name} is NULL but len is {len} (NULL and 0 ask for the size)"),
+        ));
+    }
+    check_pointer(out.cast_const(), name)?;
+    if len < count {
+        // SAFETY: as above.
+        unsafe { put(needed, count) };
+        return Err(Fail::new(
+            HYCON_ERROR_BUFFER_TOO_SMALL,
+            format!("{name} has length {len}, {count} needed"),
+        ));
+    }
+    let values = values()?;
+    assert_eq!(
+        values.len(),
+        count,
+        "{name}: result length differs from its count"
+    );
+    // SAFETY: `out` is non-null, aligned and writable for `len >= count` values (checked and
+    // contract); `values` is our own memory.
+    unsafe {
+        std::ptr::copy_nonoverlapping(values.as_ptr(), out, count);
+        put(needed, count);
+    }
+    Ok(())
+}
+
+/// Box a new handle and hand it to the caller.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable pointer.
+unsafe fn hand_out<T>(out: *mut *mut T, value: T) -> Result<(), Fail> {
+    check_pointer(out.cast_const(), "out")?;
+    // SAFETY: checked non-null and aligned; writable (contract). Ownership passes to the caller,
+    // who returns it through the matching `_free`.
+    unsafe { out.write(Box::into_raw(Box::new(value))) };
+    Ok(())
+}
+
+/// Free a handle made by [`hand_out`]; NULL is a no-op.
+///
+/// # Safety
+/// `ptr` must be NULL or a live handle of type `T`, not used afterwards.
+unsafe fn free_handle<T>(ptr: *mut T) {
+    if !ptr.is_null() {
+        // SAFETY: made by `Box::into_raw` in `hand_out` and not freed before (contract).
+        drop(unsafe { Box::from_raw(ptr) });
     }
 }
 
@@ -443,22 +626,16 @@ unsafe fn read_material(m: *const HyconMaterial) -> Result<Material, Fail> {
     Ok(Material::new(m.youngs, m.poisson, m.thickness, analysis)?)
 }
 
-/// Check an output array `(ptr, len)` can take `needed` values. `(NULL, 0)` is an empty array.
-fn check_output<T>(ptr: *mut T, len: usize, needed: usize, name: &str) -> Result<(), Fail> {
-    if ptr.is_null() && len > 0 {
-        return Err(Fail::new(
-            HYCON_ERROR_NULL_POINTER,
-            format!("{name} is NULL but its length is {len}"),
-        ));
-    }
-    if len < needed {
+/// Check a fixed-size output `(ptr, len)` (its size stated by the function's other
+/// arguments, `size > 0`) can take `size` values: the same pointer rule, `len < size` is
+/// `HYCON_ERROR_BUFFER_TOO_SMALL` (`(NULL, 0)` is an empty array, so too small).
+fn check_output<T>(ptr: *mut T, len: usize, size: usize, name: &str) -> Result<(), Fail> {
+    pointer(ptr.cast_const(), name, len > 0)?;
+    if len < size {
         return Err(Fail::new(
             HYCON_ERROR_BUFFER_TOO_SMALL,
-            format!("{name} has length {len}, {needed} needed"),
+            format!("{name} has length {len}, {size} needed"),
         ));
-    }
-    if needed > 0 {
-        check_pointer(ptr.cast_const(), name)?;
     }
     Ok(())
 }
@@ -466,12 +643,9 @@ fn check_output<T>(ptr: *mut T, len: usize, needed: usize, name: &str) -> Result
 /// Copy `src` to a caller array.
 ///
 /// # Safety
-/// `dst` must have been checked with [`check_output`] for `src.len()` values (or be a fixed-size
-/// output array that [`check_pointer`] accepted and the caller guarantees to be that long).
+/// `dst` must have been checked with [`check_output`] or [`check_pointer`] and be writable for
+/// `src.len()` values.
 unsafe fn write_doubles(dst: *mut f64, src: &[f64]) {
-    if src.is_empty() {
-        return;
-    }
     // SAFETY: `dst` is non-null, aligned and writable for `src.len()` doubles (caller
     // contract); `src` is our own local storage, so the regions do not overlap.
     unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), dst, src.len()) };
@@ -512,10 +686,16 @@ pub unsafe extern "C" fn hycon_version(out: *mut i32) -> HyconStatus {
 /// Copy this thread's last error message into `buf` and return the length it needs, including
 /// the terminating NUL.
 ///
+/// What the message is: every function that returns a `HyconStatus` sets it when it returns,
+/// to `"<function name>: <description>"` when it fails (a negative status) and to the empty
+/// string when it succeeds. So it describes the last status-returning call on this thread, and
+/// is empty (return value 1) unless that call failed. This function, `hycon_status_name` and
+/// the `_free` functions do not change it. It is thread-local: a call on another thread never
+/// changes it.
+///
 /// At most `len - 1` bytes plus a NUL are written (nothing if `buf` is NULL or `len` is 0), so
 /// `hycon_last_error_message(NULL, 0)` asks for the size and a return value greater than `len`
-/// means the copy was truncated. The message is empty (return value 1) when the last
-/// status-returning call on this thread succeeded; this function does not change it.
+/// means the copy was truncated (at a UTF-8 character boundary).
 ///
 /// # Safety
 /// `buf` must be NULL or point to `len` writable bytes.
@@ -569,12 +749,90 @@ pub extern "C" fn hycon_status_name(status: HyconStatus) -> *const c_char {
     name.as_ptr()
 }
 
-/// For tests only: panics inside the boundary and so returns `HYCON_ERROR_PANIC`, with the
-/// panic message in the last error message. Proves that panics never cross into the host and
-/// are not printed to its stderr. Do not call it in production code.
-#[unsafe(no_mangle)]
-pub extern "C" fn hycon_debug_panic() -> HyconStatus {
-    boundary("hycon_debug_panic", || {
-        panic!("deliberate panic for testing the C boundary")
-    })
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An analysis may be shared between threads for the const queries (a host description
+    /// holds the host's callback data and is only moved).
+    #[test]
+    fn handles_are_send_and_sync() {
+        fn check<T: Send + Sync>() {}
+        fn send<T: Send>() {}
+        check::<HyconContact>();
+        check::<HyconModel>();
+        send::<HyconHost>();
+    }
+
+    fn last_error() -> String {
+        let mut buf = vec![0 as c_char; 512];
+        // SAFETY: `buf` holds 512 writable bytes.
+        unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
+        let bytes: Vec<u8> = buf
+            .iter()
+            .take_while(|&&c| c != 0)
+            .map(|&c| c as u8)
+            .collect();
+        String::from_utf8(bytes).unwrap()
+    }
+
+    /// Run in a child process by `panic_becomes_status_quietly` (a no-op otherwise): a panic
+    /// inside the boundary becomes `HYCON_ERROR_PANIC` with its message, and the library keeps
+    /// working. Prints what the parent checks.
+    #[test]
+    fn panic_child() {
+        if std::env::var_os("HYCON_PANIC_CHILD").is_none() {
+            return;
+        }
+        let status = boundary("hycon_test_panic", || {
+            panic!("deliberate panic for testing the C boundary")
+        });
+        println!("status {status}");
+        println!("message {}", last_error());
+        let mut v = [0i32; 3];
+        // SAFETY: `v` holds 3 writable values.
+        println!("after {}", unsafe { hycon_version(v.as_mut_ptr()) });
+    }
+
+    /// Panics never cross the boundary and are not printed: the child's stderr stays empty
+    /// (the test harness runs it with `--nocapture`, so a printing hook would show there).
+    #[test]
+    fn panic_becomes_status_quietly() {
+        let output = std::process::Command::new(std::env::current_exe().unwrap())
+            .args([
+                "--exact",
+                "ffi::tests::panic_child",
+                "--nocapture",
+                "--test-threads=1",
+            ])
+            .env("HYCON_PANIC_CHILD", "1")
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(output.status.success(), "{stdout}\n{stderr}");
+        assert!(
+            stdout.contains(&format!("status {HYCON_ERROR_PANIC}")),
+            "{stdout}"
+        );
+        assert!(
+            stdout.contains(
+                "message hycon_test_panic: internal error (Rust panic): deliberate panic for \
+                 testing the C boundary (at src/ffi/mod.rs:"
+            ),
+            "{stdout}"
+        );
+        assert!(stdout.contains(&format!("after {HYCON_OK}")), "{stdout}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        assert!(!stderr.contains("deliberate panic"), "{stderr}");
+    }
+
+    /// A panic outside any boundary still reaches the previously installed hook.
+    #[test]
+    fn panics_outside_the_boundary_reach_the_previous_hook() {
+        install_panic_hook();
+        let outside = std::panic::catch_unwind(|| panic!("outside the boundary"));
+        assert!(outside.is_err());
+    }
 }

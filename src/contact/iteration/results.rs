@@ -91,7 +91,7 @@ impl ContactAnalysis {
     /// paper's way (a)): at each node, `t = sigma n` of the element owning each adjacent A
     /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
     /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
-    pub fn stress_tractions(&mut self, p: usize) -> Result<Vec<(f64, f64)>> {
+    pub fn stress_tractions(&self, p: usize) -> Result<Vec<(f64, f64)>> {
         let frames = self.node_results(p)?;
         let missing = || {
             Error::InvalidInput(
