@@ -31,7 +31,7 @@ if(HYCON_PETSC_FOUND AND MPI_C_FOUND AND MPIEXEC_EXECUTABLE)
       ENVIRONMENT "${_hycon_mpi_env}" PROCESSORS ${_np} TIMEOUT 300)
   endforeach()
   if(_vg)
-    hycon_test(valgrind_petsc_host ${_vg}
+    hycon_test(valgrind_petsc_host ${_vg} --num-callers=40
                "--suppressions=${CMAKE_CURRENT_SOURCE_DIR}/c_examples/petsc_mpi.supp"
                $<TARGET_FILE:petsc_host> 4)
     set_tests_properties(valgrind_petsc_host PROPERTIES
