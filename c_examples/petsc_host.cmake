@@ -10,7 +10,8 @@
 #                                    PETSc's own reports only; never a hycon frame)
 # Open MPI refuses to run as root (CI does) and to start more ranks than cores unless told:
 # the tests set OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) and OMPI_MCA_rmaps_base_oversubscribe, which
-# other MPI implementations ignore.
+# other MPI implementations ignore. One BLAS/OpenMP thread per rank: MUMPS's threads and the
+# ranks would otherwise compete for the same cores.
 
 find_package(PkgConfig QUIET)
 if(PkgConfig_FOUND)
@@ -23,7 +24,8 @@ if(HYCON_PETSC_FOUND AND MPI_C_FOUND AND MPIEXEC_EXECUTABLE)
   set(_hycon_mpi_env
     "RUST_BACKTRACE=1"
     "OMPI_ALLOW_RUN_AS_ROOT=1" "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"
-    "OMPI_MCA_rmaps_base_oversubscribe=1")
+    "OMPI_MCA_rmaps_base_oversubscribe=1"
+    "OMP_NUM_THREADS=1" "OPENBLAS_NUM_THREADS=1")
   foreach(_np 1 2)
     hycon_test(petsc_host_np${_np} "${MPIEXEC_EXECUTABLE}" ${MPIEXEC_NUMPROC_FLAG} ${_np}
                ${MPIEXEC_PREFLAGS} $<TARGET_FILE:petsc_host> ${MPIEXEC_POSTFLAGS} 8)
