@@ -27,6 +27,9 @@
  *
  * Checked (rank 0; a failure prints "wrong value", the program prints FAILED and all ranks
  * exit 1):
+ *   - the distributed assembly: the gathered matrix times a vector, and the two unit
+ *     right-hand sides, against an element-by-element product on rank 0 with the same
+ *     Dirichlet treatment, to 1e-12 (dropping one element per rank gives 1e-2 and more);
  *   - the callback path against hycon's serial CSR path of the same global matrix (rank 0
  *     gathers it with MatCreateSubMatrices and gives its lower triangle to hycon_host_set_csr):
  *     A-node states identical, tn and ts to 1e-8 of max |tn|, the gathered displacement field
@@ -538,6 +541,83 @@ static int check_sliding(const Problem *p, const HyconNodeResult *nodes, double 
     return 0;
 }
 
+/* Rank 0, independently of PETSc: the gathered matrix (lower triangle) and the two unit
+ * right-hand sides against an element-by-element product over all elements with the same
+ * Dirichlet treatment (held rows and columns replaced by the identity, right-hand side
+ * -K_fp q_p on the free rows and q_p on the held ones). Catches a lost off-rank entry or a
+ * wrong row in the distributed assembly, which the callback-vs-CSR comparison cannot (both
+ * paths use this matrix). Returns the failed checks. */
+static int check_assembly(const DiskMesh *m, const HyconMaterial *material, size_t n,
+                          const size_t *row_ptr, const size_t *columns, const double *values,
+                          const double *rhs_approach, const double *rhs_slide) {
+    unsigned char *held = xcalloc(n, 1);
+    double *v = xcalloc(n, sizeof *v), *y_el = xcalloc(n, sizeof *y_el);
+    double *y_csr = xcalloc(n, sizeof *y_csr), diff[3] = {0.0, 0.0, 0.0};
+    size_t k, e, i, j, load;
+    int failures = 0;
+    for (k = 0; k < m->n_bottom; ++k) held[2 * m->bottom[k]] = held[2 * m->bottom[k] + 1] = 1;
+    for (k = 0; k < m->n_top; ++k) held[2 * m->top[k]] = held[2 * m->top[k] + 1] = 1;
+    for (load = 0; load < 3; ++load) { /* 0: a pseudo-random vector; 1, 2: the unit loads */
+        const double *reference = load == 1 ? rhs_approach : rhs_slide;
+        double scale = 0.0;
+        for (k = 0; k < n; ++k) {
+            int top_dof = held[k] && m->coords[k - k % 2 + 1] > 0.5;
+            v[k] = load == 0 ? sin(1.3 * (double)k + 0.7)
+                 : held[k] && top_dof && k % 2 == (load == 1 ? 1u : 0u) ? (load == 1 ? -1.0 : 1.0)
+                                                                      : 0.0;
+            y_el[k] = 0.0;
+            y_csr[k] = 0.0;
+        }
+        for (e = 0; e < m->n_elements; ++e) {
+            const size_t *en = &m->nodes[m->offsets[e]];
+            double xy[8], ke[64];
+            for (i = 0; i < 4; ++i) {
+                xy[2 * i] = m->coords[2 * en[i]];
+                xy[2 * i + 1] = m->coords[2 * en[i] + 1];
+            }
+            hc_element_stiffness(xy, material, ke);
+            for (i = 0; i < 8; ++i) {
+                size_t r = 2 * en[i / 2] + i % 2;
+                if (held[r]) continue;
+                for (j = 0; j < 8; ++j) {
+                    size_t c = 2 * en[j / 2] + j % 2;
+                    /* the matrix: free columns only; a load: the held columns only, negated */
+                    if (load == 0 && !held[c]) y_el[r] += ke[i * 8 + j] * v[c];
+                    if (load != 0 && held[c]) y_el[r] -= ke[i * 8 + j] * v[c];
+                }
+            }
+        }
+        for (k = 0; k < n; ++k)
+            if (held[k]) y_el[k] = v[k];
+        if (load == 0) {
+            for (i = 0; i < n; ++i)
+                for (k = row_ptr[i]; k < row_ptr[i + 1]; ++k) {
+                    y_csr[i] += values[k] * v[columns[k]];
+                    if (columns[k] != i) y_csr[columns[k]] += values[k] * v[i];
+                }
+        } else {
+            memcpy(y_csr, reference, n * sizeof *y_csr);
+        }
+        for (k = 0; k < n; ++k) {
+            scale = fmax(scale, fabs(y_el[k]));
+            diff[load] = fmax(diff[load], fabs(y_el[k] - y_csr[k]));
+        }
+        diff[load] /= scale;
+    }
+    printf("assembly check against an element-by-element product on rank 0: K v %.1e, unit "
+           "approach %.1e, unit slide %.1e (relative)\n",
+           diff[0], diff[1], diff[2]);
+    if (!(diff[0] <= 1e-12 && diff[1] <= 1e-12 && diff[2] <= 1e-12)) {
+        printf("wrong value: the distributed assembly or its Dirichlet conditions differ\n");
+        ++failures;
+    }
+    free(held);
+    free(v);
+    free(y_el);
+    free(y_csr);
+    return failures;
+}
+
 /* ------------------------------------------------------------------------------------------ */
 
 /* Rank 0's gathered copy of K: the lower triangle as CSR (row_ptr, columns, values). */
@@ -795,6 +875,9 @@ int main(int argc, char **argv) {
                    (unsigned long)m.n_a, (unsigned long)m.n_b);
             printf("assembly + Dirichlet %.3f s; solver %s, setup (factorization) %.3f s\n",
                    t_assembly, solver_name, t_factor);
+
+            failures += check_assembly(&m, &material, (size_t)n_eq, row_ptr, columns, values,
+                                       rhs_approach, rhs_slide);
 
             /* press: a trial approach, then the approach of the target's Hertz load */
             approach[0] = params.half_width * params.half_width / radius;
