@@ -382,8 +382,8 @@ typedef struct Timing {
  * linear in the approach), written back to approach[1]. */
 static int run_analysis(const char *name, const Problem *p, Solver *s, double friction,
                         HyconKinematics kinematics, double *approach, const double *slide,
-                        size_t n_steps, double target_load, Timing *t_cb, Timing *t_csr, double *worst_t,
-                        double *worst_u, HyconNodeResult *last, double *u_last) {
+                        size_t n_steps, double target_load, Timing *t_cb, Timing *t_csr,
+                        double *worst_t, double *worst_u, HyconNodeResult *last, double *u_last) {
     const HyconContactOptions options = hc_options(kinematics);
     const size_t n_a = p->a.n, n = p->n_eq;
     HyconContact *c_cb, *c_csr;
@@ -698,7 +698,7 @@ int main(int argc, char **argv) {
     size_t j;
 
     PetscCall(PetscInitialize(&argc, &argv, NULL,
-                              "petsc_host [n]: hycon's contact iteration driven by PETSc over MPI"));
+                              "petsc_host [n]: hycon's contact iteration driven by PETSc"));
     PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
     PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     (void)report_failure; /* disk_mesh.h's CHECK: hycon calls go through hc_* here */
@@ -837,8 +837,10 @@ int main(int argc, char **argv) {
         } else {
             Problem p;
             size_t *a_ids = m.a, *b_ids = m.b, q;
-            double *a_xy = xcalloc(2 * m.n_a, sizeof *a_xy), *b_xy = xcalloc(2 * m.n_b, sizeof *b_xy);
-            int64_t *a_eq = xcalloc(2 * m.n_a, sizeof *a_eq), *b_eq = xcalloc(2 * m.n_b, sizeof *b_eq);
+            double *a_xy = xcalloc(2 * m.n_a, sizeof *a_xy);
+            double *b_xy = xcalloc(2 * m.n_b, sizeof *b_xy);
+            int64_t *a_eq = xcalloc(2 * m.n_a, sizeof *a_eq);
+            int64_t *b_eq = xcalloc(2 * m.n_b, sizeof *b_eq);
             HyconNodeResult *last = xcalloc(m.n_a, sizeof *last);
             double *u_last = xcalloc((size_t)n_eq, sizeof *u_last);
             double approach[6], slide[6], worst_t = 0.0, worst_u = 0.0, a_err = 0.0, p0_err = 0.0;
@@ -922,7 +924,8 @@ int main(int argc, char **argv) {
                            (unsigned long)cb[q]->setup_solves.columns,
                            (unsigned long)cb[q]->increment_solves.columns,
                            (unsigned long)cb[q]->recovery_solves.columns);
-                    printf("| %s | CSR | %.3f | %lu | %.4f | - | - | - |\n", names[q], csr[q]->setup,
+                    printf("| %s | CSR | %.3f | %lu | %.4f | - | - | - |\n", names[q],
+                           csr[q]->setup,
                            (unsigned long)csr[q]->n_increments,
                            csr[q]->increments / (double)csr[q]->n_increments);
                 }
