@@ -5,7 +5,8 @@
 #
 # Needs the Rust toolchain (with clippy and rustfmt) and gcc/g++. On Debian it first installs
 # what else it needs (cmake, ninja-build, libsuitesparse-dev, libclang-dev, pkg-config,
-# valgrind, g++) with apt-get when any is missing: as root, or through sudo.
+# valgrind, g++, petsc-dev and openmpi-bin for the PETSc example) with apt-get when any is
+# missing: as root, or through sudo.
 # Order: builds and tests first (their summaries are printed as they finish), then the
 # static checks (clippy, rustfmt, rustdoc). Every step shares cargo's target/ directory, so
 # the library is compiled once per profile: release (used by CMake) and dev (used by tests).
@@ -36,7 +37,7 @@ summary() {
 }
 trap summary EXIT
 
-packages=(cmake ninja-build libsuitesparse-dev libclang-dev pkg-config valgrind g++)
+packages=(cmake ninja-build libsuitesparse-dev libclang-dev pkg-config valgrind g++ petsc-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
