@@ -68,14 +68,6 @@
 /* ------------------------------------------------------------------------------------------ */
 /* hycon calls: the only place this program calls the hycon API (see the file comment) */
 
-/* One polyline of a contact pair in the host's numbering (hycon 0.4: HyconHostNodes). */
-typedef struct HostNodes {
-    const size_t *ids;
-    const double *coords;
-    const int64_t *equations;
-    size_t n;
-} HostNodes;
-
 /* A failed hycon call: print it with hycon's message and end all ranks. */
 static void hc_fail(const char *call, HyconStatus status) {
     char message[512];
@@ -106,12 +98,12 @@ static HyconContactOptions hc_options(HyconKinematics kinematics) {
 }
 
 /* A host description with one contact pair. */
-static HyconHost *hc_host(size_t n_equations, const HostNodes *a, const HostNodes *b,
+static HyconHost *hc_host(size_t n_equations, const HyconHostNodes *a,
+                          const HyconHostNodes *b,
                           double friction) {
     HyconHost *host = NULL;
     HC(hycon_host_new(&host, n_equations));
-    HC(hycon_host_add_pair(host, a->ids, a->coords, a->equations, a->n, b->ids, b->coords,
-                           b->equations, b->n, friction, NULL));
+    HC(hycon_host_add_pair(host, a, b, friction, NULL));
     return host;
 }
 
@@ -140,11 +132,11 @@ static HyconIncrementInfo hc_increment(HyconContact *contact, const double *rhs,
 }
 
 static void hc_node_results(const HyconContact *contact, HyconNodeResult *out, size_t n_a) {
-    HC(hycon_contact_node_results(contact, 0, out, n_a));
+    HC(hycon_contact_node_results(contact, 0, out, n_a, NULL));
 }
 
-static void hc_displacement(HyconContact *contact, double *u, size_t n) {
-    HC(hycon_contact_displacement(contact, u, n));
+static void hc_displacement(const HyconContact *contact, double *u, size_t n) {
+    HC(hycon_contact_displacement(contact, u, n, NULL));
 }
 
 static void hc_free(HyconContact *contact) { hycon_contact_free(contact); }
@@ -363,7 +355,7 @@ static double contact_load(const HyconNodeResult *nodes, size_t n_a, double *cen
 typedef struct Problem {
     const DiskMesh *m;
     size_t n_eq;
-    HostNodes a, b;
+    HyconHostNodes a, b;
     const double *rhs_approach, *rhs_slide; /* unit approach (v = -1), unit slide (u = +1) */
     const size_t *row_ptr, *columns;        /* the gathered matrix, lower triangle */
     const double *values;

@@ -13,6 +13,9 @@
 # other MPI implementations ignore. One BLAS/OpenMP thread per rank: MUMPS's threads and the
 # ranks would otherwise compete for the same cores.
 
+# scripts/test-all.sh sets HYCON_REQUIRE_PETSC=ON: there a missing PETSc is an error, not a
+# silently skipped example.
+option(HYCON_REQUIRE_PETSC "Fail the configure when PETSc or MPI is missing" OFF)
 find_package(PkgConfig QUIET)
 if(PkgConfig_FOUND)
   pkg_search_module(HYCON_PETSC IMPORTED_TARGET PETSc petsc)
@@ -41,6 +44,9 @@ if(HYCON_PETSC_FOUND AND MPI_C_FOUND AND MPIEXEC_EXECUTABLE)
   endif()
   message(STATUS "PETSc ${HYCON_PETSC_VERSION} and MPI found: example petsc_host "
                  "(mpiexec: ${MPIEXEC_EXECUTABLE})")
+elseif(HYCON_REQUIRE_PETSC)
+  message(FATAL_ERROR "PETSc or MPI not found (Debian: apt-get install petsc-dev), and "
+                      "HYCON_REQUIRE_PETSC is ON")
 else()
   message(STATUS "PETSc or MPI not found (Debian: apt-get install petsc-dev): "
                  "example petsc_host skipped")

@@ -73,7 +73,7 @@ step "cargo test --locked -p hycon-lab --features suitesparse --test backends (f
 cargo test --locked -p hycon-lab --features suitesparse --test backends
 
 step "cmake configure"
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$stage"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$stage" -DHYCON_REQUIRE_PETSC=ON
 
 step "cmake build"
 cmake --build "$build"
