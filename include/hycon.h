@@ -162,7 +162,10 @@ typedef struct HyconContactOptions {
     double tension_tolerance;
     // Friction-cone tolerance, relative to `mu |tn|` (default 1e-9).
     double friction_tolerance;
-    // Slip reversal tolerance, relative to the mean A segment length (default 1e-6).
+    // Slip tolerance (default 1e-6): a slip node returns to stick when its slip reverses by
+    // more than this, and a closing node enters in slip when it has slid more than this,
+    // relative to the increment's motion (the largest motion of a contact dof in this
+    // increment or a converged one), so it scales with the load.
     double slip_tolerance;
     // B segments farther than this from an A segment, relative to the mean A segment length,
     // are not paired with it (default 4).
