@@ -764,7 +764,9 @@ void hycon_contact_free(struct HyconContact *contact);
 // convergence, cycling contact set with the node named, penetration beyond the search
 // distance, contact reaching the end of a surface), `HYCON_ERROR_SINGULAR` (a body held only
 // by frictionless contact), `HYCON_ERROR_CALLBACK` (solver or monitor),
-// `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values, a plate analysis).
+// `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values or values beyond 1e300 in
+// magnitude, where the load plus the contact forces or the stresses may overflow: choose other
+// units; a plate analysis).
 //
 // # Safety
 // `contact` must be a live handle; arrays NULL or of the stated lengths; `info` NULL or
@@ -884,7 +886,8 @@ HyconStatus hycon_contact_b_node_results(const struct HyconContact *contact,
 // (one solve) if not done yet.
 //
 // Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
-// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range, `HYCON_ERROR_SOLVER` when the
+// displacement or the stresses overflow (never non-finite values).
 //
 // # Safety
 // `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or

@@ -75,6 +75,7 @@ mod small_system;
 use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
 pub use checks::SMALL_SLIDING_LIMIT;
 use checks::change_ratio;
+pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Plate, plate_force};
 pub use results::ConstraintRows;

@@ -1262,7 +1262,9 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
 /// convergence, cycling contact set with the node named, penetration beyond the search
 /// distance, contact reaching the end of a surface), `HYCON_ERROR_SINGULAR` (a body held only
 /// by frictionless contact), `HYCON_ERROR_CALLBACK` (solver or monitor),
-/// `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values, a plate analysis).
+/// `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values or values beyond 1e300 in
+/// magnitude, where the load plus the contact forces or the stresses may overflow: choose other
+/// units; a plate analysis).
 ///
 /// # Safety
 /// `contact` must be a live handle; arrays NULL or of the stated lengths; `info` NULL or
@@ -1546,7 +1548,8 @@ pub unsafe extern "C" fn hycon_contact_b_node_results(
 /// (one solve) if not done yet.
 ///
 /// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
-/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range, `HYCON_ERROR_SOLVER` when the
+/// displacement or the stresses overflow (never non-finite values).
 ///
 /// # Safety
 /// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or

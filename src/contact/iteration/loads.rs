@@ -57,6 +57,11 @@ pub(super) struct Solved {
 /// How many load solves are kept for reuse.
 pub(super) const KEPT_LOADS: usize = 4;
 
+/// Largest magnitude of a load or prescribed value an increment takes: beyond it the sums
+/// derived from the load (the load plus the contact forces, the stresses) may overflow. (Moduli
+/// and thicknesses have their own range, [`crate::material::SCALE_RANGE`].)
+pub const LOAD_LIMIT: f64 = 1e300;
+
 impl ContactAnalysis {
     /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
     /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
@@ -79,11 +84,20 @@ impl ContactAnalysis {
         // the key holds `f` and `qp` at the prescribed dofs only: the other entries of `qp` are
         // ignored, whatever they hold
         let load = self.bodies.load_key(f, qp);
-        if let Some(i) = load.iter().position(|v| !v.is_finite()) {
-            return Err(Error::InvalidInput(if i < n {
-                format!("load[{i}] = {} is not finite", f[i])
+        if let Some(i) = load.iter().position(|v| !(v.abs() <= LOAD_LIMIT)) {
+            let (name, index, value) = if i < n {
+                ("load", i, f[i])
             } else {
-                format!("prescribed[{}] = {} is not finite", i - n, qp[i - n])
+                ("prescribed", i - n, qp[i - n])
+            };
+            return Err(Error::InvalidInput(if value.is_finite() {
+                format!(
+                    "{name}[{index}] = {value:e} is beyond {LOAD_LIMIT:e} in magnitude, where \
+                     the sums derived from it (load plus contact forces, stresses) may overflow: \
+                     choose other units"
+                )
+            } else {
+                format!("{name}[{index}] = {value} is not finite")
             }));
         }
         if let Some(c) = combination(&load, &self.loads) {

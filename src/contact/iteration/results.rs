@@ -143,7 +143,7 @@ impl ContactAnalysis {
                 sums[node].1 += 1.0;
             }
         }
-        Ok(sums
+        let tractions: Vec<(f64, f64)> = sums
             .iter()
             .zip(&frames)
             .map(|((t, count), r)| {
@@ -153,7 +153,17 @@ impl ContactAnalysis {
                     t[0] * r.tangent[0] + t[1] * r.tangent[1],
                 )
             })
-            .collect())
+            .collect();
+        match tractions
+            .iter()
+            .position(|t| !(t.0.is_finite() && t.1.is_finite()))
+        {
+            None => Ok(tractions),
+            Some(k) => Err(Error::Solver(format!(
+                "the element stresses at A node {} overflow (the displacements are finite, but                  stiffness times displacement over a tiny element is not): choose other units",
+                self.bodies.external(self.pairs[p].a[k])
+            ))),
+        }
     }
 
     /// Contact results on the B side of pair `p`, per B node: the equivalent nodal force on B `f_j = -sum_k F^B_kj t_k` (the traction on B is
