@@ -84,7 +84,10 @@ impl ContactAnalysis {
         // the key holds `f` and `qp` at the prescribed dofs only: the other entries of `qp` are
         // ignored, whatever they hold
         let load = self.bodies.load_key(f, qp);
-        if let Some(i) = load.iter().position(|v| !(v.abs() <= LOAD_LIMIT)) {
+        if let Some(i) = load
+            .iter()
+            .position(|v| !v.is_finite() || v.abs() > LOAD_LIMIT)
+        {
             let (name, index, value) = if i < n {
                 ("load", i, f[i])
             } else {
