@@ -965,14 +965,20 @@ where
     Ok(())
 }
 
+/// The series the sweep's plots draw: every configuration except the refactor-every-iteration
+/// variants.
+fn plotted_series(runs: &[SweepRun]) -> Vec<Vec<SweepRun>> {
+    sweep_series(runs)
+        .into_iter()
+        .filter(|s| !s[0].case.refactor)
+        .collect()
+}
+
 /// SVG: L2 pressure error against total run time, one line per element / mesh / backend
 /// (numbers beside the dots: elements per half-width), dashed lines at 1% and 0.5%.
 pub fn sweep_error_time_svg(runs: &[SweepRun]) -> Plot<String> {
     use plotters::prelude::*;
-    let series: Vec<Vec<SweepRun>> = sweep_series(runs)
-        .into_iter()
-        .filter(|s| !s[0].case.refactor)
-        .collect();
+    let series = plotted_series(runs);
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 640)).into_drawing_area();
@@ -997,10 +1003,7 @@ pub fn sweep_error_time_svg(runs: &[SweepRun]) -> Plot<String> {
 /// SVG, two panels: total run time and the run's own peak memory against free dofs.
 pub fn sweep_time_dofs_svg(runs: &[SweepRun]) -> Plot<String> {
     use plotters::prelude::*;
-    let series: Vec<Vec<SweepRun>> = sweep_series(runs)
-        .into_iter()
-        .filter(|s| !s[0].case.refactor)
-        .collect();
+    let series = plotted_series(runs);
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (1300, 560)).into_drawing_area();
