@@ -213,22 +213,34 @@ pub struct GuardValue {
     pub value: f64,
 }
 
+/// The reference Hertz scene at `n` elements per half-width (frictionless, default options:
+/// small kinematics) after its calibration increment, with the approach that gives the target
+/// half-width.
+fn calibrated_reference(
+    n: usize,
+) -> Result<(
+    crate::scene::Scene,
+    hycon::contact::iteration::ContactAnalysis,
+    f64,
+)> {
+    let scene = crate::scene::DiskOnBlock {
+        elements_per_half_width: n,
+        ..Default::default()
+    }
+    .build()?;
+    let mut analysis = scene.analysis(hycon::contact::iteration::ContactOptions::default())?;
+    let approach = scene.calibrated_approach(&mut analysis)?;
+    Ok((scene, analysis, approach))
+}
+
 /// The accuracy figures the regression guard watches (`hycon bench guard`): the Hertz scene
 /// with small kinematics at 8, 16 and 64 elements per half-width (final-increment L2 error of
 /// the multiplier pressure and the absolute relative errors of half-width and peak) and the
 /// 7-beta element on Cook's membrane at 8 x 8. About half a second in release.
 pub fn guard_values() -> Result<Vec<GuardValue>> {
-    use crate::scene::DiskOnBlock;
-    use hycon::contact::iteration::ContactOptions;
     let mut values = Vec::new();
     for n in [8, 16, 64] {
-        let scene = DiskOnBlock {
-            elements_per_half_width: n,
-            ..Default::default()
-        }
-        .build()?;
-        let mut analysis = scene.analysis(ContactOptions::default())?;
-        let approach = scene.calibrated_approach(&mut analysis)?;
+        let (scene, mut analysis, approach) = calibrated_reference(n)?;
         let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
         analysis.increment(&f, &scene.prescribed(approach, 0.0))?;
         let c = scene.compare(&analysis)?;
@@ -1273,15 +1285,7 @@ impl EdgeRun {
 /// element (`a_H / h = k + (j + 1/2) / positions`, the approach scaled by `(a_H / a_0)^2` from
 /// the calibrated one: `P` grows about linearly with the approach and `a_H` as `sqrt(P)`).
 pub fn edge_sweep(n: usize, positions: usize) -> Result<Vec<EdgeRun>> {
-    use crate::scene::DiskOnBlock;
-    use hycon::contact::iteration::ContactOptions;
-    let scene = DiskOnBlock {
-        elements_per_half_width: n,
-        ..Default::default()
-    }
-    .build()?;
-    let mut analysis = scene.analysis(ContactOptions::default())?;
-    let approach = scene.calibrated_approach(&mut analysis)?;
+    let (scene, mut analysis, approach) = calibrated_reference(n)?;
     let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
     let h = scene.half_width / n as f64;
     let mut press = |approach: f64| -> Result<EdgeRun> {
