@@ -22,8 +22,8 @@ HYCON_STATIC_ASSERT(packed_version, HYCON_VERSION == HYCON_VERSION_MAJOR * 10000
                                                         HYCON_VERSION_MINOR * 100 +
                                                         HYCON_VERSION_PATCH);
 
-#if HYCON_VERSION < 300
-#error "this program needs hycon 0.3 or newer (contact kinematics)"
+#if HYCON_VERSION < 400
+#error "this program needs hycon 0.4 or newer (the size convention, the input views)"
 #endif
 
 /* The contact API: the fields of every struct in their documented order (a removed, renamed or

@@ -19,8 +19,8 @@
 //!   when it fails, empty when it succeeds); [`hycon_last_error_message`] copies it.
 //! * Arrays are (pointer, length) pairs, or a pointer whose length is fixed by other arguments
 //!   (stated per function). `(NULL, 0)` is an empty array.
-//! * Variable-length outputs follow one size convention, `(out, len, needed)` ([`fill`]).
-//! * One pointer rule ([`pointer`]): NULL required pointers are `HYCON_ERROR_NULL_POINTER`,
+//! * Variable-length outputs follow one size convention, `(out, len, needed)` (`fill`).
+//! * One pointer rule (`pointer`): NULL required pointers are `HYCON_ERROR_NULL_POINTER`,
 //!   misaligned pointers (required or optional) `HYCON_ERROR_INVALID_ARGUMENT`.
 //! * Outputs are written only on success: on an error, every output buffer is left untouched
 //!   (except `*needed` on `HYCON_ERROR_BUFFER_TOO_SMALL`).
