@@ -62,15 +62,18 @@ use crate::assembly::dof;
 use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
+use faer::Mat;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
 mod active_set;
+mod boundary;
 mod checks;
 mod loads;
 mod plate;
 mod results;
 mod small_system;
 use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
+use boundary::{Flexibility, NodeFlexibility};
 pub use checks::SMALL_SLIDING_LIMIT;
 use checks::change_ratio;
 use loads::LoadSolve;
@@ -491,8 +494,15 @@ pub struct ContactAnalysis {
     dofs: Vec<usize>,
     /// Position of each global dof in `dofs` (`None`: not a contact dof).
     slot: Vec<Option<usize>>,
-    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs).
-    flexibility: DMatrix<f64>,
+    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
+    /// built when first needed (all at once from a factor; a host callback's as nodes become
+    /// active).
+    flexibility: Flexibility,
+    /// Under small kinematics, the node flexibility of the directions that have been active.
+    node_flexibility: NodeFlexibility,
+    /// Iterate on the dense reference algebra (see
+    /// [`ContactAnalysis::set_reference_algebra`]).
+    reference_algebra: bool,
     /// Converged displacement of the contact dofs (`dofs` order).
     qc: Vec<f64>,
     /// Factor `K` again in every iteration (a benchmark's control, see
@@ -557,7 +567,8 @@ impl ContactAnalysis {
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
-        let bodies = Bodies::model(model, &dofs, options.backend)?;
+        let lazy = options.kinematics == Kinematics::Small;
+        let bodies = Bodies::model(model, &dofs, options.backend, lazy)?;
         Self::setup(bodies, pairs, dofs, options)
     }
 
@@ -576,7 +587,8 @@ impl ContactAnalysis {
             pair.check().map_err(|e| in_pair(i, e))?;
         }
         let clock = std::time::Instant::now();
-        let bodies = Bodies::host(system, options.backend)?;
+        let lazy = options.kinematics == Kinematics::Small;
+        let bodies = Bodies::host(system, options.backend, lazy)?;
         let seconds = clock.elapsed().as_secs_f64();
         let n_nodes = bodies.positions().len();
         check_host_nodes(&pairs, &bodies)?;
@@ -611,7 +623,11 @@ impl ContactAnalysis {
         let mut timings = Timings::default();
         [timings.assembly, timings.factorization] = bodies.setup_seconds();
         let clock = std::time::Instant::now();
-        let flexibility = bodies.flexibility(&dofs)?;
+        let flexibility = if bodies.lazy_flexibility() {
+            Flexibility::lazy(dofs.len())
+        } else {
+            Flexibility::full(bodies.flexibility(&dofs)?)
+        };
         timings.flexibility = clock.elapsed().as_secs_f64();
         let reference = evaluate_pairs(&pairs, bodies.positions(), options.search_distance)?;
         for (i, pair) in pairs.iter().enumerate() {
@@ -630,8 +646,11 @@ impl ContactAnalysis {
                 ]
             })
             .collect();
-        Ok(ContactAnalysis {
+        let node_flexibility = NodeFlexibility::new(pairs.iter().map(|p| p.a.len()));
+        let mut analysis = ContactAnalysis {
             qc: vec![0.0; dofs.len()],
+            node_flexibility,
+            reference_algebra: false,
             settled: None,
             refactor_each_iteration: false,
             largest_motion: 0.0,
@@ -654,7 +673,15 @@ impl ContactAnalysis {
             timings,
             plate: None,
             monitor: None,
-        })
+        };
+        if !analysis.flexibility.is_full() {
+            let clock = std::time::Instant::now();
+            let before = analysis.timings.flexibility;
+            analysis.prime()?;
+            // (node directions time themselves; columns through ensure_columns too)
+            analysis.timings.flexibility = before + clock.elapsed().as_secs_f64();
+        }
+        Ok(analysis)
     }
 
     /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
@@ -943,32 +970,47 @@ impl ContactAnalysis {
         let mut records = Vec::new();
         // time of the refactor-every-iteration variant, counted as factorization
         let mut refactoring = 0.0;
+        // columns of a lazy F built during the iteration count as flexibility
+        let flexibility_before = self.timings.flexibility;
         for iteration in 1..=self.options.max_iterations {
             if self.refactor_each_iteration && iteration > 1 {
                 let clock = std::time::Instant::now();
                 self.bodies.refactorize()?;
-                self.flexibility = self.bodies.flexibility(&self.dofs)?;
+                self.flexibility = if self.bodies.lazy_flexibility() {
+                    Flexibility::lazy(self.dofs.len())
+                } else {
+                    Flexibility::full(self.bodies.flexibility(&self.dofs)?)
+                };
+                self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
                 refactoring += clock.elapsed().as_secs_f64();
             }
             let states = set.states();
             let system = self.build_system(&surfaces, states, &uc, &startc)?;
-            let (tau, plate_motion, condition) =
-                system.solve(&u0c, &self.flexibility, border.as_ref())?;
-            let forces = system.forces(&tau, self.dofs.len());
-            // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
-            let mut uc_new = u0c.clone();
-            for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
-                for (u, c) in uc_new.iter_mut().zip(column(&self.flexibility, j)) {
-                    *u += c * fj;
-                }
-            }
-            if let Some(b) = &border {
-                for (&d, &m) in b.directions.iter().zip(&plate_motion) {
-                    for (u, w) in uc_new.iter_mut().zip(&b.response[d]) {
-                        *u += m * w;
+            let (tau, plate_motion, uc_new, condition) = if self.reference_algebra {
+                let (tau, plate_motion, condition) =
+                    system.solve(&u0c, &self.flexibility.matrix, border.as_ref())?;
+                let forces = system.forces(&tau, self.dofs.len());
+                // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
+                let mut uc_new = u0c.clone();
+                for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
+                    for (u, c) in uc_new.iter_mut().zip(self.flexibility.column(j)) {
+                        *u += c * fj;
                     }
                 }
-            }
+                if let Some(b) = &border {
+                    for (&d, &m) in b.directions.iter().zip(&plate_motion) {
+                        for (u, w) in uc_new.iter_mut().zip(&b.response[d]) {
+                            *u += m * w;
+                        }
+                    }
+                }
+                (tau, plate_motion, uc_new, condition)
+            } else {
+                let (tau, plate_motion, condition, uc_new) =
+                    self.solve_boundary(&system, &u0c, border.as_ref())?;
+                (tau, plate_motion, uc_new, condition)
+            };
+            let forces = system.forces(&tau, self.dofs.len());
             finite(&uc_new, number, iteration)?;
             self.update_geometry(&mut surfaces, &uc_new, &startc)?;
             let tractions = system.tractions(&tau, states, &self.pairs);
@@ -1010,7 +1052,9 @@ impl ContactAnalysis {
                 self.edge_penetration(number, &surfaces, set.locked_open(), &uc, &startc)?;
                 self.small_sliding(number, states, &uc)?;
                 self.timings.factorization += refactoring;
-                self.timings.iterations += clock.elapsed().as_secs_f64() - refactoring;
+                self.timings.iterations += clock.elapsed().as_secs_f64()
+                    - refactoring
+                    - (self.timings.flexibility - flexibility_before);
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
                     let directions = border.as_ref().map_or(&[][..], |b| &b.directions[..]);
