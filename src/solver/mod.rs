@@ -327,6 +327,10 @@ pub struct Reach {
     blocks: Vec<(usize, usize, usize, usize)>,
     /// Compact row of each factor column (`usize::MAX`: not in reach).
     compact: Vec<usize>,
+    /// Compact rows of the off-diagonal pattern of the blocks, block after block
+    /// (`pattern_start[b]..pattern_start[b + 1]` for the `b`-th block in reach).
+    pattern: Vec<usize>,
+    pattern_start: Vec<usize>,
     /// Factor column of each unknown of the caller's numbering.
     column_of: Vec<usize>,
     /// Number of rows in reach.
@@ -350,6 +354,11 @@ impl Reach {
     /// (or backward) substitution.
     pub fn entries(&self) -> usize {
         self.entries
+    }
+
+    /// The compact rows of the off-diagonal pattern of the `b`-th block in reach.
+    fn block_pattern(&self, b: usize) -> &[usize] {
+        &self.pattern[self.pattern_start[b]..self.pattern_start[b + 1]]
     }
 
     /// Compact row of unknown `i` (caller's numbering), if in reach.
@@ -462,9 +471,27 @@ impl FaerLlt {
                 _ => 0,
             };
         }
+        // the blocks' patterns in compact rows (every pattern row is an ancestor: in reach)
+        let mut pattern = Vec::new();
+        let mut pattern_start = vec![0];
+        for &(s, c, _, _) in &blocks {
+            match self.symbolic.raw() {
+                SymbolicCholeskyRaw::Simplicial(sym) => {
+                    let (cp, ri) = (sym.col_ptr(), sym.row_idx());
+                    // the diagonal is the column's first entry
+                    pattern.extend(ri[cp[c] + 1..cp[c + 1]].iter().map(|&r| compact[r]));
+                }
+                SymbolicCholeskyRaw::Supernodal(sym) => {
+                    pattern.extend(sym.supernode(s).pattern().iter().map(|&r| compact[r]));
+                }
+            }
+            pattern_start.push(pattern.len());
+        }
         Reach {
             blocks,
             compact,
+            pattern,
+            pattern_start,
             column_of,
             len,
             entries,
@@ -477,30 +504,29 @@ impl FaerLlt {
             solve_lower_triangular_in_place, solve_upper_triangular_in_place,
         };
         let k = x.ncols();
-        let at = |r: usize| reach.compact[r];
         match self.symbolic.raw() {
             SymbolicCholeskyRaw::Simplicial(sym) => {
-                let (cp, ri, v) = (sym.col_ptr(), sym.row_idx(), &self.l_values);
-                for &(_, c, _, off) in &reach.blocks {
-                    let (first, last) = (cp[c], cp[c + 1]);
-                    // the diagonal is the column's first entry
+                let (cp, v) = (sym.col_ptr(), &self.l_values);
+                for (b, &(_, c, _, off)) in reach.blocks.iter().enumerate() {
+                    // the diagonal is the column's first entry, the pattern the rest
+                    let (first, rows) = (cp[c], reach.block_pattern(b));
                     for j in 0..k {
                         if x[(off, j)] == 0.0 {
                             continue;
                         }
                         let xc = x[(off, j)] / v[first];
                         x[(off, j)] = xc;
-                        for e in first + 1..last {
-                            x[(at(ri[e]), j)] -= v[e] * xc;
+                        for (&r, l) in rows.iter().zip(&v[first + 1..]) {
+                            x[(r, j)] -= l * xc;
                         }
                     }
                 }
-                for &(_, c, _, off) in reach.blocks.iter().rev() {
-                    let (first, last) = (cp[c], cp[c + 1]);
+                for (b, &(_, c, _, off)) in reach.blocks.iter().enumerate().rev() {
+                    let (first, rows) = (cp[c], reach.block_pattern(b));
                     for j in 0..k {
                         let mut xc = x[(off, j)];
-                        for e in first + 1..last {
-                            xc -= v[e] * x[(at(ri[e]), j)];
+                        for (&r, l) in rows.iter().zip(&v[first + 1..]) {
+                            xc -= l * x[(r, j)];
                         }
                         x[(off, j)] = xc / v[first];
                     }
@@ -509,10 +535,10 @@ impl FaerLlt {
             SymbolicCholeskyRaw::Supernodal(sym) => {
                 let llt = SupernodalLltRef::<usize, f64>::new(sym, &self.l_values);
                 let mut tmp = Mat::<f64>::zeros(0, k);
-                for &(s, _, width, off) in &reach.blocks {
+                for (b, &(s, _, width, off)) in reach.blocks.iter().enumerate() {
                     let node = llt.supernode(s);
                     let (top, bottom) = node.val().split_at_row(width);
-                    let pattern = node.pattern();
+                    let pattern = reach.block_pattern(b);
                     let mut xs = x.as_mut().subrows_mut(off, width);
                     // a block the right-hand sides have not reached yet stays zero
                     if (0..k).all(|j| (0..width).all(|i| xs[(i, j)] == 0.0)) {
@@ -529,19 +555,31 @@ impl FaerLlt {
                         Par::Seq,
                     );
                     for j in 0..k {
-                        for (idx, &r) in pattern.iter().enumerate() {
-                            x[(at(r), j)] -= tmp[(idx, j)];
+                        let (xj, tj) = (x.as_mut().col_mut(j), tmp.col(j));
+                        let (xj, tj) = (
+                            xj.try_as_col_major_mut().unwrap(),
+                            tj.try_as_col_major().unwrap(),
+                        );
+                        let (xj, tj) = (xj.as_slice_mut(), tj.as_slice());
+                        for (&r, t) in pattern.iter().zip(tj) {
+                            xj[r] -= t;
                         }
                     }
                 }
-                for &(s, _, width, off) in reach.blocks.iter().rev() {
+                for (b, &(s, _, width, off)) in reach.blocks.iter().enumerate().rev() {
                     let node = llt.supernode(s);
                     let (top, bottom) = node.val().split_at_row(width);
-                    let pattern = node.pattern();
+                    let pattern = reach.block_pattern(b);
                     tmp.resize_with(pattern.len(), k, |_, _| 0.0);
                     for j in 0..k {
-                        for (idx, &r) in pattern.iter().enumerate() {
-                            tmp[(idx, j)] = x[(at(r), j)];
+                        let (xj, tj) = (x.as_ref().col(j), tmp.as_mut().col_mut(j));
+                        let (xj, tj) = (
+                            xj.try_as_col_major().unwrap(),
+                            tj.try_as_col_major_mut().unwrap(),
+                        );
+                        let (xj, tj) = (xj.as_slice(), tj.as_slice_mut());
+                        for (&r, t) in pattern.iter().zip(tj) {
+                            *t = xj[r];
                         }
                     }
                     let mut xs = x.as_mut().subrows_mut(off, width);

@@ -10,7 +10,7 @@
 //! [`ContactAnalysis::set_reference_algebra`]; the tests compare the two.
 
 use super::*;
-use faer::linalg::solvers::{PartialPivLu, Solve};
+use faer::linalg::solvers::{Llt, PartialPivLu, Solve};
 use small_system::{Row, SmallSystem};
 
 /// The flexibility `F = E^T K^-1 E` over the contact dofs, column by column: a column is
@@ -85,14 +85,17 @@ impl NodeFlexibility {
         self.index[p][k][row as usize]
     }
 
-    /// Add direction `key` with its vector `v` and response `y = F v`: `N_ac = v_a . y` and
-    /// `N_ca = v . y_a` for every known `a`, and `N_cc`.
+    /// Add direction `key` with its vector `v` and response `y = F v`: `N_ac = v_a . y` for
+    /// every known `a`, `N_ca = N_ac` (`F` is symmetric: `v . y_a = v_a . y`, read from the
+    /// new response alone), and `N_cc = v . y`.
     fn add(&mut self, (p, k, row): (usize, usize, Row), v: Sparse, y: Vec<f64>) {
         let c = self.vectors.len();
+        let mut nc = Vec::with_capacity(c + 1);
         for (a, na) in self.n.iter_mut().enumerate() {
-            na.push(dot(&self.vectors[a], &y));
+            let value = dot(&self.vectors[a], &y);
+            na.push(value);
+            nc.push(value);
         }
-        let mut nc: Vec<f64> = self.responses.iter().map(|ya| dot(&v, ya)).collect();
         nc.push(dot(&v, &y));
         self.n.push(nc);
         self.vectors.push(v);
@@ -106,22 +109,49 @@ impl NodeFlexibility {
 /// displacement of the contact dofs.
 pub(super) type Solution = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
 
+/// A dense factorization of the small system `S`: Cholesky `S = L L^T` when `S` is symmetric
+/// (no slip node with friction, no plate border: `rows = cols`, so `S = R^T F R` is symmetric
+/// positive definite), else LU with partial pivoting `P S = L U`.
+enum Dense {
+    Llt(Llt<f64>),
+    Lu(PartialPivLu<f64>),
+}
+
+impl Dense {
+    /// `S` factored (Cholesky when `symmetric` and it succeeds, else LU).
+    fn new(s: Mat<f64>, symmetric: bool) -> Self {
+        if symmetric && let Ok(llt) = s.llt(faer::Side::Lower) {
+            return Dense::Llt(llt);
+        }
+        Dense::Lu(s.partial_piv_lu())
+    }
+
+    /// `x <- S^-1 x`, or `S^-T x` when `transpose`.
+    fn solve(&self, x: faer::MatMut<'_, f64>, transpose: bool) {
+        match (self, transpose) {
+            (Dense::Llt(f), _) => f.solve_in_place(x),
+            (Dense::Lu(f), false) => f.solve_in_place(x),
+            (Dense::Lu(f), true) => f.solve_transpose_in_place(x),
+        }
+    }
+}
+
 /// `||A||_1 ||A^-1||_1` (`a_norm = ||A||_1`) with `||A^-1||_1` estimated by Hager's method from
-/// the LU factors of `A` (Higham's Algorithm 2.1, the same steps as
+/// the factors of `A` (Higham's Algorithm 2.1, the same steps as
 /// `small_system::condition_estimate`); `None` when a solve is not finite (singular `A`).
-fn condition_estimate(a_norm: f64, lu: &PartialPivLu<f64>, m: usize) -> Option<f64> {
+fn condition_estimate(a_norm: f64, lu: &Dense, m: usize) -> Option<f64> {
     let norm1 = |v: &Mat<f64>| (0..m).map(|i| v[(i, 0)].abs()).sum::<f64>();
     let mut x = Mat::<f64>::from_fn(m, 1, |_, _| 1.0 / m as f64);
     let mut estimate = 0.0;
     for _ in 0..5 {
         let mut y = x.clone();
-        lu.solve_in_place(y.as_mut());
+        lu.solve(y.as_mut(), false);
         if !(0..m).all(|i| y[(i, 0)].is_finite()) {
             return None;
         }
         estimate = norm1(&y);
         let mut z = Mat::<f64>::from_fn(m, 1, |i, _| if y[(i, 0)] >= 0.0 { 1.0 } else { -1.0 });
-        lu.solve_transpose_in_place(z.as_mut());
+        lu.solve(z.as_mut(), true);
         if !(0..m).all(|i| z[(i, 0)].is_finite()) {
             return None;
         }
@@ -251,7 +281,9 @@ impl ContactAnalysis {
 
     /// Solve the small system (METHOD.md section 3): `S tau = b - rows . u0` with
     /// `S_ij = row_i . F col_j`, bordered by the force-controlled plate translations `U` as in
-    /// the reference (`SmallSystem::solve`), by a blocked LU with partial pivoting (faer), and
+    /// the reference (`SmallSystem::solve`), by a blocked Cholesky factorization when `S` is
+    /// symmetric (no slip node with friction, no border) or else a blocked LU with partial
+    /// pivoting (faer), and
     /// the new displacement of the contact dofs, `u = u0 + F sum_j tau_j col_j + sum_e U_e w_e`
     /// (`w_e` the plate's response). Small kinematics read `S` off the node flexibility,
     /// `S_ij = sum_b coefficient_jb N_(a_i, b)`, and form `u` from the node responses,
@@ -332,12 +364,14 @@ impl ContactAnalysis {
         let s_norm = (0..m + k)
             .map(|j| (0..m + k).map(|i| s[(i, j)].abs()).sum::<f64>())
             .fold(0.0, f64::max);
-        let lu = s.partial_piv_lu();
+        // symmetric: every column is its row (no slip node with friction) and no border
+        let symmetric = k == 0 && system.basis.iter().all(|parts| parts.len() == 1);
+        let lu = Dense::new(s, symmetric);
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
         let condition = condition_estimate(s_norm, &lu, m + k)
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
-        lu.solve_in_place(rhs.as_mut());
+        lu.solve(rhs.as_mut(), false);
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
         if !tau.iter().all(|v| v.is_finite()) {
             return Err(singular());
