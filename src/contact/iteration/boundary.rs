@@ -122,15 +122,18 @@ pub(super) type Solution = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
 enum Dense {
     Llt(Llt<f64>),
     Lu(PartialPivLu<f64>),
-    Block {
-        p: Vec<usize>,
-        q: Vec<usize>,
-        llt: Llt<f64>,
-        /// `W = S_PP^-1 S_PQ`.
-        w: Mat<f64>,
-        s_qp: Mat<f64>,
-        z: PartialPivLu<f64>,
-    },
+    Block(Box<Blocks>),
+}
+
+/// The block form of [`Dense`].
+struct Blocks {
+    p: Vec<usize>,
+    q: Vec<usize>,
+    llt: Llt<f64>,
+    /// `W = S_PP^-1 S_PQ`.
+    w: Mat<f64>,
+    s_qp: Mat<f64>,
+    z: PartialPivLu<f64>,
 }
 
 impl Dense {
@@ -154,14 +157,14 @@ impl Dense {
                 llt.solve_in_place(w.as_mut());
                 let s_qp = sub(&q, &p);
                 let z = sub(&q, &q) - &s_qp * &w;
-                return Dense::Block {
+                return Dense::Block(Box::new(Blocks {
                     z: z.partial_piv_lu(),
                     p,
                     q,
                     llt,
                     w,
                     s_qp,
-                };
+                }));
             }
         }
         Dense::Lu(s.partial_piv_lu())
@@ -176,17 +179,15 @@ impl Dense {
             (Dense::Llt(f), _) => f.solve_in_place(x),
             (Dense::Lu(f), false) => f.solve_in_place(x),
             (Dense::Lu(f), true) => f.solve_transpose_in_place(x),
-            (
-                Dense::Block {
+            (Dense::Block(b), _) => {
+                let Blocks {
                     p,
                     q,
                     llt,
                     w,
                     s_qp,
                     z,
-                },
-                _,
-            ) => {
+                } = b.as_ref();
                 let k = x.ncols();
                 let xp = Mat::<f64>::from_fn(p.len(), k, |i, j| x[(p[i], j)]);
                 let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
