@@ -286,7 +286,7 @@ enum HostSolver {
     /// in the plain fill-reducing order and `F` built lazily within the reach of the contact
     /// equations, else with the contact equations last.
     Factor {
-        factor: SparseCholesky,
+        factor: Box<SparseCholesky>,
         lower: SparseColMat<usize, f64>,
         reach: Option<Box<Reach>>,
     },
@@ -416,7 +416,7 @@ impl Bodies {
                     None
                 };
                 HostSolver::Factor {
-                    factor,
+                    factor: Box::new(factor),
                     lower,
                     reach,
                 }
@@ -601,9 +601,11 @@ impl Bodies {
                 (Solver::Factor(system.cholesky()), reach.as_deref(), n)
             }
             Kind::Host(h) => match &mut h.solver {
-                HostSolver::Factor { factor, reach, .. } => {
-                    (Solver::Factor(factor), reach.as_deref(), h.equations)
-                }
+                HostSolver::Factor { factor, reach, .. } => (
+                    Solver::Factor(factor.as_mut()),
+                    reach.as_deref(),
+                    h.equations,
+                ),
                 HostSolver::Callback(s) => (Solver::Callback(s.as_mut()), None, h.equations),
             },
         };
