@@ -156,7 +156,8 @@ fn check_symmetric(
 
 /// How the host's stiffness reaches the iteration.
 pub enum HostStiffness {
-    /// The matrix, factored here (fill-reducing order with the contact equations last).
+    /// The matrix, factored here (fill-reducing order; with the contact equations last under
+    /// finite kinematics).
     Csr(Csr),
     /// The host's own solver.
     Solver(Box<dyn HostSolve>),

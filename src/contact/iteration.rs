@@ -23,9 +23,14 @@
 //!
 //! Columns of `Gc` live on the contact nodes' dofs only, so `K^-1` is needed only there: the
 //! contact-boundary flexibility `F = E^T K^-1 E` (`E` selects the free dofs of the contact
-//! nodes) is read off the factor once per analysis: with those dofs eliminated last,
-//! `F = (L22 L22^T)^-1` from the trailing block of `L` (no solves), and every iteration is
-//! small dense algebra: `S t = rows . (b - u0)` with `S = rows^T F cols`. The load solve
+//! nodes). Under small kinematics `K` is factored in its plain fill-reducing order and `F` is
+//! built only where the iteration needs it: the responses `F v` of each A node's directions
+//! `v` (normal and tangent rows) when the node first becomes active, by substitution within
+//! the contact dofs' elimination-tree reach (or through a host's solve callback), kept with the
+//! node flexibility `N_ab = v_a^T F v_b`. Under finite kinematics the contact dofs are
+//! eliminated last and all of `F = (L22 L22^T)^-1` is read off the trailing block of `L` (no
+//! solves). Every iteration is small dense algebra (`boundary.rs`):
+//! `S t = rows . (b - u0)` with `S = rows^T F cols`. The load solve
 //! `u0` is reused when a load is a combination of earlier ones, and the full displacement
 //! field is recovered only when asked for (one solve).
 //!
@@ -421,7 +426,8 @@ pub struct Timings {
     pub assembly: f64,
     /// Symbolic analysis and numeric factorization of `K` (once per analysis).
     pub factorization: f64,
-    /// Contact-boundary flexibility `F`, read off the factor's trailing block (once per analysis).
+    /// Contact-boundary flexibility `F`: the responses of node directions as they become active
+    /// (small kinematics), or all of `F` read off the factor's trailing block once (finite).
     pub flexibility: f64,
     /// The load solves `u0 = K^-1 (f - K_fp q_p)`, one per increment.
     pub load_solves: f64,
@@ -553,8 +559,10 @@ impl std::fmt::Debug for ContactAnalysis {
 }
 
 impl ContactAnalysis {
-    /// Validate, factor `K` once (the contact nodes' dofs eliminated last) and read the
-    /// contact-boundary flexibility `F` off the factor's trailing block.
+    /// Validate and factor `K` once: in its fill-reducing order under small kinematics (the
+    /// flexibility `F` is then built as nodes become active), with the contact nodes' dofs
+    /// eliminated last under finite kinematics (all of `F` read off the factor's trailing
+    /// block).
     pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
         options.validate()?;
         for (i, pair) in pairs.iter().enumerate() {
@@ -573,9 +581,10 @@ impl ContactAnalysis {
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
-    /// the pairs use), and its stiffness, as a CSR matrix that is factored here (once, the
-    /// contact equations last) or as a solve callback (`F` is then built from batched solves
-    /// with unit right-hand sides). Loads are the host's right-hand sides
+    /// the pairs use), and its stiffness, as a CSR matrix that is factored here (once; as for
+    /// [`new`](Self::new)) or as a solve callback (the responses `F v` then come from batched
+    /// callback solves, one column per node direction that becomes active, or per contact dof
+    /// an active node touches under finite kinematics). Loads are the host's right-hand sides
     /// ([`increment`](Self::increment) with empty `qp`), displacements its equations.
     pub fn host(
         system: HostSystem,

@@ -1,9 +1,9 @@
-//! The contact boundary as the iteration uses it (METHOD.md section 3): columns of the
-//! flexibility `F = E^T K^-1 E`, built once and kept (eagerly from the factor's trailing block,
-//! or lazily through a host's solve callback, only for the dofs the active nodes touch), the
-//! responses `y = F c` of the active nodes' force columns, cached per node under small
-//! kinematics, and the small system `S tau = b - rows . u0`, `S_ij = row_i . y_j`, factored by a
-//! blocked dense LU.
+//! The contact boundary as the iteration uses it (METHOD.md section 3): the flexibility
+//! `F = E^T K^-1 E`, either whole (read off a factor's trailing block) or lazily: under small
+//! kinematics the responses `y_a = F v_a` of the node directions that become active and the
+//! node flexibility `N_ab = v_a^T F v_b`, computed once per direction; under finite kinematics
+//! the columns of `F` the active nodes touch. The small system `S tau = b - rows . u0`,
+//! `S = rows^T F cols`, is factored by blocked dense Cholesky / LU (faer).
 //!
 //! The dense reference of the same algebra (every column of `F` built up front, `F c` formed
 //! from `F` in every iteration, nalgebra's unblocked LU) is kept behind
