@@ -149,6 +149,8 @@ pub fn peak_memory() -> Option<u64> {
 pub struct ContactRun {
     /// Elements per target half-width.
     pub n: usize,
+    /// Coulomb friction coefficient of the pair.
+    pub friction: f64,
     /// Free dofs.
     pub dofs: usize,
     /// Dofs of the contact candidates (the condensed boundary).
@@ -166,14 +168,16 @@ pub struct ContactRun {
     pub iterations: usize,
 }
 
-/// The reference Hertz scene at `n` elements per half-width (frictionless, `a = R/64`):
-/// time the whole contact analysis and, on the same model, one plain factorization and solve.
-pub fn contact_run(n: usize) -> Result<ContactRun> {
+/// The reference Hertz scene at `n` elements per half-width (`a = R/64`, friction
+/// coefficient `friction`): time the whole contact analysis and, on the same model, one plain
+/// factorization and solve.
+pub fn contact_run(n: usize, friction: f64) -> Result<ContactRun> {
     use crate::scene::DiskOnBlock;
     use hycon::contact::iteration::ContactOptions;
     use hycon::model::LinearSystem;
     let scene = DiskOnBlock {
         elements_per_half_width: n,
+        friction,
         ..Default::default()
     }
     .build()?;
@@ -193,6 +197,7 @@ pub fn contact_run(n: usize) -> Result<ContactRun> {
     let contact_seconds = clock.elapsed().as_secs_f64();
     Ok(ContactRun {
         n,
+        friction,
         dofs,
         contact_dofs: 2 * (scene.pair.a.len() + scene.pair.b.len()),
         timings: analysis.timings(),

@@ -178,8 +178,8 @@ enum Bench {
         #[arg(long, default_value_t = 354)]
         n: usize,
     },
-    /// The Hertz scene (frictionless, a = R/64, calibration + 3 increments) at each refinement:
-    /// whole contact analysis against one assembly + factorization + solve of K.
+    /// The Hertz scene (a = R/64, calibration + 3 increments; frictionless, then mu = 0.3) at
+    /// each refinement: whole contact analysis against one assembly + factorization + solve of K.
     Contact {
         /// Elements per half-width, comma separated (powers of two).
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
@@ -672,28 +672,31 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
         Bench::Edge { n, positions } => edge(&n, positions)?,
         Bench::Contact { n } => {
             println!(
-                "{:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",
-                "n", "dofs", "contact", "contact s", "floor s", "ratio", "L2", "iters"
+                "{:>4} {:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",
+                "n", "mu", "dofs", "contact", "contact s", "floor s", "ratio", "L2", "iters"
             );
-            for n in n {
-                let r = hycon_lab::bench::contact_run(n)?;
-                let t = r.timings;
-                println!(
-                    "{:>4} {:>7} {:>8} {:>9.4} {:>9.4} {:>6.2} {:>6.2}% {:>5} | {:.4} {:.4} {:.4} {:.4} {:.4}",
-                    r.n,
-                    r.dofs,
-                    r.contact_dofs,
-                    r.contact_seconds,
-                    r.floor_seconds,
-                    r.contact_seconds / r.floor_seconds,
-                    100.0 * r.l2_error,
-                    r.iterations,
-                    t.assembly,
-                    t.factorization,
-                    t.flexibility,
-                    t.load_solves,
-                    t.iterations
-                );
+            for friction in [0.0, 0.3] {
+                for &n in &n {
+                    let r = hycon_lab::bench::contact_run(n, friction)?;
+                    let t = r.timings;
+                    println!(
+                        "{:>4} {:>4} {:>7} {:>8} {:>9.4} {:>9.4} {:>6.2} {:>6.2}% {:>5} | {:.4} {:.4} {:.4} {:.4} {:.4}",
+                        r.n,
+                        r.friction,
+                        r.dofs,
+                        r.contact_dofs,
+                        r.contact_seconds,
+                        r.floor_seconds,
+                        r.contact_seconds / r.floor_seconds,
+                        100.0 * r.l2_error,
+                        r.iterations,
+                        t.assembly,
+                        t.factorization,
+                        t.flexibility,
+                        t.load_solves,
+                        t.iterations
+                    );
+                }
             }
         }
         Bench::Scale { n } => {

@@ -177,9 +177,9 @@ impl DiskOnBlock {
     /// Build the meshes, materials, boundary conditions and contact pair.
     pub fn build(&self) -> Result<Scene> {
         let n = self.elements_per_half_width;
-        if n == 0 || !n.is_power_of_two() || n > 256 {
+        if n == 0 || !n.is_power_of_two() || n > 512 {
             return Err(Error::InvalidInput(format!(
-                "elements per half-width must be a power of two in 1..=256, got {n}"
+                "elements per half-width must be a power of two in 1..=512, got {n}"
             )));
         }
         let q = self.radius_over_half_width;

@@ -20,7 +20,7 @@ use crate::element::Formulation;
 use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::model::{LinearSystem, Model};
-use crate::solver::{Backend, SparseCholesky};
+use crate::solver::{Backend, Reach, SparseCholesky};
 use faer::Mat;
 use faer::sparse::{SparseColMat, Triplet};
 use nalgebra::DMatrix;
@@ -157,7 +157,8 @@ fn check_symmetric(
 
 /// How the host's stiffness reaches the iteration.
 pub enum HostStiffness {
-    /// The matrix, factored here (fill-reducing order with the contact equations last).
+    /// The matrix, factored here (fill-reducing order; with the contact equations last under
+    /// finite kinematics).
     Csr(Csr),
     /// The host's own solver.
     Solver(Box<dyn HostSolve>),
@@ -285,10 +286,13 @@ struct Host {
 }
 
 enum HostSolver {
-    /// hycon's factor of the host's matrix (kept for refactorization).
+    /// hycon's factor of the host's matrix (kept for refactorization); with a reach, factored
+    /// in the plain fill-reducing order and `F` built lazily within the reach of the contact
+    /// equations, else with the contact equations last.
     Factor {
-        factor: SparseCholesky,
+        factor: Box<SparseCholesky>,
         lower: SparseColMat<usize, f64>,
+        reach: Option<Box<Reach>>,
     },
     Callback(Box<dyn HostSolve>),
 }
@@ -297,11 +301,14 @@ enum HostSolver {
 pub struct Bodies(Kind);
 
 enum Kind {
-    /// hycon's own model and `K_ff`, factored with the contact dofs last.
+    /// hycon's own model and `K_ff`: factored with the contact dofs last, or (with a reach)
+    /// in the plain fill-reducing order, `F` then built lazily within the reach of the contact
+    /// dofs.
     Model {
         model: Box<Model>,
         /// Locked so that solves can run from `&self` queries, one at a time.
         system: Mutex<Box<LinearSystem>>,
+        reach: Option<Box<Reach>>,
     },
     /// A host's system.
     Host(Box<Host>),
@@ -337,18 +344,37 @@ fn unlocked<T>(m: &mut Mutex<T>) -> &mut T {
 const CALLBACK_BATCH: usize = 64;
 
 impl Bodies {
-    /// hycon's model, factored with the global dofs `trailing` eliminated last.
-    pub fn model(model: Model, trailing: &[usize], backend: Backend) -> Result<Self> {
-        let system = LinearSystem::with_trailing_on(&model, trailing, backend)?;
+    /// hycon's model with the contact dofs `contact` (global dofs). Eager
+    /// (`lazy == false`): factored with them eliminated last, so that all of `F` is read off
+    /// the factor's trailing block. Lazy (faer only): factored in the plain fill-reducing
+    /// order, as a linear solve would be, and the columns of `F` computed when asked for
+    /// ([`flexibility_times`](Self::flexibility_times)) by substitutions within the reach of
+    /// the contact dofs in the elimination tree.
+    pub fn model(model: Model, contact: &[usize], backend: Backend, lazy: bool) -> Result<Self> {
+        let lazy = lazy && backend == Backend::Faer;
+        let trailing = if lazy { &[][..] } else { contact };
+        let mut system = LinearSystem::with_trailing_on(&model, trailing, backend)?;
+        let reach = if lazy {
+            let eqs: Vec<usize> = contact
+                .iter()
+                .filter_map(|&d| system.dofs().equation(d))
+                .collect();
+            system.cholesky().reach(&eqs).map(Box::new)
+        } else {
+            None
+        };
         Ok(Bodies(Kind::Model {
             model: Box::new(model),
             system: Mutex::new(Box::new(system)),
+            reach,
         }))
     }
 
     /// A host's system: checks the nodes (unique ids, finite positions, equations in range and
-    /// used once) and factors a CSR stiffness (the contact equations last).
-    pub fn host(system: HostSystem, backend: Backend) -> Result<Self> {
+    /// used once) and factors a CSR stiffness: the contact equations last (eager), or, when
+    /// `lazy` (faer only), in the plain fill-reducing order with `F` built lazily as for
+    /// [`model`](Self::model).
+    pub fn host(system: HostSystem, backend: Backend, lazy: bool) -> Result<Self> {
         let HostSystem {
             equations,
             nodes,
@@ -392,13 +418,24 @@ impl Bodies {
                     )));
                 }
                 let lower = csr.lower()?;
-                let trailing: Vec<usize> = nodes
+                let contact: Vec<usize> = nodes
                     .iter()
                     .flat_map(|n| n.equations.into_iter().flatten())
                     .collect();
-                let mut factor = SparseCholesky::analyze(lower.symbolic(), backend, &trailing)?;
+                let lazy = lazy && backend == Backend::Faer;
+                let trailing = if lazy { &[][..] } else { &contact[..] };
+                let mut factor = SparseCholesky::analyze(lower.symbolic(), backend, trailing)?;
                 factor.factorize(lower.as_ref())?;
-                HostSolver::Factor { factor, lower }
+                let reach = if lazy {
+                    factor.reach(&contact).map(Box::new)
+                } else {
+                    None
+                };
+                HostSolver::Factor {
+                    factor: Box::new(factor),
+                    lower,
+                    reach,
+                }
             }
             HostStiffness::Solver(s) => HostSolver::Callback(s),
         };
@@ -508,6 +545,10 @@ impl Bodies {
     /// to the factorization as trailing unknowns): read off the factor, or assembled from
     /// batched host solves with unit right-hand sides. Zero rows and columns at fixed dofs.
     pub fn flexibility(&mut self, dofs: &[usize]) -> Result<DMatrix<f64>> {
+        if self.lazy_flexibility() {
+            let units: Vec<Vec<(usize, f64)>> = (0..dofs.len()).map(|j| vec![(j, 1.0)]).collect();
+            return self.flexibility_times(dofs, &units);
+        }
         let free: Vec<usize> = (0..dofs.len()).filter(|&i| self.is_free(dofs[i])).collect();
         let condensed = match &mut self.0 {
             Kind::Model { system, .. } => unlocked(system).condensed_flexibility()?,
@@ -531,13 +572,120 @@ impl Bodies {
         Ok(flex)
     }
 
+    /// Whether `F` is built as the iteration asks for it
+    /// ([`flexibility_times`](Self::flexibility_times)): through a host's solve callback, or
+    /// from a factor in the plain fill-reducing order. Otherwise the factor gives all of `F`
+    /// at once ([`flexibility`](Self::flexibility)).
+    pub fn lazy_flexibility(&self) -> bool {
+        match &self.0 {
+            Kind::Model { reach, .. } => reach.is_some(),
+            Kind::Host(h) => match &*lock(&h.solver) {
+                HostSolver::Factor { reach, .. } => reach.is_some(),
+                HostSolver::Callback(_) => true,
+            },
+        }
+    }
+
+    /// `F V = E^T K^-1 E V` over the dofs `dofs` (iteration numbering) for the columns `V`
+    /// given sparse over positions in `dofs` (`dofs.len() x vectors.len()`): one right-hand
+    /// side `E v` per column, solved in batches of `CALLBACK_BATCH`, through the host's
+    /// callback (whole solves) or by substitution within the reach of the contact dofs
+    /// ([`SparseCholesky::solve_within`]); read from the whole `F` of an eager factor. Rows at
+    /// fixed dofs are zero, and fixed dofs of `v` are ignored.
+    pub fn flexibility_times(
+        &mut self,
+        dofs: &[usize],
+        vectors: &[Vec<(usize, f64)>],
+    ) -> Result<DMatrix<f64>> {
+        let mut out = DMatrix::zeros(dofs.len(), vectors.len());
+        if !self.lazy_flexibility() {
+            let all = self.flexibility(dofs)?;
+            for (c, v) in vectors.iter().enumerate() {
+                for &(j, w) in v {
+                    for i in 0..dofs.len() {
+                        out[(i, c)] += w * all[(i, j)];
+                    }
+                }
+            }
+            return Ok(out);
+        }
+        // the equation of each dof and the solver
+        let rows: Vec<Option<usize>> = dofs.iter().map(|&d| self.equation(d)).collect();
+        let (solver, reach, n): (Solver<'_>, Option<&Reach>, usize) = match &mut self.0 {
+            Kind::Model { system, reach, .. } => {
+                let system = unlocked(system);
+                let n = system.dofs().n_free();
+                (Solver::Factor(system.cholesky()), reach.as_deref(), n)
+            }
+            Kind::Host(h) => match unlocked(&mut h.solver) {
+                HostSolver::Factor { factor, reach, .. } => (
+                    Solver::Factor(factor.as_mut()),
+                    reach.as_deref(),
+                    h.equations,
+                ),
+                HostSolver::Callback(s) => (Solver::Callback(s.as_mut()), None, h.equations),
+            },
+        };
+        // the rows of a right-hand side: compact rows of the reach, or the equations
+        let row = |e: usize| match reach {
+            Some(r) => r.row(e).expect("the contact equations are in their reach"),
+            None => e,
+        };
+        let len = reach.map_or(n, |r| r.len());
+        let batch = CALLBACK_BATCH.min((4 << 20) / len.max(1)).max(1);
+        let mut solver = solver;
+        for start in (0..vectors.len()).step_by(batch) {
+            let cols = batch.min(vectors.len() - start);
+            let mut rhs = Mat::<f64>::zeros(len, cols);
+            for c in 0..cols {
+                for &(j, w) in &vectors[start + c] {
+                    if let Some(e) = rows[j] {
+                        rhs[(row(e), c)] += w;
+                    }
+                }
+            }
+            match &mut solver {
+                Solver::Factor(f) => match reach {
+                    Some(r) => f.solve_within(r, rhs.as_mut())?,
+                    None => f.solve_in_place(rhs.as_mut())?,
+                },
+                Solver::Callback(s) => {
+                    let b: Vec<f64> = (0..cols)
+                        .flat_map(|c| (0..len).map(move |i| (i, c)))
+                        .map(|(i, c)| rhs[(i, c)])
+                        .collect();
+                    let mut x = vec![0.0; len * cols];
+                    checked_solve(&mut **s, cols, &b, &mut x)?;
+                    rhs = Mat::from_fn(len, cols, |i, c| x[c * len + i]);
+                }
+            }
+            for c in 0..cols {
+                for (i, e) in rows.iter().enumerate() {
+                    if let Some(e) = e {
+                        out[(i, start + c)] = rhs[(row(*e), c)];
+                    }
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The equation of dof `d` (iteration numbering) in `K`: a model's free-dof numbering or
+    /// the host's equation; `None` at a fixed dof.
+    fn equation(&self, d: usize) -> Option<usize> {
+        match &self.0 {
+            Kind::Model { system, .. } => lock(system).dofs().equation(d),
+            Kind::Host(h) => h.nodes.get(d / 2).and_then(|n| n.equations[d % 2]),
+        }
+    }
+
     /// The displacement field for loads `f` (and, for a model, prescribed values `qp`, read at
     /// the prescribed dofs): one solve.
     /// Solves are serialized by a lock, so this takes `&self`.
     pub fn solve(&self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
         let n = self.field_len();
         match &self.0 {
-            Kind::Model { model, system } => Ok(lock(system).solve_for(model, f, qp)?.q),
+            Kind::Model { model, system, .. } => Ok(lock(system).solve_for(model, f, qp)?.q),
             Kind::Host(h) => {
                 if f.len() != n || !qp.is_empty() {
                     return Err(Error::InvalidInput(format!(
@@ -600,9 +748,9 @@ impl Bodies {
     /// factor. Only the benchmark's refactor-every-iteration variant does this.
     pub fn refactorize(&mut self) -> Result<()> {
         match &mut self.0 {
-            Kind::Model { model, system } => unlocked(system).refactorize(model),
+            Kind::Model { model, system, .. } => unlocked(system).refactorize(model),
             Kind::Host(h) => match unlocked(&mut h.solver) {
-                HostSolver::Factor { factor, lower } => factor.factorize(lower.as_ref()),
+                HostSolver::Factor { factor, lower, .. } => factor.factorize(lower.as_ref()),
                 HostSolver::Callback(_) => Ok(()),
             },
         }
@@ -615,6 +763,12 @@ impl Bodies {
             Kind::Host(_) => [0.0; 2],
         }
     }
+}
+
+/// Who solves with `K` for [`Bodies::flexibility_times`].
+enum Solver<'a> {
+    Factor(&'a mut SparseCholesky),
+    Callback(&'a mut dyn HostSolve),
 }
 
 /// A host solve with its output checked for finiteness.

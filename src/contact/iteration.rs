@@ -23,9 +23,14 @@
 //!
 //! Columns of `Gc` live on the contact nodes' dofs only, so `K^-1` is needed only there: the
 //! contact-boundary flexibility `F = E^T K^-1 E` (`E` selects the free dofs of the contact
-//! nodes) is read off the factor once per analysis: with those dofs eliminated last,
-//! `F = (L22 L22^T)^-1` from the trailing block of `L` (no solves), and every iteration is
-//! small dense algebra: `S t = rows . (b - u0)` with `S = rows^T F cols`. The load solve
+//! nodes). Under small kinematics `K` is factored in its plain fill-reducing order and `F` is
+//! built only where the iteration needs it: the responses `F v` of each A node's directions
+//! `v` (normal and tangent rows) when the node first becomes active, by substitution within
+//! the contact dofs' elimination-tree reach (or through a host's solve callback), kept with the
+//! node flexibility `N_ab = v_a^T F v_b`. Under finite kinematics the contact dofs are
+//! eliminated last and all of `F = (L22 L22^T)^-1` is read off the trailing block of `L` (no
+//! solves). Every iteration is small dense algebra (`boundary.rs`):
+//! `S t = rows . (b - u0)` with `S = rows^T F cols`. The load solve
 //! `u0` is reused when a load is a combination of earlier ones, and the full displacement
 //! field is recovered only when asked for (one solve).
 //!
@@ -63,16 +68,19 @@ use crate::assembly::dof;
 use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
+use faer::Mat;
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
 mod active_set;
+mod boundary;
 mod checks;
 mod loads;
 mod plate;
 mod results;
 mod small_system;
 use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
+use boundary::{Flexibility, NodeFlexibility};
 pub use checks::SMALL_SLIDING_LIMIT;
 use checks::change_ratio;
 pub use loads::LOAD_LIMIT;
@@ -426,7 +434,8 @@ pub struct Timings {
     pub assembly: f64,
     /// Symbolic analysis and numeric factorization of `K` (once per analysis).
     pub factorization: f64,
-    /// Contact-boundary flexibility `F`, read off the factor's trailing block (once per analysis).
+    /// Contact-boundary flexibility `F`: the responses of node directions as they become active
+    /// (small kinematics), or all of `F` read off the factor's trailing block once (finite).
     pub flexibility: f64,
     /// The load solves `u0 = K^-1 (f - K_fp q_p)`, one per increment.
     pub load_solves: f64,
@@ -501,8 +510,15 @@ pub struct ContactAnalysis {
     dofs: Vec<usize>,
     /// Position of each global dof in `dofs` (`None`: not a contact dof).
     slot: Vec<Option<usize>>,
-    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs).
-    flexibility: DMatrix<f64>,
+    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
+    /// built when first needed (all at once from a factor; a host callback's as nodes become
+    /// active).
+    flexibility: Flexibility,
+    /// Under small kinematics, the node flexibility of the directions that have been active.
+    node_flexibility: NodeFlexibility,
+    /// Iterate on the dense reference algebra (see
+    /// [`ContactAnalysis::set_reference_algebra`]).
+    reference_algebra: bool,
     /// Converged displacement of the contact dofs (`dofs` order).
     qc: Vec<f64>,
     /// Factor `K` again in every iteration (a benchmark's control, see
@@ -558,8 +574,10 @@ impl std::fmt::Debug for ContactAnalysis {
 }
 
 impl ContactAnalysis {
-    /// Validate, factor `K` once (the contact nodes' dofs eliminated last) and read the
-    /// contact-boundary flexibility `F` off the factor's trailing block.
+    /// Validate and factor `K` once: in its fill-reducing order under small kinematics (the
+    /// flexibility `F` is then built as nodes become active), with the contact nodes' dofs
+    /// eliminated last under finite kinematics (all of `F` read off the factor's trailing
+    /// block).
     pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
         options.validate()?;
         for (i, pair) in pairs.iter().enumerate() {
@@ -572,14 +590,16 @@ impl ContactAnalysis {
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
-        let bodies = Bodies::model(model, &dofs, options.backend)?;
+        let lazy = options.kinematics == Kinematics::Small;
+        let bodies = Bodies::model(model, &dofs, options.backend, lazy)?;
         Self::setup(bodies, pairs, dofs, options)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
-    /// the pairs use), and its stiffness, as a CSR matrix that is factored here (once, the
-    /// contact equations last) or as a solve callback (`F` is then built from batched solves
-    /// with unit right-hand sides). Loads are the host's right-hand sides
+    /// the pairs use), and its stiffness, as a CSR matrix that is factored here (once; as for
+    /// [`new`](Self::new)) or as a solve callback (the responses `F v` then come from batched
+    /// callback solves, one column per node direction that becomes active, or per contact dof
+    /// an active node touches under finite kinematics). Loads are the host's right-hand sides
     /// ([`increment`](Self::increment) with empty `qp`), displacements its equations.
     pub fn host(
         system: HostSystem,
@@ -591,7 +611,8 @@ impl ContactAnalysis {
             pair.check().map_err(|e| in_pair(i, e))?;
         }
         let clock = std::time::Instant::now();
-        let bodies = Bodies::host(system, options.backend)?;
+        let lazy = options.kinematics == Kinematics::Small;
+        let bodies = Bodies::host(system, options.backend, lazy)?;
         let seconds = clock.elapsed().as_secs_f64();
         let n_nodes = bodies.positions().len();
         check_host_nodes(&pairs, &bodies)?;
@@ -626,7 +647,11 @@ impl ContactAnalysis {
         let mut timings = Timings::default();
         [timings.assembly, timings.factorization] = bodies.setup_seconds();
         let clock = std::time::Instant::now();
-        let flexibility = bodies.flexibility(&dofs)?;
+        let flexibility = if bodies.lazy_flexibility() {
+            Flexibility::lazy(dofs.len())
+        } else {
+            Flexibility::full(bodies.flexibility(&dofs)?)
+        };
         timings.flexibility = clock.elapsed().as_secs_f64();
         let reference = evaluate_pairs(&pairs, bodies.positions(), options.search_distance)?;
         for (i, pair) in pairs.iter().enumerate() {
@@ -649,8 +674,11 @@ impl ContactAnalysis {
                 ]
             })
             .collect();
-        Ok(ContactAnalysis {
+        let node_flexibility = NodeFlexibility::new(pairs.iter().map(|p| p.a.len()));
+        let mut analysis = ContactAnalysis {
             qc: vec![0.0; dofs.len()],
+            node_flexibility,
+            reference_algebra: false,
             settled: None,
             refactor_each_iteration: false,
             largest_motion: 0.0,
@@ -675,7 +703,15 @@ impl ContactAnalysis {
             timings,
             plate: None,
             monitor: Mutex::new(None),
-        })
+        };
+        if !analysis.flexibility.is_full() {
+            let clock = std::time::Instant::now();
+            let before = analysis.timings.flexibility;
+            analysis.prime()?;
+            // (node directions time themselves; columns through ensure_columns too)
+            analysis.timings.flexibility = before + clock.elapsed().as_secs_f64();
+        }
+        Ok(analysis)
     }
 
     /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
@@ -973,32 +1009,47 @@ impl ContactAnalysis {
         let mut records = Vec::new();
         // time of the refactor-every-iteration variant, counted as factorization
         let mut refactoring = 0.0;
+        // columns of a lazy F built during the iteration count as flexibility
+        let flexibility_before = self.timings.flexibility;
         for iteration in 1..=self.options.max_iterations {
             if self.refactor_each_iteration && iteration > 1 {
                 let clock = std::time::Instant::now();
                 self.bodies.refactorize()?;
-                self.flexibility = self.bodies.flexibility(&self.dofs)?;
+                self.flexibility = if self.bodies.lazy_flexibility() {
+                    Flexibility::lazy(self.dofs.len())
+                } else {
+                    Flexibility::full(self.bodies.flexibility(&self.dofs)?)
+                };
+                self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
                 refactoring += clock.elapsed().as_secs_f64();
             }
             let states = set.states();
             let system = self.build_system(&surfaces, states, &uc, &startc)?;
-            let (tau, plate_motion, condition) =
-                system.solve(&u0c, &self.flexibility, border.as_ref())?;
-            let forces = system.forces(&tau, self.dofs.len());
-            // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
-            let mut uc_new = u0c.clone();
-            for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
-                for (u, c) in uc_new.iter_mut().zip(column(&self.flexibility, j)) {
-                    *u += c * fj;
-                }
-            }
-            if let Some(b) = &border {
-                for (&d, &m) in b.directions.iter().zip(&plate_motion) {
-                    for (u, w) in uc_new.iter_mut().zip(&b.response[d]) {
-                        *u += m * w;
+            let (tau, plate_motion, uc_new, condition) = if self.reference_algebra {
+                let (tau, plate_motion, condition) =
+                    system.solve(&u0c, &self.flexibility.matrix, border.as_ref())?;
+                let forces = system.forces(&tau, self.dofs.len());
+                // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
+                let mut uc_new = u0c.clone();
+                for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
+                    for (u, c) in uc_new.iter_mut().zip(self.flexibility.column(j)) {
+                        *u += c * fj;
                     }
                 }
-            }
+                if let Some(b) = &border {
+                    for (&d, &m) in b.directions.iter().zip(&plate_motion) {
+                        for (u, w) in uc_new.iter_mut().zip(&b.response[d]) {
+                            *u += m * w;
+                        }
+                    }
+                }
+                (tau, plate_motion, uc_new, condition)
+            } else {
+                let (tau, plate_motion, condition, uc_new) =
+                    self.solve_boundary(&system, &u0c, border.as_ref())?;
+                (tau, plate_motion, uc_new, condition)
+            };
+            let forces = system.forces(&tau, self.dofs.len());
             finite(&uc_new, number, iteration)?;
             self.update_geometry(&mut surfaces, &uc_new, &startc)?;
             let tractions = system.tractions(&tau, states, &self.laws);
@@ -1043,7 +1094,9 @@ impl ContactAnalysis {
                 self.edge_penetration(number, &surfaces, set.locked_open(), &uc, &startc)?;
                 self.small_sliding(number, states, &uc)?;
                 self.timings.factorization += refactoring;
-                self.timings.iterations += clock.elapsed().as_secs_f64() - refactoring;
+                self.timings.iterations += clock.elapsed().as_secs_f64()
+                    - refactoring
+                    - (self.timings.flexibility - flexibility_before);
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
                     let directions = border.as_ref().map_or(&[][..], |b| &b.directions[..]);

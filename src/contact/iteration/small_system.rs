@@ -54,8 +54,8 @@ pub(super) fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<
 /// Which row of a node an unknown belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Row {
-    Normal,
-    Tangent,
+    Normal = 0,
+    Tangent = 1,
 }
 
 /// A sparse vector over the contact dofs: `(slot, value)`.
@@ -71,6 +71,10 @@ pub(super) struct SmallSystem {
     pub(super) cols: Vec<Sparse>,
     /// Right-hand sides `b`.
     pub(super) b: Vec<f64>,
+    /// Each force column as a combination of node directions:
+    /// `col_j = sum coefficient * (d . c_k)` over `(pair, A node, direction, coefficient)`,
+    /// `d` the node's normal (`Row::Normal`) or tangent (`Row::Tangent`).
+    pub(super) basis: Vec<Vec<(usize, usize, Row, f64)>>,
 }
 
 /// Column `j` of a dense matrix as a slice (column-major storage).
@@ -227,6 +231,7 @@ impl ContactAnalysis {
             rows: Vec::new(),
             cols: Vec::new(),
             b: Vec::new(),
+            basis: Vec::new(),
         };
         for (p, surface) in surfaces.iter().enumerate() {
             let law = &*self.laws[p];
@@ -239,18 +244,19 @@ impl ContactAnalysis {
                 let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
                 let b = dot(&normal, uc) - rg;
                 let tangent = || self.directed(&node.coupling, node.tangent);
-                let col = match state {
+                let (col, basis) = match state {
                     NodeState::Slip { sign } if !law.is_frictionless() => {
                         let mut c = normal.clone();
                         let w = law.slip_coefficient(sign);
                         c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
-                        c
+                        (c, vec![(p, k, Row::Normal, 1.0), (p, k, Row::Tangent, w)])
                     }
-                    _ => normal.clone(),
+                    _ => (normal.clone(), vec![(p, k, Row::Normal, 1.0)]),
                 };
                 sys.unknowns.push((p, k, Row::Normal));
                 sys.rows.push(normal);
                 sys.cols.push(col);
+                sys.basis.push(basis);
                 sys.b.push(b);
                 if state == NodeState::Stick {
                     let t = tangent();
@@ -258,6 +264,7 @@ impl ContactAnalysis {
                     sys.b.push(dot(&t, startc));
                     sys.rows.push(t.clone());
                     sys.cols.push(t);
+                    sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
                 }
             }
         }
