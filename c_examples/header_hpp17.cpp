@@ -145,7 +145,10 @@ int main() {
     auto contact = hycon::Contact::create(*host, options);
     host = hycon::Result<hycon::Host>(hycon::Host());  // the analysis keeps its own copy
     expect(static_cast<bool>(contact), "contact analysis from the host");
-    expect(solves > 0 && columns >= 8, "the solve lambda built the flexibility");
+    // the flexibility is built as nodes enter: at the start only the nearest A node's
+    // directions, fewer columns than the 8 contact dofs
+    expect(solves > 0 && columns >= 1 && columns < 8,
+           "the solve lambda gave the first node's flexibility columns");
     std::vector<double> load(8, 0.0);
     load[5] = load[7] = -kPush;
 
