@@ -124,12 +124,7 @@ impl ContactPair {
     /// [`Error::InvalidInput`] naming the node or the segment.
     pub fn check_on(&self, mesh: &crate::mesh::Mesh) -> Result<()> {
         self.check_friction()?;
-        let edges: std::collections::HashSet<(usize, usize)> = (0..mesh.n_elements())
-            .flat_map(|e| {
-                let nodes = mesh.element(e);
-                (0..nodes.len()).map(move |i| (nodes[i], nodes[(i + 1) % nodes.len()]))
-            })
-            .collect();
+        let edges = mesh.directed_edges();
         for (ids, side) in [(&self.a, "A"), (&self.b, "B")] {
             check_chain(ids, side)?;
             if let Some(&bad) = ids.iter().find(|&&i| i >= mesh.n_nodes()) {
@@ -138,7 +133,7 @@ impl ContactPair {
                     mesh.n_nodes()
                 )));
             }
-            if let Some(w) = ids.windows(2).find(|w| !edges.contains(&(w[0], w[1]))) {
+            if let Some(w) = ids.windows(2).find(|w| !edges.contains_key(&(w[0], w[1]))) {
                 return Err(Error::InvalidInput(format!(
                     "the {side} polyline is not a chain of element edges with the body on the \
                      left: {} -> {} is not an edge of any element in counter-clockwise order",

@@ -55,6 +55,20 @@ impl Mesh {
         &self.element_nodes[self.element_offsets[e]..self.element_offsets[e + 1]]
     }
 
+    /// Every element edge in its element's counter-clockwise order, `(from, to)` node ids
+    /// mapped to `(element, local edge)` (edge `i` runs from local node `i` to `i + 1`): the
+    /// element lies on the left of `from -> to`.
+    pub fn directed_edges(&self) -> std::collections::HashMap<(usize, usize), (usize, usize)> {
+        let mut edges = std::collections::HashMap::new();
+        for e in 0..self.n_elements() {
+            let nodes = self.element(e);
+            for i in 0..nodes.len() {
+                edges.insert((nodes[i], nodes[(i + 1) % nodes.len()]), (e, i));
+            }
+        }
+        edges
+    }
+
     /// Append a node, returning its index.
     pub fn push_node(&mut self, xy: [f64; 2]) -> usize {
         self.nodes.push(xy);

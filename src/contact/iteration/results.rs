@@ -117,13 +117,7 @@ impl ContactAnalysis {
                 })
             })
             .collect::<Result<Vec<usize>>>()?;
-        let mut edges = std::collections::HashMap::new();
-        for e in 0..model.mesh.n_elements() {
-            let nodes = model.mesh.element(e);
-            for i in 0..nodes.len() {
-                edges.insert((nodes[i], nodes[(i + 1) % nodes.len()]), (e, i));
-            }
-        }
+        let edges = model.mesh.directed_edges();
         let solution = crate::model::Solution { q };
         let mut sums = vec![([0.0; 2], 0.0); a.len()];
         for (k, w) in a.windows(2).enumerate() {
