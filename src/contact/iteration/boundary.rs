@@ -11,7 +11,7 @@
 
 use super::*;
 use faer::linalg::solvers::{Llt, PartialPivLu, Solve};
-use small_system::{Row, SmallSystem};
+use small_system::{Row, SmallSystem, singular};
 
 /// The flexibility `F = E^T K^-1 E` over the contact dofs, column by column: a column is
 /// either known (computed once, then kept) or not yet asked for.
@@ -413,35 +413,14 @@ impl ContactAnalysis {
             rhs[(i, 0)] = b - dot(row, u0c);
         }
         if let Some(b) = border {
-            if let Some(d) = b.unheld(&system.rows) {
-                return Err(Error::Singular(format!(
-                    "the plate's {} translation is force-controlled but no constraint of the \
-                     contact set acts along it (open nodes resist nothing; frictionless and \
-                     slipping nodes do not resist tangential motion): control it by \
-                     displacement",
-                    ["x", "y"][d]
-                )));
-            }
-            for (a, &d) in b.directions.iter().enumerate() {
-                for (i, row) in system.rows.iter().enumerate() {
-                    s[(i, m + a)] = dot(row, &b.response[d]);
-                }
-                for (j, col) in system.cols.iter().enumerate() {
-                    s[(m + a, j)] = -dot(col, &b.response[d]);
-                }
-                for (c, &e) in b.directions.iter().enumerate() {
-                    s[(m + a, m + c)] = b.stiffness[(d, e)];
-                }
-                rhs[(m + a, 0)] = b.rhs[a];
-            }
+            b.fill(
+                &system.rows,
+                &system.cols,
+                m,
+                &mut |i, j, v| s[(i, j)] = v,
+                &mut |i, v| rhs[(i, 0)] = v,
+            )?;
         }
-        let singular = || {
-            Error::Singular(
-                "the contact system is singular: a body held only by contact cannot take \
-                 the load (frictionless contact cannot resist tangential motion)"
-                    .into(),
-            )
-        };
         let s_norm = (0..m + k)
             .map(|j| (0..m + k).map(|i| s[(i, j)].abs()).sum::<f64>())
             .fold(0.0, f64::max);

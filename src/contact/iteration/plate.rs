@@ -95,6 +95,48 @@ pub(super) struct Border {
 }
 
 impl Border {
+    /// The border of the small system for the force-controlled plate directions `a` (plate
+    /// direction `d`), after the `m` contact unknowns with `rows` and `cols`:
+    /// `S[i, m+a] = row_i . w_d`, `S[m+a, j] = -col_j . w_d`, `S[m+a, m+c] = D[d, e]` (the
+    /// plate's stiffness) and `rhs[m+a] = F_d - F0_d`, with `w_d` the contact dofs' response to
+    /// a unit plate translation. Written through `set(i, j, v)` and `set_rhs(i, v)`, so that
+    /// either matrix type takes it.
+    ///
+    /// # Errors
+    /// [`Error::Singular`] when no constraint of the contact set acts along a force-controlled
+    /// direction (see [`unheld`](Self::unheld)).
+    pub(super) fn fill(
+        &self,
+        rows: &[Sparse],
+        cols: &[Sparse],
+        m: usize,
+        set: &mut dyn FnMut(usize, usize, f64),
+        set_rhs: &mut dyn FnMut(usize, f64),
+    ) -> Result<()> {
+        if let Some(d) = self.unheld(rows) {
+            return Err(Error::Singular(format!(
+                "the plate's {} translation is force-controlled but no constraint of the \
+                 contact set acts along it (open nodes resist nothing; frictionless and \
+                 slipping nodes do not resist tangential motion): control it by \
+                 displacement",
+                ["x", "y"][d]
+            )));
+        }
+        for (a, &d) in self.directions.iter().enumerate() {
+            for (i, row) in rows.iter().enumerate() {
+                set(i, m + a, dot(row, &self.response[d]));
+            }
+            for (j, col) in cols.iter().enumerate() {
+                set(m + a, j, -dot(col, &self.response[d]));
+            }
+            for (c, &e) in self.directions.iter().enumerate() {
+                set(m + a, m + c, self.stiffness[(d, e)]);
+            }
+            set_rhs(m + a, self.rhs[a]);
+        }
+        Ok(())
+    }
+
     /// A force-controlled direction is held only if the plate's own stiffness holds it or an
     /// active constraint row sees the plate's motion in it (relative to the sizes of the row
     /// and of the motion); otherwise the bordered system is singular whatever its round-off.

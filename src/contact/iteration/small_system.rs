@@ -120,35 +120,14 @@ impl SmallSystem {
             rhs[i] = b - dot(row, u0);
         }
         if let Some(b) = border {
-            if let Some(d) = b.unheld(&self.rows) {
-                return Err(Error::Singular(format!(
-                    "the plate's {} translation is force-controlled but no constraint of the \
-                     contact set acts along it (open nodes resist nothing; frictionless and \
-                     slipping nodes do not resist tangential motion): control it by \
-                     displacement",
-                    ["x", "y"][d]
-                )));
-            }
-            for (a, &d) in b.directions.iter().enumerate() {
-                for (i, row) in self.rows.iter().enumerate() {
-                    s[(i, m + a)] = dot(row, &b.response[d]);
-                }
-                for (j, col) in self.cols.iter().enumerate() {
-                    s[(m + a, j)] = -dot(col, &b.response[d]);
-                }
-                for (c, &e) in b.directions.iter().enumerate() {
-                    s[(m + a, m + c)] = b.stiffness[(d, e)];
-                }
-                rhs[m + a] = b.rhs[a];
-            }
+            b.fill(
+                &self.rows,
+                &self.cols,
+                m,
+                &mut |i, j, v| s[(i, j)] = v,
+                &mut |i, v| rhs[i] = v,
+            )?;
         }
-        let singular = || {
-            Error::Singular(
-                "the contact system is singular: a body held only by contact cannot take \
-                 the load (frictionless contact cannot resist tangential motion)"
-                    .into(),
-            )
-        };
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
         let s_norm = norm1(&s);
         let lu = s.lu();
@@ -270,6 +249,15 @@ impl ContactAnalysis {
         }
         Ok(sys)
     }
+}
+
+/// The error of a singular small system.
+pub(super) fn singular() -> Error {
+    Error::Singular(
+        "the contact system is singular: a body held only by contact cannot take the load \
+         (frictionless contact cannot resist tangential motion)"
+            .into(),
+    )
 }
 
 #[cfg(test)]
