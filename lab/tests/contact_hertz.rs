@@ -298,3 +298,32 @@ fn hertz_node_to_node() {
         "L2 errors {errors:?} must decrease"
     );
 }
+
+/// A plate translation under force control that no constraint of the contact set resists
+/// (sideways, on frictionless contact) makes the bordered system singular: the increment fails
+/// with `Error::Singular` saying which translation to control by displacement, on both
+/// algebras, and the converged state is kept.
+#[test]
+fn plate_force_control_nothing_resists() {
+    use hycon::contact::iteration::PlateControl;
+    use hycon::error::Error;
+    let scene = DiskOnBlock::default().build().unwrap();
+    for reference in [false, true] {
+        let mut analysis = scene.plate_analysis(ContactOptions::default()).unwrap();
+        analysis.set_reference_algebra(reference).unwrap();
+        let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+        let load = scene.hertz_load();
+        let pressed = [PlateControl::Displacement(0.0), PlateControl::Force(-load)];
+        analysis.increment_with_plate(&f, &f, pressed).unwrap();
+        let before = analysis.node_results(0).unwrap();
+        let sideways = [PlateControl::Force(0.1 * load), PlateControl::Force(-load)];
+        match analysis.increment_with_plate(&f, &f, sideways) {
+            Err(Error::Singular(m)) => assert!(
+                m.contains("x translation is force-controlled") && m.contains("by displacement"),
+                "{m}"
+            ),
+            other => panic!("reference algebra {reference}: {other:?}"),
+        }
+        assert_eq!(analysis.node_results(0).unwrap(), before);
+    }
+}
