@@ -8,12 +8,15 @@
 //! and condition estimates equal to round-off.
 
 use hycon::assembly::{DofMap, SparsePattern, dof};
-use hycon::contact::bodies::{HostNode, HostSolve, HostStiffness, HostSystem};
+use hycon::contact::bodies::{HostNode, HostStiffness, HostSystem};
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult,
 };
 use hycon::solver::{Backend, SparseCholesky};
 use hycon_lab::scene::{DiskOnBlock, Scene};
+
+mod common;
+use common::OwnSolver;
 
 /// Tractions to this fraction of the peak `|tn|`.
 const TRACTIONS: f64 = 1e-10;
@@ -158,28 +161,6 @@ fn cattaneo_mindlin_matches_the_reference() {
     let mut steps = vec![(c, 0.0)];
     steps.extend((1..=10).map(|k| (c, 0.02 * h * k as f64)));
     compare(&scene, options, &steps, "cattaneo-mindlin, mu = 0.3, small");
-}
-
-/// A host's own solver: faer's Cholesky of `K_ff`, counting right-hand sides.
-struct OwnSolver {
-    factor: SparseCholesky,
-    columns: std::sync::Arc<std::sync::atomic::AtomicUsize>,
-}
-
-impl HostSolve for OwnSolver {
-    fn solve(&mut self, nrhs: usize, rhs: &[f64], x: &mut [f64]) -> hycon::Result<()> {
-        let n = rhs.len() / nrhs;
-        let mut b = faer::Mat::from_fn(n, nrhs, |i, j| rhs[j * n + i]);
-        self.factor.solve_in_place(b.as_mut())?;
-        for j in 0..nrhs {
-            for i in 0..n {
-                x[j * n + i] = b[(i, j)];
-            }
-        }
-        self.columns
-            .fetch_add(nrhs, std::sync::atomic::Ordering::Relaxed);
-        Ok(())
-    }
 }
 
 /// Through a solve callback the lazy boundary solves once per node direction that becomes

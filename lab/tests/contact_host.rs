@@ -20,6 +20,9 @@ use hycon::model::Model;
 use hycon::solver::SparseCholesky;
 use hycon_lab::scene::{DiskOnBlock, Scene};
 
+mod common;
+use common::OwnSolver;
+
 const SHIFT: usize = 1000;
 
 /// What the host holds: its numbering, its `K_ff` (lower CSC) and the contact description.
@@ -125,29 +128,6 @@ impl HostSide {
     }
 }
 
-/// A host's own solver: faer's Cholesky of its CSC matrix, counting right-hand sides.
-struct OwnSolver {
-    factor: SparseCholesky,
-    columns: usize,
-    calls: usize,
-}
-
-impl HostSolve for OwnSolver {
-    fn solve(&mut self, nrhs: usize, rhs: &[f64], x: &mut [f64]) -> hycon::Result<()> {
-        let n = rhs.len() / nrhs;
-        let mut b = faer::Mat::from_fn(n, nrhs, |i, j| rhs[j * n + i]);
-        self.factor.solve_in_place(b.as_mut())?;
-        for j in 0..nrhs {
-            for i in 0..n {
-                x[j * n + i] = b[(i, j)];
-            }
-        }
-        self.columns += nrhs;
-        self.calls += 1;
-        Ok(())
-    }
-}
-
 fn shifted(pair: &ContactPair) -> ContactPair {
     ContactPair {
         a: pair.a.iter().map(|n| n + SHIFT).collect(),
@@ -214,8 +194,7 @@ fn host_csr_and_host_solver_match_the_model_path() {
     factor.factorize(host.pattern.matrix()).unwrap();
     let own = OwnSolver {
         factor,
-        columns: 0,
-        calls: 0,
+        columns: Default::default(),
     };
     let mut callback = ContactAnalysis::host(
         host.system(model, &scene.pair, HostStiffness::Solver(Box::new(own))),
