@@ -10,7 +10,8 @@
 //! [`ContactAnalysis::set_reference_algebra`]; the tests compare the two.
 
 use super::*;
-use faer::linalg::solvers::{Llt, PartialPivLu, Solve};
+use faer::Par;
+use faer::linalg::solvers::{PartialPivLu, Solve};
 use small_system::{Row, SmallSystem, singular};
 
 /// The flexibility `F = E^T K^-1 E` over the contact dofs, column by column: a column is
@@ -70,6 +71,8 @@ pub(super) struct NodeFlexibility {
     responses: Vec<Vec<f64>>,
     /// `N_ab` as rows `a`.
     n: Vec<Vec<f64>>,
+    /// The factor of the last symmetric block.
+    kept: KeptFactor,
 }
 
 impl NodeFlexibility {
@@ -110,64 +113,136 @@ impl NodeFlexibility {
 pub(super) type Solution = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
 
 /// A dense factorization of the small system `S`:
-/// * Cholesky `S = L L^T` when `S` is symmetric (no slip node with friction, no plate border:
-///   `rows = cols`, so `S = R^T F R` is symmetric positive definite);
-/// * with slip nodes under friction, block elimination on the symmetric part: the unknowns `P`
-///   whose column is their row (stick rows, normal rows without friction) and the slip normal
-///   unknowns `Q` (column `n + mu sign s`), `S = [S_PP S_PQ; S_QP S_QQ]` with `S_PP` symmetric
-///   positive definite, factored by Cholesky, and the Schur complement
-///   `Z = S_QQ - S_QP S_PP^-1 S_PQ` by LU: `|P|^3 / 3 + |P|^2 |Q| + 2 |Q|^3 / 3` flops
-///   instead of `2 (|P| + |Q|)^3 / 3`;
+/// * block elimination on the symmetric part: the unknowns `P` whose column is their row
+///   (stick rows, normal rows without friction; all of them when there is no slip node under
+///   friction, `S = R^T F R` being then symmetric positive definite) and the slip normal
+///   unknowns `Q` (column `n + mu sign s`), `S = [S_PP S_PQ; S_QP S_QQ]` with
+///   `S_PP = L L^T` by Cholesky and the Schur complement `Z = S_QQ - S_QP S_PP^-1 S_PQ` by LU:
+///   `|P|^3 / 3 + |P|^2 |Q| + 2 |Q|^3 / 3` flops instead of `2 (|P| + |Q|)^3 / 3`, and under
+///   small kinematics much less, as `L` extends the kept factor of an earlier iteration (see
+///   [`KeptFactor`]);
 /// * else (a plate border, or a Cholesky that fails) LU with partial pivoting `P S = L U`.
 enum Dense {
-    Llt(Llt<f64>),
     Lu(PartialPivLu<f64>),
     Block(Box<Blocks>),
 }
 
-/// The block form of [`Dense`].
+/// The block form of [`Dense`]: `p` the symmetric unknowns in the order of `l`
+/// (`S_PP` permuted to that order `= L L^T`).
 struct Blocks {
     p: Vec<usize>,
+    l: Mat<f64>,
+    slip: Option<Slip>,
+}
+
+/// The slip unknowns `Q` of [`Blocks`] and their Schur complement.
+struct Slip {
     q: Vec<usize>,
-    llt: Llt<f64>,
     /// `W = S_PP^-1 S_PQ`.
     w: Mat<f64>,
     s_qp: Mat<f64>,
     z: PartialPivLu<f64>,
 }
 
+/// The Cholesky factor of the symmetric block of the last small system under small kinematics,
+/// kept for the next one. Its entries `N_ab` never change, so when the next system's symmetric
+/// unknowns begin with the same directions `keys[..p]`, the leading `p x p` block of `l` is
+/// theirs: only the rows of the new and reordered unknowns are computed
+/// ([`cholesky_extending`]). Between iterations the contact set changes at the zone's edges,
+/// so the unknowns are ordered with those of the kept factor first and new ones by distance
+/// from the zone's centre ([`ContactAnalysis::factor_order`]).
+#[derive(Debug, Clone)]
+pub(super) struct KeptFactor {
+    /// The direction (node-flexibility index) of each row of `l`.
+    keys: Vec<usize>,
+    l: Mat<f64>,
+}
+
+impl Default for KeptFactor {
+    fn default() -> Self {
+        KeptFactor {
+            keys: Vec::new(),
+            l: Mat::new(),
+        }
+    }
+}
+
+impl KeptFactor {
+    /// How many leading directions of `order` (node-flexibility indices) the kept factor
+    /// shares with it.
+    fn common_prefix(&self, order: &[usize]) -> usize {
+        self.keys
+            .iter()
+            .zip(order)
+            .take(self.l.nrows())
+            .take_while(|(a, b)| a == b)
+            .count()
+    }
+}
+
+/// The lower Cholesky factor `L` of the symmetric positive definite `A` (`n x n`, the entry
+/// `a(i, j)` read for `j <= i` only) whose leading `p x p` block `A11 = L11 L11^T` is already
+/// factored (`l11`, `p` its order): `L21 = A21 L11^-T` by one triangular solve and
+/// `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) - ...` flops instead of
+/// `n^3 / 3` when few unknowns are new. `None` when `A` is not numerically positive definite.
+fn cholesky_extending(
+    l11: faer::MatRef<'_, f64>,
+    n: usize,
+    a: impl Fn(usize, usize) -> f64,
+) -> Option<Mat<f64>> {
+    use faer::linalg::matmul::matmul;
+    use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+    let p = l11.nrows();
+    let r = n - p;
+    let mut l = Mat::<f64>::zeros(n, n);
+    l.as_mut().submatrix_mut(0, 0, p, p).copy_from(l11);
+    if r == 0 {
+        return Some(l);
+    }
+    // L21^T = L11^-1 A21^T
+    let mut l21t = Mat::<f64>::from_fn(p, r, |i, j| a(p + j, i));
+    solve_lower_triangular_in_place(l11, l21t.as_mut(), Par::Seq);
+    let mut a22 = Mat::<f64>::from_fn(r, r, |i, j| a(p + i.max(j), p + i.min(j)));
+    matmul(
+        a22.as_mut(),
+        faer::Accum::Add,
+        l21t.transpose(),
+        l21t.as_ref(),
+        -1.0,
+        Par::Seq,
+    );
+    let l22 = a22.llt(faer::Side::Lower).ok()?;
+    l.as_mut()
+        .submatrix_mut(p, 0, r, p)
+        .copy_from(l21t.transpose());
+    l.as_mut().submatrix_mut(p, p, r, r).copy_from(l22.L());
+    Some(l)
+}
+
 impl Dense {
-    /// `S` factored; `q` lists the unknowns whose column is not their row (empty: `S` is
-    /// symmetric), `border` whether `S` is bordered by plate rows.
-    fn new(s: Mat<f64>, q: Vec<usize>, border: bool) -> Self {
-        let n = s.nrows();
-        if !border && q.is_empty() {
-            if let Ok(llt) = s.llt(faer::Side::Lower) {
-                return Dense::Llt(llt);
-            }
-        } else if !border && q.len() < n {
-            let mut in_q = vec![false; n];
-            q.iter().for_each(|&i| in_q[i] = true);
-            let p: Vec<usize> = (0..n).filter(|&i| !in_q[i]).collect();
+    /// `S` factored; `p` the symmetric unknowns in the order of their factor `l` (`None`: not
+    /// factored yet, or not symmetric positive definite), `q` the unknowns whose column is not
+    /// their row, `border` whether `S` is bordered by plate rows.
+    fn new(s: &Mat<f64>, symmetric: Option<(Vec<usize>, Mat<f64>)>, q: Vec<usize>) -> Self {
+        let Some((p, l)) = symmetric else {
+            return Dense::Lu(s.partial_piv_lu());
+        };
+        let slip = (!q.is_empty()).then(|| {
             let sub = |r: &[usize], c: &[usize]| {
                 Mat::<f64>::from_fn(r.len(), c.len(), |i, j| s[(r[i], c[j])])
             };
-            if let Ok(llt) = sub(&p, &p).llt(faer::Side::Lower) {
-                let mut w = sub(&p, &q);
-                llt.solve_in_place(w.as_mut());
-                let s_qp = sub(&q, &p);
-                let z = sub(&q, &q) - &s_qp * &w;
-                return Dense::Block(Box::new(Blocks {
-                    z: z.partial_piv_lu(),
-                    p,
-                    q,
-                    llt,
-                    w,
-                    s_qp,
-                }));
+            let mut w = sub(&p, &q);
+            cholesky_solve(&l, w.as_mut());
+            let s_qp = sub(&q, &p);
+            let z = sub(&q, &q) - &s_qp * &w;
+            Slip {
+                z: z.partial_piv_lu(),
+                q,
+                w,
+                s_qp,
             }
-        }
-        Dense::Lu(s.partial_piv_lu())
+        });
+        Dense::Block(Box::new(Blocks { p, l, slip }))
     }
 
     /// `x <- S^-1 x`, or `S^-T x` when `transpose`. For the block form,
@@ -175,44 +250,61 @@ impl Dense {
     /// `S^-T x`: `y = S_PP^-1 x_P`, `x_Q <- Z^-T (x_Q - W^T x_P)`,
     /// `x_P <- y - S_PP^-1 S_QP^T x_Q` (`S_PQ^T S_PP^-1 = W^T`).
     fn solve(&self, mut x: faer::MatMut<'_, f64>, transpose: bool) {
-        match (self, transpose) {
-            (Dense::Llt(f), _) => f.solve_in_place(x),
-            (Dense::Lu(f), false) => f.solve_in_place(x),
-            (Dense::Lu(f), true) => f.solve_transpose_in_place(x),
-            (Dense::Block(b), _) => {
-                let Blocks {
-                    p,
-                    q,
-                    llt,
-                    w,
-                    s_qp,
-                    z,
-                } = b.as_ref();
+        match self {
+            Dense::Lu(f) if transpose => f.solve_transpose_in_place(x),
+            Dense::Lu(f) => f.solve_in_place(x),
+            Dense::Block(b) => {
+                let Blocks { p, l, slip } = b.as_ref();
                 let k = x.ncols();
                 let xp = Mat::<f64>::from_fn(p.len(), k, |i, j| x[(p[i], j)]);
-                let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
                 let mut y = xp.clone();
-                llt.solve_in_place(y.as_mut());
+                cholesky_solve(l, y.as_mut());
+                let Some(Slip { q, w, s_qp, z }) = slip else {
+                    scatter(&y, p, x.as_mut());
+                    return;
+                };
+                let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
                 let (out_p, out_q) = if transpose {
                     let mut rq = xq - w.transpose() * &xp;
                     z.solve_transpose_in_place(rq.as_mut());
                     let mut back = s_qp.transpose() * &rq;
-                    llt.solve_in_place(back.as_mut());
+                    cholesky_solve(l, back.as_mut());
                     (y - back, rq)
                 } else {
                     let mut rq = xq - s_qp * &y;
                     z.solve_in_place(rq.as_mut());
                     (y - w * &rq, rq)
                 };
-                for j in 0..k {
-                    for (i, &r) in p.iter().enumerate() {
-                        x[(r, j)] = out_p[(i, j)];
-                    }
-                    for (i, &r) in q.iter().enumerate() {
-                        x[(r, j)] = out_q[(i, j)];
-                    }
-                }
+                scatter(&out_p, p, x.as_mut());
+                scatter(&out_q, q, x);
             }
+        }
+    }
+}
+
+/// Column `j` of `s` as a slice.
+fn col_slice(s: &mut Mat<f64>, j: usize) -> &mut [f64] {
+    s.as_mut()
+        .col_mut(j)
+        .try_as_col_major_mut()
+        .expect("a Mat's columns are contiguous")
+        .as_slice_mut()
+}
+
+/// `x <- (L L^T)^-1 x` for a lower triangular `l`.
+fn cholesky_solve(l: &Mat<f64>, mut x: faer::MatMut<'_, f64>) {
+    use faer::linalg::triangular_solve::{
+        solve_lower_triangular_in_place, solve_upper_triangular_in_place,
+    };
+    solve_lower_triangular_in_place(l.as_ref(), x.as_mut(), Par::Seq);
+    solve_upper_triangular_in_place(l.transpose(), x, Par::Seq);
+}
+
+/// `x[rows[i], j] = v[i, j]`.
+fn scatter(v: &Mat<f64>, rows: &[usize], mut x: faer::MatMut<'_, f64>) {
+    for j in 0..v.ncols() {
+        for (i, &r) in rows.iter().enumerate() {
+            x[(r, j)] = v[(i, j)];
         }
     }
 }
@@ -360,6 +452,79 @@ impl ContactAnalysis {
         Ok((rows, cols))
     }
 
+    /// The symmetric unknowns `symmetric` (indices into `system.unknowns`, `rows` their
+    /// directions) in the order of their Cholesky factor, and the factor of `S_PP` in that
+    /// order (`S_PP,ij = N_(a_i, a_j)`), extending the kept factor over the directions it
+    /// shares with them (see [`KeptFactor`]), which it then replaces. `None` when `S_PP` is not
+    /// numerically positive definite.
+    fn symmetric_factor(
+        &mut self,
+        system: &SmallSystem,
+        rows: &[usize],
+        symmetric: Vec<usize>,
+    ) -> Option<(Vec<usize>, Mat<f64>)> {
+        let order = self.factor_order(system, rows, symmetric);
+        let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
+        let nf = &mut self.node_flexibility;
+        let prefix = nf.kept.common_prefix(&keys);
+        let kept = std::mem::replace(&mut nf.kept.l, Mat::new());
+        let n = &nf.n;
+        let l = cholesky_extending(
+            kept.as_ref().submatrix(0, 0, prefix, prefix),
+            keys.len(),
+            |i, j| n[keys[i]][keys[j]],
+        );
+        // the factor itself comes back after the solve (see `solve_boundary`)
+        nf.kept.keys = keys;
+        l.map(|l| (order, l))
+    }
+
+    /// The order in which the symmetric unknowns `symmetric` (indices into `system.unknowns`,
+    /// `rows` their directions) are factored: those the kept factor has, in its order (its
+    /// leading block up to the first one missing is then reused), followed by the new ones by
+    /// distance of their node from the centroid of the pair's kept ones (of all its symmetric
+    /// ones when none is kept), nearest first, so that the next change at the zone's edges
+    /// falls near the end.
+    fn factor_order(
+        &self,
+        system: &SmallSystem,
+        rows: &[usize],
+        symmetric: Vec<usize>,
+    ) -> Vec<usize> {
+        let kept = &self.node_flexibility.kept.keys;
+        let mut rank = vec![usize::MAX; self.node_flexibility.n.len()];
+        kept.iter().enumerate().for_each(|(r, &a)| rank[a] = r);
+        let (mut old, mut new): (Vec<usize>, Vec<usize>) = symmetric
+            .into_iter()
+            .partition(|&i| rank[rows[i]] != usize::MAX);
+        old.sort_unstable_by_key(|&i| rank[rows[i]]);
+        let x = self.bodies.positions();
+        let position = |i: usize| {
+            let (p, k, _) = system.unknowns[i];
+            x[self.pairs[p].a[k]]
+        };
+        let pair = |i: usize| system.unknowns[i].0;
+        let mut has_old = vec![false; self.pairs.len()];
+        old.iter().for_each(|&i| has_old[pair(i)] = true);
+        let mut centroids = vec![([0.0; 2], 0usize); self.pairs.len()];
+        for &i in old.iter().chain(new.iter().filter(|&&i| !has_old[pair(i)])) {
+            let ((c, count), y) = (&mut centroids[pair(i)], position(i));
+            (c[0], c[1], *count) = (c[0] + y[0], c[1] + y[1], *count + 1);
+        }
+        let distance = |i: usize| {
+            let (c, count) = centroids[pair(i)];
+            let y = position(i);
+            (y[0] - c[0] / count as f64).hypot(y[1] - c[1] / count as f64)
+        };
+        new.sort_by(|&i, &j| {
+            (pair(i), distance(i))
+                .partial_cmp(&(pair(j), distance(j)))
+                .expect("finite positions")
+        });
+        old.extend(new);
+        old
+    }
+
     /// Solve the small system (METHOD.md section 3): `S tau = b - rows . u0` with
     /// `S_ij = row_i . F col_j`, bordered by the force-controlled plate translations `U` as in
     /// the reference (`SmallSystem::solve`), by a blocked Cholesky factorization when `S` is
@@ -388,12 +553,17 @@ impl ContactAnalysis {
             Kinematics::Small => {
                 let (rows, cols) = self.node_directions(system)?;
                 let n = &self.node_flexibility.n;
+                // N is symmetric: column j gathers along the rows N_b of its directions
                 for (j, parts) in cols.iter().enumerate() {
-                    for (i, &a) in rows.iter().enumerate() {
-                        s[(i, j)] = parts.iter().map(|&(b, c)| c * n[a][b]).sum();
+                    let sj = col_slice(&mut s, j);
+                    for &(b, c) in parts {
+                        let nb = &n[b];
+                        for (sij, &a) in sj.iter_mut().zip(&rows) {
+                            *sij += c * nb[a];
+                        }
                     }
                 }
-                (Some(cols), Vec::new())
+                (Some((rows, cols)), Vec::new())
             }
             Kinematics::Finite => {
                 self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
@@ -422,23 +592,39 @@ impl ContactAnalysis {
             )?;
         }
         let s_norm = (0..m + k)
-            .map(|j| (0..m + k).map(|i| s[(i, j)].abs()).sum::<f64>())
+            .map(|j| col_slice(&mut s, j).iter().map(|x| x.abs()).sum::<f64>())
             .fold(0.0, f64::max);
         // the unknowns whose column is not their row: slip nodes under friction
-        let unsymmetric: Vec<usize> = (0..m).filter(|&j| system.basis[j].len() > 1).collect();
-        let lu = Dense::new(s, unsymmetric, k > 0);
+        let (unsymmetric, symmetric): (Vec<usize>, Vec<usize>) =
+            (0..m).partition(|&j| system.basis[j].len() > 1);
+        let factor = match (&directions, k) {
+            (_, 1..) => None,
+            _ if symmetric.is_empty() => None,
+            (Some((rows, _)), _) => self.symmetric_factor(system, rows, symmetric),
+            (None, _) => {
+                let p = &symmetric;
+                cholesky_extending(Mat::<f64>::zeros(0, 0).as_ref(), p.len(), |i, j| {
+                    s[(p[i], p[j])]
+                })
+                .map(|l| (symmetric, l))
+            }
+        };
+        let lu = Dense::new(&s, factor, unsymmetric);
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
         let condition = condition_estimate(s_norm, &lu, m + k)
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
         lu.solve(rhs.as_mut(), false);
+        if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
+            self.node_flexibility.kept.l = b.l;
+        }
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
         if !tau.iter().all(|v| v.is_finite()) {
             return Err(singular());
         }
         let mut uc = u0c.to_vec();
         match directions {
-            Some(cols) => {
+            Some((_, cols)) => {
                 let mut weights = vec![0.0; self.node_flexibility.responses.len()];
                 for (parts, &t) in cols.iter().zip(&tau) {
                     for &(b, c) in parts {
@@ -528,5 +714,36 @@ impl ContactAnalysis {
         }
         self.reference_algebra = on;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Extending the factor of a leading block gives the factor of the whole matrix, and a
+    /// matrix that is not positive definite is refused at any prefix.
+    #[test]
+    fn cholesky_extending_matches_a_fresh_factor() {
+        let n = 9;
+        let b = Mat::<f64>::from_fn(n, n, |i, j| ((3 * i + 7 * j) % 11) as f64 / 11.0 - 0.4);
+        let a = &b * b.transpose() + Mat::<f64>::identity(n, n);
+        let whole = a.llt(faer::Side::Lower).unwrap();
+        for p in [0, 1, 5, n] {
+            let l11 = a
+                .as_ref()
+                .submatrix(0, 0, p, p)
+                .to_owned()
+                .llt(faer::Side::Lower)
+                .unwrap();
+            let l = cholesky_extending(l11.L(), n, |i, j| a[(i, j)]).unwrap();
+            let difference = (&l - whole.L()).norm_max();
+            assert!(difference < 1e-13, "prefix {p}: {difference:e}");
+        }
+        let mut indefinite = a.clone();
+        indefinite[(n - 1, n - 1)] = -1.0;
+        let l11 = a.as_ref().submatrix(0, 0, 5, 5).to_owned();
+        let l11 = l11.llt(faer::Side::Lower).unwrap();
+        assert!(cholesky_extending(l11.L(), n, |i, j| indefinite[(i, j)]).is_none());
     }
 }
