@@ -300,6 +300,16 @@ enum HostSolver {
 /// The bodies of a contact analysis (see the [module docs](self)).
 pub struct Bodies(Kind);
 
+/// The images `W V = L^-1 P E V` of a batch of vectors in the factor's space, dense over the
+/// rows of their elimination-tree reach ([`Bodies::images`]).
+#[derive(Debug, Clone)]
+pub struct Images {
+    /// The factor column of each row, ascending.
+    pub columns: Vec<usize>,
+    /// One column per vector.
+    pub values: Mat<f64>,
+}
+
 enum Kind {
     /// hycon's own model and `K_ff`: factored with the contact dofs last, or (with a reach)
     /// in the plain fill-reducing order, `F` then built lazily within the reach of the contact
@@ -668,6 +678,100 @@ impl Bodies {
             }
         }
         Ok(out)
+    }
+
+    /// The lazy faer factor and the contact dofs' reach, when the bodies have them (hycon's
+    /// model or a host's CSR matrix, lazy, faer backend).
+    fn lazy_factor(&mut self) -> Option<(&SparseCholesky, &Reach)> {
+        match &mut self.0 {
+            Kind::Model {
+                system,
+                reach: Some(reach),
+                ..
+            } => Some((unlocked(system).cholesky(), reach)),
+            Kind::Host(h) => match unlocked(&mut h.solver) {
+                HostSolver::Factor {
+                    factor,
+                    reach: Some(reach),
+                    ..
+                } => Some((factor, reach)),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// Whether [`images`](Self::images) gives images (the bodies have a lazy faer factor).
+    pub fn has_images(&mut self) -> bool {
+        self.lazy_factor().is_some()
+    }
+
+    /// The images `W V = L^-1 P E V` in the factor's space of the columns `V` (sparse over
+    /// positions in `dofs`, as for [`flexibility_times`](Self::flexibility_times)): one forward
+    /// substitution within the columns' own elimination-tree reach, so that
+    /// `V^T F V = (W V)^T (W V)` (`F = E^T K^-1 E`, `K = P^T L L^T P`). `None` when the bodies
+    /// have no lazy faer factor (a host's callback, CHOLMOD, or an eager factor).
+    pub fn images(
+        &mut self,
+        dofs: &[usize],
+        vectors: &[Vec<(usize, f64)>],
+    ) -> Result<Option<Images>> {
+        let rows: Vec<Option<usize>> = dofs.iter().map(|&d| self.equation(d)).collect();
+        let Some((factor, _)) = self.lazy_factor() else {
+            return Ok(None);
+        };
+        let equations: Vec<usize> = vectors
+            .iter()
+            .flatten()
+            .filter_map(|&(j, _)| rows[j])
+            .collect();
+        let reach = factor
+            .reach(&equations)
+            .ok_or_else(|| Error::Solver("a lazy factor has a reach".into()))?;
+        let mut values = Mat::<f64>::zeros(reach.len(), vectors.len());
+        for (c, v) in vectors.iter().enumerate() {
+            for &(j, w) in v {
+                if let Some(r) = rows[j].and_then(|e| reach.row(e)) {
+                    values[(r, c)] += w;
+                }
+            }
+        }
+        factor.forward_within(&reach, values.as_mut())?;
+        Ok(Some(Images {
+            columns: reach.columns(),
+            values,
+        }))
+    }
+
+    /// `E^T K^-1 E sum_i V_i c_i` at the dofs `dofs`, from the images `W V_i` of
+    /// [`images`](Self::images) and their coefficients `c_i`: the images combined,
+    /// `z = sum_i (W V_i) c_i`, and one backward substitution `P^T L^-T z` over the contact
+    /// dofs' reach. Zero at fixed dofs.
+    pub fn back_substitute(
+        &mut self,
+        dofs: &[usize],
+        parts: &[(&Images, &[f64])],
+    ) -> Result<Vec<f64>> {
+        let rows: Vec<Option<usize>> = dofs.iter().map(|&d| self.equation(d)).collect();
+        let (factor, reach) = self
+            .lazy_factor()
+            .ok_or_else(|| Error::Solver("images need a lazy faer factor".into()))?;
+        let mut z = Mat::<f64>::zeros(reach.len(), 1);
+        for &(images, coefficients) in parts {
+            let c = Mat::<f64>::from_fn(coefficients.len(), 1, |i, _| coefficients[i]);
+            let combined = &images.values * c;
+            for (r, &column) in images.columns.iter().enumerate() {
+                let row = reach
+                    .row_of_column(column)
+                    .expect("the contact dofs' reach holds every image");
+                z[(row, 0)] += combined[(r, 0)];
+            }
+        }
+        factor.backward_within(reach, z.as_mut())?;
+        Ok(rows
+            .iter()
+            .map(|e| e.map_or(0.0, |e| z[(reach.row(e).expect("a contact dof"), 0)]))
+            .collect())
     }
 
     /// The equation of dof `d` (iteration numbering) in `K`: a model's free-dof numbering or

@@ -361,6 +361,21 @@ impl Reach {
         &self.pattern[self.pattern_start[b]..self.pattern_start[b + 1]]
     }
 
+    /// The factor column of each compact row, ascending (compact rows follow the factor's
+    /// order): two reaches' rows meet where these columns are equal.
+    pub fn columns(&self) -> Vec<usize> {
+        self.blocks
+            .iter()
+            .flat_map(|&(_, start, width, _)| start..start + width)
+            .collect()
+    }
+
+    /// Compact row of factor column `c`, if in reach.
+    pub fn row_of_column(&self, c: usize) -> Option<usize> {
+        let r = self.compact[c];
+        (r != usize::MAX).then_some(r)
+    }
+
     /// Compact row of unknown `i` (caller's numbering), if in reach.
     pub fn row(&self, i: usize) -> Option<usize> {
         let r = self.compact[self.column_of[i]];
@@ -386,6 +401,29 @@ impl SparseCholesky {
     /// permutation). Costs `2 reach.entries()` flops per right-hand side against `2 nnz(L)` for
     /// a whole solve.
     pub fn solve_within(&self, reach: &Reach, rhs: MatMut<'_, f64>) -> Result<()> {
+        self.substitute_on_reach(reach, rhs, true, true)
+    }
+
+    /// `y = L^-1 P b` on the reach, the forward half of
+    /// [`solve_within`](Self::solve_within): the image of `b` in the factor's space, zero
+    /// outside the reach (so `b^T A^-1 c = (L^-1 P b) . (L^-1 P c)`).
+    pub fn forward_within(&self, reach: &Reach, rhs: MatMut<'_, f64>) -> Result<()> {
+        self.substitute_on_reach(reach, rhs, true, false)
+    }
+
+    /// `x = P^T L^-T y` on the reach, the backward half of
+    /// [`solve_within`](Self::solve_within), for `y` zero outside the reach.
+    pub fn backward_within(&self, reach: &Reach, rhs: MatMut<'_, f64>) -> Result<()> {
+        self.substitute_on_reach(reach, rhs, false, true)
+    }
+
+    fn substitute_on_reach(
+        &self,
+        reach: &Reach,
+        rhs: MatMut<'_, f64>,
+        forward: bool,
+        backward: bool,
+    ) -> Result<()> {
         if !self.factored {
             return Err(Error::Solver(
                 "solve requested before a successful factorization".into(),
@@ -393,7 +431,7 @@ impl SparseCholesky {
         }
         match &self.engine {
             Engine::Faer(f) => {
-                f.solve_within(reach, rhs);
+                f.substitute_within(reach, rhs, forward, backward);
                 Ok(())
             }
             #[cfg(feature = "suitesparse")]
@@ -498,7 +536,14 @@ impl FaerLlt {
         }
     }
 
-    fn solve_within(&self, reach: &Reach, mut x: MatMut<'_, f64>) {
+    /// Forward (`L y = b`) and/or backward (`L^T x = y`) substitution over the reach's blocks.
+    fn substitute_within(
+        &self,
+        reach: &Reach,
+        mut x: MatMut<'_, f64>,
+        forward: bool,
+        backward: bool,
+    ) {
         use faer::linalg::matmul::matmul;
         use faer::linalg::triangular_solve::{
             solve_lower_triangular_in_place, solve_upper_triangular_in_place,
@@ -507,7 +552,12 @@ impl FaerLlt {
         match self.symbolic.raw() {
             SymbolicCholeskyRaw::Simplicial(sym) => {
                 let (cp, v) = (sym.col_ptr(), &self.l_values);
-                for (b, &(_, c, _, off)) in reach.blocks.iter().enumerate() {
+                let forward_blocks = reach.blocks.iter().enumerate().take(if forward {
+                    reach.blocks.len()
+                } else {
+                    0
+                });
+                for (b, &(_, c, _, off)) in forward_blocks {
                     // the diagonal is the column's first entry, the pattern the rest
                     let (first, rows) = (cp[c], reach.block_pattern(b));
                     for j in 0..k {
@@ -521,7 +571,12 @@ impl FaerLlt {
                         }
                     }
                 }
-                for (b, &(_, c, _, off)) in reach.blocks.iter().enumerate().rev() {
+                let backward_blocks = reach.blocks.iter().enumerate().rev().take(if backward {
+                    reach.blocks.len()
+                } else {
+                    0
+                });
+                for (b, &(_, c, _, off)) in backward_blocks {
                     let (first, rows) = (cp[c], reach.block_pattern(b));
                     for j in 0..k {
                         let mut xc = x[(off, j)];
@@ -535,7 +590,12 @@ impl FaerLlt {
             SymbolicCholeskyRaw::Supernodal(sym) => {
                 let llt = SupernodalLltRef::<usize, f64>::new(sym, &self.l_values);
                 let mut tmp = Mat::<f64>::zeros(0, k);
-                for (b, &(s, _, width, off)) in reach.blocks.iter().enumerate() {
+                let forward_blocks = reach.blocks.iter().enumerate().take(if forward {
+                    reach.blocks.len()
+                } else {
+                    0
+                });
+                for (b, &(s, _, width, off)) in forward_blocks {
                     let node = llt.supernode(s);
                     let (top, bottom) = node.val().split_at_row(width);
                     let pattern = reach.block_pattern(b);
@@ -566,7 +626,12 @@ impl FaerLlt {
                         }
                     }
                 }
-                for (b, &(s, _, width, off)) in reach.blocks.iter().enumerate().rev() {
+                let backward_blocks = reach.blocks.iter().enumerate().rev().take(if backward {
+                    reach.blocks.len()
+                } else {
+                    0
+                });
+                for (b, &(s, _, width, off)) in backward_blocks {
                     let node = llt.supernode(s);
                     let (top, bottom) = node.val().split_at_row(width);
                     let pattern = reach.block_pattern(b);

@@ -10,9 +10,14 @@
 //! [`ContactAnalysis::set_reference_algebra`]; the tests compare the two.
 
 use super::*;
+use crate::contact::bodies::Images;
 use faer::Par;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use small_system::{Row, SmallSystem, singular};
+
+/// Directions whose images one forward substitution computes (neighbouring nodes' directions:
+/// their elimination-tree paths mostly coincide).
+const IMAGE_BATCH: usize = 64;
 
 /// The flexibility `F = E^T K^-1 E` over the contact dofs, column by column: a column is
 /// either known (computed once, then kept) or not yet asked for.
@@ -56,23 +61,39 @@ impl Flexibility {
 
 /// Under small kinematics, the node directions that have been active and their flexibility:
 /// `v_a = d . c_k` for direction `a = (pair, A node k, d)` (`d` the node's normal or tangent,
-/// `c_k` its coupling row), the response `y_a = F v_a` over the contact dofs, and the node
-/// flexibility `N_ab = v_a . y_b = v_a^T F v_b`. The frames and the coupling never change under
-/// small kinematics, so a direction is added once, when its node first becomes active (its
-/// response costs the columns of `F` it touches, its row and column of `N` one dot product per
-/// direction known), and the small system of every iteration is read off `N`.
+/// `c_k` its coupling row) and the node flexibility `N_ab = v_a^T F v_b`. The frames and the
+/// coupling never change under small kinematics, so a direction is added once, when its node
+/// first becomes active, and the small system of every iteration is read off `N`. What is
+/// kept of a direction to form `N` and the contact dofs' displacement depends on the solver:
+/// * with hycon's own (faer) factor `K = P^T L L^T P`, its image `w_a = L^-1 P E v_a`, one
+///   forward substitution along the direction's own elimination-tree path (a small part of
+///   `L`); then `N_ab = w_a . w_b`, and the displacement `F sum_b t_b v_b` of an iteration is
+///   one backward substitution of `sum_b t_b w_b` ([`Bodies::back_substitute`]);
+/// * otherwise (a host's solve callback, CHOLMOD, or all of `F` known) its response
+///   `y_a = F v_a` over the contact dofs; then `N_ab = v_a . y_b`.
 #[derive(Debug, Clone, Default)]
 pub(super) struct NodeFlexibility {
     /// Index of each direction, per pair, per A node, `[normal, tangent]`.
     index: Vec<Vec<[Option<usize>; 2]>>,
     /// `v_a`.
     vectors: Vec<Sparse>,
-    /// `y_a = F v_a`.
-    responses: Vec<Vec<f64>>,
+    /// What is kept of each direction.
+    kept: Vec<Kept>,
+    /// The batches of images, each with the direction of its columns.
+    batches: Vec<(Images, Vec<usize>)>,
     /// `N_ab` as rows `a`.
     n: Vec<Vec<f64>>,
     /// The factor of the last symmetric block.
-    kept: KeptFactor,
+    factor: KeptFactor,
+}
+
+/// What [`NodeFlexibility`] keeps of a direction.
+#[derive(Debug, Clone)]
+enum Kept {
+    /// `y = F v` over the contact dofs.
+    Response(Vec<f64>),
+    /// Column `column` of the images of batch `batch`.
+    Image { batch: usize, column: usize },
 }
 
 impl NodeFlexibility {
@@ -88,23 +109,97 @@ impl NodeFlexibility {
         self.index[p][k][row as usize]
     }
 
-    /// Add direction `key` with its vector `v` and response `y = F v`: `N_ac = v_a . y` for
-    /// every known `a`, `N_ca = N_ac` (`F` is symmetric: `v . y_a = v_a . y`, read from the
-    /// new response alone), and `N_cc = v . y`.
-    fn add(&mut self, (p, k, row): (usize, usize, Row), v: Sparse, y: Vec<f64>) {
-        let c = self.vectors.len();
-        let mut nc = Vec::with_capacity(c + 1);
-        for (a, na) in self.n.iter_mut().enumerate() {
-            let value = dot(&self.vectors[a], &y);
-            na.push(value);
-            nc.push(value);
-        }
-        nc.push(dot(&v, &y));
-        self.n.push(nc);
+    /// Register direction `key` with vector `v` as number `vectors.len()`.
+    fn register(&mut self, (p, k, row): (usize, usize, Row), v: Sparse, kept: Kept) {
+        self.index[p][k][row as usize] = Some(self.vectors.len());
         self.vectors.push(v);
-        self.responses.push(y);
-        self.index[p][k][row as usize] = Some(c);
+        self.kept.push(kept);
     }
+
+    /// Append the new directions' rows and columns to `N`: `cross[a][j] = N_(a, c0 + j)` for
+    /// every known `a` (`c0` of them) and `within(i, j) = N_(c0 + i, c0 + j)`, read for
+    /// `i <= j` only, so that `N` stays exactly symmetric.
+    fn extend_n(&mut self, cross: Vec<Vec<f64>>, new: usize, within: impl Fn(usize, usize) -> f64) {
+        let c0 = self.n.len();
+        for (na, ca) in self.n.iter_mut().zip(&cross) {
+            na.extend_from_slice(ca);
+        }
+        for j in 0..new {
+            let mut row: Vec<f64> = cross.iter().map(|ca| ca[j]).collect();
+            row.extend((0..new).map(|i| within(i.min(j), i.max(j))));
+            self.n.push(row);
+        }
+        debug_assert_eq!(self.n.len(), c0 + new);
+    }
+
+    /// The rows `v_b . y_a` of the new directions `vs` against the known responses `y_a`
+    /// (zero against images, filled by the caller).
+    fn cross_responses(&self, vs: &[Sparse]) -> Vec<Vec<f64>> {
+        self.kept
+            .iter()
+            .map(|kept| match kept {
+                Kept::Response(y) => vs.iter().map(|v| dot(v, y)).collect(),
+                Kept::Image { .. } => vec![0.0; vs.len()],
+            })
+            .collect()
+    }
+
+    /// Add directions `keys` with vectors `vs` and responses `y_b = F v_b` (columns of `y`):
+    /// `N_ab = v_a . y_b` for every known response `a`, `v_b . y_a` against known responses
+    /// (`F` is symmetric).
+    fn add_responses(&mut self, keys: &[(usize, usize, Row)], vs: Vec<Sparse>, y: &DMatrix<f64>) {
+        let ys: Vec<Vec<f64>> = (0..vs.len()).map(|c| column(y, c).to_vec()).collect();
+        let cross = self.cross_responses(&vs);
+        self.extend_n(cross, vs.len(), |i, j| dot(&vs[i], &ys[j]));
+        for ((&key, v), y) in keys.iter().zip(vs).zip(ys) {
+            self.register(key, v, Kept::Response(y));
+        }
+    }
+
+    /// Add directions `keys` with vectors `vs` and their images `W v_b` (the columns of
+    /// `images`): `N_ab = w_a . w_b` against every earlier batch of images (one product over
+    /// the rows the two reaches share) and within the batch, `v_b . y_a` against known
+    /// responses.
+    fn add_images(&mut self, keys: &[(usize, usize, Row)], vs: Vec<Sparse>, images: Images) {
+        let mut cross = self.cross_responses(&vs);
+        for (batch, directions) in &self.batches {
+            let g = gram(batch, &images);
+            for (i, &a) in directions.iter().enumerate() {
+                for (j, c) in cross[a].iter_mut().enumerate() {
+                    *c = g[(i, j)];
+                }
+            }
+        }
+        let within = images.values.transpose() * &images.values;
+        self.extend_n(cross, vs.len(), |i, j| within[(i, j)]);
+        let (batch, c0) = (self.batches.len(), self.vectors.len());
+        for (column, (&key, v)) in keys.iter().zip(vs).enumerate() {
+            self.register(key, v, Kept::Image { batch, column });
+        }
+        self.batches.push((images, (c0..c0 + keys.len()).collect()));
+    }
+}
+
+/// `A^T B` for two batches of images: over the rows their reaches share (equal factor
+/// columns); a row of one reach alone meets zeros of the other image.
+fn gram(a: &Images, b: &Images) -> Mat<f64> {
+    let (mut ia, mut ib) = (Vec::new(), Vec::new());
+    let (mut i, mut j) = (0, 0);
+    while i < a.columns.len() && j < b.columns.len() {
+        match a.columns[i].cmp(&b.columns[j]) {
+            std::cmp::Ordering::Less => i += 1,
+            std::cmp::Ordering::Greater => j += 1,
+            std::cmp::Ordering::Equal => {
+                ia.push(i);
+                ib.push(j);
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    let ga = Mat::<f64>::from_fn(ia.len(), a.values.ncols(), |r, c| a.values[(ia[r], c)]);
+    let gb = Mat::<f64>::from_fn(ib.len(), b.values.ncols(), |r, c| b.values[(ib[r], c)]);
+    ga.transpose() * gb
 }
 
 /// What [`ContactAnalysis::solve_boundary`] gives: the unknowns `tau`, the plate's
@@ -417,21 +512,33 @@ impl ContactAnalysis {
                 self.directed(&node.coupling, d)
             })
             .collect();
-        let m = self.dofs.len();
-        if self.flexibility.is_full() {
-            for (key, v) in new.into_iter().zip(vectors) {
-                let mut y = vec![0.0; m];
-                self.apply_flexibility(&v, &mut y);
-                self.node_flexibility.add(key, v, y);
+        if new.is_empty() {
+        } else if self.flexibility.is_full() {
+            let m = self.dofs.len();
+            let mut y = DMatrix::zeros(m, new.len());
+            for (c, v) in vectors.iter().enumerate() {
+                self.apply_flexibility(v, &mut y.as_mut_slice()[c * m..(c + 1) * m]);
             }
-        } else if !new.is_empty() {
-            // one right-hand side per new direction, not one per dof it touches
+            self.node_flexibility.add_responses(&new, vectors, &y);
+        } else {
             let clock = std::time::Instant::now();
-            let y = self.bodies.flexibility_times(&self.dofs, &vectors)?;
-            self.timings.flexibility += clock.elapsed().as_secs_f64();
-            for (c, (key, v)) in new.into_iter().zip(vectors).enumerate() {
-                self.node_flexibility.add(key, v, column(&y, c).to_vec());
+            if self.bodies.has_images() {
+                // batches of neighbouring directions share most of their reach
+                let mut vectors = vectors.into_iter();
+                for keys in new.chunks(IMAGE_BATCH) {
+                    let vs: Vec<Sparse> = vectors.by_ref().take(keys.len()).collect();
+                    let images = self
+                        .bodies
+                        .images(&self.dofs, &vs)?
+                        .expect("the bodies have images");
+                    self.node_flexibility.add_images(keys, vs, images);
+                }
+            } else {
+                // one right-hand side per new direction, not one per dof it touches
+                let y = self.bodies.flexibility_times(&self.dofs, &vectors)?;
+                self.node_flexibility.add_responses(&new, vectors, &y);
             }
+            self.timings.flexibility += clock.elapsed().as_secs_f64();
         }
         let nf = &self.node_flexibility;
         let rows = system
@@ -466,8 +573,8 @@ impl ContactAnalysis {
         let order = self.factor_order(system, rows, symmetric);
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
         let nf = &mut self.node_flexibility;
-        let prefix = nf.kept.common_prefix(&keys);
-        let kept = std::mem::replace(&mut nf.kept.l, Mat::new());
+        let prefix = nf.factor.common_prefix(&keys);
+        let kept = std::mem::replace(&mut nf.factor.l, Mat::new());
         let n = &nf.n;
         let l = cholesky_extending(
             kept.as_ref().submatrix(0, 0, prefix, prefix),
@@ -475,7 +582,7 @@ impl ContactAnalysis {
             |i, j| n[keys[i]][keys[j]],
         );
         // the factor itself comes back after the solve (see `solve_boundary`)
-        nf.kept.keys = keys;
+        nf.factor.keys = keys;
         l.map(|l| (order, l))
     }
 
@@ -491,7 +598,7 @@ impl ContactAnalysis {
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Vec<usize> {
-        let kept = &self.node_flexibility.kept.keys;
+        let kept = &self.node_flexibility.factor.keys;
         let mut rank = vec![usize::MAX; self.node_flexibility.n.len()];
         kept.iter().enumerate().for_each(|(r, &a)| rank[a] = r);
         let (mut old, mut new): (Vec<usize>, Vec<usize>) = symmetric
@@ -616,7 +723,7 @@ impl ContactAnalysis {
             .ok_or_else(singular)?;
         lu.solve(rhs.as_mut(), false);
         if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
-            self.node_flexibility.kept.l = b.l;
+            self.node_flexibility.factor.l = b.l;
         }
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
         if !tau.iter().all(|v| v.is_finite()) {
@@ -625,18 +732,42 @@ impl ContactAnalysis {
         let mut uc = u0c.to_vec();
         match directions {
             Some((_, cols)) => {
-                let mut weights = vec![0.0; self.node_flexibility.responses.len()];
+                let nf = &self.node_flexibility;
+                let mut weights = vec![0.0; nf.kept.len()];
                 for (parts, &t) in cols.iter().zip(&tau) {
                     for &(b, c) in parts {
                         weights[b] += t * c;
                     }
                 }
-                for (yb, &w) in self.node_flexibility.responses.iter().zip(&weights) {
-                    if w != 0.0 {
-                        for (u, v) in uc.iter_mut().zip(yb) {
-                            *u += w * v;
+                let mut coefficients: Vec<Vec<f64>> = nf
+                    .batches
+                    .iter()
+                    .map(|(images, _)| vec![0.0; images.values.ncols()])
+                    .collect();
+                for (kept, &w) in nf.kept.iter().zip(&weights).filter(|(_, w)| **w != 0.0) {
+                    match kept {
+                        Kept::Response(y) => {
+                            for (u, v) in uc.iter_mut().zip(y) {
+                                *u += w * v;
+                            }
                         }
+                        Kept::Image { batch, column } => coefficients[*batch][*column] = w,
                     }
+                }
+                let parts: Vec<(&Images, &[f64])> = nf
+                    .batches
+                    .iter()
+                    .zip(&coefficients)
+                    .filter(|(_, c)| c.iter().any(|&w| w != 0.0))
+                    .map(|((images, _), c)| (images, &c[..]))
+                    .collect();
+                if !parts.is_empty() {
+                    let clock = std::time::Instant::now();
+                    let x = self.bodies.back_substitute(&self.dofs, &parts)?;
+                    for (u, v) in uc.iter_mut().zip(x) {
+                        *u += v;
+                    }
+                    self.timings.flexibility += clock.elapsed().as_secs_f64();
                 }
             }
             None => {
