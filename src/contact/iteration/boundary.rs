@@ -1,9 +1,11 @@
 //! The contact boundary as the iteration uses it (METHOD.md section 3): the flexibility
 //! `F = E^T K^-1 E`, either whole (read off a factor's trailing block) or lazily: under small
-//! kinematics the responses `y_a = F v_a` of the node directions that become active and the
-//! node flexibility `N_ab = v_a^T F v_b`, computed once per direction; under finite kinematics
+//! kinematics the node flexibility `N_ab = v_a^T F v_b` of the node directions that become
+//! active, computed once per direction from their images `W v_a = L^-1 P E v_a` (hycon's own
+//! factor) or their responses `F v_a` (a host's callback, CHOLMOD); under finite kinematics
 //! the columns of `F` the active nodes touch. The small system `S tau = b - rows . u0`,
-//! `S = rows^T F cols`, is factored by blocked dense Cholesky / LU (faer).
+//! `S = rows^T F cols`, is factored by blocked dense Cholesky (extending the previous
+//! iteration's factor) and LU for the slip unknowns (faer).
 //!
 //! The dense reference of the same algebra (every column of `F` built up front, `F c` formed
 //! from `F` in every iteration, nalgebra's unblocked LU) is kept behind
