@@ -19,6 +19,7 @@
 
 #[cfg(feature = "suitesparse")]
 mod cholmod;
+pub(crate) mod vector_state;
 
 use crate::error::{Error, Result};
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
@@ -552,12 +553,8 @@ impl FaerLlt {
         match self.symbolic.raw() {
             SymbolicCholeskyRaw::Simplicial(sym) => {
                 let (cp, v) = (sym.col_ptr(), &self.l_values);
-                let forward_blocks = reach.blocks.iter().enumerate().take(if forward {
-                    reach.blocks.len()
-                } else {
-                    0
-                });
-                for (b, &(_, c, _, off)) in forward_blocks {
+                let forward_blocks = if forward { &reach.blocks[..] } else { &[] };
+                for (b, &(_, c, _, off)) in forward_blocks.iter().enumerate() {
                     // the diagonal is the column's first entry, the pattern the rest
                     let (first, rows) = (cp[c], reach.block_pattern(b));
                     for j in 0..k {
@@ -571,12 +568,8 @@ impl FaerLlt {
                         }
                     }
                 }
-                let backward_blocks = reach.blocks.iter().enumerate().rev().take(if backward {
-                    reach.blocks.len()
-                } else {
-                    0
-                });
-                for (b, &(_, c, _, off)) in backward_blocks {
+                let backward_blocks = if backward { &reach.blocks[..] } else { &[] };
+                for (b, &(_, c, _, off)) in backward_blocks.iter().enumerate().rev() {
                     let (first, rows) = (cp[c], reach.block_pattern(b));
                     for j in 0..k {
                         let mut xc = x[(off, j)];
@@ -590,12 +583,8 @@ impl FaerLlt {
             SymbolicCholeskyRaw::Supernodal(sym) => {
                 let llt = SupernodalLltRef::<usize, f64>::new(sym, &self.l_values);
                 let mut tmp = Mat::<f64>::zeros(0, k);
-                let forward_blocks = reach.blocks.iter().enumerate().take(if forward {
-                    reach.blocks.len()
-                } else {
-                    0
-                });
-                for (b, &(s, _, width, off)) in forward_blocks {
+                let forward_blocks = if forward { &reach.blocks[..] } else { &[] };
+                for (b, &(s, _, width, off)) in forward_blocks.iter().enumerate() {
                     let node = llt.supernode(s);
                     let (top, bottom) = node.val().split_at_row(width);
                     let pattern = reach.block_pattern(b);
@@ -626,12 +615,8 @@ impl FaerLlt {
                         }
                     }
                 }
-                let backward_blocks = reach.blocks.iter().enumerate().rev().take(if backward {
-                    reach.blocks.len()
-                } else {
-                    0
-                });
-                for (b, &(s, _, width, off)) in backward_blocks {
+                let backward_blocks = if backward { &reach.blocks[..] } else { &[] };
+                for (b, &(s, _, width, off)) in backward_blocks.iter().enumerate().rev() {
                     let node = llt.supernode(s);
                     let (top, bottom) = node.val().split_at_row(width);
                     let pattern = reach.block_pattern(b);

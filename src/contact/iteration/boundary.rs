@@ -13,6 +13,7 @@
 
 use super::*;
 use crate::contact::bodies::Images;
+use crate::solver::vector_state::clean_after;
 use faer::Par;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use small_system::{Row, SmallSystem, singular};
@@ -172,7 +173,7 @@ impl NodeFlexibility {
                 }
             }
         }
-        let within = images.values.transpose() * &images.values;
+        let within = clean_after(|| images.values.transpose() * &images.values);
         self.extend_n(cross, vs.len(), |i, j| within[(i, j)]);
         let (batch, c0) = (self.batches.len(), self.vectors.len());
         for (column, (&key, v)) in keys.iter().zip(vs).enumerate() {
@@ -201,7 +202,7 @@ fn gram(a: &Images, b: &Images) -> Mat<f64> {
     }
     let ga = Mat::<f64>::from_fn(ia.len(), a.values.ncols(), |r, c| a.values[(ia[r], c)]);
     let gb = Mat::<f64>::from_fn(ib.len(), b.values.ncols(), |r, c| b.values[(ib[r], c)]);
-    ga.transpose() * gb
+    clean_after(|| ga.transpose() * gb)
 }
 
 /// What [`ContactAnalysis::solve_boundary`] gives: the unknowns `tau`, the plate's
@@ -878,5 +879,44 @@ mod tests {
         let l11 = a.as_ref().submatrix(0, 0, 5, 5).to_owned();
         let l11 = l11.llt(faer::Side::Lower).unwrap();
         assert!(cholesky_extending(l11.L(), n, |i, j| indefinite[(i, j)]).is_none());
+    }
+
+    /// The small system's dense algebra leaves the upper halves of the AVX registers clean at
+    /// sizes where faer's assembly kernels run (see `solver::vector_state`): the Gram products
+    /// of images (cleaned by `clean_after`), and the extended factor, the block factorization
+    /// with slip unknowns and its solves (clean on their own).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn dense_algebra_leaves_the_upper_registers_clean() {
+        use crate::solver::vector_state::upper_in_use;
+        if upper_in_use().is_none() {
+            eprintln!("this CPU does not report the registers' state: nothing to check");
+            return;
+        }
+        let n = 80;
+        let b = Mat::<f64>::from_fn(n, n, |i, j| ((3 * i + 7 * j) % 11) as f64 / 11.0 - 0.4);
+        let a = &b * b.transpose() + Mat::<f64>::identity(n, n);
+        let images = |rows: usize| Images {
+            columns: (0..rows).collect(),
+            values: Mat::from_fn(rows, 64, |i, j| ((i * j) % 13) as f64),
+        };
+        let g = gram(&images(500), &images(400));
+        assert_eq!(upper_in_use(), Some(false), "after a Gram product");
+        assert_eq!((g.nrows(), g.ncols()), (64, 64));
+        let l11 = a.as_ref().submatrix(0, 0, 40, 40).to_owned();
+        let l11 = l11.llt(faer::Side::Lower).unwrap();
+        let l = cholesky_extending(l11.L(), n - 10, |i, j| a[(i, j)]).unwrap();
+        assert_eq!(upper_in_use(), Some(false), "after extending a factor");
+        let dense = Dense::new(&a, Some(((0..n - 10).collect(), l)), (n - 10..n).collect());
+        assert_eq!(upper_in_use(), Some(false), "after the block factorization");
+        let mut x = Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
+        dense.solve(x.as_mut(), true);
+        assert_eq!(upper_in_use(), Some(false), "after a solve");
+        let r = a.transpose() * &x - Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
+        assert!(
+            r.norm_max() < 1e-8 * n as f64,
+            "the solve is right: {:e}",
+            r.norm_max()
+        );
     }
 }
