@@ -189,11 +189,28 @@ pub fn for_each_element_matrix(
     materials: &[Material],
     formulation: Formulation,
     ke: &mut ElementMatrix,
+    visit: impl FnMut(usize, &[usize; 2 * MAX_NODES], usize, &ElementMatrix),
+) -> Result<()> {
+    for_each_selected_element_matrix(mesh, materials, formulation, ke, |_| true, visit)
+}
+
+/// [`for_each_element_matrix`] over the elements whose global dofs `wanted` accepts; the
+/// others' stiffness is not computed (nor checked).
+pub(crate) fn for_each_selected_element_matrix(
+    mesh: &Mesh,
+    materials: &[Material],
+    formulation: Formulation,
+    ke: &mut ElementMatrix,
+    mut wanted: impl FnMut(&[usize]) -> bool,
     mut visit: impl FnMut(usize, &[usize; 2 * MAX_NODES], usize, &ElementMatrix),
 ) -> Result<()> {
     let mut coords = [[0.0; 2]; MAX_NODES];
     let mut gd = [0; 2 * MAX_NODES];
     for e in 0..mesh.n_elements() {
+        let element_dofs = DofMap::element_dofs(mesh.element(e), &mut gd);
+        if !wanted(&gd[..element_dofs]) {
+            continue;
+        }
         let n = mesh.element_coords(e, &mut coords);
         let material = materials.get(mesh.element_material[e]).ok_or_else(|| {
             Error::InvalidInput(format!(
@@ -204,7 +221,6 @@ pub fn for_each_element_matrix(
         })?;
         let nd = element::stiffness_into(formulation, &coords[..n], material, ke)
             .map_err(|kind| Error::at_element(kind, e))?;
-        DofMap::element_dofs(mesh.element(e), &mut gd);
         visit(e, &gd, nd, ke);
     }
     Ok(())

@@ -7,7 +7,7 @@
 //! method, every contact iteration). Reactions and element stresses are computed only when
 //! asked for.
 
-use crate::assembly::{DofMap, SparsePattern, dof, for_each_element_matrix};
+use crate::assembly::{DofMap, SparsePattern, dof, for_each_selected_element_matrix};
 use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
 use crate::error::{Error, Result};
 use crate::material::Material;
@@ -216,14 +216,17 @@ impl Model {
 
     /// Element forces `K q` summed over all elements (length `2 n_nodes`): the equivalent nodal
     /// forces the elements exert; at prescribed dofs minus external forces this is the reaction.
+    /// An element whose displacements `q_e` are all zero adds nothing and is skipped (the
+    /// prescribed motion alone, `K_fp q_p`, touches only the elements at moved supports).
     pub fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
         let mut r = vec![0.0; q.len()];
         let mut ke = ElementMatrix::zeros();
-        for_each_element_matrix(
+        for_each_selected_element_matrix(
             &self.mesh,
             &self.materials,
             self.formulation,
             &mut ke,
+            |gd| gd.iter().any(|&d| q[d] != 0.0),
             |_, gd, nd, ke| {
                 for a in 0..nd {
                     r[gd[a]] += (0..nd).map(|b| ke[(a, b)] * q[gd[b]]).sum::<f64>();
