@@ -511,6 +511,10 @@ pub struct ContactAnalysis {
     flexibility: Flexibility,
     /// Under small kinematics, the node flexibility of the directions that have been active.
     node_flexibility: NodeFlexibility,
+    /// The storage of the small system `S` (see `solve_boundary`), kept between iterations: a
+    /// fresh `S` beyond glibc's 32 MiB mmap threshold (m > 2,048) had its pages faulted in
+    /// and zeroed again in every iteration.
+    small_matrix: Mat<f64>,
     /// Iterate on the dense reference algebra (see
     /// [`ContactAnalysis::set_reference_algebra`]).
     reference_algebra: bool,
@@ -673,6 +677,7 @@ impl ContactAnalysis {
         let mut analysis = ContactAnalysis {
             qc: vec![0.0; dofs.len()],
             node_flexibility,
+            small_matrix: Mat::new(),
             reference_algebra: false,
             settled: None,
             refactor_each_iteration: false,

@@ -280,26 +280,29 @@ impl KeptFactor {
 
 /// The lower Cholesky factor `L` of the symmetric positive definite `A` (`n x n`, the entry
 /// `a(i, j)` read for `j <= i` only) whose leading `p x p` block `A11 = L11 L11^T` is already
-/// factored (`l11`, `p` its order): `L21 = A21 L11^-T` by one triangular solve and
-/// `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) - ...` flops instead of
-/// `n^3 / 3` when few unknowns are new. `None` when `A` is not numerically positive definite.
+/// factored: `L11` is the leading block of `l` (which may be larger), `L21 = A21 L11^-T` by one
+/// triangular solve and `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) -
+/// ...` flops instead of `n^3 / 3` when few unknowns are new. `l` is cut to `p x p` and grown
+/// to `n x n` in place: an unchanged factor costs nothing, a grown one only its new rows (a
+/// fresh `n x n` copy took 20 ms at n = 2,150). `None` when `A` is not numerically positive
+/// definite.
 fn cholesky_extending(
-    l11: faer::MatRef<'_, f64>,
+    mut l: Mat<f64>,
+    p: usize,
     n: usize,
     a: impl Fn(usize, usize) -> f64,
 ) -> Option<Mat<f64>> {
     use faer::linalg::matmul::matmul;
     use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
-    let p = l11.nrows();
     let r = n - p;
-    let mut l = Mat::<f64>::zeros(n, n);
-    l.as_mut().submatrix_mut(0, 0, p, p).copy_from(l11);
+    l.truncate(p, p);
+    l.resize_with(n, n, |_, _| 0.0);
     if r == 0 {
         return Some(l);
     }
     // L21^T = L11^-1 A21^T
     let mut l21t = Mat::<f64>::from_fn(p, r, |i, j| a(p + j, i));
-    solve_lower_triangular_in_place(l11, l21t.as_mut(), Par::Seq);
+    solve_lower_triangular_in_place(l.as_ref().submatrix(0, 0, p, p), l21t.as_mut(), Par::Seq);
     let mut a22 = Mat::<f64>::from_fn(r, r, |i, j| a(p + i.max(j), p + i.min(j)));
     matmul(
         a22.as_mut(),
@@ -579,11 +582,7 @@ impl ContactAnalysis {
         let prefix = nf.factor.common_prefix(&keys);
         let kept = std::mem::replace(&mut nf.factor.l, Mat::new());
         let n = &nf.n;
-        let l = cholesky_extending(
-            kept.as_ref().submatrix(0, 0, prefix, prefix),
-            keys.len(),
-            |i, j| n[keys[i]][keys[j]],
-        );
+        let l = cholesky_extending(kept, prefix, keys.len(), |i, j| n[keys[i]][keys[j]]);
         // the factor itself comes back after the solve (see `solve_boundary`)
         nf.factor.keys = keys;
         l.map(|l| (order, l))
@@ -657,7 +656,9 @@ impl ContactAnalysis {
             return Ok((Vec::new(), Vec::new(), 1.0, u0c.to_vec()));
         }
         let mc = self.dofs.len();
-        let mut s = Mat::<f64>::zeros(m + k, m + k);
+        let mut s = std::mem::replace(&mut self.small_matrix, Mat::new());
+        s.truncate(0, 0);
+        s.resize_with(m + k, m + k, |_, _| 0.0);
         // small kinematics: directions of rows and columns; finite: the responses y_j
         let (directions, responses) = match self.options.kinematics {
             Kinematics::Small => {
@@ -713,10 +714,8 @@ impl ContactAnalysis {
             (Some((rows, _)), _) => self.symmetric_factor(system, rows, symmetric),
             (None, _) => {
                 let p = &symmetric;
-                cholesky_extending(Mat::<f64>::zeros(0, 0).as_ref(), p.len(), |i, j| {
-                    s[(p[i], p[j])]
-                })
-                .map(|l| (symmetric, l))
+                cholesky_extending(Mat::new(), 0, p.len(), |i, j| s[(p[i], p[j])])
+                    .map(|l| (symmetric, l))
             }
         };
         let lu = Dense::new(&s, factor, unsymmetric);
@@ -725,6 +724,7 @@ impl ContactAnalysis {
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
         lu.solve(rhs.as_mut(), false);
+        self.small_matrix = s;
         if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
             self.node_flexibility.factor.l = b.l;
         }
@@ -856,29 +856,40 @@ mod tests {
     use super::*;
 
     /// Extending the factor of a leading block gives the factor of the whole matrix, and a
-    /// matrix that is not positive definite is refused at any prefix.
+    /// matrix that is not positive definite is refused at any prefix. The kept factor may be
+    /// exactly `L11`, or larger (a factor whose unknowns after the prefix changed: here that of
+    /// another matrix with the same leading block).
     #[test]
     fn cholesky_extending_matches_a_fresh_factor() {
         let n = 9;
         let b = Mat::<f64>::from_fn(n, n, |i, j| ((3 * i + 7 * j) % 11) as f64 / 11.0 - 0.4);
         let a = &b * b.transpose() + Mat::<f64>::identity(n, n);
         let whole = a.llt(faer::Side::Lower).unwrap();
+        let mut other = a.clone();
+        for i in 0..n {
+            other[(i, i)] += 1.0 + i as f64;
+        }
+        let llt_other = |p: usize| {
+            let mut o = other.clone();
+            o.as_mut()
+                .submatrix_mut(0, 0, p, p)
+                .copy_from(a.as_ref().submatrix(0, 0, p, p));
+            o.llt(faer::Side::Lower).unwrap().L().to_owned()
+        };
         for p in [0, 1, 5, n] {
-            let l11 = a
-                .as_ref()
-                .submatrix(0, 0, p, p)
-                .to_owned()
-                .llt(faer::Side::Lower)
-                .unwrap();
-            let l = cholesky_extending(l11.L(), n, |i, j| a[(i, j)]).unwrap();
-            let difference = (&l - whole.L()).norm_max();
-            assert!(difference < 1e-13, "prefix {p}: {difference:e}");
+            let l11 = a.as_ref().submatrix(0, 0, p, p).to_owned();
+            let l11 = l11.llt(faer::Side::Lower).unwrap().L().to_owned();
+            for kept in [l11, llt_other(p)] {
+                let l = cholesky_extending(kept, p, n, |i, j| a[(i, j)]).unwrap();
+                let difference = (&l - whole.L()).norm_max();
+                assert!(difference < 1e-13, "prefix {p}: {difference:e}");
+            }
         }
         let mut indefinite = a.clone();
         indefinite[(n - 1, n - 1)] = -1.0;
         let l11 = a.as_ref().submatrix(0, 0, 5, 5).to_owned();
-        let l11 = l11.llt(faer::Side::Lower).unwrap();
-        assert!(cholesky_extending(l11.L(), n, |i, j| indefinite[(i, j)]).is_none());
+        let l11 = l11.llt(faer::Side::Lower).unwrap().L().to_owned();
+        assert!(cholesky_extending(l11, 5, n, |i, j| indefinite[(i, j)]).is_none());
     }
 
     /// The small system's dense algebra leaves the upper halves of the AVX registers clean at
@@ -904,8 +915,8 @@ mod tests {
         assert_eq!(upper_in_use(), Some(false), "after a Gram product");
         assert_eq!((g.nrows(), g.ncols()), (64, 64));
         let l11 = a.as_ref().submatrix(0, 0, 40, 40).to_owned();
-        let l11 = l11.llt(faer::Side::Lower).unwrap();
-        let l = cholesky_extending(l11.L(), n - 10, |i, j| a[(i, j)]).unwrap();
+        let l11 = l11.llt(faer::Side::Lower).unwrap().L().to_owned();
+        let l = cholesky_extending(l11, 40, n - 10, |i, j| a[(i, j)]).unwrap();
         assert_eq!(upper_in_use(), Some(false), "after extending a factor");
         let dense = Dense::new(&a, Some(((0..n - 10).collect(), l)), (n - 10..n).collect());
         assert_eq!(upper_in_use(), Some(false), "after the block factorization");
