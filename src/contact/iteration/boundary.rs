@@ -26,7 +26,9 @@ const IMAGE_BATCH: usize = 64;
 /// either known (computed once, then kept) or not yet asked for.
 #[derive(Debug, Clone)]
 pub(super) struct Flexibility {
-    /// `F` (`m x m`); unknown columns hold zeros.
+    /// `F` (`m x m`; empty until a first column is known: small kinematics on hycon's own
+    /// factor never asks for one, and at n = 512 the zeros alone were 443 MB); unknown columns
+    /// hold zeros.
     pub(super) matrix: DMatrix<f64>,
     /// Whether column `j` is known.
     known: Vec<bool>,
@@ -42,9 +44,23 @@ impl Flexibility {
     /// No column known yet (order `m`).
     pub(super) fn lazy(m: usize) -> Self {
         Flexibility {
-            matrix: DMatrix::zeros(m, m),
+            matrix: DMatrix::zeros(0, 0),
             known: vec![false; m],
         }
+    }
+
+    /// Make column `j` known with the values `f`.
+    fn set_column(&mut self, j: usize, f: impl Iterator<Item = f64>) {
+        let m = self.known.len();
+        if self.matrix.ncols() != m {
+            self.matrix = DMatrix::zeros(m, m);
+        }
+        self.matrix
+            .column_mut(j)
+            .iter_mut()
+            .zip(f)
+            .for_each(|(c, v)| *c = v);
+        self.known[j] = true;
     }
 
     /// Whether every column is known.
@@ -466,10 +482,7 @@ impl ContactAnalysis {
         let columns = self.bodies.flexibility_times(&self.dofs, &units)?;
         for (c, &j) in missing.iter().enumerate() {
             self.flexibility
-                .matrix
-                .column_mut(j)
-                .copy_from(&columns.column(c));
-            self.flexibility.known[j] = true;
+                .set_column(j, columns.column(c).iter().copied());
         }
         self.timings.flexibility += clock.elapsed().as_secs_f64();
         Ok(())
