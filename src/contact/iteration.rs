@@ -358,15 +358,19 @@ pub struct NodeResult {
     pub tn: f64,
     /// Tangential traction on A along `s`.
     pub ts: f64,
-    /// Nodal normal (A's outward) in the converged configuration.
+    /// Nodal normal (A's outward): of the reference configuration under small kinematics, of
+    /// the converged one under finite kinematics.
     pub normal: [f64; 2],
     /// Nodal tangent `s = (n_y, -n_x)`.
     pub tangent: [f64; 2],
-    /// Current position of the node.
+    /// Current position (reference position plus the converged displacement).
     pub position: [f64; 2],
-    /// `integral of M_k ds`: divides nodal forces into pressures.
+    /// Tributary length `integral of M_k ds`, measured in the configuration the geometry lives
+    /// in (reference under small kinematics, converged under finite): the tractions are per
+    /// unit length of it, and it divides nodal forces into pressures.
     pub weight: f64,
-    /// Normal weighted gap per unit length (`< 0` penetration).
+    /// Normal weighted gap per unit length (`< 0` penetration; infinite where B does not cover
+    /// the node's support).
     pub gap: f64,
     /// Equivalent nodal contact force on A at this node, `sum_k F^A_kj t_k` (global x, y).
     pub force: [f64; 2],
