@@ -647,6 +647,37 @@ impl ContactAnalysis {
         old
     }
 
+    /// The unknowns and the new contact displacement of one iteration: on the reference algebra
+    /// (`SmallSystem::solve` on the full `F`, `u = u0 + F f`) or on the lazy one
+    /// ([`solve_boundary`](Self::solve_boundary)).
+    pub(super) fn solve_iteration(
+        &mut self,
+        system: &SmallSystem,
+        u0c: &[f64],
+        border: Option<&Border>,
+    ) -> Result<Solution> {
+        if !self.reference_algebra {
+            return self.solve_boundary(system, u0c, border);
+        }
+        let (tau, plate_motion, condition) = system.solve(u0c, &self.flexibility.matrix, border)?;
+        let forces = system.forces(&tau, self.dofs.len());
+        // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
+        let mut uc = u0c.to_vec();
+        for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
+            for (u, c) in uc.iter_mut().zip(self.flexibility.column(j)) {
+                *u += c * fj;
+            }
+        }
+        if let Some(b) = border {
+            for (&d, &m) in b.directions.iter().zip(&plate_motion) {
+                for (u, w) in uc.iter_mut().zip(&b.response[d]) {
+                    *u += m * w;
+                }
+            }
+        }
+        Ok((tau, plate_motion, condition, uc))
+    }
+
     /// Solve the small system (METHOD.md section 3): `S tau = b - rows . u0` with
     /// `S_ij = row_i . F col_j`, bordered by the force-controlled plate translations `U` as in
     /// the reference (`SmallSystem::solve`), by a blocked Cholesky factorization when `S` is

@@ -62,6 +62,7 @@ pub(super) enum Row {
 pub(super) type Sparse = Vec<(usize, f64)>;
 
 /// The small dense system of one iteration: one unknown per active row.
+#[derive(PartialEq)]
 pub(super) struct SmallSystem {
     /// `(pair, A node index, row)` of each unknown.
     pub(super) unknowns: Vec<(usize, usize, Row)>,
