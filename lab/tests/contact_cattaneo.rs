@@ -20,6 +20,9 @@ use hycon::contact::iteration::{ContactAnalysis, ContactOptions, NodeResult, Nod
 use hycon_lab::cases::Hertz;
 use hycon_lab::scene::DiskOnBlock;
 
+#[path = "common/l2.rs"]
+mod l2;
+
 const N: usize = 16;
 const MU: f64 = 0.3;
 
@@ -93,39 +96,6 @@ struct State {
     slip_signs_ok: bool,
 }
 
-/// Relative L2 distance between the linear interpolant of `v` (sorted by x) and `exact`.
-fn l2_error(v: &[(f64, f64)], exact: impl Fn(f64) -> f64) -> f64 {
-    const SUB: usize = 64;
-    let (mut num, mut den) = (0.0, 0.0);
-    for w in v.windows(2) {
-        let ((x0, p0), (x1, p1)) = (w[0], w[1]);
-        let dx = (x1 - x0) / SUB as f64;
-        for i in 0..SUB {
-            let t = (i as f64 + 0.5) / SUB as f64;
-            let (x, p) = (x0 + t * (x1 - x0), p0 + t * (p1 - p0));
-            let e = exact(x);
-            num += dx * (p - e).powi(2);
-            den += dx * e * e;
-        }
-    }
-    (num / den).sqrt()
-}
-
-/// L2 norm of `exact` over the span of `v` (same quadrature as [`l2_error`]).
-fn l2_norm(v: &[(f64, f64)], exact: impl Fn(f64) -> f64) -> f64 {
-    const SUB: usize = 64;
-    let mut den = 0.0;
-    for w in v.windows(2) {
-        let (x0, x1) = (w[0].0, w[1].0);
-        let dx = (x1 - x0) / SUB as f64;
-        for i in 0..SUB {
-            let x = x0 + (i as f64 + 0.5) / SUB as f64 * (x1 - x0);
-            den += dx * exact(x).powi(2);
-        }
-    }
-    den.sqrt()
-}
-
 /// Cattaneo-Mindlin shear traction at `x` from the centre.
 fn cattaneo(hertz: &Hertz, c: f64, x: f64) -> f64 {
     let a = hertz.half_width;
@@ -169,6 +139,8 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
     };
     let shear: Vec<(f64, f64)> = by_x.iter().map(|n| (n.position[0], n.ts)).collect();
     let pressure: Vec<(f64, f64)> = by_x.iter().map(|n| (n.position[0], -n.tn)).collect();
+    let (shear_distance, shear_norm) =
+        l2::distance_and_norm(&shear, |x| cattaneo(&hertz, c_theory, x - centre));
     let p0 = hertz.peak;
     State {
         slide: 0.0,
@@ -178,11 +150,10 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
         stick,
         stick_nodes: stick_idx.len(),
         c_theory,
-        shear_l2: l2_error(&shear, |x| cattaneo(&hertz, c_theory, x - centre)),
-        shear_l2_mu: l2_error(&shear, |x| cattaneo(&hertz, c_theory, x - centre))
-            * l2_norm(&shear, |x| cattaneo(&hertz, c_theory, x - centre))
-            / l2_norm(&shear, |x| MU * hertz.pressure(x - centre)),
-        pressure_l2: l2_error(&pressure, |x| hertz.pressure(x - centre)),
+        shear_l2: shear_distance / shear_norm,
+        shear_l2_mu: shear_distance
+            / l2::distance_and_norm(&shear, |x| MU * hertz.pressure(x - centre)).1,
+        pressure_l2: l2::relative_error(&pressure, |x| hertz.pressure(x - centre)),
         stick_ratio: nodes
             .iter()
             .filter(|n| n.state == NodeState::Stick)

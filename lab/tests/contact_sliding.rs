@@ -28,6 +28,9 @@ use hycon::contact::iteration::{
 use hycon_lab::cases::Hertz;
 use hycon_lab::scene::{DiskOnBlock, Scene};
 
+#[path = "common/l2.rs"]
+mod l2;
+
 /// Elements per target half-width.
 const N: usize = 16;
 /// Increments of the sideways motion.
@@ -83,24 +86,6 @@ fn moments(v: &[(f64, f64)]) -> (f64, f64) {
     (m0, m1)
 }
 
-/// Relative L2 distance between the linear interpolant of `v` and `exact`.
-fn l2_error(v: &[(f64, f64)], exact: impl Fn(f64) -> f64) -> f64 {
-    const SUB: usize = 64;
-    let (mut num, mut den) = (0.0, 0.0);
-    for w in v.windows(2) {
-        let ((x0, p0), (x1, p1)) = (w[0], w[1]);
-        let dx = (x1 - x0) / SUB as f64;
-        for i in 0..SUB {
-            let t = (i as f64 + 0.5) / SUB as f64;
-            let (x, p) = (x0 + t * (x1 - x0), p0 + t * (p1 - p0));
-            let e = exact(x);
-            num += dx * (p - e).powi(2);
-            den += dx * e * e;
-        }
-    }
-    (num / den).sqrt()
-}
-
 fn pressure(scene: &Scene, nodes: &[NodeResult]) -> Pressure {
     let p = sorted(nodes, |n| -n.tn);
     let pf = sorted(nodes, |n| {
@@ -135,8 +120,8 @@ fn pressure(scene: &Scene, nodes: &[NodeResult]) -> Pressure {
         peak: intercept.sqrt(),
         half_width: (intercept / -slope).sqrt(),
         hertz,
-        l2: l2_error(&p, |x| hertz.pressure(x - centre)),
-        l2_forces: l2_error(&pf, |x| hertz.pressure(x - centre)),
+        l2: l2::relative_error(&p, |x| hertz.pressure(x - centre)),
+        l2_forces: l2::relative_error(&pf, |x| hertz.pressure(x - centre)),
         active: m as usize,
         force,
         nodes: p,
