@@ -214,6 +214,19 @@ impl Model {
         system.solve(self)
     }
 
+    /// The free dofs numbered (the prescribed ones left out) and `K_ff` assembled over them
+    /// (lower triangle): the stiffness a host with its own solver factors; [`LinearSystem`]
+    /// factors it with hycon's.
+    pub fn assemble_free(&self) -> Result<(DofMap, SparsePattern)> {
+        let dofs = DofMap::new(
+            self.mesh.n_nodes(),
+            self.prescribed.iter().map(|p| dof(p.node, p.dir)),
+        );
+        let mut pattern = SparsePattern::new(&self.mesh, &dofs);
+        pattern.assemble(&self.mesh, &self.materials, self.formulation, &dofs)?;
+        Ok((dofs, pattern))
+    }
+
     /// Element forces `K q` summed over all elements (length `2 n_nodes`): the equivalent nodal
     /// forces the elements exert; at prescribed dofs minus external forces this is the reaction.
     /// An element whose displacements `q_e` are all zero adds nothing and is skipped (the
@@ -266,13 +279,8 @@ impl LinearSystem {
         backend.check_available()?;
         model.validate()?;
         check_rigid_body_support(model)?;
-        let dofs = DofMap::new(
-            model.mesh.n_nodes(),
-            model.prescribed.iter().map(|p| dof(p.node, p.dir)),
-        );
         let clock = std::time::Instant::now();
-        let mut pattern = SparsePattern::new(&model.mesh, &dofs);
-        pattern.assemble(&model.mesh, &model.materials, model.formulation, &dofs)?;
+        let (dofs, pattern) = model.assemble_free()?;
         let assembly = clock.elapsed().as_secs_f64();
         let trailing_free: Vec<usize> = trailing.iter().filter_map(|&d| dofs.equation(d)).collect();
         let mut cholesky = SparseCholesky::analyze(pattern.symbolic(), backend, &trailing_free)?;

@@ -8,7 +8,7 @@
 
 use faer::Mat;
 use faer::sparse::{SparseColMat, Triplet};
-use hycon::assembly::{DofMap, SparsePattern, dof};
+use hycon::assembly::dof;
 use hycon::element::Formulation;
 use hycon::mesh::generate::{self, Grading};
 use hycon::model::{LinearSystem, Model};
@@ -173,14 +173,7 @@ fn singular_systems_are_errors() {
     }
 
     // zero the row and column of the tip's vertical dof (lower triangle)
-    let dofs = DofMap::new(
-        model.mesh.n_nodes(),
-        model.prescribed.iter().map(|p| dof(p.node, p.dir)),
-    );
-    let mut pattern = SparsePattern::new(&model.mesh, &dofs);
-    pattern
-        .assemble(&model.mesh, &model.materials, model.formulation, &dofs)
-        .unwrap();
+    let (dofs, pattern) = model.assemble_free().unwrap();
     let zero = dofs.equation(dof(tip, 1)).unwrap();
     let k = pattern.matrix();
     let mut triplets = Vec::new();
@@ -261,14 +254,7 @@ fn objects_on_several_threads() {
 #[test]
 fn timing_faer_vs_cholmod_100k() {
     let (model, tip) = cook_model(Formulation::Hybrid, 224);
-    let dofs = DofMap::new(
-        model.mesh.n_nodes(),
-        model.prescribed.iter().map(|p| dof(p.node, p.dir)),
-    );
-    let mut pattern = SparsePattern::new(&model.mesh, &dofs);
-    pattern
-        .assemble(&model.mesh, &model.materials, model.formulation, &dofs)
-        .unwrap();
+    let (dofs, pattern) = model.assemble_free().unwrap();
     let n = dofs.n_free();
     let f = model.external_forces();
     let mut rhs = Mat::<f64>::zeros(n, 64);

@@ -7,7 +7,7 @@
 //! changes), the same converged states and the same tractions to `1e-10` of the peak traction,
 //! and condition estimates equal to round-off.
 
-use hycon::assembly::{DofMap, SparsePattern, dof};
+use hycon::assembly::dof;
 use hycon::contact::bodies::{HostNode, HostStiffness, HostSystem};
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult,
@@ -170,14 +170,7 @@ fn cattaneo_mindlin_matches_the_reference() {
 fn callback_path_matches_the_reference_with_fewer_solves() {
     let scene = scene(16, 0.3);
     let model = &scene.model;
-    let dofs = DofMap::new(
-        model.mesh.n_nodes(),
-        model.prescribed.iter().map(|p| dof(p.node, p.dir)),
-    );
-    let mut pattern = SparsePattern::new(&model.mesh, &dofs);
-    pattern
-        .assemble(&model.mesh, &model.materials, model.formulation, &dofs)
-        .unwrap();
+    let (dofs, pattern) = model.assemble_free().unwrap();
     let rhs = |qp: &[f64]| -> Vec<f64> {
         let mut held = vec![0.0; qp.len()];
         for (d, v) in held.iter_mut().enumerate() {

@@ -33,14 +33,7 @@ struct HostSide {
 
 impl HostSide {
     fn new(model: &Model) -> Self {
-        let dofs = DofMap::new(
-            model.mesh.n_nodes(),
-            model.prescribed.iter().map(|p| dof(p.node, p.dir)),
-        );
-        let mut pattern = SparsePattern::new(&model.mesh, &dofs);
-        pattern
-            .assemble(&model.mesh, &model.materials, model.formulation, &dofs)
-            .unwrap();
+        let (dofs, pattern) = model.assemble_free().unwrap();
         HostSide { dofs, pattern }
     }
 
