@@ -364,8 +364,8 @@ impl Dense {
 
     /// `x <- S^-1 x`, or `S^-T x` when `transpose`. For the block form,
     /// `S^-1 x`: `y = S_PP^-1 x_P`, `x_Q <- Z^-1 (x_Q - S_QP y)`, `x_P <- y - W x_Q`;
-    /// `S^-T x`: `y = S_PP^-1 x_P`, `x_Q <- Z^-T (x_Q - W^T x_P)`,
-    /// `x_P <- y - S_PP^-1 S_QP^T x_Q` (`S_PQ^T S_PP^-1 = W^T`).
+    /// `S^-T x`: `x_Q <- Z^-T (x_Q - W^T x_P)` (`S_PQ^T S_PP^-1 = W^T`), then
+    /// `x_P <- S_PP^-1 (x_P - S_QP^T x_Q)`: either way one solve with `L L^T`.
     fn solve(&self, mut x: faer::MatMut<'_, f64>, transpose: bool) {
         match self {
             Dense::Lu(f) if transpose => f.solve_transpose_in_place(x),
@@ -373,24 +373,24 @@ impl Dense {
             Dense::Block(b) => {
                 let Blocks { p, l, slip } = b.as_ref();
                 let k = x.ncols();
-                let xp = Mat::<f64>::from_fn(p.len(), k, |i, j| x[(p[i], j)]);
-                let mut y = xp.clone();
-                cholesky_solve(l, y.as_mut());
+                let mut xp = Mat::<f64>::from_fn(p.len(), k, |i, j| x[(p[i], j)]);
                 let Some(Slip { q, w, s_qp, z }) = slip else {
-                    scatter(&y, p, x.as_mut());
+                    cholesky_solve(l, xp.as_mut());
+                    scatter(&xp, p, x.as_mut());
                     return;
                 };
                 let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
                 let (out_p, out_q) = if transpose {
-                    let mut rq = xq - w.transpose() * &xp;
+                    let mut rq = clean_after(|| xq - w.transpose() * &xp);
                     z.solve_transpose_in_place(rq.as_mut());
-                    let mut back = s_qp.transpose() * &rq;
-                    cholesky_solve(l, back.as_mut());
-                    (y - back, rq)
+                    let mut yp = clean_after(|| xp - s_qp.transpose() * &rq);
+                    cholesky_solve(l, yp.as_mut());
+                    (yp, rq)
                 } else {
-                    let mut rq = xq - s_qp * &y;
+                    cholesky_solve(l, xp.as_mut());
+                    let mut rq = clean_after(|| xq - s_qp * &xp);
                     z.solve_in_place(rq.as_mut());
-                    (y - w * &rq, rq)
+                    (clean_after(|| xp - w * &rq), rq)
                 };
                 scatter(&out_p, p, x.as_mut());
                 scatter(&out_q, q, x);
@@ -417,6 +417,33 @@ fn cholesky_solve(l: &Mat<f64>, mut x: faer::MatMut<'_, f64>) {
     solve_upper_triangular_in_place(l.transpose(), x, Par::Seq);
 }
 
+/// `indices` as runs of consecutive values, `(position, first value, length)`: the directions
+/// of the unknowns, numbered as their nodes entered, come in a few long runs.
+fn consecutive_runs(indices: &[usize]) -> Vec<(usize, usize, usize)> {
+    let mut runs: Vec<(usize, usize, usize)> = Vec::new();
+    for (i, &a) in indices.iter().enumerate() {
+        match runs.last_mut() {
+            Some((_, first, len)) if *first + *len == a => *len += 1,
+            _ => runs.push((i, a, 1)),
+        }
+    }
+    runs
+}
+
+/// `sum_i |x_i|` in four interleaved partial sums, which the compiler vectorizes (a single
+/// running sum must keep its order of additions and stays scalar).
+fn abs_sum(x: &[f64]) -> f64 {
+    let mut chunks = x.chunks_exact(4);
+    let mut partial = [0.0; 4];
+    for c in chunks.by_ref() {
+        for (p, v) in partial.iter_mut().zip(c) {
+            *p += v.abs();
+        }
+    }
+    let rest: f64 = chunks.remainder().iter().map(|v| v.abs()).sum();
+    (partial[0] + partial[1]) + (partial[2] + partial[3]) + rest
+}
+
 /// `x[rows[i], j] = v[i, j]`.
 fn scatter(v: &Mat<f64>, rows: &[usize], mut x: faer::MatMut<'_, f64>) {
     for j in 0..v.ncols() {
@@ -426,16 +453,25 @@ fn scatter(v: &Mat<f64>, rows: &[usize], mut x: faer::MatMut<'_, f64>) {
     }
 }
 
-/// `||A||_1 ||A^-1||_1` (`a_norm = ||A||_1`) with `||A^-1||_1` estimated by Hager's method from
-/// the factors of `A` (Higham's Algorithm 2.1, the same steps as
-/// `small_system::condition_estimate`); `None` when a solve is not finite (singular `A`).
-fn condition_estimate(a_norm: f64, lu: &Dense, m: usize) -> Option<f64> {
+/// `rhs <- A^-1 rhs` and `||A||_1 ||A^-1||_1` (`a_norm = ||A||_1`) with `||A^-1||_1`
+/// estimated by Hager's method from the factors of `A` (Higham's Algorithm 2.1, the same steps
+/// as `small_system::condition_estimate`); the first step's solve and `rhs`'s share one pass
+/// over the factors, which costs what one of them does. `None` when a solve is not finite
+/// (singular `A`).
+fn solve_and_estimate(a_norm: f64, lu: &Dense, rhs: faer::MatMut<'_, f64>) -> Option<f64> {
+    let m = rhs.nrows();
     let norm1 = |v: &Mat<f64>| (0..m).map(|i| v[(i, 0)].abs()).sum::<f64>();
     let mut x = Mat::<f64>::from_fn(m, 1, |_, _| 1.0 / m as f64);
+    let mut first = Mat::<f64>::from_fn(m, 2, |i, j| if j == 0 { x[(i, 0)] } else { rhs[(i, 0)] });
+    lu.solve(first.as_mut(), false);
+    rhs.col_mut(0).copy_from(first.col(1));
+    let mut y = first.get(.., ..1).to_owned();
     let mut estimate = 0.0;
-    for _ in 0..5 {
-        let mut y = x.clone();
-        lu.solve(y.as_mut(), false);
+    for step in 0..5 {
+        if step > 0 {
+            y = x.clone();
+            lu.solve(y.as_mut(), false);
+        }
         if !(0..m).all(|i| y[(i, 0)].is_finite()) {
             return None;
         }
@@ -708,13 +744,17 @@ impl ContactAnalysis {
             Kinematics::Small => {
                 let (rows, cols) = self.node_directions(system)?;
                 let n = &self.node_flexibility.n;
-                // N is symmetric: column j gathers along the rows N_b of its directions
+                // N is symmetric: column j gathers along the rows N_b of its directions,
+                // which come in a few runs of consecutive directions (slices, not gathers)
+                let runs = consecutive_runs(&rows);
                 for (j, parts) in cols.iter().enumerate() {
                     let sj = col_slice(&mut s, j);
                     for &(b, c) in parts {
                         let nb = &n[b];
-                        for (sij, &a) in sj.iter_mut().zip(&rows) {
-                            *sij += c * nb[a];
+                        for &(i, a, len) in &runs {
+                            for (sij, v) in sj[i..i + len].iter_mut().zip(&nb[a..a + len]) {
+                                *sij += c * v;
+                            }
                         }
                     }
                 }
@@ -747,7 +787,7 @@ impl ContactAnalysis {
             )?;
         }
         let s_norm = (0..m + k)
-            .map(|j| col_slice(&mut s, j).iter().map(|x| x.abs()).sum::<f64>())
+            .map(|j| abs_sum(col_slice(&mut s, j)))
             .fold(0.0, f64::max);
         // the unknowns whose column is not their row: slip nodes under friction
         let (unsymmetric, symmetric): (Vec<usize>, Vec<usize>) =
@@ -764,10 +804,9 @@ impl ContactAnalysis {
         };
         let lu = Dense::new(&s, factor, unsymmetric);
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
-        let condition = condition_estimate(s_norm, &lu, m + k)
+        let condition = solve_and_estimate(s_norm, &lu, rhs.as_mut())
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
-        lu.solve(rhs.as_mut(), false);
         self.small_matrix = s;
         if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
             self.node_flexibility.factor.l = b.l;
@@ -899,6 +938,29 @@ impl ContactAnalysis {
 mod tests {
     use super::*;
 
+    /// The runs of the unknowns' directions cover every index once, in order, and a gather
+    /// through them is the plain gather.
+    #[test]
+    fn consecutive_runs_cover_the_indices() {
+        let indices = [3, 4, 5, 9, 10, 2, 7, 8];
+        let runs = consecutive_runs(&indices);
+        assert_eq!(runs, vec![(0, 3, 3), (3, 9, 2), (5, 2, 1), (6, 7, 2)]);
+        let flat: Vec<usize> = runs.iter().flat_map(|&(_, a, len)| a..a + len).collect();
+        assert_eq!(flat, indices);
+        assert!(consecutive_runs(&[]).is_empty());
+    }
+
+    /// The vectorized `sum |x_i|` agrees with the running sum to round-off at every length
+    /// around the chunk size, signs mixed.
+    #[test]
+    fn abs_sum_is_the_one_norm() {
+        for len in 0..12 {
+            let x: Vec<f64> = (0..len).map(|i| (i as f64 - 4.5) * 1.25).collect();
+            let plain: f64 = x.iter().map(|v| v.abs()).sum();
+            assert!((abs_sum(&x) - plain).abs() <= 1e-15 * plain, "{len}");
+        }
+    }
+
     /// Extending the factor of a leading block gives the factor of the whole matrix, and a
     /// matrix that is not positive definite is refused at any prefix. The kept factor may be
     /// exactly `L11`, or larger (a factor whose unknowns after the prefix changed: here that of
@@ -964,14 +1026,21 @@ mod tests {
         assert_eq!(upper_in_use(), Some(false), "after extending a factor");
         let dense = Dense::new(&a, Some(((0..n - 10).collect(), l)), (n - 10..n).collect());
         assert_eq!(upper_in_use(), Some(false), "after the block factorization");
-        let mut x = Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
-        dense.solve(x.as_mut(), true);
-        assert_eq!(upper_in_use(), Some(false), "after a solve");
-        let r = a.transpose() * &x - Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
-        assert!(
-            r.norm_max() < 1e-8 * n as f64,
-            "the solve is right: {:e}",
-            r.norm_max()
-        );
+        for transpose in [false, true] {
+            let mut x = Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
+            dense.solve(x.as_mut(), transpose);
+            assert_eq!(upper_in_use(), Some(false), "after a solve ({transpose})");
+            let a = if transpose {
+                a.transpose().to_owned()
+            } else {
+                a.clone()
+            };
+            let r = a * &x - Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
+            assert!(
+                r.norm_max() < 1e-8 * n as f64,
+                "the solve is right ({transpose}): {:e}",
+                r.norm_max()
+            );
+        }
     }
 }
