@@ -72,13 +72,13 @@
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 4
+#define HYCON_VERSION_MINOR 5
 
 // Patch version of the library this header belongs to.
 #define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 400
+#define HYCON_VERSION 500
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6

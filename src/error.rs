@@ -78,8 +78,9 @@ pub enum Error {
 }
 
 /// Why a contact increment failed. Every variant leaves the analysis at its last converged
-/// state; node ids are the caller's.
+/// state; node ids are the caller's. Later versions may add variants.
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum ContactError {
     /// The iteration cap was reached before the contact set settled and `R` fell below the
     /// tolerance.
@@ -125,6 +126,25 @@ pub enum ContactError {
         /// Its penetration (a length, positive).
         depth: f64,
         /// The penetration over the increment's motion.
+        relative: f64,
+    },
+    /// A node locked in slip after alternating between stick and slip slides against its
+    /// friction at convergence by more than a hair: it did not sit on the edge of the friction
+    /// cone, and the state would break the friction law (the traction pushing along the slip).
+    #[error(
+        "increment {increment}: the contact set cycles: node {node} alternates between stick \
+         and slip, and in slip it slides against its friction by {slip:.3e} ({relative:.1e} of \
+         the increment's motion)"
+    )]
+    SlipReversal {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The A node.
+        node: usize,
+        /// How far it slides against its friction since the increment began (a length,
+        /// positive).
+        slip: f64,
+        /// That slide over the increment's motion.
         relative: f64,
     },
     /// A node penetrates the opposite surface where the pairing does not see it: a B node

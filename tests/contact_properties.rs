@@ -102,14 +102,33 @@ fn block(
 /// iterations of the zero increment, or the error's kind.
 type Outcome = std::result::Result<(Vec<Vec<(f64, f64)>>, usize), String>;
 
+/// The error's variant, by name (`contact SlipReversal`, `Singular`).
 fn error_kind(e: &Error) -> String {
+    let name = |debug: String| {
+        debug
+            .split(|c: char| !c.is_alphanumeric())
+            .next()
+            .unwrap_or_default()
+            .to_string()
+    };
     match e {
-        Error::Contact(c) => format!("contact {:?}", std::mem::discriminant(c)),
-        other => format!("{:?}", std::mem::discriminant(other)),
+        Error::Contact(c) => format!("contact {}", name(format!("{c:?}"))),
+        other => name(format!("{other:?}")),
     }
 }
 
-fn run(p: &Problem, v: &Variant) -> Outcome {
+/// `x` rotated by the variant's angle.
+fn rotate(v: &Variant, x: [f64; 2]) -> [f64; 2] {
+    let (s, c) = v.angle.sin_cos();
+    [c * x[0] - s * x[1], s * x[0] + c * x[1]]
+}
+
+/// The problem's analysis in variant `v`, with the upper block's top nodes (renumbered), or the
+/// error's kind.
+fn analysis(
+    p: &Problem,
+    v: &Variant,
+) -> std::result::Result<(ContactAnalysis, Vec<usize>), String> {
     let mut mesh = Mesh::new();
     let lower = block(&mut mesh, 0.0, 0.0, 2.0, 1.0, p.lower, 0);
     let upper = block(&mut mesh, p.left, 1.0 + p.gap, p.width, 1.0, p.upper, 1);
@@ -121,15 +140,14 @@ fn run(p: &Problem, v: &Variant) -> Outcome {
     let bottom = row(&lower, p.lower, 0);
     let top = row(&upper, p.upper, p.upper[1]);
     // the variant: transform the coordinates, renumber every id
-    let rotate = |x: [f64; 2]| {
-        let (s, c) = v.angle.sin_cos();
-        [c * x[0] - s * x[1], s * x[0] + c * x[1]]
-    };
     for x in &mut mesh.nodes {
-        *x = rotate([
-            v.length_scale * (x[0] + v.translation[0]),
-            v.length_scale * (x[1] + v.translation[1]),
-        ]);
+        *x = rotate(
+            v,
+            [
+                v.length_scale * (x[0] + v.translation[0]),
+                v.length_scale * (x[1] + v.translation[1]),
+            ],
+        );
     }
     let n = mesh.n_nodes();
     let perm: Vec<usize> = v.perm.clone().unwrap_or_else(|| (0..n).collect());
@@ -166,18 +184,28 @@ fn run(p: &Problem, v: &Variant) -> Outcome {
         kinematics: p.kinematics,
         ..ContactOptions::default()
     };
-    let mut analysis =
-        ContactAnalysis::new(model, vec![pair], options).map_err(|e| error_kind(&e))?;
+    let analysis = ContactAnalysis::new(model, vec![pair], options).map_err(|e| error_kind(&e))?;
+    Ok((analysis, top))
+}
+
+/// The prescribed values of the upper block's top pressed by `depth` and moved by `slide`.
+fn totals(p: &Problem, v: &Variant, n: usize, top: &[usize], slide: f64) -> Vec<f64> {
+    let mut qp = vec![0.0; 2 * n];
+    for &node in top {
+        let u = rotate(v, [v.length_scale * slide, -v.length_scale * p.depth]);
+        qp[2 * node] = u[0];
+        qp[2 * node + 1] = u[1];
+    }
+    qp
+}
+
+fn run(p: &Problem, v: &Variant) -> Outcome {
+    let (mut analysis, top) = analysis(p, v)?;
+    let n = analysis
+        .model()
+        .map(|m| m.mesh.n_nodes())
+        .map_err(|e| error_kind(&e))?;
     let f = vec![0.0; 2 * n];
-    let totals = |slide: f64| {
-        let mut qp = vec![0.0; 2 * n];
-        for &node in &top {
-            let u = rotate([v.length_scale * slide, -v.length_scale * p.depth]);
-            qp[2 * node] = u[0];
-            qp[2 * node + 1] = u[1];
-        }
-        qp
-    };
     let tractions = |a: &ContactAnalysis| -> Vec<(f64, f64)> {
         let r = a.node_results(0).unwrap();
         r.iter().map(|n| (n.tn, n.ts)).collect()
@@ -185,12 +213,12 @@ fn run(p: &Problem, v: &Variant) -> Outcome {
     let mut out = Vec::new();
     for slide in [0.0, p.slide] {
         analysis
-            .increment(&f, &totals(slide))
+            .increment(&f, &totals(p, v, n, &top, slide))
             .map_err(|e| error_kind(&e))?;
         out.push(tractions(&analysis));
     }
     let zero = analysis
-        .increment(&f, &totals(p.slide))
+        .increment(&f, &totals(p, v, n, &top, p.slide))
         .map_err(|e| format!("zero increment: {e}"))?;
     out.push(tractions(&analysis));
     Ok((out, zero.iterations))
@@ -346,4 +374,46 @@ proptest! {
             _ => prop_assert!(false, "scaled by {s:e}: {base:?} against {other:?}"),
         }
     }
+}
+
+/// A press the random problems contain: a punch one element wide, with friction, whose corner
+/// node alternates between stick and slip. Locked in slip, it would converge sliding against its
+/// friction by a tenth of the press (the friction pushing it along its slip, which the Coulomb
+/// law forbids); the increment fails instead, naming the node, and keeps the last converged
+/// state (no contact yet). Frictionless, the same press converges.
+#[test]
+fn a_node_locked_in_slip_may_not_slide_against_its_friction() {
+    let p = Problem {
+        lower: [3, 1],
+        upper: [1, 3],
+        left: 0.28927094453899016,
+        width: 0.6911293449590747,
+        gap: 0.00035757320991738163,
+        depth: 0.0032542192812968535,
+        slide: 0.0,
+        moduli: [1.0, 0.0655974350362587],
+        poisson: [0.3053780252713488, 0.31289662183799355],
+        friction: 0.43148467224425613,
+        kinematics: Kinematics::Small,
+    };
+    let v = Variant::identity();
+    let (mut analysis, top) = analysis(&p, &v).unwrap();
+    let n = analysis.model().unwrap().mesh.n_nodes();
+    let before = analysis.node_results(0).unwrap();
+    let err = analysis
+        .increment(&vec![0.0; 2 * n], &totals(&p, &v, n, &top, 0.0))
+        .unwrap_err();
+    match &err {
+        Error::Contact(hycon::ContactError::SlipReversal { relative, .. }) => {
+            assert!(*relative > 1e-2, "{err}")
+        }
+        other => panic!("expected a slip reversal, got {other}"),
+    }
+    assert_eq!(
+        analysis.node_results(0).unwrap(),
+        before,
+        "the state is kept"
+    );
+    let frictionless = Problem { friction: 0.0, ..p };
+    assert!(run(&frictionless, &v).is_ok());
 }

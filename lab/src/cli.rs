@@ -185,6 +185,16 @@ enum Bench {
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
         n: Vec<usize>,
     },
+    /// Random two-block presses (the distribution of tests/contact_properties.rs: pressed,
+    /// slid, the last totals repeated), counted by how the contact iteration ends.
+    Presses {
+        /// How many presses.
+        #[arg(long, default_value_t = 20_000)]
+        count: usize,
+        /// Seed of the draws.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
     /// The L2 error of the contact pressure against where the Hertz edge falls between two
     /// nodes (frictionless reference scene, small kinematics): the method and the best
     /// approximation on the same nodes, at evenly spaced edge positions within one element.
@@ -670,6 +680,23 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,
         Bench::Edge { n, positions } => edge(&n, positions)?,
+        Bench::Presses { count, seed } => {
+            let presses = hycon_lab::presses::Press::draw(count, seed);
+            let o = hycon_lab::presses::outcomes(&presses);
+            println!(
+                "{count} random two-block presses (seed {seed}): {} converged",
+                o.converged
+            );
+            for (kind, n) in &o.failed {
+                println!("  failed, {kind}: {n}");
+            }
+            for (decade, n) in &o.slip_reversal_decades {
+                println!(
+                    "  slip reversals of 1e{decade} to 1e{} of the motion: {n}",
+                    decade + 1
+                );
+            }
+        }
         Bench::Contact { n } => {
             println!(
                 "{:>4} {:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",

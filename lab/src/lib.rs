@@ -9,11 +9,13 @@
 //! * [`scene`]: the disk-on-block contact scene of the paper and its comparison with Hertz.
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 //! * [`bench`](mod@bench): the measurements behind the README's performance figures.
+//! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
 #![warn(missing_docs)]
 
 pub mod bench;
 pub mod cases;
 pub mod examples;
+pub mod presses;
 pub mod report;
 pub mod scene;

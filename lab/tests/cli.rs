@@ -486,3 +486,33 @@ fn committed_sweeps_parse_with_their_kinematics() {
     );
     assert!(old.iter().all(|r| r.case.kinematics == Kinematics::Finite));
 }
+
+/// `bench presses` accounts for every press (converged or failed by kind), and only presses
+/// with friction can fail with a node locked in slip.
+#[test]
+fn bench_presses_accounts_for_every_press() {
+    let out = hycon(&["bench", "presses", "--count", "400", "--seed", "7"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let number = |s: &str| s.trim().parse::<usize>().expect("a count");
+    let first = text.lines().next().expect("a summary line");
+    let converged = number(
+        first
+            .rsplit(": ")
+            .next()
+            .unwrap()
+            .trim_end_matches(" converged"),
+    );
+    let failed: usize = text
+        .lines()
+        .filter(|l| l.trim_start().starts_with("failed, "))
+        .map(|l| number(l.rsplit(": ").next().unwrap()))
+        .sum();
+    assert_eq!(converged + failed, 400, "{text}");
+    assert!(converged > 300, "{text}");
+    assert!(!text.contains("SlipReversal, frictionless"), "{text}");
+}

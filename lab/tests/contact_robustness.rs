@@ -3,7 +3,8 @@
 //! Pressing a disk with friction at 64 elements per half-width puts a node at each contact edge
 //! right on the friction cone: as stick it violates `|ts| <= mu |tn|`, as slip its slip
 //! reverses, and the plain rules cycle. The iteration locks such a node in slip (on the cone,
-//! with a vanishing slip) and converges; the friction law holds at every node. The same holds
+//! with a vanishing slip, which is checked at convergence) and converges; the friction law
+//! holds at every node. The same holds
 //! for a node at the edge of the contact zone that alternates between open and closed (locked
 //! open, its penetration checked).
 

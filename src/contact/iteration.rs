@@ -1080,6 +1080,7 @@ impl ContactAnalysis {
                 self.uncovered(&surfaces, states)?;
                 self.passed_through(&surfaces, states, &uc, &startc)?;
                 self.edge_penetration(number, &surfaces, set.locked_open(), &uc, &startc)?;
+                self.slip_reversal(number, &surfaces, states, set.locked_slip(), &uc, &startc)?;
                 self.small_sliding(number, states, &uc)?;
                 self.timings.factorization += refactoring;
                 self.timings.iterations += clock.elapsed().as_secs_f64()
@@ -1257,10 +1258,8 @@ impl ContactAnalysis {
             let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
             // tangential slip of A relative to B since the increment began, per unit length
-            let slip_since_start = |node: &geometry::ContactNode| {
-                let row = self.directed(&node.coupling, node.tangent);
-                (dot(&row, uc) - dot(&row, startc)) / node.weight
-            };
+            let slip_since_start =
+                |node: &geometry::ContactNode| self.slip_since_start(node, uc, startc);
             // a node closing while the surfaces slide past each other slides with them; one
             // closing without relative motion sticks
             let closed = |node: &geometry::ContactNode| {

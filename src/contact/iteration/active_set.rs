@@ -7,7 +7,8 @@
 //! times per increment):
 //! * a node on the edge of the friction cone alternating between stick (violating the cone)
 //!   and slip (whose slip reverses) sits on the cone with a vanishing slip: it is **locked in
-//!   slip** and may not return to stick;
+//!   slip** and may not return to stick (its slip is checked at convergence: one that slides
+//!   against its friction was not on the cone's edge);
 //! * a node on the edge of the contact zone alternating between closed (in tension by a hair)
 //!   and open (penetrating by a hair) has zero traction and zero gap to round-off: it is
 //!   **locked open** and may not close (its penetration is checked at convergence).
@@ -93,6 +94,11 @@ impl ActiveSet {
     /// The nodes locked open in this increment (their penetration is checked at convergence).
     pub(super) fn locked_open(&self) -> &[NodeKey] {
         &self.locks.open
+    }
+
+    /// The nodes locked in slip in this increment (their slip is checked at convergence).
+    pub(super) fn locked_slip(&self) -> &[NodeKey] {
+        &self.locks.slip
     }
 
     /// How many nodes `proposed` changes.

@@ -1,5 +1,6 @@
 //! What a converged increment must also satisfy, and the convergence measure: active nodes
-//! fully covered, nodes locked open not penetrating, small kinematics within their range.
+//! fully covered, nodes locked open not penetrating, nodes locked in slip not sliding against
+//! their friction, small kinematics within their range.
 
 use super::*;
 
@@ -31,6 +32,11 @@ pub(super) fn reference_gap_slope(surface: &ContactSurface, k: usize, x: &[[f64;
 /// How far a node locked open after an open/closed cycle may penetrate at convergence,
 /// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
 pub(super) const EDGE_PENETRATION: f64 = 1e-4;
+
+/// How far a node locked in slip after a stick/slip cycle may slide against its friction at
+/// convergence, relative to the increment's motion (see [`ContactAnalysis::motion_scale`]):
+/// the same hair as [`EDGE_PENETRATION`].
+pub(super) const SLIP_REVERSAL: f64 = EDGE_PENETRATION;
 
 /// Round-off level of a displacement, relative to its size: iterates that differ by less than
 /// this times `|u|` are the same to the precision the geometry can be evaluated at.
@@ -126,6 +132,54 @@ impl ContactAnalysis {
                     node: self.bodies.external(self.pairs[p].a[k]),
                     depth: -gap,
                     relative: -gap / scale,
+                }
+                .into());
+            }
+        }
+        Ok(())
+    }
+
+    /// The tangential slip of A relative to B at `node` since the increment began, per unit
+    /// length: `s_k = (r_k . (u - u_start)) / w_k`, `r_k` the node's tangent row (its coupling
+    /// along the tangent) and `w_k` its weight.
+    pub(super) fn slip_since_start(
+        &self,
+        node: &geometry::ContactNode,
+        uc: &[f64],
+        startc: &[f64],
+    ) -> f64 {
+        let row = self.directed(&node.coupling, node.tangent);
+        (dot(&row, uc) - dot(&row, startc)) / node.weight
+    }
+
+    /// Nodes locked in slip after a stick/slip cycle must sit on the cone with a vanishing
+    /// slip: at convergence, one that slides against its friction (`-sign s_k`, see
+    /// [`slip_since_start`](Self::slip_since_start)) by more than `SLIP_REVERSAL` of the
+    /// motion scale was not on the cone's edge, and the increment fails naming the node.
+    pub(super) fn slip_reversal(
+        &self,
+        number: usize,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+        locked_slip: &[(usize, usize)],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<()> {
+        let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
+        for &(p, k) in locked_slip {
+            let NodeState::Slip { sign } = states[p][k] else {
+                continue;
+            };
+            let against =
+                -f64::from(sign) * self.slip_since_start(&surfaces[p].nodes[k], uc, startc);
+            let scale = self.motion_scale(p, xg, uc, startc);
+            if against > SLIP_REVERSAL * scale {
+                return Err(ContactError::SlipReversal {
+                    increment: number,
+                    node: self.bodies.external(self.pairs[p].a[k]),
+                    slip: against,
+                    relative: against / scale,
                 }
                 .into());
             }
