@@ -1257,13 +1257,10 @@ impl ContactAnalysis {
             // penetration is judged against the increment's own displacement scale
             let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
-            // tangential slip of A relative to B since the increment began, per unit length
-            let slip_since_start =
-                |node: &geometry::ContactNode| self.slip_since_start(node, uc, startc);
             // a node closing while the surfaces slide past each other slides with them; one
             // closing without relative motion sticks
             let closed = |node: &geometry::ContactNode| {
-                let slip = slip_since_start(node);
+                let slip = self.slip_since_start(node, uc, startc);
                 if law.is_frictionless() {
                     NodeState::Slip { sign: 1 }
                 } else if slip.abs() > slip_tolerance {
@@ -1303,7 +1300,8 @@ impl ContactAnalysis {
                     }
                     NodeState::Slip { sign } if !law.is_frictionless() => {
                         if set.may_stick((p, k))
-                            && f64::from(sign) * slip_since_start(node) < -slip_tolerance
+                            && f64::from(sign) * self.slip_since_start(node, uc, startc)
+                                < -slip_tolerance
                         {
                             new[p][k] = NodeState::Stick;
                         }

@@ -121,6 +121,9 @@ impl ContactAnalysis {
         uc: &[f64],
         startc: &[f64],
     ) -> Result<()> {
+        if locked_open.is_empty() {
+            return Ok(());
+        }
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
         for &(p, k) in locked_open {
@@ -165,6 +168,9 @@ impl ContactAnalysis {
         uc: &[f64],
         startc: &[f64],
     ) -> Result<()> {
+        if locked_slip.is_empty() {
+            return Ok(());
+        }
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
         for &(p, k) in locked_slip {
