@@ -321,6 +321,53 @@ impl Grid {
     }
 }
 
+/// A B node projecting within this fraction of an A segment's length of its ends is not inside
+/// it: a node facing an A node (node-to-node) is that node's weighted gap's business.
+const INTERIOR_MARGIN: f64 = 1e-3;
+
+/// Where point `x` projects on the segment `s0 -> s1`: `xi` with `s0 + xi (s1 - s0)` the foot
+/// of the perpendicular from `x`, and whether that lies strictly inside the segment (more than
+/// [`INTERIOR_MARGIN`] of its length from either end).
+pub(crate) fn interior_parameter(s0: [f64; 2], s1: [f64; 2], x: [f64; 2]) -> (f64, bool) {
+    let d = sub(s1, s0);
+    let xi = dot(sub(x, s0), d) / dot(d, d);
+    (xi, (INTERIOR_MARGIN..=1.0 - INTERIOR_MARGIN).contains(&xi))
+}
+
+/// The B nodes that project strictly inside each A segment (see [`interior_parameter`]), per
+/// segment in B's order, at fixed positions: under small kinematics the pointwise B-node
+/// check over open A segments reads its candidates here instead of testing every B node
+/// against every open segment in every iteration (`O(|A| |B|)` each time).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SegmentInteriors {
+    /// `nodes[start[k]..start[k + 1]]` project inside segment `k`.
+    start: Vec<usize>,
+    nodes: Vec<usize>,
+}
+
+impl SegmentInteriors {
+    /// The B nodes of `b` inside each segment of polyline `a`, at positions `x`.
+    pub(crate) fn new(a: &[usize], b: &[usize], x: &[[f64; 2]]) -> Self {
+        let mut out = SegmentInteriors {
+            start: vec![0],
+            nodes: Vec::new(),
+        };
+        for w in a.windows(2) {
+            let inside = b
+                .iter()
+                .filter(|&&j| interior_parameter(x[w[0]], x[w[1]], x[j]).1);
+            out.nodes.extend(inside);
+            out.start.push(out.nodes.len());
+        }
+        out
+    }
+
+    /// The B nodes inside segment `k` (between A nodes `k` and `k + 1`).
+    pub(crate) fn segment(&self, k: usize) -> &[usize] {
+        &self.nodes[self.start[k]..self.start[k + 1]]
+    }
+}
+
 fn lerp(p: [f64; 2], q: [f64; 2], s: f64) -> [f64; 2] {
     [p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])]
 }
@@ -708,6 +755,23 @@ mod tests {
             })
             .collect();
         (a, b, x)
+    }
+
+    /// The B nodes inside each A segment: strictly inside, not within the margin of an end
+    /// (a node facing an A node belongs to that node), in B's order, whatever the B node's
+    /// distance from the segment.
+    #[test]
+    fn segment_interiors_hold_the_b_nodes_projecting_inside() {
+        let (a, mut b, mut x) = flat(&[0.0, 1.0, 2.0], &[0.5, 1.0, 1.0005, 1.5, 2.5], 0.1);
+        x.push([1.25, -3.0]);
+        b.push(x.len() - 1);
+        let interiors = SegmentInteriors::new(&a, &b, &x);
+        // A runs right to left: segment 0 is [2, 1], segment 1 is [1, 0]
+        let at = |k: usize| -> Vec<f64> { interiors.segment(k).iter().map(|&j| x[j][0]).collect() };
+        assert_eq!(at(0), vec![1.5, 1.25]);
+        assert_eq!(at(1), vec![0.5]);
+        let (xi, inside) = interior_parameter(x[a[0]], x[a[1]], [1.9995, 7.0]);
+        assert!((xi - 0.0005).abs() < 1e-12 && !inside);
     }
 
     #[test]

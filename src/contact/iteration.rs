@@ -552,6 +552,9 @@ pub struct ContactAnalysis {
     /// The contact geometry of every pair in the reference configuration (the frozen pairing
     /// of small kinematics).
     reference: Vec<ContactSurface>,
+    /// Under small kinematics, the B nodes inside each A segment of every pair in the
+    /// reference configuration: the candidates of the pointwise B-node check.
+    interiors: Option<Vec<geometry::SegmentInteriors>>,
     /// The contact geometry of every pair at the last converged state (the reference one
     /// before the first increment): the iteration starts from it and the result queries read
     /// it, so nothing is evaluated twice.
@@ -657,6 +660,12 @@ impl ContactAnalysis {
         };
         timings.flexibility = clock.elapsed().as_secs_f64();
         let reference = evaluate_pairs(&pairs, bodies.positions(), options.search_distance)?;
+        let interiors = (options.kinematics == Kinematics::Small).then(|| {
+            pairs
+                .iter()
+                .map(|p| geometry::SegmentInteriors::new(&p.a, &p.b, bodies.positions()))
+                .collect()
+        });
         for (i, pair) in pairs.iter().enumerate() {
             check_facing(pair, &bodies, options.search_distance).map_err(|e| in_pair(i, e))?;
         }
@@ -702,6 +711,7 @@ impl ContactAnalysis {
             nodes,
             surfaces: reference.clone(),
             reference,
+            interiors,
             increment: 0,
             records: Vec::new(),
             timings,
@@ -1323,19 +1333,21 @@ impl ContactAnalysis {
                 }
                 let (s0, s1) = (xg[w[0]], xg[w[1]]);
                 let d = [s1[0] - s0[0], s1[1] - s0[1]];
-                let len2 = d[0] * d[0] + d[1] * d[1];
-                let len = len2.sqrt();
+                let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
                 let n = [d[1] / len, -d[0] / len];
                 // current segment end points (equal to s0, s1 under finite kinematics)
                 let (c0, c1) = (x[w[0]], x[w[1]]);
-                for &j in &self.pairs[p].b {
-                    let r = [xg[j][0] - s0[0], xg[j][1] - s0[1]];
-                    let xi = (r[0] * d[0] + r[1] * d[1]) / len2;
+                // only B nodes strictly inside the segment are checked here; under small
+                // kinematics they were found once, in the reference configuration
+                let candidates = match &self.interiors {
+                    Some(interiors) => interiors[p].segment(k),
+                    None => &self.pairs[p].b[..],
+                };
+                for &j in candidates {
+                    let (xi, inside) = geometry::interior_parameter(s0, s1, xg[j]);
                     let hit = [c0[0] + xi * (c1[0] - c0[0]), c0[1] + xi * (c1[1] - c0[1])];
                     let g = (x[j][0] - hit[0]) * n[0] + (x[j][1] - hit[1]) * n[1];
-                    // a B node facing an A node (node-to-node) is that node's weighted gap's
-                    // business: only B nodes strictly inside the segment are checked here
-                    if !(1e-3..=1.0 - 1e-3).contains(&xi) || g >= -gap_tolerance {
+                    if !inside || g >= -gap_tolerance {
                         continue;
                     }
                     if g <= -reach {
