@@ -200,25 +200,46 @@ impl NodeFlexibility {
 }
 
 /// `A^T B` for two batches of images: over the rows their reaches share (equal factor
-/// columns); a row of one reach alone meets zeros of the other image.
+/// columns; a row of one reach alone meets zeros of the other image), one product per run of
+/// rows consecutive in both, read in place (the reaches share a few long runs: the paths to
+/// the elimination tree's root).
 fn gram(a: &Images, b: &Images) -> Mat<f64> {
-    let (mut ia, mut ib) = (Vec::new(), Vec::new());
+    let mut g = Mat::<f64>::zeros(a.values.ncols(), b.values.ncols());
+    clean_after(|| {
+        for (ra, rb, len) in shared_runs(&a.columns, &b.columns) {
+            faer::linalg::matmul::matmul(
+                g.as_mut(),
+                faer::Accum::Add,
+                a.values.subrows(ra, len).transpose(),
+                b.values.subrows(rb, len),
+                1.0,
+                faer::Par::Seq,
+            );
+        }
+    });
+    g
+}
+
+/// The maximal runs `(i, j, len)` with `a[i + r] == b[j + r]` for `r < len`, and `a[i..]`,
+/// `b[j..]` consecutive within the run, of two ascending lists.
+fn shared_runs(a: &[usize], b: &[usize]) -> Vec<(usize, usize, usize)> {
+    let mut runs: Vec<(usize, usize, usize)> = Vec::new();
     let (mut i, mut j) = (0, 0);
-    while i < a.columns.len() && j < b.columns.len() {
-        match a.columns[i].cmp(&b.columns[j]) {
+    while i < a.len() && j < b.len() {
+        match a[i].cmp(&b[j]) {
             std::cmp::Ordering::Less => i += 1,
             std::cmp::Ordering::Greater => j += 1,
             std::cmp::Ordering::Equal => {
-                ia.push(i);
-                ib.push(j);
+                match runs.last_mut() {
+                    Some((ri, rj, len)) if *ri + *len == i && *rj + *len == j => *len += 1,
+                    _ => runs.push((i, j, 1)),
+                }
                 i += 1;
                 j += 1;
             }
         }
     }
-    let ga = Mat::<f64>::from_fn(ia.len(), a.values.ncols(), |r, c| a.values[(ia[r], c)]);
-    let gb = Mat::<f64>::from_fn(ib.len(), b.values.ncols(), |r, c| b.values[(ib[r], c)]);
-    clean_after(|| ga.transpose() * gb)
+    runs
 }
 
 /// What [`ContactAnalysis::solve_boundary`] gives: the unknowns `tau`, the plate's
@@ -948,6 +969,41 @@ mod tests {
         let flat: Vec<usize> = runs.iter().flat_map(|&(_, a, len)| a..a + len).collect();
         assert_eq!(flat, indices);
         assert!(consecutive_runs(&[]).is_empty());
+    }
+
+    /// The Gram product of two batches of images, run by run over the rows they share, is
+    /// the plain product of the two batches spread over the union of their rows; the runs
+    /// are maximal and in order.
+    #[test]
+    fn gram_of_images_is_the_product_over_shared_rows() {
+        let a = Images {
+            columns: vec![1, 2, 3, 5, 6, 9, 12],
+            values: Mat::from_fn(7, 3, |i, j| (i as f64 + 1.0) * (j as f64 - 0.5)),
+        };
+        let b = Images {
+            columns: vec![0, 2, 3, 4, 5, 6, 9, 11],
+            values: Mat::from_fn(8, 2, |i, j| 1.0 / (i as f64 + 2.0 * j as f64 + 1.0)),
+        };
+        assert_eq!(
+            shared_runs(&a.columns, &b.columns),
+            vec![(1, 1, 2), (3, 4, 3)]
+        );
+        let spread = |im: &Images| {
+            Mat::<f64>::from_fn(13, im.values.ncols(), |r, c| {
+                im.columns
+                    .iter()
+                    .position(|&x| x == r)
+                    .map_or(0.0, |i| im.values[(i, c)])
+            })
+        };
+        let plain = spread(&a).transpose() * spread(&b);
+        let g = gram(&a, &b);
+        for i in 0..3 {
+            for j in 0..2 {
+                assert!((g[(i, j)] - plain[(i, j)]).abs() <= 1e-14, "{i} {j}");
+            }
+        }
+        assert!(shared_runs(&[1, 3], &[2, 4]).is_empty());
     }
 
     /// The vectorized `sum |x_i|` agrees with the running sum to round-off at every length
