@@ -338,7 +338,7 @@ pub(crate) fn interior_parameter(s0: [f64; 2], s1: [f64; 2], x: [f64; 2]) -> (f6
 /// segment in B's order, at fixed positions: under small kinematics the pointwise B-node
 /// check over open A segments reads its candidates here instead of testing every B node
 /// against every open segment in every iteration (`O(|A| |B|)` each time).
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub(crate) struct SegmentInteriors {
     /// `nodes[start[k]..start[k + 1]]` project inside segment `k`.
     start: Vec<usize>,

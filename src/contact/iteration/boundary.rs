@@ -220,8 +220,8 @@ fn gram(a: &Images, b: &Images) -> Mat<f64> {
     g
 }
 
-/// The maximal runs `(i, j, len)` with `a[i + r] == b[j + r]` for `r < len`, and `a[i..]`,
-/// `b[j..]` consecutive within the run, of two ascending lists.
+/// The entries two ascending lists share, as maximal runs `(i, j, len)` of positions
+/// consecutive in both: `a[i + r] == b[j + r]` for every `r < len`.
 fn shared_runs(a: &[usize], b: &[usize]) -> Vec<(usize, usize, usize)> {
     let mut runs: Vec<(usize, usize, usize)> = Vec::new();
     let (mut i, mut j) = (0, 0);
