@@ -742,8 +742,10 @@ impl ContactAnalysis {
     /// pivoting (faer), and
     /// the new displacement of the contact dofs, `u = u0 + F sum_j tau_j col_j + sum_e U_e w_e`
     /// (`w_e` the plate's response). Small kinematics read `S` off the node flexibility,
-    /// `S_ij = sum_b coefficient_jb N_(a_i, b)`, and form `u` from the node responses,
-    /// `F sum_j tau_j col_j = sum_b (sum_j tau_j coefficient_jb) y_b`; finite kinematics form
+    /// `S_ij = sum_b coefficient_jb N_(a_i, b)`, and form `u` from the kept directions with
+    /// the weights `c_b = sum_j tau_j coefficient_jb`, `F sum_j tau_j col_j = sum_b c_b F v_b`:
+    /// a kept response `y_b = F v_b` is added as it is, the kept images `W v_b` are combined
+    /// and substituted backward once ([`Bodies::back_substitute`]); finite kinematics form
     /// `y_j = F col_j` from the columns of `F`. Returns `(tau, U, condition estimate, u)`.
     pub(super) fn solve_boundary(
         &mut self,
