@@ -466,7 +466,7 @@ static bool test_options_default(void) {
     EXPECT(STATUS_FN(hycon_contact_options_default, (&o), HYCON_OK, NULL));
     EXPECT(o.tolerance == 1e-6 && o.max_iterations == 60 && o.lock_rounds == 3);
     EXPECT(o.search_distance == 4.0 && o.backend == HYCON_BACKEND_FAER);
-    EXPECT(o.monitor == NULL && o.monitor_data == NULL);
+    EXPECT(o.monitor == NULL && o.monitor_data == NULL && o.threads == 1);
     return true;
 }
 
@@ -955,6 +955,8 @@ static bool test_contact_new_bad_options(void) {
     BAD_OPTION(search_distance, INFINITY, "options.search_distance");
     BAD_OPTION(search_distance, -4.0, "options.search_distance");
     BAD_OPTION(max_iterations, 0, "options.max_iterations");
+    BAD_OPTION(threads, 0, "options.threads = 0 must be from 1 to 256");
+    BAD_OPTION(threads, HYCON_MAX_THREADS + 1, "options.threads = 257 must be from 1 to 256");
 #undef BAD_OPTION
     ok = ok && c == MARKER(HyconContact);
     hycon_model_free(m);
@@ -1051,6 +1053,24 @@ static bool test_lock_rounds_zero_accepted(void) {
     EXPECT(info.increment == 1 && info.active == NA);
     EXPECT(snapshot(c, &s) && pressed(&s));
     hycon_contact_free(c);
+    return true;
+}
+
+/* More threads give the same converged state to the bit. */
+static bool test_threads_same_state(void) {
+    HyconContactOptions o;
+    HyconContact *c;
+    HyconIncrementInfo info;
+    static State one, many;
+    EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
+    for (o.threads = 1; o.threads <= HYCON_MAX_THREADS; o.threads += HYCON_MAX_THREADS - 1) {
+        c = make_contact(&o);
+        EXPECT(c != NULL);
+        EXPECT(STATUS(press(c, PRESS, 0.0, &info), HYCON_OK, NULL));
+        EXPECT(snapshot(c, o.threads == 1 ? &one : &many) && pressed(&one));
+        hycon_contact_free(c);
+    }
+    EXPECT(same_state(&one, &many));
     return true;
 }
 
@@ -2339,6 +2359,7 @@ int main(void) {
         {"contact_new_no_pair", test_contact_new_no_pair},
         {"contact_new_unconstrained_body", test_contact_new_unconstrained_body},
         {"lock_rounds_zero_accepted", test_lock_rounds_zero_accepted},
+        {"threads_same_state", test_threads_same_state},
         {"increment_null_pointers", test_increment_null_pointers},
         {"increment_wrong_lengths", test_increment_wrong_lengths},
         {"increment_non_finite", test_increment_non_finite},

@@ -72,13 +72,13 @@
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 5
+#define HYCON_VERSION_MINOR 6
 
 // Patch version of the library this header belongs to.
 #define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 500
+#define HYCON_VERSION 600
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6
@@ -88,6 +88,9 @@
 
 // Largest number of stress parameters of one element.
 #define HYCON_MAX_BETA 12
+
+// The largest `HyconContactOptions::threads`.
+#define HYCON_MAX_THREADS 256
 
 // Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
 #define HYCON_FIXED -1
@@ -184,6 +187,12 @@ typedef struct HyconContactOptions {
     // Contact kinematics (default `HYCON_KINEMATICS_SMALL`; `HYCON_KINEMATICS_FINITE` for
     // extensive sliding).
     HyconKinematics kinematics;
+    // Threads the contact boundary's substitutions with hycon's own faer factor may use, 1
+    // to `HYCON_MAX_THREADS` (default 1: hycon starts no thread). More share the images of new node
+    // directions and each iteration's backward substitution among them, with every result
+    // the same to the bit. Threads are started per call and none outlives it; a host running
+    // one process per core (MPI) keeps 1.
+    uint32_t threads;
     // Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
     HyconMonitorFn monitor;
     // Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.

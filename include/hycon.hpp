@@ -30,7 +30,8 @@
  * several threads at once. Objects may move between threads; distinct ones share nothing and
  * may be used from different threads at once. The error message behind a Status is read from the
  * calling thread's last error right after the failing call. Callbacks (monitor, solver) run on
- * the thread that called into the Contact.
+ * the thread that called into the Contact. hycon starts threads of its own only when the
+ * options' `threads` (0.6.0) is more than 1, and none outlives the call that started it.
  *
  * Lifetimes: a Contact copies what it needs from its Model or Host (they may be destroyed
  * first), except the callables given to set_monitor and set_solver.

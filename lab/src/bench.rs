@@ -169,9 +169,9 @@ pub struct ContactRun {
 }
 
 /// The reference Hertz scene at `n` elements per half-width (`a = R/64`, friction
-/// coefficient `friction`): time the whole contact analysis and, on the same model, one plain
-/// factorization and solve.
-pub fn contact_run(n: usize, friction: f64) -> Result<ContactRun> {
+/// coefficient `friction`): time the whole contact analysis (its substitutions on `threads`
+/// threads) and, on the same model, one plain factorization and solve.
+pub fn contact_run(n: usize, friction: f64, threads: usize) -> Result<ContactRun> {
     use crate::scene::DiskOnBlock;
     use hycon::contact::iteration::ContactOptions;
     use hycon::model::LinearSystem;
@@ -189,7 +189,10 @@ pub fn contact_run(n: usize, friction: f64) -> Result<ContactRun> {
     let dofs = floor.dofs().n_free();
     drop(floor);
     let clock = Instant::now();
-    let mut analysis = scene.analysis(ContactOptions::default())?;
+    let mut analysis = scene.analysis(ContactOptions {
+        threads,
+        ..Default::default()
+    })?;
     let approach = scene.calibrated_approach(&mut analysis)?;
     for step in 1..=3 {
         analysis.increment(&f, &scene.prescribed(approach * step as f64 / 3.0, 0.0))?;

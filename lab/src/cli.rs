@@ -184,6 +184,10 @@ enum Bench {
         /// Elements per half-width, comma separated (powers of two).
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8, 16, 32, 64])]
         n: Vec<usize>,
+        /// Threads of the contact boundary's substitutions (`ContactOptions::threads`; the
+        /// floor's factorization and solve are sequential either way).
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
+        threads: u32,
     },
     /// Random two-block presses (the distribution of tests/contact_properties.rs: pressed,
     /// slid, the last totals repeated), counted by how the contact iteration ends.
@@ -697,14 +701,15 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 );
             }
         }
-        Bench::Contact { n } => {
+        Bench::Contact { n, threads } => {
+            println!("threads: {threads}");
             println!(
                 "{:>4} {:>4} {:>7} {:>8} {:>9} {:>9} {:>6} {:>7} {:>5} | assembly factor flexib. loads iter.",
                 "n", "mu", "dofs", "contact", "contact s", "floor s", "ratio", "L2", "iters"
             );
             for friction in [0.0, 0.3] {
                 for &n in &n {
-                    let r = hycon_lab::bench::contact_run(n, friction)?;
+                    let r = hycon_lab::bench::contact_run(n, friction, threads as usize)?;
                     let t = r.timings;
                     println!(
                         "{:>4} {:>4} {:>7} {:>8} {:>9.4} {:>9.4} {:>6.2} {:>6.2}% {:>5} | {:.4} {:.4} {:.4} {:.4} {:.4}",

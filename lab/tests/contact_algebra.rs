@@ -237,3 +237,59 @@ fn callback_path_matches_the_reference_with_fewer_solves() {
     assert!(reference_solves >= contact_dofs);
     assert!(lazy_solves < reference_solves / 2, "{lazy_solves}");
 }
+
+/// Threads change nothing but time (`ContactOptions::threads`): on Cattaneo-Mindlin partial
+/// slip (small kinematics, friction, image batches added as nodes enter), every record (with
+/// `R` and the condition estimate) and every node's state and tractions are the same to the
+/// bit with 1 and with 3 threads.
+#[test]
+fn threads_change_nothing_to_the_bit() {
+    let scene = scene(32, 0.3);
+    let c = approach(&scene, ContactOptions::default());
+    let h = scene.half_width / 32.0;
+    let mut steps = vec![(c / 2.0, 0.0), (c, 0.0)];
+    steps.extend((1..=4).map(|k| (c, 0.05 * h * k as f64)));
+    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+    let run = |threads: usize| {
+        let mut a = scene
+            .analysis(ContactOptions {
+                threads,
+                ..ContactOptions::default()
+            })
+            .unwrap();
+        let mut results = Vec::new();
+        for &(approach, slide) in &steps {
+            a.increment(&f, &scene.prescribed(approach, slide)).unwrap();
+            results.extend(
+                a.node_results(0)
+                    .unwrap()
+                    .into_iter()
+                    .map(|r| (r.node, r.state, r.tn.to_bits(), r.ts.to_bits())),
+            );
+        }
+        let records: Vec<_> = a
+            .records()
+            .iter()
+            .map(|r| {
+                (
+                    r.active,
+                    r.stick,
+                    r.slip,
+                    r.changes,
+                    r.r.to_bits(),
+                    r.condition.to_bits(),
+                )
+            })
+            .collect();
+        (records, results)
+    };
+    let (one, three) = (run(1), run(3));
+    assert!(one.1.iter().any(|r| r.2 != 0), "the scene makes contact");
+    assert_eq!(one.0, three.0, "records");
+    assert_eq!(one.1, three.1, "states and tractions");
+    println!(
+        "threads 1 and 3: {} iterations, {} node results, all the same to the bit",
+        one.0.len(),
+        one.1.len()
+    );
+}

@@ -359,8 +359,15 @@ impl Bodies {
     /// the factor's trailing block. Lazy (faer only): factored in the plain fill-reducing
     /// order, as a linear solve would be, and the columns of `F` computed when asked for
     /// ([`flexibility_times`](Self::flexibility_times)) by substitutions within the reach of
-    /// the contact dofs in the elimination tree.
-    pub fn model(model: Model, contact: &[usize], backend: Backend, lazy: bool) -> Result<Self> {
+    /// the contact dofs in the elimination tree, on up to `threads` threads
+    /// ([`Reach::with_threads`]).
+    pub fn model(
+        model: Model,
+        contact: &[usize],
+        backend: Backend,
+        lazy: bool,
+        threads: usize,
+    ) -> Result<Self> {
         let lazy = lazy && backend == Backend::Faer;
         let trailing = if lazy { &[][..] } else { contact };
         let mut system = LinearSystem::with_trailing_on(&model, trailing, backend)?;
@@ -369,7 +376,10 @@ impl Bodies {
                 .iter()
                 .filter_map(|&d| system.dofs().equation(d))
                 .collect();
-            system.cholesky().reach(&eqs).map(Box::new)
+            system
+                .cholesky()
+                .reach(&eqs)
+                .map(|r| Box::new(r.with_threads(threads)))
         } else {
             None
         };
@@ -383,8 +393,8 @@ impl Bodies {
     /// A host's system: checks the nodes (unique ids, finite positions, equations in range and
     /// used once) and factors a CSR stiffness: the contact equations last (eager), or, when
     /// `lazy` (faer only), in the plain fill-reducing order with `F` built lazily as for
-    /// [`model`](Self::model).
-    pub fn host(system: HostSystem, backend: Backend, lazy: bool) -> Result<Self> {
+    /// [`model`](Self::model) (on up to `threads` threads).
+    pub fn host(system: HostSystem, backend: Backend, lazy: bool, threads: usize) -> Result<Self> {
         let HostSystem {
             equations,
             nodes,
@@ -437,7 +447,9 @@ impl Bodies {
                 let mut factor = SparseCholesky::analyze(lower.symbolic(), backend, trailing)?;
                 factor.factorize(lower.as_ref())?;
                 let reach = if lazy {
-                    factor.reach(&contact).map(Box::new)
+                    factor
+                        .reach(&contact)
+                        .map(|r| Box::new(r.with_threads(threads)))
                 } else {
                     None
                 };
@@ -706,41 +718,52 @@ impl Bodies {
         self.lazy_factor().is_some()
     }
 
-    /// The images `W V = L^-1 P E V` in the factor's space of the columns `V` (sparse over
-    /// positions in `dofs`, as for [`flexibility_times`](Self::flexibility_times)): one forward
-    /// substitution within the columns' own elimination-tree reach, so that
-    /// `V^T F V = (W V)^T (W V)` (`F = E^T K^-1 E`, `K = P^T L L^T P`). `None` when the bodies
-    /// have no lazy faer factor (a host's callback, CHOLMOD, or an eager factor).
+    /// The images `W V = L^-1 P E V` in the factor's space of the columns `V` of each batch
+    /// (sparse over positions in `dofs`, as for
+    /// [`flexibility_times`](Self::flexibility_times)): per batch one forward substitution
+    /// within its columns' own elimination-tree reach, so that `V^T F V = (W V)^T (W V)`
+    /// (`F = E^T K^-1 E`, `K = P^T L L^T P`). The batches are shared among the threads of the
+    /// contact dofs' reach ([`Reach::with_threads`]), each substituted whole by one thread:
+    /// the images do not depend on the number of threads. `None` when the bodies have no lazy
+    /// faer factor (a host's callback, CHOLMOD, or an eager factor).
     pub fn images(
         &mut self,
         dofs: &[usize],
-        vectors: &[Vec<(usize, f64)>],
-    ) -> Result<Option<Images>> {
+        batches: &[Vec<Vec<(usize, f64)>>],
+    ) -> Result<Option<Vec<Images>>> {
         let rows: Vec<Option<usize>> = dofs.iter().map(|&d| self.equation(d)).collect();
-        let Some((factor, _)) = self.lazy_factor() else {
+        let Some((factor, reach)) = self.lazy_factor() else {
             return Ok(None);
         };
-        let equations: Vec<usize> = vectors
-            .iter()
-            .flatten()
-            .filter_map(|&(j, _)| rows[j])
-            .collect();
-        let reach = factor
-            .reach(&equations)
-            .ok_or_else(|| Error::Solver("a lazy factor has a reach".into()))?;
-        let mut values = Mat::<f64>::zeros(reach.len(), vectors.len());
-        for (c, v) in vectors.iter().enumerate() {
-            for &(j, w) in v {
-                if let Some(r) = rows[j].and_then(|e| reach.row(e)) {
-                    values[(r, c)] += w;
-                }
-            }
+        let one = |vectors: &Vec<Vec<(usize, f64)>>| images_of(factor, &rows, vectors);
+        let threads = reach.threads().min(batches.len());
+        if threads <= 1 {
+            return batches.iter().map(one).collect::<Result<_>>().map(Some);
         }
-        factor.forward_within(&reach, values.as_mut())?;
-        Ok(Some(Images {
-            columns: reach.columns(),
-            values,
-        }))
+        // thread t takes batches t, t + threads, ...
+        let mut out: Vec<Option<Result<Images>>> = batches.iter().map(|_| None).collect();
+        std::thread::scope(|scope| {
+            let one = &one;
+            let mut slots: Vec<Vec<&mut Option<Result<Images>>>> =
+                (0..threads).map(|_| Vec::new()).collect();
+            for (i, slot) in out.iter_mut().enumerate() {
+                slots[i % threads].push(slot);
+            }
+            for (t, slots) in slots.into_iter().enumerate() {
+                scope.spawn(move || {
+                    for (slot, batch) in slots
+                        .into_iter()
+                        .zip(batches.iter().skip(t).step_by(threads))
+                    {
+                        *slot = Some(one(batch));
+                    }
+                });
+            }
+        });
+        out.into_iter()
+            .map(|r| r.expect("every batch substituted"))
+            .collect::<Result<_>>()
+            .map(Some)
     }
 
     /// `E^T K^-1 E sum_i V_i c_i` at the dofs `dofs`, from the images `W V_i` of
@@ -917,4 +940,34 @@ fn callback_flexibility(s: &mut dyn HostSolve, n: usize, eqs: &[usize]) -> Resul
         }
     }
     Ok(out)
+}
+
+/// The images `W V = L^-1 P E V` of one batch of vectors `V` (sparse over the positions of
+/// `rows`, the equation of each position): one forward substitution within their reach.
+fn images_of(
+    factor: &SparseCholesky,
+    rows: &[Option<usize>],
+    vectors: &[Vec<(usize, f64)>],
+) -> Result<Images> {
+    let equations: Vec<usize> = vectors
+        .iter()
+        .flatten()
+        .filter_map(|&(j, _)| rows[j])
+        .collect();
+    let reach = factor
+        .reach(&equations)
+        .ok_or_else(|| Error::Solver("a lazy factor has a reach".into()))?;
+    let mut values = Mat::<f64>::zeros(reach.len(), vectors.len());
+    for (c, v) in vectors.iter().enumerate() {
+        for &(j, w) in v {
+            if let Some(r) = rows[j].and_then(|e| reach.row(e)) {
+                values[(r, c)] += w;
+            }
+        }
+    }
+    factor.forward_within(&reach, values.as_mut())?;
+    Ok(Images {
+        columns: reach.columns(),
+        values,
+    })
 }

@@ -52,6 +52,10 @@ pub const HYCON_KINEMATICS_SMALL: HyconKinematics = 1;
 /// iteration; for surfaces that slide far along each other.
 pub const HYCON_KINEMATICS_FINITE: HyconKinematics = 2;
 
+/// The largest `HyconContactOptions::threads`.
+pub const HYCON_MAX_THREADS: u32 = 256;
+const _: () = assert!(HYCON_MAX_THREADS as usize == crate::contact::iteration::MAX_THREADS);
+
 /// Directions of a prescribed displacement, a bit mask.
 pub type HyconDirections = i32;
 /// x only.
@@ -186,6 +190,12 @@ pub struct HyconContactOptions {
     /// Contact kinematics (default `HYCON_KINEMATICS_SMALL`; `HYCON_KINEMATICS_FINITE` for
     /// extensive sliding).
     pub kinematics: HyconKinematics,
+    /// Threads the contact boundary's substitutions with hycon's own faer factor may use, 1
+    /// to `HYCON_MAX_THREADS` (default 1: hycon starts no thread). More share the images of new node
+    /// directions and each iteration's backward substitution among them, with every result
+    /// the same to the bit. Threads are started per call and none outlives it; a host running
+    /// one process per core (MPI) keeps 1.
+    pub threads: u32,
     /// Optional iteration monitor (NULL: none). Kept by the `HyconContact` for its lifetime.
     pub monitor: HyconMonitorFn,
     /// Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.
@@ -513,6 +523,8 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
         search_distance: o.search_distance,
         lock_rounds: o.lock_rounds as usize,
         backend,
+        threads: usize::try_from(o.threads)
+            .map_err(|_| Fail::invalid("options.threads does not fit in size_t"))?,
     };
     options.validate()?;
     let monitor = o.monitor.map(|monitor| {
@@ -690,6 +702,7 @@ pub unsafe extern "C" fn hycon_contact_options_default(
                 Kinematics::Small => HYCON_KINEMATICS_SMALL,
                 Kinematics::Finite => HYCON_KINEMATICS_FINITE,
             },
+            threads: d.threads as u32,
             monitor: None,
             monitor_data: std::ptr::null_mut(),
         };

@@ -601,12 +601,15 @@ impl ContactAnalysis {
             if self.bodies.has_images() {
                 // batches of neighbouring directions share most of their reach
                 let mut vectors = vectors.into_iter();
-                for keys in new.chunks(IMAGE_BATCH) {
-                    let vs: Vec<Sparse> = vectors.by_ref().take(keys.len()).collect();
-                    let images = self
-                        .bodies
-                        .images(&self.dofs, &vs)?
-                        .expect("the bodies have images");
+                let batches: Vec<Vec<Sparse>> = new
+                    .chunks(IMAGE_BATCH)
+                    .map(|keys| vectors.by_ref().take(keys.len()).collect())
+                    .collect();
+                let images = self
+                    .bodies
+                    .images(&self.dofs, &batches)?
+                    .expect("the bodies have images");
+                for ((keys, vs), images) in new.chunks(IMAGE_BATCH).zip(batches).zip(images) {
                     self.node_flexibility.add_images(keys, vs, images);
                 }
             } else {
