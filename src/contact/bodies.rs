@@ -735,33 +735,27 @@ impl Bodies {
         let Some((factor, reach)) = self.lazy_factor() else {
             return Ok(None);
         };
-        let one = |vectors: &Vec<Vec<(usize, f64)>>| images_of(factor, &rows, vectors);
+        let rows = &rows;
+        let one = move |vectors: &Vec<Vec<(usize, f64)>>| images_of(factor, rows, vectors);
         let threads = reach.threads().min(batches.len());
         if threads <= 1 {
             return batches.iter().map(one).collect::<Result<_>>().map(Some);
         }
-        // thread t takes batches t, t + threads, ...
-        let mut out: Vec<Option<Result<Images>>> = batches.iter().map(|_| None).collect();
-        std::thread::scope(|scope| {
-            let one = &one;
-            let mut slots: Vec<Vec<&mut Option<Result<Images>>>> =
-                (0..threads).map(|_| Vec::new()).collect();
-            for (i, slot) in out.iter_mut().enumerate() {
-                slots[i % threads].push(slot);
-            }
-            for (t, slots) in slots.into_iter().enumerate() {
-                scope.spawn(move || {
-                    for (slot, batch) in slots
-                        .into_iter()
-                        .zip(batches.iter().skip(t).step_by(threads))
-                    {
-                        *slot = Some(one(batch));
-                    }
-                });
-            }
+        // each thread takes a run of consecutive batches
+        let run = batches.len().div_ceil(threads);
+        let images: Vec<Vec<Result<Images>>> = std::thread::scope(|scope| {
+            let handles: Vec<_> = batches
+                .chunks(run)
+                .map(|run| scope.spawn(move || run.iter().map(one).collect::<Vec<_>>()))
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+                .collect()
         });
-        out.into_iter()
-            .map(|r| r.expect("every batch substituted"))
+        images
+            .into_iter()
+            .flatten()
             .collect::<Result<_>>()
             .map(Some)
     }
