@@ -5,7 +5,8 @@
 //! factor) or their responses `F v_a` (a host's callback, CHOLMOD); under finite kinematics
 //! the columns of `F` the active nodes touch. The small system `S tau = b - rows . u0`,
 //! `S = rows^T F cols`, is factored by blocked dense Cholesky (extending the previous
-//! iteration's factor) and LU for the slip unknowns (faer).
+//! iteration's factor) and LU for the slip unknowns' Schur complement (faer), formed from
+//! forward images of the slip directions kept along with that factor.
 //!
 //! The dense reference of the same algebra (every column of `F` built up front, `F c` formed
 //! from `F` in every iteration, nalgebra's unblocked LU) is kept behind
@@ -17,6 +18,8 @@ use crate::solver::vector_state::clean_after;
 use faer::Par;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use small_system::{Row, SmallSystem, singular};
+use std::collections::HashMap;
+use std::ops::Range;
 
 /// Directions whose images one forward substitution computes (neighbouring nodes' directions:
 /// their elimination-tree paths mostly coincide).
@@ -104,6 +107,8 @@ pub(super) struct NodeFlexibility {
     n: Vec<Vec<f64>>,
     /// The factor of the last symmetric block.
     factor: KeptFactor,
+    /// Forward images on that factor of the directions the last slip unknowns needed.
+    slip: SlipImages,
 }
 
 /// What [`NodeFlexibility`] keeps of a direction.
@@ -255,7 +260,8 @@ pub(super) type Solution = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
 ///   `S_PP = L L^T` by Cholesky and the Schur complement `Z = S_QQ - S_QP S_PP^-1 S_PQ` by LU:
 ///   `|P|^3 / 3 + |P|^2 |Q| + 2 |Q|^3 / 3` flops instead of `2 (|P| + |Q|)^3 / 3`, and under
 ///   small kinematics much less, as `L` extends the kept factor of an earlier iteration (see
-///   [`KeptFactor`]);
+///   [`KeptFactor`]) and `L^-1 S_PQ` combines forward images kept with it (see
+///   [`SlipImages`]);
 /// * else (a plate border, or a Cholesky that fails) LU with partial pivoting `P S = L U`.
 enum Dense {
     Lu(PartialPivLu<f64>),
@@ -270,12 +276,14 @@ struct Blocks {
     slip: Option<Slip>,
 }
 
-/// The slip unknowns `Q` of [`Blocks`] and their Schur complement.
+/// The slip unknowns `Q` of [`Blocks`] and their Schur complement
+/// `Z = S_QQ - S_QP S_PP^-1 S_PQ = S_QQ - Y^T X`.
 struct Slip {
     q: Vec<usize>,
-    /// `W = S_PP^-1 S_PQ`.
-    w: Mat<f64>,
-    s_qp: Mat<f64>,
+    /// `X = L^-1 S_PQ`.
+    x: Mat<f64>,
+    /// `Y = L^-1 S_QP^T`.
+    y: Mat<f64>,
     z: PartialPivLu<f64>,
 }
 
@@ -315,9 +323,131 @@ impl KeptFactor {
     }
 }
 
-/// The lower Cholesky factor `L` of the symmetric positive definite `A` (`n x n`, the entry
-/// `a(i, j)` read for `j <= i` only) whose leading `p x p` block `A11 = L11 L11^T` is already
-/// factored: `L11` is the leading block of `l` (which may be larger), `L21 = A21 L11^-T` by one
+/// Forward images `x_d = L^-1 N_(K, d)` of node directions `d` on the kept factor `L` of the
+/// symmetric block (`K` its directions, in the factor's order), for the slip unknowns `Q`
+/// under friction. `S_PQ`'s column `j` is `sum_b c_jb N_(K, b)` and `S_QP^T`'s is
+/// `N_(K, row_j)`, so `X = L^-1 S_PQ` and `Y = L^-1 S_QP^T`, which give the Schur complement
+/// `Z = S_QQ - Y^T X` and every solve (see [`Slip`]), combine these images.
+///
+/// A forward substitution reads `L` from the top, so the first rows of an image stay right
+/// while the factor keeps its first directions (see [`KeptFactor`]): an image is completed
+/// only below them, `x_2 = L_22^-1 (N_(K_2, d) - L_21 x_1)`, and computed whole only for a
+/// direction new to the slip set. Where forming `S_PP^-1 S_PQ` took `2 |P|^2 |Q|` flops in
+/// every iteration (3 Gflop at n = 512, `|P|` = 2,300, `|Q|` = 300), an iteration now costs
+/// `|P|^2` per new direction and little else. A direction's image is kept for
+/// [`SLIP_IMAGE_UPDATES`] updates without use: slip sets with hundreds of nodes were seen
+/// to alternate between two sets in consecutive iterations.
+#[derive(Debug, Clone, Default)]
+pub(super) struct SlipImages {
+    images: HashMap<usize, SlipImage>,
+    /// For each factor since the first, how many leading directions it kept of the one
+    /// before (its generation is its index + 1).
+    prefixes: Vec<usize>,
+    /// Updates made.
+    updates: usize,
+}
+
+/// A direction's image in [`SlipImages`].
+#[derive(Debug, Clone)]
+struct SlipImage {
+    x: Vec<f64>,
+    /// How many leading rows hold for the factor of `generation`.
+    valid: usize,
+    generation: usize,
+    /// The update that last used it.
+    used: usize,
+}
+
+/// How many updates of [`SlipImages`] an unused image is kept for.
+const SLIP_IMAGE_UPDATES: usize = 3;
+
+impl SlipImages {
+    /// A new factor keeps the first `prefix` directions of the last one.
+    fn keep(&mut self, prefix: usize) {
+        self.prefixes.push(prefix);
+    }
+
+    /// Make the images of the distinct directions `needed` right on the current factor `l` of
+    /// the directions `keys` (`N` by rows `n`): each is completed below the rows that still
+    /// hold (all of them for a new direction), one batch per count of such rows.
+    fn update(&mut self, l: &Mat<f64>, keys: &[usize], n: &[Vec<f64>], needed: &[usize]) {
+        use faer::linalg::matmul::matmul;
+        use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+        let (k, generation) = (keys.len(), self.prefixes.len());
+        let holds = |image: &SlipImage| {
+            self.prefixes[image.generation..]
+                .iter()
+                .fold(image.valid, |v, &p| v.min(p))
+        };
+        let mut batches: Vec<(usize, Vec<usize>)> = Vec::new();
+        for &d in needed {
+            let v = self.images.get(&d).map_or(0, holds).min(k);
+            match batches.iter_mut().find(|(valid, _)| *valid == v) {
+                Some((_, ds)) => ds.push(d),
+                None => batches.push((v, vec![d])),
+            }
+        }
+        for (v, ds) in batches.into_iter().filter(|(v, _)| *v < k) {
+            let images: Vec<&[f64]> = ds
+                .iter()
+                .map(|d| self.images.get(d).map_or(&[][..], |image| &image.x[..v]))
+                .collect();
+            let mut x2 = Mat::<f64>::zeros(k - v, ds.len());
+            for (j, d) in ds.iter().enumerate() {
+                gather(&n[*d], &keys[v..], col_slice(&mut x2, j));
+            }
+            let x1 = Mat::<f64>::from_fn(v, ds.len(), |i, j| images[j][i]);
+            clean_after(|| {
+                matmul(
+                    x2.as_mut(),
+                    faer::Accum::Add,
+                    l.as_ref().submatrix(v, 0, k - v, v),
+                    x1.as_ref(),
+                    -1.0,
+                    Par::Seq,
+                );
+                let l22 = l.as_ref().submatrix(v, v, k - v, k - v);
+                solve_lower_triangular_in_place(l22, x2.as_mut(), Par::Seq);
+            });
+            for (j, d) in ds.into_iter().enumerate() {
+                let image = self.images.entry(d).or_insert(SlipImage {
+                    x: Vec::new(),
+                    valid: 0,
+                    generation,
+                    used: 0,
+                });
+                image.x.resize(k, 0.0);
+                image.x[v..].copy_from_slice(col_slice(&mut x2, j));
+            }
+        }
+        self.updates += 1;
+        for &d in needed {
+            let image = self.images.get_mut(&d).expect("updated above");
+            image.x.truncate(k);
+            (image.valid, image.generation, image.used) = (k, generation, self.updates);
+        }
+        let updates = self.updates;
+        self.images
+            .retain(|_, image| image.used + SLIP_IMAGE_UPDATES > updates);
+    }
+
+    /// The image of direction `d` (made right by the last [`update`](Self::update)).
+    fn image(&self, d: usize) -> &[f64] {
+        &self.images[&d].x
+    }
+}
+
+/// `out[i] = row[keys[i]]`: a column of the symmetric `N` read from one row of it (which
+/// stays in cache) rather than an entry from each of its rows.
+fn gather(row: &[f64], keys: &[usize], out: &mut [f64]) {
+    for (o, &k) in out.iter_mut().zip(keys) {
+        *o = row[k];
+    }
+}
+
+/// The lower Cholesky factor `L` of the symmetric positive definite `A` (`n x n`, read by
+/// columns: `column(j, rows, out)` writes `A[rows, j]`, see [`by_entries`]) whose leading
+/// `p x p` block `A11 = L11 L11^T` is already factored: `L11` is the leading block of `l` (which may be larger), `L21 = A21 L11^-T` by one
 /// triangular solve and `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) -
 /// ...` flops instead of `n^3 / 3` when few unknowns are new. `l` is cut to `p x p` and grown
 /// to `n x n` in place: an unchanged factor costs nothing, a grown one only its new rows (a
@@ -327,7 +457,7 @@ fn cholesky_extending(
     mut l: Mat<f64>,
     p: usize,
     n: usize,
-    a: impl Fn(usize, usize) -> f64,
+    column: impl Fn(usize, Range<usize>, &mut [f64]),
 ) -> Option<Mat<f64>> {
     use faer::linalg::matmul::matmul;
     use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
@@ -337,10 +467,15 @@ fn cholesky_extending(
     if r == 0 {
         return Some(l);
     }
+    let (mut l21t, mut a22) = (Mat::<f64>::zeros(p, r), Mat::<f64>::zeros(r, r));
+    for j in 0..r {
+        if p > 0 {
+            column(p + j, 0..p, col_slice(&mut l21t, j));
+        }
+        column(p + j, p..n, col_slice(&mut a22, j));
+    }
     // L21^T = L11^-1 A21^T
-    let mut l21t = Mat::<f64>::from_fn(p, r, |i, j| a(p + j, i));
     solve_lower_triangular_in_place(l.as_ref().submatrix(0, 0, p, p), l21t.as_mut(), Par::Seq);
-    let mut a22 = Mat::<f64>::from_fn(r, r, |i, j| a(p + i.max(j), p + i.min(j)));
     matmul(
         a22.as_mut(),
         faer::Accum::Add,
@@ -357,11 +492,29 @@ fn cholesky_extending(
     Some(l)
 }
 
+/// A column reader for [`cholesky_extending`] from the entries `a(i, j)` of a symmetric
+/// matrix, read for `j <= i` only (the lower triangle decides when rounding has left the
+/// upper one slightly different).
+fn by_entries(a: impl Fn(usize, usize) -> f64) -> impl Fn(usize, Range<usize>, &mut [f64]) {
+    move |j, rows, out| {
+        for (o, i) in out.iter_mut().zip(rows) {
+            *o = a(i.max(j), i.min(j));
+        }
+    }
+}
+
 impl Dense {
     /// `S` factored; `p` the symmetric unknowns in the order of their factor `l` (`None`: not
     /// factored yet, or not symmetric positive definite), `q` the unknowns whose column is not
-    /// their row, `border` whether `S` is bordered by plate rows.
-    fn new(s: &Mat<f64>, symmetric: Option<(Vec<usize>, Mat<f64>)>, q: Vec<usize>) -> Self {
+    /// their row, `images` the slip block's `(X, Y) = (L^-1 S_PQ, L^-1 S_QP^T)` when the
+    /// caller has them (see [`SlipImages`]; else two forward substitutions make them).
+    fn new(
+        s: &Mat<f64>,
+        symmetric: Option<(Vec<usize>, Mat<f64>)>,
+        q: Vec<usize>,
+        images: Option<(Mat<f64>, Mat<f64>)>,
+    ) -> Self {
+        use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
         let Some((p, l)) = symmetric else {
             return Dense::Lu(s.partial_piv_lu());
         };
@@ -369,25 +522,32 @@ impl Dense {
             let sub = |r: &[usize], c: &[usize]| {
                 Mat::<f64>::from_fn(r.len(), c.len(), |i, j| s[(r[i], c[j])])
             };
-            let mut w = sub(&p, &q);
-            cholesky_solve(&l, w.as_mut());
-            let s_qp = sub(&q, &p);
-            let z = sub(&q, &q) - &s_qp * &w;
+            let (x, y) = images.unwrap_or_else(|| {
+                let (mut x, mut y) = (sub(&p, &q), sub(&q, &p).transpose().to_owned());
+                solve_lower_triangular_in_place(l.as_ref(), x.as_mut(), Par::Seq);
+                solve_lower_triangular_in_place(l.as_ref(), y.as_mut(), Par::Seq);
+                (x, y)
+            });
+            let z = clean_after(|| sub(&q, &q) - y.transpose() * &x);
             Slip {
                 z: z.partial_piv_lu(),
                 q,
-                w,
-                s_qp,
+                x,
+                y,
             }
         });
         Dense::Block(Box::new(Blocks { p, l, slip }))
     }
 
-    /// `x <- S^-1 x`, or `S^-T x` when `transpose`. For the block form,
-    /// `S^-1 x`: `y = S_PP^-1 x_P`, `x_Q <- Z^-1 (x_Q - S_QP y)`, `x_P <- y - W x_Q`;
-    /// `S^-T x`: `x_Q <- Z^-T (x_Q - W^T x_P)` (`S_PQ^T S_PP^-1 = W^T`), then
-    /// `x_P <- S_PP^-1 (x_P - S_QP^T x_Q)`: either way one solve with `L L^T`.
+    /// `x <- S^-1 x`, or `S^-T x` when `transpose`. For the block form, with `z = L^-1 x_P`:
+    /// `S^-1 x`: `x_Q <- Z^-1 (x_Q - Y^T z)`, `x_P <- L^-T (z - X x_Q)`;
+    /// `S^-T x`: `x_Q <- Z^-T (x_Q - X^T z)`, `x_P <- L^-T (z - Y x_Q)`
+    /// (`S_QP S_PP^-1 = Y^T L^-1`, `S_PQ^T S_PP^-1 = X^T L^-1`): either way one forward and
+    /// one backward substitution with `L`.
     fn solve(&self, mut x: faer::MatMut<'_, f64>, transpose: bool) {
+        use faer::linalg::triangular_solve::{
+            solve_lower_triangular_in_place, solve_upper_triangular_in_place,
+        };
         match self {
             Dense::Lu(f) if transpose => f.solve_transpose_in_place(x),
             Dense::Lu(f) => f.solve_in_place(x),
@@ -395,26 +555,21 @@ impl Dense {
                 let Blocks { p, l, slip } = b.as_ref();
                 let k = x.ncols();
                 let mut xp = Mat::<f64>::from_fn(p.len(), k, |i, j| x[(p[i], j)]);
-                let Some(Slip { q, w, s_qp, z }) = slip else {
-                    cholesky_solve(l, xp.as_mut());
-                    scatter(&xp, p, x.as_mut());
-                    return;
-                };
-                let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
-                let (out_p, out_q) = if transpose {
-                    let mut rq = clean_after(|| xq - w.transpose() * &xp);
-                    z.solve_transpose_in_place(rq.as_mut());
-                    let mut yp = clean_after(|| xp - s_qp.transpose() * &rq);
-                    cholesky_solve(l, yp.as_mut());
-                    (yp, rq)
-                } else {
-                    cholesky_solve(l, xp.as_mut());
-                    let mut rq = clean_after(|| xq - s_qp * &xp);
-                    z.solve_in_place(rq.as_mut());
-                    (clean_after(|| xp - w * &rq), rq)
-                };
-                scatter(&out_p, p, x.as_mut());
-                scatter(&out_q, q, x);
+                solve_lower_triangular_in_place(l.as_ref(), xp.as_mut(), Par::Seq);
+                if let Some(Slip { q, x: sx, y: sy, z }) = slip {
+                    let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
+                    let (by_q, by_p) = if transpose { (sx, sy) } else { (sy, sx) };
+                    let mut rq = clean_after(|| xq - by_q.transpose() * &xp);
+                    if transpose {
+                        z.solve_transpose_in_place(rq.as_mut());
+                    } else {
+                        z.solve_in_place(rq.as_mut());
+                    }
+                    xp = clean_after(|| xp - by_p * &rq);
+                    scatter(&rq, q, x.as_mut());
+                }
+                solve_upper_triangular_in_place(l.transpose(), xp.as_mut(), Par::Seq);
+                scatter(&xp, p, x);
             }
         }
     }
@@ -427,15 +582,6 @@ fn col_slice(s: &mut Mat<f64>, j: usize) -> &mut [f64] {
         .try_as_col_major_mut()
         .expect("a Mat's columns are contiguous")
         .as_slice_mut()
-}
-
-/// `x <- (L L^T)^-1 x` for a lower triangular `l`.
-fn cholesky_solve(l: &Mat<f64>, mut x: faer::MatMut<'_, f64>) {
-    use faer::linalg::triangular_solve::{
-        solve_lower_triangular_in_place, solve_upper_triangular_in_place,
-    };
-    solve_lower_triangular_in_place(l.as_ref(), x.as_mut(), Par::Seq);
-    solve_upper_triangular_in_place(l.transpose(), x, Par::Seq);
 }
 
 /// `indices` as runs of consecutive values, `(position, first value, length)`: the directions
@@ -653,12 +799,53 @@ impl ContactAnalysis {
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
         let nf = &mut self.node_flexibility;
         let prefix = nf.factor.common_prefix(&keys);
+        nf.slip.keep(prefix);
         let kept = std::mem::replace(&mut nf.factor.l, Mat::new());
         let n = &nf.n;
-        let l = cholesky_extending(kept, prefix, keys.len(), |i, j| n[keys[i]][keys[j]]);
+        // N is exactly symmetric: column j of the block is row keys[j] of N
+        let column = |j: usize, rows: Range<usize>, out: &mut [f64]| {
+            gather(&n[keys[j]], &keys[rows], out);
+        };
+        let l = cholesky_extending(kept, prefix, keys.len(), column);
         // the factor itself comes back after the solve (see `solve_boundary`)
         nf.factor.keys = keys;
         l.map(|l| (order, l))
+    }
+
+    /// `(X, Y) = (L^-1 S_PQ, L^-1 S_QP^T)` for the slip unknowns `q` (indices into the
+    /// system's unknowns, `rows` and `cols` their directions as [`node_directions`] gives
+    /// them) on the factor `l` of the symmetric block, from the images of their directions
+    /// kept and completed by [`SlipImages`]: `X`'s column `j` is `sum_b c_jb x_b` over the
+    /// parts of its column, `Y`'s is `x_(row_j)`.
+    ///
+    /// [`node_directions`]: Self::node_directions
+    fn slip_images(
+        &mut self,
+        rows: &[usize],
+        cols: &[Vec<(usize, f64)>],
+        q: &[usize],
+        l: &Mat<f64>,
+    ) -> (Mat<f64>, Mat<f64>) {
+        let mut needed: Vec<usize> = q
+            .iter()
+            .flat_map(|&j| cols[j].iter().map(|&(b, _)| b).chain([rows[j]]))
+            .collect();
+        needed.sort_unstable();
+        needed.dedup();
+        let nf = &mut self.node_flexibility;
+        nf.slip.update(l, &nf.factor.keys, &nf.n, &needed);
+        let (slip, k) = (&nf.slip, l.nrows());
+        let (mut x, mut y) = (Mat::<f64>::zeros(k, q.len()), Mat::<f64>::zeros(k, q.len()));
+        for (j, &u) in q.iter().enumerate() {
+            col_slice(&mut y, j).copy_from_slice(slip.image(rows[u]));
+            let xj = col_slice(&mut x, j);
+            for &(b, c) in &cols[u] {
+                for (xi, v) in xj.iter_mut().zip(slip.image(b).iter()) {
+                    *xi += c * v;
+                }
+            }
+        }
+        (x, y)
     }
 
     /// The order in which the symmetric unknowns `symmetric` (indices into `system.unknowns`,
@@ -824,11 +1011,17 @@ impl ContactAnalysis {
             (Some((rows, _)), _) => self.symmetric_factor(system, rows, symmetric),
             (None, _) => {
                 let p = &symmetric;
-                cholesky_extending(Mat::new(), 0, p.len(), |i, j| s[(p[i], p[j])])
+                cholesky_extending(Mat::new(), 0, p.len(), by_entries(|i, j| s[(p[i], p[j])]))
                     .map(|l| (symmetric, l))
             }
         };
-        let lu = Dense::new(&s, factor, unsymmetric);
+        let images = match (&directions, &factor) {
+            (Some((rows, cols)), Some((_, l))) if !unsymmetric.is_empty() => {
+                Some(self.slip_images(rows, cols, &unsymmetric, l))
+            }
+            _ => None,
+        };
+        let lu = Dense::new(&s, factor, unsymmetric, images);
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
         let condition = solve_and_estimate(s_norm, &lu, rhs.as_mut())
             .filter(|&c| c < 1e-3 / f64::EPSILON)
@@ -1047,7 +1240,7 @@ mod tests {
             let l11 = a.as_ref().submatrix(0, 0, p, p).to_owned();
             let l11 = l11.llt(faer::Side::Lower).unwrap().L().to_owned();
             for kept in [l11, llt_other(p)] {
-                let l = cholesky_extending(kept, p, n, |i, j| a[(i, j)]).unwrap();
+                let l = cholesky_extending(kept, p, n, by_entries(|i, j| a[(i, j)])).unwrap();
                 let difference = (&l - whole.L()).norm_max();
                 assert!(difference < 1e-13, "prefix {p}: {difference:e}");
             }
@@ -1056,7 +1249,7 @@ mod tests {
         indefinite[(n - 1, n - 1)] = -1.0;
         let l11 = a.as_ref().submatrix(0, 0, 5, 5).to_owned();
         let l11 = l11.llt(faer::Side::Lower).unwrap().L().to_owned();
-        assert!(cholesky_extending(l11, 5, n, |i, j| indefinite[(i, j)]).is_none());
+        assert!(cholesky_extending(l11, 5, n, by_entries(|i, j| indefinite[(i, j)])).is_none());
     }
 
     /// The small system's dense algebra leaves the upper halves of the AVX registers clean at
@@ -1064,6 +1257,104 @@ mod tests {
     /// of images (cleaned by `clean_after`), and the extended factor, the block factorization
     /// with slip unknowns and its solves (clean on their own).
     #[cfg(target_arch = "x86_64")]
+    /// A symmetric positive definite `n x n` matrix with entries of either sign.
+    fn spd(n: usize) -> Mat<f64> {
+        let b = Mat::<f64>::from_fn(n, n, |i, j| ((3 * i + 7 * j) % 11) as f64 / 11.0 - 0.4);
+        &b * b.transpose() + Mat::<f64>::identity(n, n)
+    }
+
+    #[test]
+    fn slip_images_follow_the_kept_factor() {
+        use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+        let a = spd(14);
+        let n: Vec<Vec<f64>> = (0..14)
+            .map(|i| (0..14).map(|j| a[(i, j)]).collect())
+            .collect();
+        // the factor of N over `keys`, grown from the last one as the iteration grows it
+        let factor = |kept: Mat<f64>, prefix: usize, keys: &[usize]| {
+            let column = |j: usize, rows: Range<usize>, out: &mut [f64]| {
+                gather(&n[keys[j]], &keys[rows], out);
+            };
+            cholesky_extending(kept, prefix, keys.len(), column).unwrap()
+        };
+        let fresh = |l: &Mat<f64>, keys: &[usize], d: usize| {
+            let mut x = Mat::<f64>::from_fn(keys.len(), 1, |i, _| n[keys[i]][d]);
+            solve_lower_triangular_in_place(l.as_ref(), x.as_mut(), Par::Seq);
+            x
+        };
+        let mut slip = SlipImages::default();
+        let mut l = Mat::new();
+        let mut last: Vec<usize> = Vec::new();
+        // (the factor's directions, the slip directions): a grown factor, one that lost a
+        // direction in its middle, one reordered from its third
+        let steps: [(&[usize], &[usize]); 4] = [
+            (&[0, 1, 2, 3, 4, 5], &[8, 9]),
+            (&[0, 1, 2, 3, 4, 5, 7, 10], &[8, 11]),
+            (&[0, 1, 3, 4, 5, 7, 10], &[11]),
+            (&[0, 1, 10, 7, 5, 4, 3, 6], &[9, 8, 12]),
+        ];
+        for (keys, needed) in steps {
+            let prefix = last.iter().zip(keys).take_while(|(a, b)| a == b).count();
+            slip.keep(prefix);
+            l = factor(l, prefix, keys);
+            slip.update(&l, keys, &n, needed);
+            for &d in needed {
+                let x = fresh(&l, keys, d);
+                let image = slip.image(d);
+                assert_eq!(image.len(), keys.len());
+                for (i, v) in image.iter().enumerate() {
+                    assert!((v - x[(i, 0)]).abs() < 1e-12, "direction {d}, row {i}");
+                }
+            }
+            last = keys.to_vec();
+        }
+        // 9 was last used SLIP_IMAGE_UPDATES updates ago, 8 and 12 just now
+        assert!(slip.images.contains_key(&9) && slip.images.contains_key(&12));
+        for _ in 0..SLIP_IMAGE_UPDATES {
+            slip.keep(last.len());
+            slip.update(&l, &last, &n, &[8]);
+        }
+        let mut kept: Vec<usize> = slip.images.keys().copied().collect();
+        kept.sort_unstable();
+        assert_eq!(kept, [8], "unused images are dropped");
+    }
+
+    #[test]
+    fn block_form_with_slip_columns_solves_both_ways() {
+        use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+        let n = 12;
+        // the last three unknowns' columns are not their rows, as a slip node's
+        let mut a = spd(n);
+        for j in n - 3..n {
+            for i in 0..n {
+                a[(i, j)] += 0.3 * ((i * j) % 5) as f64 / 5.0;
+            }
+        }
+        let p: Vec<usize> = (0..n - 3).rev().collect();
+        let q: Vec<usize> = (n - 3..n).collect();
+        let s_pp = Mat::<f64>::from_fn(p.len(), p.len(), |i, j| a[(p[i], p[j])]);
+        let l = s_pp.llt(faer::Side::Lower).unwrap().L().to_owned();
+        let mut x = Mat::<f64>::from_fn(p.len(), q.len(), |i, j| a[(p[i], q[j])]);
+        let mut y = Mat::<f64>::from_fn(p.len(), q.len(), |i, j| a[(q[j], p[i])]);
+        solve_lower_triangular_in_place(l.as_ref(), x.as_mut(), Par::Seq);
+        solve_lower_triangular_in_place(l.as_ref(), y.as_mut(), Par::Seq);
+        for images in [None, Some((x, y))] {
+            let dense = Dense::new(&a, Some((p.clone(), l.clone())), q.clone(), images);
+            for transpose in [false, true] {
+                let b = Mat::<f64>::from_fn(n, 2, |i, j| (i + 3 * j) as f64 - 4.0);
+                let mut t = b.clone();
+                dense.solve(t.as_mut(), transpose);
+                let a = if transpose {
+                    a.transpose().to_owned()
+                } else {
+                    a.clone()
+                };
+                let r = (a * &t - &b).norm_max();
+                assert!(r < 1e-11, "residual {r:e} (transpose {transpose})");
+            }
+        }
+    }
+
     #[test]
     fn dense_algebra_leaves_the_upper_registers_clean() {
         use crate::solver::vector_state::upper_in_use;
@@ -1083,9 +1374,14 @@ mod tests {
         assert_eq!((g.nrows(), g.ncols()), (64, 64));
         let l11 = a.as_ref().submatrix(0, 0, 40, 40).to_owned();
         let l11 = l11.llt(faer::Side::Lower).unwrap().L().to_owned();
-        let l = cholesky_extending(l11, 40, n - 10, |i, j| a[(i, j)]).unwrap();
+        let l = cholesky_extending(l11, 40, n - 10, by_entries(|i, j| a[(i, j)])).unwrap();
         assert_eq!(upper_in_use(), Some(false), "after extending a factor");
-        let dense = Dense::new(&a, Some(((0..n - 10).collect(), l)), (n - 10..n).collect());
+        let dense = Dense::new(
+            &a,
+            Some(((0..n - 10).collect(), l)),
+            (n - 10..n).collect(),
+            None,
+        );
         assert_eq!(upper_in_use(), Some(false), "after the block factorization");
         for transpose in [false, true] {
             let mut x = Mat::<f64>::from_fn(n, 8, |i, j| (i + j) as f64);
