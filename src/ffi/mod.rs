@@ -383,12 +383,12 @@ fn pointer<T>(ptr: *const T, name: &str, required: bool) -> Result<bool, Fail> {
     }
 }
 
-/// A required pointer argument: non-NULL and aligned ([`pointer`]).
+/// A required pointer argument: non-NULL and aligned ([`pointer()`]).
 fn check_pointer<T>(ptr: *const T, name: &str) -> Result<(), Fail> {
     pointer(ptr, name, true).map(|_| ())
 }
 
-/// An optional output (NULL: not wanted), checked by [`pointer`] before any work is done so
+/// An optional output (NULL: not wanted), checked by [`pointer()`] before any work is done so
 /// that a bad one fails the call with nothing written; write it with [`put`].
 fn optional<T>(ptr: *mut T, name: &str) -> Result<Option<*mut T>, Fail> {
     Ok(pointer(ptr.cast_const(), name, false)?.then_some(ptr))
@@ -433,10 +433,10 @@ unsafe fn slice<'a, T>(ptr: *const T, len: usize, name: &str) -> Result<&'a [T],
     Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
 }
 
-/// [`slice`] of doubles, checked finite.
+/// [`slice()`] of doubles, checked finite.
 ///
 /// # Safety
-/// As [`slice`].
+/// As [`slice()`].
 unsafe fn doubles<'a>(ptr: *const f64, len: usize, name: &str) -> Result<&'a [f64], Fail> {
     // SAFETY: forwarded contract.
     let values = unsafe { slice(ptr, len, name)? };
