@@ -388,7 +388,8 @@ impl SlipImages {
             }
         }
         for (v, ds) in batches.into_iter().filter(|(v, _)| *v < k) {
-            let images: Vec<&[f64]> = ds
+            // the rows that hold (none for a new direction)
+            let heads: Vec<&[f64]> = ds
                 .iter()
                 .map(|d| self.images.get(d).map_or(&[][..], |image| &image.x[..v]))
                 .collect();
@@ -396,7 +397,7 @@ impl SlipImages {
             for (j, d) in ds.iter().enumerate() {
                 gather(&n[*d], &keys[v..], col_slice(&mut x2, j));
             }
-            let x1 = Mat::<f64>::from_fn(v, ds.len(), |i, j| images[j][i]);
+            let x1 = Mat::<f64>::from_fn(v, ds.len(), |i, j| heads[j][i]);
             clean_after(|| {
                 matmul(
                     x2.as_mut(),
@@ -447,12 +448,12 @@ fn gather(row: &[f64], keys: &[usize], out: &mut [f64]) {
 
 /// The lower Cholesky factor `L` of the symmetric positive definite `A` (`n x n`, read by
 /// columns: `column(j, rows, out)` writes `A[rows, j]`, see [`by_entries`]) whose leading
-/// `p x p` block `A11 = L11 L11^T` is already factored: `L11` is the leading block of `l` (which may be larger), `L21 = A21 L11^-T` by one
-/// triangular solve and `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) -
-/// ...` flops instead of `n^3 / 3` when few unknowns are new. `l` is cut to `p x p` and grown
-/// to `n x n` in place: an unchanged factor costs nothing, a grown one only its new rows (a
-/// fresh `n x n` copy took 20 ms at n = 2,150). `None` when `A` is not numerically positive
-/// definite.
+/// `p x p` block `A11 = L11 L11^T` is already factored: `L11` is the leading block of `l`
+/// (which may be larger), `L21 = A21 L11^-T` by one triangular solve and
+/// `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) - ...` flops instead of
+/// `n^3 / 3` when few unknowns are new. `l` is cut to `p x p` and grown to `n x n` in place:
+/// an unchanged factor costs nothing, a grown one only its new rows (a fresh `n x n` copy took
+/// 20 ms at n = 2,150). `None` when `A` is not numerically positive definite.
 fn cholesky_extending(
     mut l: Mat<f64>,
     p: usize,
