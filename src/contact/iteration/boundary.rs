@@ -6,7 +6,8 @@
 //! the columns of `F` the active nodes touch. The small system `S tau = b - rows . u0`,
 //! `S = rows^T F cols`, is factored by blocked dense Cholesky (extending the previous
 //! iteration's factor) and LU for the slip unknowns' Schur complement (faer), formed from
-//! forward images of the slip directions kept along with that factor.
+//! forward images of the slip directions kept along with that factor; read off `N`, `S` is
+//! not stored (its one-norm from column sums kept with the rows, see [`RowSums`]).
 //!
 //! The dense reference of the same algebra (every column of `F` built up front, `F c` formed
 //! from `F` in every iteration, nalgebra's unblocked LU) is kept behind
@@ -109,6 +110,8 @@ pub(super) struct NodeFlexibility {
     factor: KeptFactor,
     /// Forward images on that factor of the directions the last slip unknowns needed.
     slip: SlipImages,
+    /// The one-norms of `N`'s columns over the last small system's row directions.
+    sums: RowSums,
 }
 
 /// What [`NodeFlexibility`] keeps of a direction.
@@ -438,6 +441,77 @@ impl SlipImages {
     }
 }
 
+/// The one-norms `sum_(a in R) |N_ab|` of the columns of `N` over the row directions `R` of the
+/// last small system, for `||S||_1` (the condition estimate's scale): a column of `S` whose
+/// unknown is not slipping is `N_(R, b)`, and `R` changes at the zone's edges between
+/// iterations, so a sum is updated by the rows that left and entered,
+/// `|R| (|added| + |removed|)` reads of `N` instead of `|R|^2` (at n = 512 with friction,
+/// reading the 2,900^2 entries in every iteration took 0.22 s).
+#[derive(Debug, Clone, Default)]
+pub(super) struct RowSums {
+    /// Whether direction `a` is in `R`.
+    member: Vec<bool>,
+    /// `R`.
+    rows: Vec<usize>,
+    /// `sum_(a in R) |N_ab|`, for `b` in `R` (stale elsewhere).
+    sums: Vec<f64>,
+}
+
+impl RowSums {
+    /// Move to the (distinct) row directions `rows` of `N` (rows `n`), in the `runs` of
+    /// consecutive directions of [`consecutive_runs`]; every sum computed afresh when more
+    /// than half of them changed.
+    fn update(&mut self, n: &[Vec<f64>], rows: &[usize], runs: &[(usize, usize, usize)]) {
+        let d = n.len();
+        self.member.resize(d, false);
+        self.sums.resize(d, 0.0);
+        let mut member = vec![false; d];
+        rows.iter().for_each(|&a| member[a] = true);
+        let added: Vec<usize> = rows.iter().copied().filter(|&a| !self.member[a]).collect();
+        let removed: Vec<usize> = self.rows.iter().copied().filter(|&a| !member[a]).collect();
+        let fresh = |b: usize| {
+            runs.iter()
+                .map(|&(_, a, len)| abs_sum(&n[b][a..a + len]))
+                .sum::<f64>()
+        };
+        let afresh = 2 * (added.len() + removed.len()) > rows.len();
+        for &b in rows {
+            self.sums[b] = if afresh || !self.member[b] {
+                fresh(b)
+            } else {
+                let nb = &n[b];
+                let entered: f64 = added.iter().map(|&a| nb[a].abs()).sum();
+                let left: f64 = removed.iter().map(|&a| nb[a].abs()).sum();
+                self.sums[b] + entered - left
+            };
+        }
+        (self.member, self.rows) = (member, rows.to_vec());
+    }
+
+    /// `||S||_1 = max_j sum_i |S_ij|` of the small system `nodes` (a column with more than one
+    /// part read whole), updating the sums to its rows.
+    fn norm1(&mut self, nodes: &NodeColumns) -> f64 {
+        let NodeColumns {
+            n,
+            rows,
+            runs,
+            cols,
+        } = nodes;
+        self.update(n, rows, runs);
+        let mut column = vec![0.0; rows.len()];
+        cols.iter().enumerate().fold(0.0, |norm, (j, parts)| {
+            let sum = match parts[..] {
+                [(b, c)] => c.abs() * self.sums[b],
+                _ => {
+                    nodes.column(j, &mut column);
+                    abs_sum(&column)
+                }
+            };
+            norm.max(sum)
+        })
+    }
+}
+
 /// `out[i] = row[keys[i]]`: a column of the symmetric `N` read from one row of it (which
 /// stays in cache) rather than an entry from each of its rows.
 fn gather(row: &[f64], keys: &[usize], out: &mut [f64]) {
@@ -451,16 +525,20 @@ fn gather(row: &[f64], keys: &[usize], out: &mut [f64]) {
 /// `p x p` block `A11 = L11 L11^T` is already factored: `L11` is the leading block of `l`
 /// (which may be larger), `L21 = A21 L11^-T` by one triangular solve and
 /// `L22 L22^T = A22 - L21 L21^T` by a blocked Cholesky, `n^2 (n - p) - ...` flops instead of
-/// `n^3 / 3` when few unknowns are new. `l` is cut to `p x p` and grown to `n x n` in place:
-/// an unchanged factor costs nothing, a grown one only its new rows (a fresh `n x n` copy took
-/// 20 ms at n = 2,150). `None` when `A` is not numerically positive definite.
+/// `n^3 / 3` when few unknowns are new. `l` is cut to `p x p` and grown to `n x n` in place,
+/// and `A22`'s lower triangle is read, updated and factored in `L22`'s place: an unchanged
+/// factor costs nothing, a grown one only its new rows (a fresh `n x n` copy took 20 ms at
+/// n = 2,150; at n = 2,890, copying `A22` in and `L22` out took a third of the fresh factor's
+/// time). `None` when `A` is not numerically positive definite.
 fn cholesky_extending(
     mut l: Mat<f64>,
     p: usize,
     n: usize,
     column: impl Fn(usize, Range<usize>, &mut [f64]),
 ) -> Option<Mat<f64>> {
-    use faer::linalg::matmul::matmul;
+    use faer::dyn_stack::{MemBuffer, MemStack};
+    use faer::linalg::cholesky::llt::factor::{cholesky_in_place, cholesky_in_place_scratch};
+    use faer::linalg::matmul::triangular::{BlockStructure, matmul};
     use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
     let r = n - p;
     l.truncate(p, p);
@@ -468,28 +546,48 @@ fn cholesky_extending(
     if r == 0 {
         return Some(l);
     }
-    let (mut l21t, mut a22) = (Mat::<f64>::zeros(p, r), Mat::<f64>::zeros(r, r));
+    let mut l21t = Mat::<f64>::zeros(p, r);
     for j in 0..r {
         if p > 0 {
             column(p + j, 0..p, col_slice(&mut l21t, j));
         }
-        column(p + j, p..n, col_slice(&mut a22, j));
+        column(p + j, p + j..n, &mut col_slice(&mut l, p + j)[p + j..]);
     }
     // L21^T = L11^-1 A21^T
     solve_lower_triangular_in_place(l.as_ref().submatrix(0, 0, p, p), l21t.as_mut(), Par::Seq);
+    let mut l22 = l.as_mut().submatrix_mut(p, p, r, r);
     matmul(
-        a22.as_mut(),
+        l22.as_mut(),
+        BlockStructure::TriangularLower,
         faer::Accum::Add,
         l21t.transpose(),
+        BlockStructure::Rectangular,
         l21t.as_ref(),
+        BlockStructure::Rectangular,
         -1.0,
         Par::Seq,
     );
-    let l22 = a22.llt(faer::Side::Lower).ok()?;
+    let mut scratch = MemBuffer::new(cholesky_in_place_scratch::<f64>(
+        r,
+        Par::Seq,
+        Default::default(),
+    ));
+    let stack = MemStack::new(&mut scratch);
+    cholesky_in_place(
+        l22.as_mut(),
+        Default::default(),
+        Par::Seq,
+        stack,
+        Default::default(),
+    )
+    .ok()?;
+    // the factorization may leave values above the diagonal
+    for j in 1..r {
+        l22.as_mut().col_mut(j).subrows_mut(0, j).fill(0.0);
+    }
     l.as_mut()
         .submatrix_mut(p, 0, r, p)
         .copy_from(l21t.transpose());
-    l.as_mut().submatrix_mut(p, p, r, r).copy_from(l22.L());
     Some(l)
 }
 
@@ -507,21 +605,34 @@ fn by_entries(a: impl Fn(usize, usize) -> f64) -> impl Fn(usize, Range<usize>, &
 impl Dense {
     /// `S` factored; `p` the symmetric unknowns in the order of their factor `l` (`None`: not
     /// factored yet, or not symmetric positive definite), `q` the unknowns whose column is not
-    /// their row, `images` the slip block's `(X, Y) = (L^-1 S_PQ, L^-1 S_QP^T)` when the
-    /// caller has them (see [`SlipImages`]; else two forward substitutions make them).
+    /// their row, `images` as for [`block`](Self::block).
     fn new(
         s: &Mat<f64>,
         symmetric: Option<(Vec<usize>, Mat<f64>)>,
         q: Vec<usize>,
         images: Option<(Mat<f64>, Mat<f64>)>,
     ) -> Self {
+        match symmetric {
+            Some((p, l)) => Dense::block(p, l, q, |i, j| s[(i, j)], images),
+            None => Dense::Lu(s.partial_piv_lu()),
+        }
+    }
+
+    /// The block form of `S` (entries `entry(i, j)`, read only in the slip block's rows or
+    /// columns) from the factor `l` of its symmetric unknowns `p` (in `l`'s order) and the
+    /// slip unknowns `q`, whose block is `(X, Y) = (L^-1 S_PQ, L^-1 S_QP^T)` when the caller
+    /// has them (see [`SlipImages`]; else two forward substitutions make them).
+    fn block(
+        p: Vec<usize>,
+        l: Mat<f64>,
+        q: Vec<usize>,
+        entry: impl Fn(usize, usize) -> f64,
+        images: Option<(Mat<f64>, Mat<f64>)>,
+    ) -> Self {
         use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
-        let Some((p, l)) = symmetric else {
-            return Dense::Lu(s.partial_piv_lu());
-        };
         let slip = (!q.is_empty()).then(|| {
             let sub = |r: &[usize], c: &[usize]| {
-                Mat::<f64>::from_fn(r.len(), c.len(), |i, j| s[(r[i], c[j])])
+                Mat::<f64>::from_fn(r.len(), c.len(), |i, j| entry(r[i], c[j]))
             };
             let (x, y) = images.unwrap_or_else(|| {
                 let (mut x, mut y) = (sub(&p, &q), sub(&q, &p).transpose().to_owned());
@@ -556,7 +667,16 @@ impl Dense {
                 let Blocks { p, l, slip } = b.as_ref();
                 let k = x.ncols();
                 let mut xp = Mat::<f64>::from_fn(p.len(), k, |i, j| x[(p[i], j)]);
-                solve_lower_triangular_in_place(l.as_ref(), xp.as_mut(), Par::Seq);
+                // rows above the first nonzero stay zero (the condition estimate's unit
+                // vectors: a slip unknown's has none, and the zone's edges are factored last)
+                let nonzero = |i: &usize| (0..k).any(|j| xp[(*i, j)] != 0.0);
+                let first = (0..p.len()).find(nonzero).unwrap_or(p.len());
+                let rest = p.len() - first;
+                solve_lower_triangular_in_place(
+                    l.as_ref().submatrix(first, first, rest, rest),
+                    xp.as_mut().subrows_mut(first, rest),
+                    Par::Seq,
+                );
                 if let Some(Slip { q, x: sx, y: sy, z }) = slip {
                     let xq = Mat::<f64>::from_fn(q.len(), k, |i, j| x[(q[i], j)]);
                     let (by_q, by_p) = if transpose { (sx, sy) } else { (sy, sx) };
@@ -572,6 +692,75 @@ impl Dense {
                 solve_upper_triangular_in_place(l.transpose(), xp.as_mut(), Par::Seq);
                 scatter(&xp, p, x);
             }
+        }
+    }
+}
+
+/// The first `m` rows of the small system's `S`, a column or an entry at a time, without
+/// storing it (its one-norm: see [`RowSums`]).
+enum Columns<'a> {
+    /// Small kinematics.
+    Nodes(NodeColumns<'a>),
+    /// Finite kinematics: `S_ij = row_i . y_j` with the responses `y_j = F col_j` (`mc`
+    /// values each).
+    Responses {
+        rows: &'a [Sparse],
+        y: &'a [f64],
+        mc: usize,
+    },
+}
+
+/// `S_ij = sum_(b, c) c N_(b, row_i)` over the parts `(b, c)` of column `j` (small
+/// kinematics; `N` is symmetric: a column reads along the rows `N_b`, in the `runs` of
+/// consecutive directions that `rows` come in: slices, not gathers).
+struct NodeColumns<'a> {
+    n: &'a [Vec<f64>],
+    rows: &'a [usize],
+    runs: Vec<(usize, usize, usize)>,
+    cols: &'a [Vec<(usize, f64)>],
+}
+
+impl NodeColumns<'_> {
+    /// Column `j` into `out` (`m` values).
+    fn column(&self, j: usize, out: &mut [f64]) {
+        out.fill(0.0);
+        for &(b, c) in &self.cols[j] {
+            for &(i, a, len) in &self.runs {
+                for (o, v) in out[i..i + len].iter_mut().zip(&self.n[b][a..a + len]) {
+                    *o += c * v;
+                }
+            }
+        }
+    }
+
+    /// `S_ij`, summed as [`column`](Self::column) sums it.
+    fn entry(&self, i: usize, j: usize) -> f64 {
+        let row = self.rows[i];
+        self.cols[j]
+            .iter()
+            .fold(0.0, |sum, &(b, c)| sum + c * self.n[b][row])
+    }
+}
+
+impl Columns<'_> {
+    /// Column `j` into `out` (`m` values).
+    fn column(&self, j: usize, out: &mut [f64]) {
+        match self {
+            Columns::Nodes(nodes) => nodes.column(j, out),
+            Columns::Responses { rows, y, mc } => {
+                let yj = &y[j * mc..(j + 1) * mc];
+                for (o, row) in out.iter_mut().zip(rows.iter()) {
+                    *o = dot(row, yj);
+                }
+            }
+        }
+    }
+
+    /// `S_ij`, summed as [`column`](Self::column) sums it.
+    fn entry(&self, i: usize, j: usize) -> f64 {
+        match self {
+            Columns::Nodes(nodes) => nodes.entry(i, j),
+            Columns::Responses { rows, y, mc } => dot(&rows[i], &y[j * mc..(j + 1) * mc]),
         }
     }
 }
@@ -928,9 +1117,11 @@ impl ContactAnalysis {
 
     /// Solve the small system (METHOD.md section 3): `S tau = b - rows . u0` with
     /// `S_ij = row_i . F col_j`, bordered by the force-controlled plate translations `U` as in
-    /// the reference (`SmallSystem::solve`), by a blocked Cholesky factorization when `S` is
-    /// symmetric (no slip node with friction, no border) or else a blocked LU with partial
-    /// pivoting (faer), and
+    /// the reference (`SmallSystem::solve`). Without a border, the block of the unknowns whose
+    /// column is their row, `S_PP`, is factored by Cholesky (under small kinematics straight
+    /// from `N`, extending the kept factor) and the slip unknowns by LU of their Schur
+    /// complement ([`Dense::block`]); with a border, or an `S_PP` that is not positive
+    /// definite, `S` is stored and factored by LU with partial pivoting (faer). Also
     /// the new displacement of the contact dofs, `u = u0 + F sum_j tau_j col_j + sum_e U_e w_e`
     /// (`w_e` the plate's response). Small kinematics read `S` off the node flexibility,
     /// `S_ij = sum_b coefficient_jb N_(a_i, b)`, and form `u` from the kept directions with
@@ -950,39 +1141,14 @@ impl ContactAnalysis {
             return Ok((Vec::new(), Vec::new(), 1.0, u0c.to_vec()));
         }
         let mc = self.dofs.len();
-        let mut s = std::mem::replace(&mut self.small_matrix, Mat::new());
-        s.truncate(0, 0);
-        s.resize_with(m + k, m + k, |_, _| 0.0);
         // small kinematics: directions of rows and columns; finite: the responses y_j
         let (directions, responses) = match self.options.kinematics {
-            Kinematics::Small => {
-                let (rows, cols) = self.node_directions(system)?;
-                let n = &self.node_flexibility.n;
-                // N is symmetric: column j gathers along the rows N_b of its directions,
-                // which come in a few runs of consecutive directions (slices, not gathers)
-                let runs = consecutive_runs(&rows);
-                for (j, parts) in cols.iter().enumerate() {
-                    let sj = col_slice(&mut s, j);
-                    for &(b, c) in parts {
-                        let nb = &n[b];
-                        for &(i, a, len) in &runs {
-                            for (sij, v) in sj[i..i + len].iter_mut().zip(&nb[a..a + len]) {
-                                *sij += c * v;
-                            }
-                        }
-                    }
-                }
-                (Some((rows, cols)), Vec::new())
-            }
+            Kinematics::Small => (Some(self.node_directions(system)?), Vec::new()),
             Kinematics::Finite => {
                 self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
                 let mut y = vec![0.0; mc * m];
                 for (j, col) in system.cols.iter().enumerate() {
-                    let yj = &mut y[j * mc..(j + 1) * mc];
-                    self.apply_flexibility(col, yj);
-                    for (i, row) in system.rows.iter().enumerate() {
-                        s[(i, j)] = dot(row, yj);
-                    }
+                    self.apply_flexibility(col, &mut y[j * mc..(j + 1) * mc]);
                 }
                 (None, y)
             }
@@ -991,30 +1157,16 @@ impl ContactAnalysis {
         for (i, (row, b)) in system.rows.iter().zip(&system.b).enumerate() {
             rhs[(i, 0)] = b - dot(row, u0c);
         }
-        if let Some(b) = border {
-            b.fill(
-                &system.rows,
-                &system.cols,
-                m,
-                &mut |i, j, v| s[(i, j)] = v,
-                &mut |i, v| rhs[(i, 0)] = v,
-            )?;
-        }
-        let s_norm = (0..m + k)
-            .map(|j| abs_sum(col_slice(&mut s, j)))
-            .fold(0.0, f64::max);
         // the unknowns whose column is not their row: slip nodes under friction
         let (unsymmetric, symmetric): (Vec<usize>, Vec<usize>) =
             (0..m).partition(|&j| system.basis[j].len() > 1);
-        let factor = match (&directions, k) {
-            (_, 1..) => None,
-            _ if symmetric.is_empty() => None,
-            (Some((rows, _)), _) => self.symmetric_factor(system, rows, symmetric),
-            (None, _) => {
-                let p = &symmetric;
-                cholesky_extending(Mat::new(), 0, p.len(), by_entries(|i, j| s[(p[i], p[j])]))
-                    .map(|l| (symmetric, l))
-            }
+        let block = k == 0 && !symmetric.is_empty();
+        // under small kinematics S_PP is factored from N itself, and the slip block needs
+        // only S_QQ and the images: S is not stored (at n = 512 with friction, zeroing,
+        // filling and summing its 2,900^2 entries in every iteration took 0.46 s)
+        let factor = match &directions {
+            Some((rows, _)) if block => self.symmetric_factor(system, rows, symmetric.clone()),
+            _ => None,
         };
         let images = match (&directions, &factor) {
             (Some((rows, cols)), Some((_, l))) if !unsymmetric.is_empty() => {
@@ -1022,12 +1174,62 @@ impl ContactAnalysis {
             }
             _ => None,
         };
-        let lu = Dense::new(&s, factor, unsymmetric, images);
+        let columns = match &directions {
+            Some((rows, cols)) => Columns::Nodes(NodeColumns {
+                n: &self.node_flexibility.n,
+                rows,
+                runs: consecutive_runs(rows),
+                cols,
+            }),
+            None => Columns::Responses {
+                rows: &system.rows,
+                y: &responses,
+                mc,
+            },
+        };
+        let (lu, s_norm) = match factor {
+            Some((p, l)) => {
+                let Columns::Nodes(nodes) = &columns else {
+                    unreachable!("S_PP is factored here from N only");
+                };
+                let s_norm = self.node_flexibility.sums.norm1(nodes);
+                let entry = |i: usize, j: usize| columns.entry(i, j);
+                (Dense::block(p, l, unsymmetric, entry, images), s_norm)
+            }
+            None => {
+                let mut s = std::mem::replace(&mut self.small_matrix, Mat::new());
+                s.truncate(0, 0);
+                s.resize_with(m + k, m + k, |_, _| 0.0);
+                for j in 0..m {
+                    columns.column(j, &mut col_slice(&mut s, j)[..m]);
+                }
+                if let Some(b) = border {
+                    b.fill(
+                        &system.rows,
+                        &system.cols,
+                        m,
+                        &mut |i, j, v| s[(i, j)] = v,
+                        &mut |i, v| rhs[(i, 0)] = v,
+                    )?;
+                }
+                let s_norm = (0..m + k)
+                    .map(|j| abs_sum(col_slice(&mut s, j)))
+                    .fold(0.0, f64::max);
+                // finite kinematics: S_PP's factor from S
+                let factor = (block && directions.is_none()).then(|| {
+                    let p = &symmetric;
+                    let entries = by_entries(|i, j| s[(p[i], p[j])]);
+                    cholesky_extending(Mat::new(), 0, p.len(), entries).map(|l| (symmetric, l))
+                });
+                let lu = Dense::new(&s, factor.flatten(), unsymmetric, None);
+                self.small_matrix = s;
+                (lu, s_norm)
+            }
+        };
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
         let condition = solve_and_estimate(s_norm, &lu, rhs.as_mut())
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
-        self.small_matrix = s;
         if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
             self.node_flexibility.factor.l = b.l;
         }
@@ -1207,6 +1409,97 @@ mod tests {
 
     /// The vectorized `sum |x_i|` agrees with the running sum to round-off at every length
     /// around the chunk size, signs mixed.
+    #[test]
+    fn columns_read_s_without_storing_it() {
+        // N symmetric over 8 directions; rows in two runs, columns of one and two parts
+        let n: Vec<Vec<f64>> = (0..8)
+            .map(|a| {
+                (0..8)
+                    .map(|b| (((a * b) % 7) as f64 - 3.0) / (1 + a + b) as f64)
+                    .collect()
+            })
+            .collect();
+        let rows = [3, 4, 5, 0, 1, 7];
+        let cols: Vec<Vec<(usize, f64)>> = vec![
+            vec![(3, 1.0)],
+            vec![(4, 1.0), (2, -0.3)],
+            vec![(5, 1.0)],
+            vec![(0, 1.0), (6, 0.3)],
+            vec![(1, 1.0)],
+            vec![(7, 1.0)],
+        ];
+        let nodes = NodeColumns {
+            n: &n,
+            rows: &rows,
+            runs: consecutive_runs(&rows),
+            cols: &cols,
+        };
+        let m = rows.len();
+        let s =
+            |i: usize, j: usize| -> f64 { cols[j].iter().map(|&(b, c)| c * n[b][rows[i]]).sum() };
+        let mut column = vec![f64::NAN; m];
+        let mut norm = 0.0f64;
+        for j in 0..m {
+            nodes.column(j, &mut column);
+            for (i, &v) in column.iter().enumerate() {
+                assert!((v - s(i, j)).abs() < 1e-15, "S[{i}, {j}]");
+                assert_eq!(nodes.entry(i, j), v, "entry {i}, {j} as the column sums it");
+            }
+            norm = norm.max((0..m).map(|i| s(i, j).abs()).sum());
+        }
+        let mut sums = RowSums::default();
+        let s_norm = sums.norm1(&nodes);
+        assert!(
+            (s_norm - norm).abs() < 1e-14 * norm,
+            "{s_norm} against {norm}"
+        );
+        // finite kinematics: S_ij = row_i . y_j
+        let sparse_rows: Vec<Sparse> = vec![vec![(0, 1.0), (2, -2.0)], vec![(1, 0.5)]];
+        let y = [1.0, 2.0, 3.0, -1.0, 0.0, 4.0];
+        let columns = Columns::Responses {
+            rows: &sparse_rows,
+            y: &y,
+            mc: 3,
+        };
+        let mut column = [0.0; 2];
+        columns.column(1, &mut column);
+        assert_eq!(column, [-9.0, 0.0]);
+        assert_eq!(columns.entry(0, 0), -5.0);
+    }
+
+    #[test]
+    fn row_sums_follow_the_row_set() {
+        let d = 40;
+        let n: Vec<Vec<f64>> = (0..d)
+            .map(|a| {
+                (0..d)
+                    .map(|b| ((a * b + 3) % 11) as f64 - 5.0 + 0.01 * (a + b) as f64)
+                    .collect()
+            })
+            .collect();
+        // grow, shrink at both ends, drop from the middle, reorder, change more than half
+        let sets: [Vec<usize>; 6] = [
+            (10..20).collect(),
+            (8..24).collect(),
+            (9..22).collect(),
+            (9..22).filter(|&a| a != 15).chain([30, 31]).collect(),
+            vec![31, 30, 9, 10, 11, 12, 13, 14, 16, 17, 18, 19, 20, 21],
+            (0..6).chain(30..33).collect(),
+        ];
+        let mut sums = RowSums::default();
+        for rows in &sets {
+            sums.update(&n, rows, &consecutive_runs(rows));
+            for &b in rows {
+                let fresh: f64 = rows.iter().map(|&a| n[b][a].abs()).sum();
+                assert!(
+                    (sums.sums[b] - fresh).abs() <= 1e-13 * fresh,
+                    "direction {b} of {rows:?}: {} against {fresh}",
+                    sums.sums[b]
+                );
+            }
+        }
+    }
+
     #[test]
     fn abs_sum_is_the_one_norm() {
         for len in 0..12 {
