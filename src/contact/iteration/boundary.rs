@@ -1187,16 +1187,14 @@ impl ContactAnalysis {
                 mc,
             },
         };
-        let (lu, s_norm) = match factor {
-            Some((p, l)) => {
-                let Columns::Nodes(nodes) = &columns else {
-                    unreachable!("S_PP is factored here from N only");
-                };
+        // a factor here came from N (small kinematics); finite kinematics factor S_PP below
+        let (lu, s_norm) = match (factor, &columns) {
+            (Some((p, l)), Columns::Nodes(nodes)) => {
                 let s_norm = self.node_flexibility.sums.norm1(nodes);
                 let entry = |i: usize, j: usize| columns.entry(i, j);
                 (Dense::block(p, l, unsymmetric, entry, images), s_norm)
             }
-            None => {
+            _ => {
                 let mut s = std::mem::replace(&mut self.small_matrix, Mat::new());
                 s.truncate(0, 0);
                 s.resize_with(m + k, m + k, |_, _| 0.0);
