@@ -1274,6 +1274,10 @@ pub struct EdgeRun {
     /// L2 error of the best approximation on the same nodes
     /// ([`crate::scene::best_approximation`]).
     pub best_l2_error: f64,
+    /// The same, zero at the nodes the method found open
+    /// ([`crate::scene::best_approximation_on`]): the least error of a pressure with the
+    /// method's contact set.
+    pub best_active_l2_error: f64,
     /// Half-width error against Hertz (second moment, relative).
     pub half_width_error: f64,
     /// Peak error against Hertz (relative).
@@ -1304,6 +1308,7 @@ pub fn edge_sweep(n: usize, positions: usize) -> Result<Vec<EdgeRun>> {
             half_width_over_h: c.hertz.half_width / h,
             l2_error: c.l2_error,
             best_l2_error: c.best_l2_error,
+            best_active_l2_error: c.best_active_l2_error,
             half_width_error: c.half_width / c.hertz.half_width - 1.0,
             peak_error: c.peak / c.hertz.peak - 1.0,
         })

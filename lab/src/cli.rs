@@ -566,20 +566,21 @@ fn beam(
 /// `bench edge`: a row per run and a summary per n.
 fn edge(ns: &[usize], positions: usize) -> AnyResult {
     println!(
-        "{:>4} {:>8} {:>5} {:>8} {:>8} {:>6} {:>8} {:>8}",
-        "n", "a_H/h", "edge", "L2 %", "best %", "ratio", "a %", "p0 %"
+        "{:>4} {:>8} {:>5} {:>8} {:>8} {:>6} {:>8} {:>8} {:>8}",
+        "n", "a_H/h", "edge", "L2 %", "best %", "ratio", "active %", "a %", "p0 %"
     );
     for &n in ns {
         let runs = hycon_lab::bench::edge_sweep(n, positions)?;
         for r in &runs {
             println!(
-                "{:>4} {:>8.3} {:>5.2} {:>8.4} {:>8.4} {:>6.2} {:>+8.4} {:>+8.4}",
+                "{:>4} {:>8.3} {:>5.2} {:>8.4} {:>8.4} {:>6.2} {:>8.4} {:>+8.4} {:>+8.4}",
                 r.n,
                 r.half_width_over_h,
                 r.edge_position(),
                 100.0 * r.l2_error,
                 100.0 * r.best_l2_error,
                 r.l2_error / r.best_l2_error,
+                100.0 * r.best_active_l2_error,
                 100.0 * r.half_width_error,
                 100.0 * r.peak_error
             );
@@ -594,8 +595,9 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
         };
         let (m, lo, hi) = stats(&|r| 100.0 * r.l2_error);
         let (bm, blo, bhi) = stats(&|r| 100.0 * r.best_l2_error);
+        let (am, alo, ahi) = stats(&|r| 100.0 * r.best_active_l2_error);
         println!(
-            "n = {n}: L2 mean {m:.3}% (min {lo:.3}, max {hi:.3}); best approximation mean {bm:.3}% (min {blo:.3}, max {bhi:.3})"
+            "n = {n}: L2 mean {m:.3}% (min {lo:.3}, max {hi:.3}); best approximation mean {bm:.3}% (min {blo:.3}, max {bhi:.3}); with the contact set mean {am:.3}% (min {alo:.3}, max {ahi:.3})"
         );
     }
     Ok(())

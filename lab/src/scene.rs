@@ -123,6 +123,10 @@ pub struct HertzComparison {
     /// L2 projection of Hertz onto their hat functions (see [`best_approximation`]). It depends
     /// on where the contact edge falls between two nodes.
     pub best_l2_error: f64,
+    /// The least L2 error any pressure linear between the same A nodes and zero at the open
+    /// ones can have (see [`best_approximation_on`]): the bound for pressures with the method's
+    /// own contact set, which the multipliers are. `l2_error` is never below it.
+    pub best_active_l2_error: f64,
     /// Nodes in contact.
     pub active: usize,
     /// `sum |ts| / sum |tn|` (0 for frictionless).
@@ -456,6 +460,7 @@ pub fn compare_with_hertz(
             .collect()
     };
     let (multipliers, forces) = (curve(&pressure), curve(&force_pressure));
+    let in_contact: Vec<bool> = by_x.iter().map(|n| n.tn < 0.0).collect();
     // second moment: for Hertz, integral p x^2 dx / integral p dx = a^2 / 4
     let (m0, m2) = moments(&multipliers);
     Ok(HertzComparison {
@@ -467,6 +472,10 @@ pub fn compare_with_hertz(
         l2_error: l2_error(&multipliers, &hertz),
         l2_error_forces: l2_error(&forces, &hertz),
         best_l2_error: l2_error(&best_approximation(&multipliers, &hertz), &hertz),
+        best_active_l2_error: l2_error(
+            &best_approximation_on(&multipliers, &in_contact, &hertz),
+            &hertz,
+        ),
         active,
         tangential_ratio: nodes.iter().map(|n| n.ts.abs()).sum::<f64>()
             / nodes.iter().map(|n| n.tn.abs()).sum::<f64>(),
@@ -543,6 +552,15 @@ pub fn l2_error(points: &[[f64; 2]], hertz: &Hertz) -> f64 {
 /// matrix `M_ij = integral phi_i phi_j` and `b_i = integral phi_i p_H`, solved by the Thomas
 /// algorithm. No pressure linear between these nodes is closer to Hertz in L2.
 pub fn best_approximation(points: &[[f64; 2]], hertz: &Hertz) -> Vec<[f64; 2]> {
+    best_approximation_on(points, &vec![true; points.len()], hertz)
+}
+
+/// The L2 projection of Hertz's pressure onto the hat functions of the nodes of `points` that
+/// are `free`, the others held at zero: as [`best_approximation`] with the rows and columns of
+/// the held nodes replaced by `c_i = 0`. With `free` the nodes in contact, no pressure linear
+/// between the nodes and zero at the open ones is closer to Hertz in L2; the method's
+/// multipliers are such a pressure, so their error is never below this one's.
+pub fn best_approximation_on(points: &[[f64; 2]], free: &[bool], hertz: &Hertz) -> Vec<[f64; 2]> {
     let m = points.len();
     let a = hertz.half_width;
     let (mut diag, mut off, mut b) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
@@ -553,6 +571,13 @@ pub fn best_approximation(points: &[[f64; 2]], hertz: &Hertz) -> Vec<[f64; 2]> {
         off[i] = (xb - xa) / 6.0;
         b[i] += integrate(xa, xb, a, &|x, t| (1.0 - t) * hertz.pressure(x));
         b[i + 1] += integrate(xa, xb, a, &|x, t| t * hertz.pressure(x));
+    }
+    for i in (0..m).filter(|&i| !free[i]) {
+        (diag[i], b[i]) = (1.0, 0.0);
+        off[i] = 0.0;
+        if i > 0 {
+            off[i - 1] = 0.0;
+        }
     }
     // forward elimination (off[i] couples i and i + 1), then back substitution
     for i in 1..m {

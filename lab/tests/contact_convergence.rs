@@ -27,7 +27,9 @@
 
 use hycon::contact::iteration::{ContactOptions, Kinematics};
 use hycon_lab::cases::Hertz;
-use hycon_lab::scene::{DiskOnBlock, HertzComparison, best_approximation, l2_error};
+use hycon_lab::scene::{
+    DiskOnBlock, HertzComparison, best_approximation, best_approximation_on, l2_error,
+};
 
 /// Largest ratio of the method's L2 error to the best approximation's on the same nodes.
 const QUASI: f64 = 1.9;
@@ -46,6 +48,8 @@ struct Run {
     l2: f64,
     /// L2 error of the best approximation on the same nodes.
     best: f64,
+    /// The same, zero at the nodes the method found open.
+    best_active: f64,
     seconds: f64,
 }
 
@@ -75,6 +79,7 @@ fn run(r_over_a: usize, modulus_ratio: f64, n: usize) -> Run {
         n,
         l2: comparison.l2_error,
         best: comparison.best_l2_error,
+        best_active: comparison.best_active_l2_error,
         comparison,
         seconds,
     }
@@ -105,8 +110,8 @@ fn converges(modulus_ratio: f64) {
     let mut at_64 = Vec::new();
     let mut out = format!(
         "Hertz convergence, small kinematics, E_disk/E_block = {modulus_ratio:e}\n{:>5} {:>4} \
-         {:>8} {:>8} {:>6} {:>8} {:>8} {:>7}\n",
-        "R/a", "n", "L2 %", "best %", "ratio", "a %", "p0 %", "time s"
+         {:>8} {:>8} {:>6} {:>8} {:>8} {:>8} {:>7}\n",
+        "R/a", "n", "L2 %", "best %", "ratio", "active %", "a %", "p0 %", "time s"
     );
     let mut failures = Vec::new();
     for r_over_a in [32, 64] {
@@ -117,11 +122,12 @@ fn converges(modulus_ratio: f64) {
         for r in &runs {
             let (da, dp) = errors(&r.comparison);
             out += &format!(
-                "{r_over_a:>5} {:>4} {:>8.4} {:>8.4} {:>6.2} {:>+8.4} {:>+8.4} {:>7.3}\n",
+                "{r_over_a:>5} {:>4} {:>8.4} {:>8.4} {:>6.2} {:>8.4} {:>+8.4} {:>+8.4} {:>7.3}\n",
                 r.n,
                 100.0 * r.l2,
                 100.0 * r.best,
                 r.l2 / r.best,
+                100.0 * r.best_active,
                 100.0 * da,
                 100.0 * dp,
                 r.seconds
@@ -132,6 +138,14 @@ fn converges(modulus_ratio: f64) {
                     "{what}: L2 {:.4}% above {QUASI} x the best approximation {:.4}%",
                     100.0 * r.l2,
                     100.0 * r.best
+                ));
+            }
+            // the multipliers are a pressure zero at the open nodes: never below that bound
+            if r.l2 < r.best_active * (1.0 - 1e-9) {
+                failures.push(format!(
+                    "{what}: L2 {:.6}% below the best approximation with the contact set {:.6}%",
+                    100.0 * r.l2,
+                    100.0 * r.best_active
                 ));
             }
             if r.n >= 64 && (da.abs() > HERTZ || dp.abs() > HERTZ) {
@@ -198,6 +212,23 @@ fn best_approximation_is_the_projection() {
             let mut other = best.clone();
             other[i][1] += d;
             assert!(l2_error(&other, &hertz) > e_best, "node {i}, {d}");
+        }
+    }
+    // held at zero outside |x| < 0.9: zero there, optimal among perturbations of the free
+    // nodes, and worse than the unrestricted projection
+    let free: Vec<bool> = xs.iter().map(|x| x.abs() < 0.9).collect();
+    let held = best_approximation_on(&interpolant, &free, &hertz);
+    let e_held = l2_error(&held, &hertz);
+    assert!(e_held > e_best);
+    for (i, p) in held.iter().enumerate() {
+        if !free[i] {
+            assert_eq!(p[1], 0.0, "node {i}");
+            continue;
+        }
+        for d in [-1e-3, 1e-3] {
+            let mut other = held.clone();
+            other[i][1] += d;
+            assert!(l2_error(&other, &hertz) > e_held, "held, node {i}, {d}");
         }
     }
 }
