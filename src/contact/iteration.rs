@@ -1300,20 +1300,14 @@ impl ContactAnalysis {
                     NodeState::Stick
                 }
             };
-            // coverage is checked on the converged state only: an intermediate iterate may
-            // move a node at the end of a surface a hair past the other's end
-            let activate = |k: usize, new: &mut Vec<Vec<NodeState>>| -> Result<()> {
-                if set.may_close((p, k)) {
-                    new[p][k] = closed(&surface.nodes[k]);
-                }
-                Ok(())
-            };
+            // how deep each open node penetrates; which of them close is decided below
+            let mut depth: Vec<Option<f64>> = vec![None; surface.nodes.len()];
             for (k, node) in surface.nodes.iter().enumerate() {
                 let (tn, ts) = tractions[p][k];
                 match states[p][k] {
                     NodeState::Open => {
                         if node.normal_gap < -gap_tolerance {
-                            activate(k, &mut new)?;
+                            depth[k] = Some(node.normal_gap);
                         }
                     }
                     _ if tn > self.options.tension_tolerance * tn_max => {
@@ -1344,7 +1338,7 @@ impl ContactAnalysis {
             // small kinematics: the distance is then linear in the displacements)
             let a = &self.pairs[p].a;
             let open: Vec<bool> = (0..a.len())
-                .map(|k| states[p][k] == NodeState::Open && new[p][k] == NodeState::Open)
+                .map(|k| states[p][k] == NodeState::Open && depth[k].is_none())
                 .collect();
             for (k, w) in a.windows(2).enumerate() {
                 if !(open[k] && open[k + 1]) {
@@ -1378,8 +1372,14 @@ impl ContactAnalysis {
                         }
                         .into());
                     }
-                    activate(if xi < 0.5 { k } else { k + 1 }, &mut new)?;
+                    let node = if xi < 0.5 { k } else { k + 1 };
+                    depth[node] = Some(depth[node].map_or(g, |d| d.min(g)));
                 }
+            }
+            // coverage is checked on the converged state only: an intermediate iterate may
+            // move a node at the end of a surface a hair past the other's end
+            for k in set.closing(p, &depth) {
+                new[p][k] = closed(&surface.nodes[k]);
             }
         }
         Ok(new)
