@@ -100,6 +100,44 @@ fn hertz_refinement() {
     );
 }
 
+/// The contact zone is found in a few iterations per increment at every refinement, with and
+/// without friction: the calibration increment (from no contact) and the 3 increments of the
+/// press at n = 16, 64 and 256. `ActiveSet::closing` grows the zone by halves; before 0.6.1
+/// every penetrating node closed at once, which overshot the edge, and the zone then shrank
+/// by one or two tensile nodes per side per iteration: 12 iterations in the calibration
+/// increment at n = 16, up to 15 per increment at n = 256 (now at most 8 at every n here).
+#[test]
+fn hertz_zone_found_in_few_iterations() {
+    const MOST: usize = 10;
+    for n in [16, 64, 256] {
+        for friction in [0.0, 0.3] {
+            let scene = DiskOnBlock {
+                elements_per_half_width: n,
+                friction,
+                ..Default::default()
+            }
+            .build()
+            .unwrap();
+            let mut analysis = scene.analysis(ContactOptions::default()).unwrap();
+            let approach = scene.calibrated_approach(&mut analysis).unwrap();
+            let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
+            for step in 1..=3 {
+                let qp = scene.prescribed(approach * step as f64 / 3.0, 0.0);
+                analysis.increment(&f, &qp).unwrap();
+            }
+            let mut per_increment = vec![0; 4];
+            for r in analysis.records() {
+                per_increment[r.increment - 1] = r.iteration;
+            }
+            println!("n = {n}, mu = {friction}: iterations per increment {per_increment:?}");
+            assert!(
+                per_increment.iter().all(|&it| (1..=MOST).contains(&it)),
+                "n = {n}, mu = {friction}: {per_increment:?}"
+            );
+        }
+    }
+}
+
 /// The L2 error of way (a), element stresses, at the final increment (reported, not asserted:
 /// the paper found it the least accurate on coarse meshes).
 fn stress_error(def: DiskOnBlock) -> f64 {
