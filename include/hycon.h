@@ -75,10 +75,10 @@
 #define HYCON_VERSION_MINOR 6
 
 // Patch version of the library this header belongs to.
-#define HYCON_VERSION_PATCH 1
+#define HYCON_VERSION_PATCH 2
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 601
+#define HYCON_VERSION 602
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6
@@ -171,7 +171,10 @@ typedef struct HyconContactOptions {
     // increment or a converged one), so it scales with the load.
     double slip_tolerance;
     // B segments farther than this from an A segment, relative to the mean A segment length,
-    // are not paired with it (default 4).
+    // are not paired with it (default 4). The pairing reaches farther as the bodies move:
+    // at least twice an increment's largest motion under finite kinematics, and under small
+    // kinematics the reference pairing is widened to four times the largest displacement of
+    // the pair's nodes whenever twice that exceeds it, so a finer mesh never loses contact.
     double search_distance;
     // Iteration cap per increment (default 60).
     uint32_t max_iterations;

@@ -23,7 +23,11 @@
 //!
 //! Contact pair: A (multipliers) = the upper block's bottom, B = the lower block's top. Cases:
 //! A finer than B, equal and node to node, A coarser; each with an initial gap `g0 = 1e-3`
-//! (closed by the load) and with zero gap over the whole interface (conforming contact).
+//! (closed by the load), with zero gap over the whole interface (conforming contact), and with
+//! `g0 = 0.01` and a search distance of 0.02 A segments (0.0015 to 0.004): the blocks close
+//! from 2.5 to 6.5 times farther than the pairing first looks, so under small kinematics it must
+//! widen (`ContactAnalysis` does so whenever twice the largest displacement exceeds its
+//! reach; before hycon 0.6.2 these cases failed, the A nodes never paired with B).
 //!
 //! Theory: the exact fields (linear displacement, constant stress) lie in the discrete spaces:
 //! the hybrid elements reproduce constant stress exactly, a constant traction is a linear
@@ -76,6 +80,8 @@ struct Case {
     distortion: f64,
     /// Initial gap.
     gap: f64,
+    /// `ContactOptions::search_distance`.
+    search_distance: f64,
     /// Hold the four interface end nodes horizontally at their exact displacements (`0` at
     /// `x = 0`, the uniform widening at `x = 1`).
     hold_ends: bool,
@@ -183,6 +189,7 @@ fn run(case: Case) -> Outcome {
     let options = ContactOptions {
         tolerance: 1e-10,
         kinematics: case.kinematics,
+        search_distance: case.search_distance,
         ..Default::default()
     };
     let mut analysis = ContactAnalysis::new(model.clone(), vec![pair], options).unwrap();
@@ -290,7 +297,7 @@ fn run(case: Case) -> Outcome {
 fn contact_patch_test() {
     let clock = std::time::Instant::now();
     let mut cases = Vec::new();
-    for (gap, kinematics) in [1e-3, 0.0]
+    for ((gap, search_distance), kinematics) in [(1e-3, 4.0), (0.0, 4.0), (0.01, 0.02)]
         .into_iter()
         .flat_map(|g| [(g, Kinematics::Small), (g, Kinematics::Finite)])
     {
@@ -300,6 +307,7 @@ fn contact_patch_test() {
             nx_b: 8,
             distortion: 0.02,
             gap,
+            search_distance,
             hold_ends: true,
             kinematics,
         });
@@ -309,6 +317,7 @@ fn contact_patch_test() {
             nx_b: 8,
             distortion: 0.0,
             gap,
+            search_distance,
             hold_ends: true,
             kinematics,
         });
@@ -318,6 +327,7 @@ fn contact_patch_test() {
             nx_b: 8,
             distortion: 0.02,
             gap,
+            search_distance,
             hold_ends: true,
             kinematics,
         });
@@ -421,6 +431,7 @@ fn contact_patch_test_free_ends() {
             nx_b: 8,
             distortion: 0.02,
             gap: 0.0,
+            search_distance: 4.0,
             hold_ends: false,
             kinematics,
         });

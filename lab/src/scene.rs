@@ -361,6 +361,16 @@ impl Scene {
         ContactAnalysis::new(self.model.clone(), vec![self.pair.clone()], options)
     }
 
+    /// The analysis pressed to the Hertz load in one increment after the calibration (see
+    /// [`calibrated_approach`](Self::calibrated_approach)), with the approach it took.
+    pub fn pressed(&self, options: ContactOptions) -> Result<(ContactAnalysis, f64)> {
+        let mut analysis = self.analysis(options)?;
+        let approach = self.calibrated_approach(&mut analysis)?;
+        let f = vec![0.0; 2 * self.model.mesh.n_nodes()];
+        analysis.increment(&f, &self.prescribed(approach, 0.0))?;
+        Ok((analysis, approach))
+    }
+
     /// An approach that gives roughly the target half-width: one increment at a trial
     /// approach `a^2 / R` measures the load, then the approach is scaled linearly to the Hertz
     /// load `P = pi a^2 E* / (4 R)` (in 2D the load is nearly linear in the approach). The

@@ -70,12 +70,7 @@ fn run(r_over_a: usize, modulus_ratio: f64, n: usize) -> Run {
         kinematics: Kinematics::Small,
         ..Default::default()
     };
-    let mut analysis = scene.analysis(options).unwrap();
-    let approach = scene.calibrated_approach(&mut analysis).unwrap();
-    let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
-    analysis
-        .increment(&f, &scene.prescribed(approach, 0.0))
-        .unwrap();
+    let (analysis, _) = scene.pressed(options).unwrap();
     let seconds = clock.elapsed().as_secs_f64();
     let comparison = scene.compare(&analysis).unwrap();
     Run {

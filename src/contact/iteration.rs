@@ -39,7 +39,8 @@
 //! the reference configuration: pairing, frames, weights and the coupling `c_kj` (`F^A`, `F^B`)
 //! are constant, the gap is linear, `R_C,k(q) = R_C,k(X) + sum_j c_kj q_j`, and the normal row
 //! above is exact, so a contact set is solved in one step and no geometry is evaluated during
-//! the iteration. [`Kinematics::Finite`] re-evaluates the geometry at every iterate (the
+//! the iteration (except that the pairing is widened, still in `X`, when the bodies move
+//! farther than it looked for B: `widen_pairing`). [`Kinematics::Finite`] re-evaluates the geometry at every iterate (the
 //! current positions `x = X + q`), a geometric iteration that lets bodies slide far along each
 //! other.
 //!
@@ -193,7 +194,9 @@ pub enum Kinematics {
     /// coupling `F^A`, `F^B` are evaluated once, in the reference configuration `X`; the
     /// weighted gap is linear in the displacements,
     /// `R_C,k(u) = R_C,k(X) + sum_j c_kj u_j`; tractions are per reference length. The
-    /// contact matrices never change, so no geometry is evaluated during the iteration. Exact
+    /// contact matrices never change, so no geometry is evaluated during the iteration (only
+    /// when the bodies move farther than the pairing looked for B is it evaluated again, in
+    /// `X`, with a wider reach; the rows of nodes it had paired stay the same). Exact
     /// for the linearized problem that Hertz and Cattaneo-Mindlin theory solve; wrong once
     /// the surfaces slide by more than a small fraction of an element or rotate noticeably.
     #[default]
@@ -252,9 +255,12 @@ pub struct ContactOptions {
     /// any converged one): scaling every load scales the threshold with the slips.
     pub slip_tolerance: f64,
     /// Distance within which B segments are paired with an A segment, relative to the mean A
-    /// segment length; during an increment under finite kinematics the search reaches at least
-    /// twice the increment's largest motion of a contact dof too (see `search_reach`), so a
-    /// refined mesh never loses a contact that a coarse one finds.
+    /// segment length. The pairing reaches farther as the bodies move, so a refined mesh never
+    /// loses a contact that a coarse one finds: under finite kinematics at least twice the
+    /// increment's largest motion of a contact dof (see `search_reach`); under small
+    /// kinematics the reference pairing is evaluated again within four times the largest
+    /// displacement of the pair's nodes whenever twice that exceeds its reach (see
+    /// `widen_pairing`).
     pub search_distance: f64,
     /// Cycle policy: how many times per increment a cycling contact set is resolved by locking
     /// the alternating nodes (in slip: a node on the edge of the friction cone alternating
@@ -571,6 +577,10 @@ pub struct ContactAnalysis {
     /// The contact geometry of every pair in the reference configuration (the frozen pairing
     /// of small kinematics).
     reference: Vec<ContactSurface>,
+    /// How far from A the pairing of `reference` looked for B, per pair (absolute):
+    /// `search_distance` mean A segment lengths, widened under small kinematics as the bodies
+    /// move (see [`ContactAnalysis::widen_pairing`]).
+    reach: Vec<f64>,
     /// Under small kinematics, the B nodes inside each A segment of every pair in the
     /// reference configuration: the candidates of the pointwise B-node check.
     interiors: Option<Vec<geometry::SegmentInteriors>>,
@@ -678,7 +688,11 @@ impl ContactAnalysis {
             Flexibility::full(bodies.flexibility(&dofs)?)
         };
         timings.flexibility = clock.elapsed().as_secs_f64();
-        let reference = evaluate_pairs(&pairs, bodies.positions(), options.search_distance)?;
+        let reach: Vec<f64> = pairs
+            .iter()
+            .map(|p| options.search_distance * mean_segment(&p.a, bodies.positions()))
+            .collect();
+        let reference = evaluate_pairs(&pairs, bodies.positions(), &reach)?;
         let interiors = (options.kinematics == Kinematics::Small).then(|| {
             pairs
                 .iter()
@@ -730,6 +744,7 @@ impl ContactAnalysis {
             nodes,
             surfaces: reference.clone(),
             reference,
+            reach,
             interiors,
             increment: 0,
             records: Vec::new(),
@@ -975,6 +990,57 @@ impl ContactAnalysis {
         Ok(())
     }
 
+    /// Small kinematics: keep the frozen pairing wide enough for displacement `uc` of the
+    /// contact dofs. A point of A at reference distance `g0` from B along A's normal can touch
+    /// B only if `g0 <= |u_A| + |u_B| <= 2 max |u|` (the largest nodal displacement of the
+    /// pair since the reference configuration), so whenever `2 max |u|` exceeds the pair's
+    /// reach the pairing is evaluated again in the reference configuration within
+    /// `4 max |u|` (a growing load widens it a logarithmic number of times). Without this, a
+    /// reach of a few element lengths loses the outer part of a contact zone whose initial
+    /// gaps span more elements than that: exactly what refining the mesh does.
+    ///
+    /// Every point paired before keeps its partner (a new hit is farther than the old reach),
+    /// so the nodes whose data change are those that were not fully covered. If one of them
+    /// has been active its directions' flexibility is stale and all of it is rebuilt as nodes
+    /// close again. The working `surfaces` and the converged ones are brought to the new
+    /// pairing (the converged state itself, node states and tractions, does not change).
+    fn widen_pairing(&mut self, uc: &[f64], surfaces: &mut [ContactSurface]) -> Result<()> {
+        if self.options.kinematics != Kinematics::Small {
+            return Ok(());
+        }
+        for p in 0..self.pairs.len() {
+            let pair = &self.pairs[p];
+            let motion = pair
+                .a
+                .iter()
+                .chain(&pair.b)
+                .map(|&n| {
+                    let u = |c: usize| uc[self.contact_slot(dof(n, c))];
+                    u(0).hypot(u(1))
+                })
+                .fold(0.0f64, f64::max);
+            if 2.0 * motion <= self.reach[p] {
+                continue;
+            }
+            let reach = 4.0 * motion;
+            let wider = geometry::evaluate(&pair.a, &pair.b, self.bodies.positions(), reach)?;
+            let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
+                .enumerate()
+                .any(|(k, (new, old))| new != old && self.node_flexibility.knows(p, k));
+            if stale {
+                self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
+            }
+            self.reach[p] = reach;
+            self.reference[p] = wider;
+            surfaces[p] = self.reference[p].clone();
+            let mut converged = std::mem::take(&mut self.surfaces);
+            converged[p] = self.reference[p].clone();
+            self.update_geometry(&mut converged, &self.qc, &self.qc)?;
+            self.surfaces = converged;
+        }
+        Ok(())
+    }
+
     /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
     /// only, so every dof asked for has one.
     fn contact_slot(&self, d: usize) -> usize {
@@ -1068,6 +1134,7 @@ impl ContactAnalysis {
             let (tau, plate_motion, condition, uc_new) = solution.clone();
             let forces = system.forces(&tau, self.dofs.len());
             finite(&uc_new, number, iteration)?;
+            self.widen_pairing(&uc_new, &mut surfaces)?;
             self.update_geometry(&mut surfaces, &uc_new, &startc)?;
             let tractions = system.tractions(&tau, states, &self.laws);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, &startc)?;
@@ -1180,16 +1247,16 @@ fn mean_segment(a: &[usize], x: &[[f64; 2]]) -> f64 {
     total / (a.len().max(2) - 1) as f64
 }
 
-/// The contact geometry of every pair at positions `x`, B paired with A within
-/// `search_distance` mean A segment lengths.
+/// The contact geometry of every pair at positions `x`, B paired with A within `reach[p]`.
 fn evaluate_pairs(
     pairs: &[ContactPair],
     x: &[[f64; 2]],
-    search_distance: f64,
+    reach: &[f64],
 ) -> Result<Vec<ContactSurface>> {
     pairs
         .iter()
-        .map(|p| geometry::evaluate(&p.a, &p.b, x, search_distance * mean_segment(&p.a, x)))
+        .zip(reach)
+        .map(|(p, &r)| geometry::evaluate(&p.a, &p.b, x, r))
         .collect()
 }
 

@@ -174,7 +174,10 @@ pub struct HyconContactOptions {
     /// increment or a converged one), so it scales with the load.
     pub slip_tolerance: f64,
     /// B segments farther than this from an A segment, relative to the mean A segment length,
-    /// are not paired with it (default 4).
+    /// are not paired with it (default 4). The pairing reaches farther as the bodies move:
+    /// at least twice an increment's largest motion under finite kinematics, and under small
+    /// kinematics the reference pairing is widened to four times the largest displacement of
+    /// the pair's nodes whenever twice that exceeds it, so a finer mesh never loses contact.
     pub search_distance: f64,
     /// Iteration cap per increment (default 60).
     pub max_iterations: u32,

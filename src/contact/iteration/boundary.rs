@@ -136,6 +136,11 @@ impl NodeFlexibility {
         self.index[p][k][row as usize]
     }
 
+    /// Whether a direction of A node `k` of pair `p` is known (it has been active).
+    pub(super) fn knows(&self, p: usize, k: usize) -> bool {
+        self.index[p][k].iter().any(Option::is_some)
+    }
+
     /// Register direction `key` with vector `v` as number `vectors.len()`.
     fn register(&mut self, (p, k, row): (usize, usize, Row), v: Sparse, kept: Kept) {
         self.index[p][k][row as usize] = Some(self.vectors.len());
