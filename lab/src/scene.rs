@@ -8,7 +8,9 @@
 //! the opposite side B. The element size at the contact is `h = a / n` with `a` the target
 //! half-width and `n` the elements per half-width; `a` is `R / 64`, so `h` is a power of two of
 //! the block's root cells and the meshes are exactly graded. Both meshes are graded 2:1 toward
-//! the contact zone with 16 cells per size band ([`DiskOnBlock::band_layers`]). ([`DiskOnBlock::radius_over_half_width`] sets
+//! the contact zone with 16 cells per size band ([`DiskOnBlock::band_layers`]); the disk's band
+//! follows its arc where the arc rises out of the band of the line `y = 0` (`arc_chords`), so
+//! the arc keeps size `h` over the whole fine zone at any R/a. ([`DiskOnBlock::radius_over_half_width`] sets
 //! another power of two for `R / a`; 64 is the reference scene.)
 //!
 //! Mesh variants: [`DiskOnBlock::transition`] `Transition::Elements` (the reference scene: one
@@ -247,6 +249,7 @@ impl DiskOnBlock {
             layers,
         )]
         .into_iter()
+        .chain(arc_chords(r, disk_zone, disk_size, layers))
         .chain(cap)
         .collect();
         let disk = generate::half_disk_with(r, &disk_gradings, self.transition);
@@ -296,6 +299,38 @@ impl DiskOnBlock {
             radius: self.radius,
         })
     }
+}
+
+/// Gradings that keep the disk's arc at element size `h` over `|x| <= zone` where it rises
+/// above half the band that the line `y = 0` refines (`layers h / 2`): toward chords of the arc
+/// (radius `r`, lowest point at the origin) with sagitta at most `h`. Below that height the
+/// line's band already holds the arc (none are made: the reference scene's meshes are those
+/// of the line alone up to n = 256 at R/a = 64 and n = 128 at R/a = 32). Without them the arc
+/// coarsened where it rose out of the band (at R/a = 4, n = 512: 1.6 h from 0.48 a, 6.1 h
+/// from 0.95 a), so the multiplier side A was finer than B inside the contact zone and, with
+/// a soft disk, the contact system near singular.
+fn arc_chords(r: f64, zone: f64, h: f64, layers: usize) -> Vec<Grading> {
+    let rise = 0.5 * layers as f64 * h;
+    if rise >= r {
+        return Vec::new();
+    }
+    let from = (rise * (2.0 * r - rise)).sqrt();
+    if from >= zone {
+        return Vec::new();
+    }
+    let chord = (8.0 * r * h).sqrt();
+    let pieces = ((zone - from) / chord).ceil() as usize;
+    let arc = |x: f64| [x, r - (r * r - x * x).sqrt()];
+    (0..pieces)
+        .flat_map(|i| {
+            let (x0, x1) = (
+                from + (zone - from) * i as f64 / pieces as f64,
+                from + (zone - from) * (i + 1) as f64 / pieces as f64,
+            );
+            [(x0, x1), (-x1, -x0)]
+        })
+        .map(|(x0, x1)| Grading::toward_line(arc(x0), arc(x1), h, layers))
+        .collect()
 }
 
 /// Move the block's top nodes in `[lo, hi]` horizontally onto the x of the disk's arc nodes they

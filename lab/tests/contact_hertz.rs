@@ -7,7 +7,7 @@
 //! measured 0.3-0.6%, plus discretisation); the continuous L2 error of the multiplier pressure at
 //! most 2% at about 16 elements per half-width, decreasing with refinement.
 
-use hycon::contact::iteration::ContactOptions;
+use hycon::contact::iteration::{ContactAnalysis, ContactOptions};
 use hycon_lab::scene::{DiskOnBlock, HertzComparison};
 
 /// Run the scene and return the comparison at each of the 3 increments (after the calibration
@@ -30,14 +30,19 @@ fn run_with(def: DiskOnBlock, options: ContactOptions) -> Vec<(HertzComparison, 
         .collect();
     // the small contact systems stay well conditioned (the record carries the estimate;
     // measured up to 2.1e3; below 1e8 double precision still leaves 8 correct digits)
-    let condition = analysis
-        .records()
-        .iter()
-        .map(|r| r.condition)
-        .fold(1.0, f64::max);
+    let condition = largest_condition(&analysis);
     println!("largest condition estimate of the contact system: {condition:.3e}");
     assert!(condition.is_finite() && condition < 1e8, "{condition}");
     results
+}
+
+/// The largest 1-norm condition estimate of the small contact systems so far.
+fn largest_condition(analysis: &ContactAnalysis) -> f64 {
+    analysis
+        .records()
+        .iter()
+        .map(|r| r.condition)
+        .fold(1.0, f64::max)
 }
 
 fn print(label: &str, c: &HertzComparison, iterations: usize, h: f64) {
@@ -188,6 +193,57 @@ fn pairing_reach_does_not_change_the_answer() {
             "n = {n}: tractions differ by {worst:.2e} of the peak"
         );
     }
+}
+
+/// The disk's arc keeps element size `h` over the fine zone (`|x| <= 1.5 a`) at every R/a, so
+/// the multiplier side A (the block's top, spacing `h`) is nowhere finer than B inside the
+/// contact zone. The band refined toward the line `y = 0` holds the arc only up to a height of
+/// about `16 h`; before 0.6.2 the arc coarsened above it (R/a = 4, n = 512: 1.6 h from 0.48 a,
+/// 3.1 h from 0.68 a, 6.1 h from 0.95 a). With a disk 1e4 times softer than the block the
+/// contact system then came close to singular (condition estimate 4.0e7 at R/a = 4,
+/// n = 256; 8e7 at n = 512, where the calibration cycled), since the multipliers' oscillating
+/// modes at the scale h barely load a coarser B. Asserted: the arc's segments within the zone
+/// at most h long (measured 0.785 h), and the soft-disk press at R/a = 4, n = 256 converging
+/// with a condition estimate below 1e6 (measured 5.2e3).
+#[test]
+fn disk_arc_is_fine_over_the_contact_zone() {
+    for (r_over_a, n) in [(4, 512), (16, 256), (64, 64)] {
+        let def = DiskOnBlock {
+            elements_per_half_width: n,
+            radius_over_half_width: r_over_a,
+            ..Default::default()
+        };
+        let scene = def.build().unwrap();
+        let (a, h) = (scene.half_width, scene.half_width / n as f64);
+        let x = &scene.model.mesh.nodes;
+        let longest = scene
+            .pair
+            .b
+            .windows(2)
+            .filter(|w| x[w[0]][0].abs().max(x[w[1]][0].abs()) <= 1.5 * a)
+            .map(|w| (x[w[1]][0] - x[w[0]][0]).hypot(x[w[1]][1] - x[w[0]][1]))
+            .fold(0.0f64, f64::max);
+        println!(
+            "R/a = {r_over_a}, n = {n}: longest arc segment within 1.5 a: {:.3} h",
+            longest / h
+        );
+        assert!(
+            longest <= h * (1.0 + 1e-9),
+            "R/a = {r_over_a}, n = {n}: {longest:e} > h = {h:e}"
+        );
+    }
+    let scene = DiskOnBlock {
+        elements_per_half_width: 256,
+        radius_over_half_width: 4,
+        modulus_ratio: 1e-4,
+        ..Default::default()
+    }
+    .build()
+    .unwrap();
+    let (analysis, _) = scene.pressed(ContactOptions::default()).unwrap();
+    let condition = largest_condition(&analysis);
+    println!("soft disk, R/a = 4, n = 256: largest condition estimate {condition:.2e}");
+    assert!(condition < 1e6, "{condition:e}");
 }
 
 /// The L2 error of way (a), element stresses, at the final increment (reported, not asserted:
