@@ -10,8 +10,9 @@
 //! the block's root cells and the meshes are exactly graded. Both meshes are graded 2:1 toward
 //! the contact zone with 16 cells per size band ([`DiskOnBlock::band_layers`]); the disk's band
 //! follows its arc where the arc rises out of the band of the line `y = 0` (`arc_chords`), so
-//! the arc keeps size `h` over the whole fine zone at any R/a. ([`DiskOnBlock::radius_over_half_width`] sets
-//! another power of two for `R / a`; 64 is the reference scene.)
+//! the arc keeps size `h` over the whole fine zone at any R/a.
+//! ([`DiskOnBlock::radius_over_half_width`] sets another power of two for `R / a`; 64 is the
+//! reference scene.)
 //!
 //! Mesh variants: [`DiskOnBlock::transition`] `Transition::Elements` (the reference scene: one
 //! element per quadtree leaf, 5- and 6-node transition elements, hybrid elements only) or

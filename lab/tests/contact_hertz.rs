@@ -147,10 +147,11 @@ fn hertz_zone_found_in_few_iterations() {
 /// where the initial gaps of the contact zone span more elements than that, as a refined mesh
 /// makes them: at n = 256 with R/a = 16 the gap at the Hertz edge is 8 elements (the default
 /// looks 4 far, as far as the gap at x = 0.71 a), at n = 16 with a search distance of 0.05
-/// elements it is 1/8 of an element (0.05 at x = 0.63 a). Under small kinematics the frozen pairing then widens as the bodies move;
-/// before 0.6.2 these runs failed (no convergence at n = 256; at n = 16 a node
-/// locked open penetrated in the calibration increment). Compared with a pairing of 64 elements, wide enough from the start: the same
-/// contact set, tractions within 1e-9 of the peak (measured: equal to the bit at n = 256).
+/// elements it is 1/8 of an element (0.05 at x = 0.63 a). Under small kinematics the frozen
+/// pairing then widens as the bodies move; before 0.6.2 these runs failed (no convergence at
+/// n = 256; at n = 16 a node locked open penetrated in the calibration increment). Compared
+/// with a pairing of 64 elements, wide enough from the start: the same contact set, tractions
+/// within 1e-9 of the peak (measured: equal to the bit).
 #[test]
 fn pairing_reach_does_not_change_the_answer() {
     for (n, r_over_a, search_distance) in [(256, 16, 4.0), (16, 64, 0.05)] {

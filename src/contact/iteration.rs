@@ -40,9 +40,9 @@
 //! are constant, the gap is linear, `R_C,k(q) = R_C,k(X) + sum_j c_kj q_j`, and the normal row
 //! above is exact, so a contact set is solved in one step and no geometry is evaluated during
 //! the iteration (except that the pairing is widened, still in `X`, when the bodies move
-//! farther than it looked for B: `widen_pairing`). [`Kinematics::Finite`] re-evaluates the geometry at every iterate (the
-//! current positions `x = X + q`), a geometric iteration that lets bodies slide far along each
-//! other.
+//! farther than it looked for B: `widen_pairing`). [`Kinematics::Finite`] re-evaluates the
+//! geometry at every iterate (the current positions `x = X + q`), a geometric iteration that
+//! lets bodies slide far along each other.
 //!
 //! # The iteration (per increment)
 //! Start from the last converged states; each iteration solves the small system, brings the
