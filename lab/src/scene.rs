@@ -322,14 +322,9 @@ fn arc_chords(r: f64, zone: f64, h: f64, layers: usize) -> Vec<Grading> {
     let chord = (8.0 * r * h).sqrt();
     let pieces = ((zone - from) / chord).ceil() as usize;
     let arc = |x: f64| [x, r - (r * r - x * x).sqrt()];
+    let end = |i: usize| from + (zone - from) * i as f64 / pieces as f64;
     (0..pieces)
-        .flat_map(|i| {
-            let (x0, x1) = (
-                from + (zone - from) * i as f64 / pieces as f64,
-                from + (zone - from) * (i + 1) as f64 / pieces as f64,
-            );
-            [(x0, x1), (-x1, -x0)]
-        })
+        .flat_map(|i| [(end(i), end(i + 1)), (-end(i + 1), -end(i))])
         .map(|(x0, x1)| Grading::toward_line(arc(x0), arc(x1), h, layers))
         .collect()
 }
