@@ -43,6 +43,23 @@ pub enum ShapeError {
         /// Local node index (0-based) of the reflex corner.
         node: usize,
     },
+    /// A brick (8-node solid) whose Jacobian is not positive at a corner: a re-entrant,
+    /// collapsed or self-crossing hexahedron, or one with its bottom and top faces swapped.
+    #[error(
+        "Jacobian not positive at local node {node} (nodes 0-3 counter-clockwise seen from \
+         nodes 4-7, node 4 + i above node i)"
+    )]
+    InvertedCorner {
+        /// Local node index (0-based) where `det J <= 0`.
+        node: usize,
+    },
+    /// A brick face whose two triangle halves (split along either diagonal) differ in normal
+    /// by more than [`crate::solid::WARP_LIMIT_DEGREES`].
+    #[error("face {face} is warped beyond the limit (see the face numbering of the brick)")]
+    WarpedFace {
+        /// Local face index (0-based).
+        face: usize,
+    },
 }
 
 /// The crate-wide error type.

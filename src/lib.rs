@@ -12,6 +12,7 @@
 //! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.
 //! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
 //!   stresses.
+//! * [`solid`]: 3D bricks (18-beta hybrid, H8), hexahedral meshes, a 3D linear static model.
 //! * [`contact`]: contact-element kernels (mortar projection, weighted gaps, coupling rows), the
 //!   bodies (hycon's model or a host's system) and the contact-set iteration with its results.
 //! * [`ffi`]: the C ABI, a thin checked layer over the above.
@@ -29,6 +30,7 @@ pub mod ffi;
 pub mod material;
 pub mod mesh;
 pub mod model;
+pub mod solid;
 pub mod solver;
 
 pub use error::{ContactError, Error, Result, ShapeError};
