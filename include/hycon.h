@@ -4,6 +4,9 @@
  *
  * Contents
  * - Element routines (hycon_element_*): stiffness, stress recovery, edge tractions.
+ * - 3D element routines (hycon_brick_*): the 18-beta hybrid brick and the H8 brick for 3D
+ *   hosts: shape check, stiffness, stress parameters, stress at points, face tractions
+ *   (node and face numbering at HyconBrickKind).
  * - Contact, two ways in, one analysis handle (HyconContact, hycon_contact_*):
  *   model API: describe the mesh in a HyconModel (hycon_model_*), hycon assembles and factors;
  *   host-assembly API: describe the contact polylines in a HyconHost (hycon_host_*) and give
@@ -94,6 +97,15 @@
 
 // Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
 #define HYCON_FIXED -1
+
+// Nodes of a brick.
+#define HYCON_BRICK_NODES 8
+
+// Dofs of a brick (3 per node).
+#define HYCON_BRICK_DOF 24
+
+// Largest number of stress parameters of a brick (18, the hybrid brick's).
+#define HYCON_BRICK_MAX_BETA 18
 
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
@@ -404,6 +416,38 @@ typedef struct HyconConstraintEntry {
     double value;
 } HyconConstraintEntry;
 
+// Which brick formulation a 3D element routine uses (`hycon_brick_*`).
+//
+// Brick node order: nodes 0-3 are one face, counter-clockwise seen from nodes 4-7; node
+// `4 + i` lies above node `i`. Natural coordinates `(xi, eta, zeta)`: node 0 `(-1,-1,-1)`,
+// 1 `(+1,-1,-1)`, 2 `(+1,+1,-1)`, 3 `(-1,+1,-1)`, 4-7 the same with `zeta = +1`:
+//
+// ```text
+//        7-----------6
+//       /|          /|
+//      4-----------5 |      zeta
+//      | 3---------|-2      | eta
+//      |/          |/       |/
+//      0-----------1        +--- xi
+// ```
+//
+// Coordinates are interleaved `x0 y0 z0 x1 y1 z1 ...` (24 doubles), dofs `u0 v0 w0 u1 ...`
+// (24), matrices 24 x 24 row-major. Faces, each counter-clockwise seen from outside (the
+// right-hand rule gives the outward normal): 0 = nodes `0 4 7 3` (`xi = -1`), 1 = `1 2 6 5`
+// (`xi = +1`), 2 = `0 1 5 4` (`eta = -1`), 3 = `3 7 6 2` (`eta = +1`), 4 = `0 3 2 1`
+// (`zeta = -1`), 5 = `4 5 6 7` (`zeta = +1`); face parameters `(s, t)` in `[-1, 1]^2` run from
+// the face's first node towards its second (`s`) and towards its fourth (`t`). Stresses are
+// `{sxx, syy, szz, sxy, syz, szx}`.
+typedef int32_t HyconBrickKind;
+
+// Isotropic material of a 3D solid: no thickness, no plane idealisation.
+typedef struct HyconSolidMaterial {
+    // Young's modulus `E` (finite, in `[1e-100, 1e100]`).
+    double youngs;
+    // Poisson's ratio (`-1 < nu < 0.5`).
+    double poisson;
+} HyconSolidMaterial;
+
 
 
 // Success.
@@ -516,6 +560,17 @@ typedef struct HyconConstraintEntry {
 
 // The value is the total force on the plate in that direction (its motion is solved for).
 #define HYCON_PLATE_FORCE 2
+
+// The 18-beta assumed-stress hybrid brick of Pian and Tong (stress in natural coordinates,
+// carried to Cartesian components with the centre Jacobian): locking-free in bending and as
+// `nu -> 0.5`.
+#define HYCON_BRICK_HYBRID18 1
+
+// The trilinear displacement brick with 2x2x2 Gauss (the baseline; locks in bending and near
+// incompressibility).
+#define HYCON_BRICK_H8 2
+
+
 
 #ifdef __cplusplus
 extern "C" {
@@ -1090,6 +1145,93 @@ HyconStatus hycon_element_edge_traction(HyconElementKind kind,
                                         size_t edge,
                                         double s,
                                         double *out);
+
+// Check one brick's shape: finite coordinates, no coincident nodes, positive volume (node
+// order as in the header's brick section), `det J > 0` at every corner, no face warped by more
+// than 45 degrees (angle between the normals of the face's two triangle halves). Both kinds
+// accept the same shapes. Tolerances relative to the longest edge.
+//
+// Returns `HYCON_OK`, or `HYCON_ERROR_BAD_ELEMENT` with a message naming the defect
+// (degenerate, inverted, Jacobian not positive at local node i, face f warped),
+// `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind, non-finite coordinate),
+// `HYCON_ERROR_NULL_POINTER`.
+//
+// # Safety
+// `coords` must be NULL or point to 24 readable doubles.
+HyconStatus hycon_brick_check(HyconBrickKind kind, const double *coords);
+
+// Brick stiffness `K` (24 x 24) into `k_out`, row-major (`k_out[i * 24 + j] = K_ij`), rows and
+// columns in dof order `u0 v0 w0 u1 ...`. Symmetric, so column-major readers get the same.
+// Hybrid: `K = G^T H^-1 G`, `H = integral of P^T S P dV`, `G = integral of P^T B dV` (2x2x2
+// Gauss); H8: `K = integral of B^T D B dV`.
+//
+// * `coords`: 24 doubles `x0 y0 z0 x1 ...`, node order of the header's brick section.
+// * `material`: finite, `E > 0`, `-1 < nu < 0.5`.
+// * `k_out`, `k_len`: at least 576 doubles; written only on success.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, non-finite
+// coordinate), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`,
+// `HYCON_ERROR_BUFFER_TOO_SMALL`.
+//
+// # Safety
+// `coords` NULL or 24 readable doubles; `material` NULL or a readable struct; `k_out` NULL or
+// writable for `k_len` doubles.
+HyconStatus hycon_brick_stiffness(HyconBrickKind kind,
+                                  const double *coords,
+                                  const struct HyconSolidMaterial *material,
+                                  double *k_out,
+                                  size_t k_len);
+
+// Stress parameters `beta = H^-1 G q` of a brick from its nodal displacements `q` (24 doubles,
+// dof order `u0 v0 w0 u1 ...`): 18 for the hybrid brick (the first 6 are the mean stress
+// `{sxx, syy, szz, sxy, syz, szx}`), 0 for H8.
+//
+// `out`, `len`, `needed`: the header's size convention (`HYCON_BRICK_MAX_BETA` always
+// suffices; `(NULL, 0, &needed)` asks for the count).
+//
+// # Safety
+// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+// NULL or writable for `len` doubles; `needed` NULL or writable.
+HyconStatus hycon_brick_stress_params(HyconBrickKind kind,
+                                      const double *coords,
+                                      const struct HyconSolidMaterial *material,
+                                      const double *q,
+                                      double *out,
+                                      size_t len,
+                                      size_t *needed);
+
+// Stress `{sxx, syy, szz, sxy, syz, szx}` at the physical point `(px, py, pz)` of a brick from
+// its nodal displacements `q` (24 doubles). The point should lie in the brick (it is mapped to
+// natural coordinates by Newton's method); outside, the value is an extrapolation. `out`
+// receives 6 doubles on success.
+//
+// # Safety
+// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+// NULL or writable for 6 doubles.
+HyconStatus hycon_brick_stress(HyconBrickKind kind,
+                               const double *coords,
+                               const struct HyconSolidMaterial *material,
+                               const double *q,
+                               double px,
+                               double py,
+                               double pz,
+                               double *out);
+
+// Traction `{tx, ty, tz} = sigma n` (outward unit normal `n`) at face parameters `(s, t)` in
+// `[-1, 1]^2` of face `face` (0 to 5, numbering in the header's brick section) of a brick,
+// from its nodal displacements `q` (24 doubles). `out` receives 3 doubles on success.
+//
+// # Safety
+// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+// NULL or writable for 3 doubles.
+HyconStatus hycon_brick_face_traction(HyconBrickKind kind,
+                                      const double *coords,
+                                      const struct HyconSolidMaterial *material,
+                                      const double *q,
+                                      size_t face,
+                                      double s,
+                                      double t,
+                                      double *out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -212,6 +212,65 @@ inline Result<std::vector<double>> element_stiffness(HyconElementKind kind, View
 }
 
 // ---------------------------------------------------------------------------------------------
+// 3D element routines: 8-node bricks (numbering at HyconBrickKind in hycon.h)
+
+// Check one brick's shape (`coords`: 24 values x0 y0 z0 x1 ...).
+inline Status brick_check(HyconBrickKind kind, const std::array<double, 24> &coords) {
+    return Status::from(hycon_brick_check(kind, coords.data()));
+}
+
+// Brick stiffness, 24 x 24 row-major.
+inline Result<std::array<double, 576>> brick_stiffness(HyconBrickKind kind,
+                                                       const std::array<double, 24> &coords,
+                                                       const HyconSolidMaterial &material) {
+    std::array<double, 576> k{};
+    const Status s =
+        Status::from(hycon_brick_stiffness(kind, coords.data(), &material, k.data(), k.size()));
+    if (!s.ok()) return s;
+    return k;
+}
+
+// Stress parameters beta from the 24 nodal displacements q (18 for the hybrid brick, 0 for H8).
+inline Result<std::vector<double>> brick_stress_params(HyconBrickKind kind,
+                                                       const std::array<double, 24> &coords,
+                                                       const HyconSolidMaterial &material,
+                                                       const std::array<double, 24> &q) {
+    std::vector<double> beta(HYCON_BRICK_MAX_BETA);
+    std::size_t needed = 0;
+    const Status s = Status::from(hycon_brick_stress_params(
+        kind, coords.data(), &material, q.data(), beta.data(), beta.size(), &needed));
+    if (!s.ok()) return s;
+    beta.resize(needed);
+    return beta;
+}
+
+// Stress {sxx, syy, szz, sxy, syz, szx} at the physical point p.
+inline Result<std::array<double, 6>> brick_stress(HyconBrickKind kind,
+                                                  const std::array<double, 24> &coords,
+                                                  const HyconSolidMaterial &material,
+                                                  const std::array<double, 24> &q,
+                                                  const std::array<double, 3> &p) {
+    std::array<double, 6> out{};
+    const Status s = Status::from(hycon_brick_stress(kind, coords.data(), &material, q.data(),
+                                                     p[0], p[1], p[2], out.data()));
+    if (!s.ok()) return s;
+    return out;
+}
+
+// Traction sigma n at face parameters (s, t) in [-1, 1]^2 of face `face` (0 to 5).
+inline Result<std::array<double, 3>> brick_face_traction(HyconBrickKind kind,
+                                                         const std::array<double, 24> &coords,
+                                                         const HyconSolidMaterial &material,
+                                                         const std::array<double, 24> &q,
+                                                         std::size_t face, double s, double t) {
+    std::array<double, 3> out{};
+    const Status st = Status::from(hycon_brick_face_traction(
+        kind, coords.data(), &material, q.data(), face, s, t, out.data()));
+    if (!st.ok()) return st;
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Callback adapters
 
 namespace detail {

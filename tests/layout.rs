@@ -149,6 +149,7 @@ macro_rules! rust_structs {
 
 rust_structs! {
     HyconMaterial { youngs, poisson, thickness, analysis },
+    HyconSolidMaterial { youngs, poisson },
     HyconContactOptions {
         tolerance,
         gap_tolerance,
@@ -213,6 +214,7 @@ fn rust_aliases() -> BTreeMap<&'static str, String> {
         HyconPlateControl,
         HyconMonitorFn,
         HyconSolveFn,
+        HyconBrickKind,
     ]
     .into_iter()
     .collect()
@@ -234,6 +236,11 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_MAX_NODES,
         HYCON_MAX_DOF,
         HYCON_MAX_BETA,
+        HYCON_BRICK_NODES,
+        HYCON_BRICK_DOF,
+        HYCON_BRICK_MAX_BETA,
+        HYCON_BRICK_HYBRID18,
+        HYCON_BRICK_H8,
         HYCON_FIXED,
         HYCON_OK,
         HYCON_ERROR_NULL_POINTER,

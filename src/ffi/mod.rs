@@ -3,8 +3,9 @@
 //! No mathematics lives here. Every exported function checks its inputs (pointers, lengths,
 //! enums, finite values, element shape), calls the safe Rust API, and copies the result into
 //! the caller's buffers. This module holds the conventions, status codes and the checked
-//! boundary; `elements` exports the element routines ([`crate::element`]) and `contact` the
-//! contact analysis ([`crate::contact`]: model API and host-assembly API). The header
+//! boundary; `elements` exports the element routines ([`crate::element`]), `solid` the 3D brick
+//! routines ([`crate::solid`]) and `contact` the contact analysis ([`crate::contact`]: model API
+//! and host-assembly API). The header
 //! `include/hycon.h` is generated from the crate by cbindgen
 //! (`cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`, or
 //! `HYCON_BLESS=1 cargo test --test header_fresh`) and committed; `tests/header_fresh.rs` fails
@@ -51,9 +52,11 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 mod contact;
 mod elements;
+mod solid;
 
 pub use contact::*;
 pub use elements::*;
+pub use solid::*;
 
 // ------------------------------------------------------------------------------------------
 // Version

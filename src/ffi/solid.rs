@@ -1,0 +1,307 @@
+//! The 3D element routines of the C ABI: shape check, stiffness, stress parameters, stress at
+//! points and face tractions of one 8-node brick (see the [parent module](super) for the
+//! conventions).
+//!
+//! # Brick node, face and dof order
+//! Nodes 0-3 are one face, counter-clockwise seen from nodes 4-7; node `4 + i` lies above node
+//! `i` (natural coordinates: node 0 `(-1,-1,-1)`, 1 `(+1,-1,-1)`, 2 `(+1,+1,-1)`,
+//! 3 `(-1,+1,-1)`, 4-7 the same with `zeta = +1`). Coordinates are interleaved
+//! `x0 y0 z0 x1 y1 z1 ...` (24 doubles); dofs `u0 v0 w0 u1 v1 w1 ...` (24). Faces, each
+//! counter-clockwise seen from outside: 0 `(0 4 7 3)` `xi = -1`, 1 `(1 2 6 5)` `xi = +1`,
+//! 2 `(0 1 5 4)` `eta = -1`, 3 `(3 7 6 2)` `eta = +1`, 4 `(0 3 2 1)` `zeta = -1`,
+//! 5 `(4 5 6 7)` `zeta = +1`; face parameters `(s, t)` in `[-1, 1]^2` run from the face's first
+//! node to its second (`s`) and to its fourth (`t`). Stresses are `{sxx, syy, szz, sxy, syz,
+//! szx}`.
+
+use super::*;
+use crate::solid::{self, BrickFormulation, Isotropic, N_DOF, N_NODES};
+
+/// Which brick formulation a 3D element routine uses (`hycon_brick_*`).
+///
+/// Brick node order: nodes 0-3 are one face, counter-clockwise seen from nodes 4-7; node
+/// `4 + i` lies above node `i`. Natural coordinates `(xi, eta, zeta)`: node 0 `(-1,-1,-1)`,
+/// 1 `(+1,-1,-1)`, 2 `(+1,+1,-1)`, 3 `(-1,+1,-1)`, 4-7 the same with `zeta = +1`:
+///
+/// ```text
+///        7-----------6
+///       /|          /|
+///      4-----------5 |      zeta
+///      | 3---------|-2      | eta
+///      |/          |/       |/
+///      0-----------1        +--- xi
+/// ```
+///
+/// Coordinates are interleaved `x0 y0 z0 x1 y1 z1 ...` (24 doubles), dofs `u0 v0 w0 u1 ...`
+/// (24), matrices 24 x 24 row-major. Faces, each counter-clockwise seen from outside (the
+/// right-hand rule gives the outward normal): 0 = nodes `0 4 7 3` (`xi = -1`), 1 = `1 2 6 5`
+/// (`xi = +1`), 2 = `0 1 5 4` (`eta = -1`), 3 = `3 7 6 2` (`eta = +1`), 4 = `0 3 2 1`
+/// (`zeta = -1`), 5 = `4 5 6 7` (`zeta = +1`); face parameters `(s, t)` in `[-1, 1]^2` run from
+/// the face's first node towards its second (`s`) and towards its fourth (`t`). Stresses are
+/// `{sxx, syy, szz, sxy, syz, szx}`.
+pub type HyconBrickKind = i32;
+/// The 18-beta assumed-stress hybrid brick of Pian and Tong (stress in natural coordinates,
+/// carried to Cartesian components with the centre Jacobian): locking-free in bending and as
+/// `nu -> 0.5`.
+pub const HYCON_BRICK_HYBRID18: HyconBrickKind = 1;
+/// The trilinear displacement brick with 2x2x2 Gauss (the baseline; locks in bending and near
+/// incompressibility).
+pub const HYCON_BRICK_H8: HyconBrickKind = 2;
+
+/// Nodes of a brick.
+pub const HYCON_BRICK_NODES: usize = 8;
+/// Dofs of a brick (3 per node).
+pub const HYCON_BRICK_DOF: usize = 24;
+/// Largest number of stress parameters of a brick (18, the hybrid brick's).
+pub const HYCON_BRICK_MAX_BETA: usize = 18;
+
+/// Isotropic material of a 3D solid: no thickness, no plane idealisation.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct HyconSolidMaterial {
+    /// Young's modulus `E` (finite, in `[1e-100, 1e100]`).
+    pub youngs: f64,
+    /// Poisson's ratio (`-1 < nu < 0.5`).
+    pub poisson: f64,
+}
+
+const _: () = {
+    assert!(HYCON_BRICK_NODES == N_NODES);
+    assert!(HYCON_BRICK_DOF == N_DOF);
+    assert!(HYCON_BRICK_MAX_BETA == solid::MAX_BETA);
+};
+
+fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
+    match kind {
+        HYCON_BRICK_HYBRID18 => Ok(BrickFormulation::Hybrid18),
+        HYCON_BRICK_H8 => Ok(BrickFormulation::H8),
+        k => Err(Fail::invalid(format!(
+            "unknown brick kind {k} (expected HYCON_BRICK_HYBRID18 = 1 or HYCON_BRICK_H8 = 2)"
+        ))),
+    }
+}
+
+/// Read 8 interleaved node coordinates.
+///
+/// # Safety
+/// If `coords` is non-null it must point to 24 readable doubles.
+unsafe fn read_brick(coords: *const f64) -> Result<[[f64; 3]; N_NODES], Fail> {
+    let mut flat = [0.0; N_DOF];
+    // SAFETY: forwarded contract.
+    unsafe { read_doubles(coords, &mut flat, "coords")? };
+    Ok(std::array::from_fn(|k| {
+        [flat[3 * k], flat[3 * k + 1], flat[3 * k + 2]]
+    }))
+}
+
+/// Read and validate a solid material.
+///
+/// # Safety
+/// If `m` is non-null it must point to a readable `HyconSolidMaterial`.
+unsafe fn read_solid_material(m: *const HyconSolidMaterial) -> Result<Isotropic, Fail> {
+    check_pointer(m, "material")?;
+    // SAFETY: non-null and aligned (checked); a readable struct of two doubles (contract).
+    let m = unsafe { m.read() };
+    Ok(Isotropic::new(m.youngs, m.poisson)?)
+}
+
+/// The inputs of the stress routines, read and checked, and the recovered field.
+///
+/// # Safety
+/// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct.
+unsafe fn brick_stress(
+    kind: HyconBrickKind,
+    coords: *const f64,
+    material: *const HyconSolidMaterial,
+    q: *const f64,
+) -> Result<solid::BrickStress, Fail> {
+    let formulation = brick_formulation(kind)?;
+    // SAFETY: the caller's contract.
+    let (x, material) = unsafe { (read_brick(coords)?, read_solid_material(material)?) };
+    let mut dofs = [0.0; N_DOF];
+    // SAFETY: the caller's contract on `q`.
+    unsafe { read_doubles(q, &mut dofs, "q")? };
+    Ok(solid::recover_stress(formulation, &x, &material, &dofs)?)
+}
+
+fn finite(values: &[f64], what: &str) -> Result<(), Fail> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(Fail::invalid(format!(
+            "{what} is not finite (is the point inside the brick?)"
+        )))
+    }
+}
+
+/// Check one brick's shape: finite coordinates, no coincident nodes, positive volume (node
+/// order as in the header's brick section), `det J > 0` at every corner, no face warped by more
+/// than 45 degrees (angle between the normals of the face's two triangle halves). Both kinds
+/// accept the same shapes. Tolerances relative to the longest edge.
+///
+/// Returns `HYCON_OK`, or `HYCON_ERROR_BAD_ELEMENT` with a message naming the defect
+/// (degenerate, inverted, Jacobian not positive at local node i, face f warped),
+/// `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind, non-finite coordinate),
+/// `HYCON_ERROR_NULL_POINTER`.
+///
+/// # Safety
+/// `coords` must be NULL or point to 24 readable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_brick_check(
+    kind: HyconBrickKind,
+    coords: *const f64,
+) -> HyconStatus {
+    boundary("hycon_brick_check", || {
+        brick_formulation(kind)?;
+        // SAFETY: the caller's contract on `coords`.
+        let x = unsafe { read_brick(coords)? };
+        Ok(solid::check_shape(&x)?)
+    })
+}
+
+/// Brick stiffness `K` (24 x 24) into `k_out`, row-major (`k_out[i * 24 + j] = K_ij`), rows and
+/// columns in dof order `u0 v0 w0 u1 ...`. Symmetric, so column-major readers get the same.
+/// Hybrid: `K = G^T H^-1 G`, `H = integral of P^T S P dV`, `G = integral of P^T B dV` (2x2x2
+/// Gauss); H8: `K = integral of B^T D B dV`.
+///
+/// * `coords`: 24 doubles `x0 y0 z0 x1 ...`, node order of the header's brick section.
+/// * `material`: finite, `E > 0`, `-1 < nu < 0.5`.
+/// * `k_out`, `k_len`: at least 576 doubles; written only on success.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, non-finite
+/// coordinate), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`,
+/// `HYCON_ERROR_BUFFER_TOO_SMALL`.
+///
+/// # Safety
+/// `coords` NULL or 24 readable doubles; `material` NULL or a readable struct; `k_out` NULL or
+/// writable for `k_len` doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_brick_stiffness(
+    kind: HyconBrickKind,
+    coords: *const f64,
+    material: *const HyconSolidMaterial,
+    k_out: *mut f64,
+    k_len: usize,
+) -> HyconStatus {
+    boundary("hycon_brick_stiffness", || {
+        let formulation = brick_formulation(kind)?;
+        // SAFETY: the caller's contract.
+        let (x, material) = unsafe { (read_brick(coords)?, read_solid_material(material)?) };
+        check_output(k_out, k_len, N_DOF * N_DOF, "k_out")?;
+        let mut k = solid::BrickMatrix::zeros();
+        solid::stiffness_into(formulation, &x, &material, &mut k)?;
+        // row-major: the transpose's column-major storage
+        let row_major = k.transpose();
+        finite(row_major.as_slice(), "stiffness")?;
+        // SAFETY: `k_out` was checked for 576 values.
+        unsafe { write_doubles(k_out, row_major.as_slice()) };
+        Ok(())
+    })
+}
+
+/// Stress parameters `beta = H^-1 G q` of a brick from its nodal displacements `q` (24 doubles,
+/// dof order `u0 v0 w0 u1 ...`): 18 for the hybrid brick (the first 6 are the mean stress
+/// `{sxx, syy, szz, sxy, syz, szx}`), 0 for H8.
+///
+/// `out`, `len`, `needed`: the header's size convention (`HYCON_BRICK_MAX_BETA` always
+/// suffices; `(NULL, 0, &needed)` asks for the count).
+///
+/// # Safety
+/// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+/// NULL or writable for `len` doubles; `needed` NULL or writable.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)] // flat C signature
+pub unsafe extern "C" fn hycon_brick_stress_params(
+    kind: HyconBrickKind,
+    coords: *const f64,
+    material: *const HyconSolidMaterial,
+    q: *const f64,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_brick_stress_params", || {
+        // SAFETY: the caller's contract.
+        let field = unsafe { brick_stress(kind, coords, material, q)? };
+        let beta = field.beta();
+        finite(beta, "beta")?;
+        // SAFETY: the caller's contract on `out` and `needed`.
+        unsafe { fill(out, len, needed, "out", beta.len(), || Ok(beta.to_vec())) }
+    })
+}
+
+/// Stress `{sxx, syy, szz, sxy, syz, szx}` at the physical point `(px, py, pz)` of a brick from
+/// its nodal displacements `q` (24 doubles). The point should lie in the brick (it is mapped to
+/// natural coordinates by Newton's method); outside, the value is an extrapolation. `out`
+/// receives 6 doubles on success.
+///
+/// # Safety
+/// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+/// NULL or writable for 6 doubles.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)] // flat C signature
+pub unsafe extern "C" fn hycon_brick_stress(
+    kind: HyconBrickKind,
+    coords: *const f64,
+    material: *const HyconSolidMaterial,
+    q: *const f64,
+    px: f64,
+    py: f64,
+    pz: f64,
+    out: *mut f64,
+) -> HyconStatus {
+    boundary("hycon_brick_stress", || {
+        for (v, name) in [(px, "px"), (py, "py"), (pz, "pz")] {
+            check_finite_scalar(v, name)?;
+        }
+        check_pointer(out.cast_const(), "out")?;
+        // SAFETY: the caller's contract.
+        let field = unsafe { brick_stress(kind, coords, material, q)? };
+        let s = field.at([px, py, pz]);
+        finite(s.as_slice(), "stress")?;
+        // SAFETY: `out` is non-null and aligned (checked) and holds 6 doubles (contract).
+        unsafe { write_doubles(out, s.as_slice()) };
+        Ok(())
+    })
+}
+
+/// Traction `{tx, ty, tz} = sigma n` (outward unit normal `n`) at face parameters `(s, t)` in
+/// `[-1, 1]^2` of face `face` (0 to 5, numbering in the header's brick section) of a brick,
+/// from its nodal displacements `q` (24 doubles). `out` receives 3 doubles on success.
+///
+/// # Safety
+/// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+/// NULL or writable for 3 doubles.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)] // flat C signature
+pub unsafe extern "C" fn hycon_brick_face_traction(
+    kind: HyconBrickKind,
+    coords: *const f64,
+    material: *const HyconSolidMaterial,
+    q: *const f64,
+    face: usize,
+    s: f64,
+    t: f64,
+    out: *mut f64,
+) -> HyconStatus {
+    boundary("hycon_brick_face_traction", || {
+        if face >= 6 {
+            return Err(Fail::invalid(format!(
+                "face {face} of a brick (faces are 0 to 5)"
+            )));
+        }
+        for (v, name) in [(s, "s"), (t, "t")] {
+            check_finite_scalar(v, name)?;
+            if !(-1.0..=1.0).contains(&v) {
+                return Err(Fail::invalid(format!("{name} = {v} is outside [-1, 1]")));
+            }
+        }
+        check_pointer(out.cast_const(), "out")?;
+        // SAFETY: the caller's contract.
+        let field = unsafe { brick_stress(kind, coords, material, q)? };
+        let tr = field.face_traction(face, s, t);
+        finite(&tr, "traction")?;
+        // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles (contract).
+        unsafe { write_doubles(out, &tr) };
+        Ok(())
+    })
+}

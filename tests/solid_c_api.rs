@@ -1,0 +1,212 @@
+//! The brick routines of the C ABI, called as a C host would: statuses, messages, the size
+//! convention, and the numbers against the Rust kernels.
+
+use hycon::ffi::*;
+use hycon::solid::{self, BrickFormulation, Isotropic};
+use std::ptr::{null, null_mut};
+
+const CUBE: [f64; 24] = [
+    0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 2.0, 1.0, 0.0, 0.0, 1.0, 0.0, //
+    0.0, 0.0, 1.5, 2.0, 0.0, 1.5, 2.0, 1.0, 1.5, 0.0, 1.0, 1.5,
+];
+
+fn message() -> String {
+    let mut buf = [0 as std::ffi::c_char; 512];
+    // SAFETY: a writable buffer of the stated length.
+    unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
+    // SAFETY: the library writes a NUL-terminated string.
+    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn nodes() -> [[f64; 3]; 8] {
+    std::array::from_fn(|k| [CUBE[3 * k], CUBE[3 * k + 1], CUBE[3 * k + 2]])
+}
+
+#[test]
+fn stiffness_matches_the_kernel() {
+    let m = HyconSolidMaterial {
+        youngs: 1000.0,
+        poisson: 0.3,
+    };
+    let iso = Isotropic::new(1000.0, 0.3).unwrap();
+    for (kind, f) in [
+        (HYCON_BRICK_HYBRID18, BrickFormulation::Hybrid18),
+        (HYCON_BRICK_H8, BrickFormulation::H8),
+    ] {
+        let mut k = vec![0.0; 576];
+        // SAFETY: arrays of the documented sizes.
+        let status = unsafe { hycon_brick_stiffness(kind, CUBE.as_ptr(), &m, k.as_mut_ptr(), 576) };
+        assert_eq!(status, HYCON_OK, "{}", message());
+        let mut expect = solid::BrickMatrix::zeros();
+        solid::stiffness_into(f, &nodes(), &iso, &mut expect).unwrap();
+        for i in 0..24 {
+            for j in 0..24 {
+                assert_eq!(k[i * 24 + j], expect[(i, j)]);
+            }
+        }
+        // too small a buffer
+        // SAFETY: as above, with a shorter length.
+        let status = unsafe { hycon_brick_stiffness(kind, CUBE.as_ptr(), &m, k.as_mut_ptr(), 575) };
+        assert_eq!(status, HYCON_ERROR_BUFFER_TOO_SMALL);
+        assert!(message().contains("576"), "{}", message());
+    }
+}
+
+#[test]
+fn stresses_and_tractions_from_a_uniform_stretch() {
+    let m = HyconSolidMaterial {
+        youngs: 1000.0,
+        poisson: 0.25,
+    };
+    // u = 1e-3 x: sxx = (lambda + 2 mu) 1e-3, syy = szz = lambda 1e-3
+    let (lambda, mu) = (400.0, 400.0);
+    let mut q = [0.0; 24];
+    for k in 0..8 {
+        q[3 * k] = 1e-3 * CUBE[3 * k];
+    }
+    let sxx = (lambda + 2.0 * mu) * 1e-3;
+    for kind in [HYCON_BRICK_HYBRID18, HYCON_BRICK_H8] {
+        let mut s = [0.0; 6];
+        // SAFETY: arrays of the documented sizes.
+        let status = unsafe {
+            hycon_brick_stress(
+                kind,
+                CUBE.as_ptr(),
+                &m,
+                q.as_ptr(),
+                0.3,
+                0.2,
+                1.1,
+                s.as_mut_ptr(),
+            )
+        };
+        assert_eq!(status, HYCON_OK, "{}", message());
+        assert!((s[0] - sxx).abs() < 1e-12 && (s[1] - lambda * 1e-3).abs() < 1e-12);
+        let mut t = [0.0; 3];
+        // face 1 is xi = +1 (x = 2): traction (sxx, 0, 0)
+        // SAFETY: as above.
+        let status = unsafe {
+            hycon_brick_face_traction(
+                kind,
+                CUBE.as_ptr(),
+                &m,
+                q.as_ptr(),
+                1,
+                0.5,
+                -0.5,
+                t.as_mut_ptr(),
+            )
+        };
+        assert_eq!(status, HYCON_OK, "{}", message());
+        assert!((t[0] - sxx).abs() < 1e-12 && t[1].abs() < 1e-12 && t[2].abs() < 1e-12);
+        // SAFETY: as above.
+        let status = unsafe {
+            hycon_brick_face_traction(
+                kind,
+                CUBE.as_ptr(),
+                &m,
+                q.as_ptr(),
+                6,
+                0.0,
+                0.0,
+                t.as_mut_ptr(),
+            )
+        };
+        assert_eq!(status, HYCON_ERROR_INVALID_ARGUMENT);
+        // the size query, then the values
+        let mut needed = usize::MAX;
+        // SAFETY: the size query.
+        let status = unsafe {
+            hycon_brick_stress_params(
+                kind,
+                CUBE.as_ptr(),
+                &m,
+                q.as_ptr(),
+                null_mut(),
+                0,
+                &mut needed,
+            )
+        };
+        assert_eq!(status, HYCON_OK);
+        let count = if kind == HYCON_BRICK_HYBRID18 { 18 } else { 0 };
+        assert_eq!(needed, count);
+        let mut beta = [0.0; HYCON_BRICK_MAX_BETA];
+        // SAFETY: a buffer of HYCON_BRICK_MAX_BETA doubles.
+        let status = unsafe {
+            hycon_brick_stress_params(
+                kind,
+                CUBE.as_ptr(),
+                &m,
+                q.as_ptr(),
+                beta.as_mut_ptr(),
+                18,
+                null_mut(),
+            )
+        };
+        assert_eq!(status, HYCON_OK);
+        if count > 0 {
+            assert!((beta[0] - sxx).abs() < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn bad_inputs_are_statuses() {
+    let m = HyconSolidMaterial {
+        youngs: 1000.0,
+        poisson: 0.3,
+    };
+    // SAFETY: a valid brick.
+    assert_eq!(
+        unsafe { hycon_brick_check(HYCON_BRICK_HYBRID18, CUBE.as_ptr()) },
+        HYCON_OK
+    );
+    // SAFETY: NULL is checked.
+    assert_eq!(
+        unsafe { hycon_brick_check(HYCON_BRICK_H8, null()) },
+        HYCON_ERROR_NULL_POINTER
+    );
+    // SAFETY: a valid array; the kind is checked.
+    assert_eq!(
+        unsafe { hycon_brick_check(7, CUBE.as_ptr()) },
+        HYCON_ERROR_INVALID_ARGUMENT
+    );
+    let mut swapped = CUBE;
+    swapped.rotate_left(12); // top face first: inverted
+    // SAFETY: a valid array.
+    assert_eq!(
+        unsafe { hycon_brick_check(HYCON_BRICK_H8, swapped.as_ptr()) },
+        HYCON_ERROR_BAD_ELEMENT
+    );
+    assert!(message().contains("inverted"), "{}", message());
+    let mut nan = CUBE;
+    nan[5] = f64::NAN;
+    // SAFETY: a valid array.
+    assert_eq!(
+        unsafe { hycon_brick_check(HYCON_BRICK_H8, nan.as_ptr()) },
+        HYCON_ERROR_INVALID_ARGUMENT
+    );
+    let bad = HyconSolidMaterial {
+        youngs: 1000.0,
+        poisson: 0.5,
+    };
+    let mut k = vec![0.0; 576];
+    // SAFETY: arrays of the documented sizes.
+    let status = unsafe {
+        hycon_brick_stiffness(
+            HYCON_BRICK_HYBRID18,
+            CUBE.as_ptr(),
+            &bad,
+            k.as_mut_ptr(),
+            576,
+        )
+    };
+    assert_eq!(status, HYCON_ERROR_INVALID_MATERIAL);
+    // SAFETY: NULL output with a length is checked.
+    let status =
+        unsafe { hycon_brick_stiffness(HYCON_BRICK_HYBRID18, CUBE.as_ptr(), &m, null_mut(), 576) };
+    assert_eq!(status, HYCON_ERROR_NULL_POINTER);
+    assert!(k.iter().all(|&v| v == 0.0), "outputs untouched on error");
+}
