@@ -381,3 +381,48 @@ fn saint_venant_convergence() {
         }
     }
 }
+
+/// Size measurement, not a check (ignored; run by hand):
+/// `HYCON_SOLID_N=30 cargo test -p hycon --test solid_validation largest -- --ignored --nocapture`
+/// solves a clamped `n x n x n` cube of hybrid bricks under a uniform end traction and prints
+/// the dofs, `nnz(L)`, and the seconds of analysis, assembly + factorization and solve.
+#[test]
+#[ignore]
+fn largest_solve_measurement() {
+    use hycon::solid::model::{NodalDofs, SolidSystem};
+    use std::time::Instant;
+    let n: usize = std::env::var("HYCON_SOLID_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(20);
+    let mesh = SolidMesh::uniform([1.0, 1.0, 1.0], [n, n, n]);
+    let fixed: Vec<usize> = mesh
+        .nodes_where(|p| p[0] == 0.0)
+        .into_iter()
+        .flat_map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
+        .collect();
+    let m = Isotropic::new(1000.0, 0.3).unwrap();
+    let t0 = Instant::now();
+    let dofs = NodalDofs::new(mesh.n_nodes(), 3, fixed).unwrap();
+    let mut system = SolidSystem::new(&mesh, dofs, hycon::solver::Backend::Faer).expect("analysis");
+    let t1 = Instant::now();
+    system
+        .assemble_and_factor(&mesh, &[m], HYBRID, &[])
+        .expect("factorization");
+    let t2 = Instant::now();
+    let nf = system.dofs().n_free();
+    let mut rhs = faer::Mat::<f64>::from_fn(nf, 1, |i, _| if i % 3 == 1 { 1e-3 } else { 0.0 });
+    system.solve_in_place(&mut rhs).expect("solve");
+    let t3 = Instant::now();
+    println!(
+        "n = {n}: {} dofs, nnz(K) = {}, nnz(L) = {} ({:.2} GB), analysis {:.2} s, assembly + \
+         factorization {:.2} s, solve {:.2} s",
+        nf,
+        system.nnz(),
+        system.cholesky().nnz_l(),
+        system.cholesky().nnz_l() as f64 * 8e-9,
+        (t1 - t0).as_secs_f64(),
+        (t2 - t1).as_secs_f64(),
+        (t3 - t2).as_secs_f64()
+    );
+}
