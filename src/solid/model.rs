@@ -241,7 +241,9 @@ pub struct SolidModel {
     pub materials: Vec<Isotropic>,
     /// The brick formulation.
     pub formulation: BrickFormulation,
-    prescribed: Vec<(usize, f64)>,
+    /// Prescribed values by global dof (ordered: the dof map and the load correction see them
+    /// in dof order).
+    prescribed: std::collections::BTreeMap<usize, f64>,
     loads: Vec<f64>,
 }
 
@@ -280,20 +282,20 @@ impl SolidModel {
             mesh,
             materials,
             formulation,
-            prescribed: Vec::new(),
+            prescribed: Default::default(),
             loads,
         })
     }
 
     /// Prescribe displacement `value` of `node` in direction `dir` (0, 1, 2 = x, y, z); a
-    /// later call for the same dof replaces the value.
+    /// later call for the same dof replaces the value. A node beyond the mesh is reported by
+    /// [`solve`](Self::solve). Panics if `dir > 2`.
     pub fn fix(&mut self, node: usize, dir: usize, value: f64) {
-        let d = 3 * node + dir;
-        self.prescribed.retain(|&(p, _)| p != d);
-        self.prescribed.push((d, value));
+        assert!(dir < 3, "direction {dir} (0, 1, 2 = x, y, z)");
+        self.prescribed.insert(3 * node + dir, value);
     }
 
-    /// Add the force `f` to `node`.
+    /// Add the force `f` to `node`. Panics if `node` is not a node of the mesh.
     pub fn load(&mut self, node: usize, f: [f64; 3]) {
         for (i, fi) in f.into_iter().enumerate() {
             self.loads[3 * node + i] += fi;
@@ -316,17 +318,17 @@ impl SolidModel {
 
     /// Assemble, factor (faer backend) and solve.
     pub fn solve(&self) -> Result<SolidSolution> {
-        let dofs = NodalDofs::new(
-            self.mesh.n_nodes(),
-            3,
-            self.prescribed.iter().map(|&(d, _)| d),
-        )?;
+        let dofs = NodalDofs::new(self.mesh.n_nodes(), 3, self.prescribed.keys().copied())?;
         let mut system = SolidSystem::new(&self.mesh, dofs, Backend::Faer)?;
         let correction = system.assemble_and_factor(
             &self.mesh,
             &self.materials,
             self.formulation,
-            &self.prescribed,
+            &self
+                .prescribed
+                .iter()
+                .map(|(&d, &v)| (d, v))
+                .collect::<Vec<_>>(),
         )?;
         let dofs = system.dofs().clone();
         let mut rhs = Mat::<f64>::zeros(dofs.n_free(), 1);
@@ -342,7 +344,7 @@ impl SolidModel {
                 *u = rhs[(e, 0)];
             }
         }
-        for &(d, v) in &self.prescribed {
+        for (&d, &v) in &self.prescribed {
             displacements[d] = v;
         }
         Ok(SolidSolution {
