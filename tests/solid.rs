@@ -411,3 +411,36 @@ fn system_reuses_its_analysis() {
     assert_eq!(system.cholesky().factorizations(), 4);
     assert!(NodalDofs::new(2, 3, [6]).is_err());
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+    /// On random bricks (every corner of a 2 x 1 x 0.5 box moved by up to 30% of the shortest
+    /// side, any that fail the shape check skipped): `K` symmetric to round-off and exactly six
+    /// zero eigenvalues, for both formulations.
+    #[test]
+    fn random_bricks_have_six_zero_modes(
+        moves in proptest::collection::vec(-0.15f64..0.15, 24),
+        nu in 0.0f64..0.4999,
+    ) {
+        let mut x: [[f64; 3]; 8] =
+            UNIT.map(|[a, b, c]| [1.0 + a, 0.5 + 0.5 * b, 0.25 + 0.25 * c]);
+        for (k, p) in x.iter_mut().enumerate() {
+            for i in 0..3 {
+                p[i] += moves[3 * k + i];
+            }
+        }
+        if check_shape(&x).is_err() {
+            return Ok(());
+        }
+        let m = Isotropic::new(1.0, nu).unwrap();
+        for f in BrickFormulation::ALL {
+            let k = stiffness(f, &x, &m);
+            let asym = (k - k.transpose()).abs().max();
+            proptest::prop_assert!(asym < 1e-13 * k.abs().max(), "{:?}: asymmetry {:e}", f, asym);
+            let ev = eigenvalues(&k);
+            let zero = ev.iter().filter(|e| e.abs() < 1e-13 * ev[23]).count();
+            proptest::prop_assert_eq!(zero, 6, "{:?} nu {}: {:?}", f, nu, ev);
+        }
+    }
+}
