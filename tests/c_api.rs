@@ -903,4 +903,5 @@ fn c_examples_compile_and_pass() {
     compile_and_run("bad_input.c", false, &[]);
     compile_and_run("cook_c.c", false, &["8"]);
     compile_and_run("cook_cpp.cpp", true, &["8"]);
+    compile_and_run("lame_cpp.cpp", true, &["20"]);
 }
