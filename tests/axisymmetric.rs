@@ -353,3 +353,96 @@ fn axisymmetric_models_are_checked() {
     held.nodal_forces.push((15, [1.0, 0.0]));
     held.solve().unwrap();
 }
+
+/// Graded axisymmetric meshes are 4-node meshes: `Transition::Quads` grades 2:1 with quad
+/// templates instead of transition elements. On such a mesh of the section `[0, 2] x [0, 2]`
+/// (touching the axis, refined toward a point on it), every element has rank 7 and the patch
+/// test holds (boundary moved by the exact constant-stress fields, interior free).
+#[test]
+fn graded_quad_meshes_have_rank_seven_and_pass_the_patch_test() {
+    use hycon::mesh::generate::{Grading, Transition, graded_rectangle_with};
+    let grading = Grading::toward_point([0.0, 1.0], 0.1, 1);
+    let mesh = graded_rectangle_with(0.0, 0.0, [2.0, 2.0], [2, 2], &[grading], Transition::Quads);
+    assert!(mesh.n_elements() > 40, "{} elements", mesh.n_elements());
+    let m = axi(100.0, 0.4999);
+    for e in 0..mesh.n_elements() {
+        let c: Vec<[f64; 2]> = mesh.element(e).iter().map(|&k| mesh.nodes[k]).collect();
+        let k = stiffness(Formulation::Hybrid, &c, &m);
+        let ev = eigenvalues(&k);
+        assert!(
+            ev[0].abs() < 1e-10 * ev[7] && ev[1] > 1e-7 * ev[7],
+            "element {e}: {ev:?}"
+        );
+    }
+    let boundary: Vec<usize> = (0..mesh.n_nodes())
+        .filter(|&k| {
+            let [x, y] = mesh.nodes[k];
+            [x, 2.0 - x, y, 2.0 - y].iter().any(|d| d.abs() < 1e-12)
+        })
+        .collect();
+    for (name, exact) in STATES {
+        let mut model = Model::new(mesh.clone(), vec![m], Formulation::Hybrid);
+        for &k in &boundary {
+            model.fix(&[k], exact(&m, mesh.nodes[k]).0).unwrap();
+        }
+        let solution = model.solve().unwrap();
+        for k in 0..mesh.n_nodes() {
+            let (u, _) = exact(&m, mesh.nodes[k]);
+            let got = solution.displacement(k);
+            let err = (got[0] - u[0]).abs().max((got[1] - u[1]).abs());
+            assert!(err < 1e-12, "{name} node {k}: {got:?} vs {u:?}");
+        }
+    }
+}
+
+/// Lamé's cylinder on a graded quad mesh (`Transition::Quads`, refined toward the bore, with
+/// its distorted template elements): the bore displacement within 0.5% at nu = 0.4999 for the
+/// hybrid element, where Q4 locks.
+#[test]
+fn lame_on_a_graded_quad_mesh() {
+    use hycon::mesh::generate::{Grading, Transition, graded_rectangle_with};
+    let [a, b] = RADII;
+    let grading = Grading::toward_line([a, 0.0], [a, 6.0], 0.4, 1);
+    let mesh = graded_rectangle_with(a, 0.0, [b - a, 6.0], [2, 2], &[grading], Transition::Quads);
+    let bore = mesh.edge_sets["left"].clone();
+    let bore_node = mesh.node_sets["left"][0];
+    let nu = 0.4999;
+    let exact = lame_u_r(a, RADII, 1000.0, nu, 1.0);
+    let mut ratios = Vec::new();
+    for f in [Formulation::Hybrid, Formulation::Q4] {
+        let mut model = Model::new(mesh.clone(), vec![axi(1000.0, nu)], f);
+        let all: Vec<usize> = (0..mesh.n_nodes()).collect();
+        model.fix_dir(&all, 1, 0.0).unwrap();
+        model.load_edges(&bore, [1.0, 0.0]);
+        let u = model.solve().unwrap().displacement(bore_node)[0];
+        ratios.push(u / exact);
+    }
+    println!(
+        "graded quads ({} elements), nu = {nu}: u_r(a) / Lame hybrid {:.5}, Q4 {:.5}",
+        mesh.n_elements(),
+        ratios[0],
+        ratios[1]
+    );
+    assert!((ratios[0] - 1.0).abs() < 5e-3, "hybrid {}", ratios[0]);
+    assert!(ratios[1] < 0.9, "Q4 {}", ratios[1]);
+}
+
+/// Invariances of the axisymmetric element matrices: a translation along the axis leaves `K`
+/// unchanged; scaling all lengths by `s` scales `K` by `s` (`B ~ 1/s`, `2 pi r dA ~ s^3`).
+/// (A rotation is not an invariance in axisymmetry.)
+#[test]
+fn axial_translation_and_unit_scaling() {
+    let m = axi(210e3, 0.3);
+    for f in [Formulation::Hybrid, Formulation::Q4] {
+        for c in shapes() {
+            let k = stiffness(f, &c, &m);
+            let shifted = c.map(|p| [p[0], p[1] + 7.5 * (c[2][1] - c[0][1])]);
+            let d = (&stiffness(f, &shifted, &m) - &k).amax();
+            assert!(d < 1e-11 * k.amax(), "{f:?} shifted: {d}");
+            let s = 37.0;
+            let scaled = c.map(|p| [s * p[0], s * p[1]]);
+            let d = (&stiffness(f, &scaled, &m) - &k * s).amax();
+            assert!(d < 1e-11 * s * k.amax(), "{f:?} scaled: {d}");
+        }
+    }
+}
