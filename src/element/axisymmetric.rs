@@ -18,9 +18,10 @@
 //! each natural coordinate there).
 //!
 //! # The stress field (7 beta)
-//! The least-order field of the zero-energy-mode construction (Jog and Annabattula 2006, IJNME
-//! 68; the same construction Pian and Sumihara used in the plane and Weissman and Taylor 1991 in
-//! axisymmetry): the Q4 displacement space has 8 modes, of which only the axial translation is
+//! The least-order field of the zero-energy-mode construction of Jog and Annabattula (2006,
+//! IJNME 68), the construction Pian and Sumihara used in the plane (the terms below were derived
+//! and checked here, not copied from the paper): the Q4 displacement space has 8 modes, of which
+//! only the axial translation is
 //! rigid (a radial translation stretches the hoop), so 7 stress parameters are the fewest that
 //! can leave no spurious mode. Four constants (`sigma_r, sigma_z, tau_rz, sigma_theta`), the two
 //! Pian-Sumihara terms for the two bending (hourglass) modes, and one hoop term linear in the
@@ -40,8 +41,9 @@
 //! `nu -> 0.5` the element imposes one volume constraint (like the mean-dilatation Q1-P0
 //! element) and does not lock. The rank (exactly one zero eigenvalue, the axial translation) is
 //! checked on distorted shapes and on elements touching the axis in `tests/axisymmetric.rs`.
-//! Equilibrium is not built into the field (no published 7-term field is equilibrated and of
-//! correct rank); constant stress states are exact (patch test).
+//! Equilibrium is not built into the field (it holds weakly); constant stress states are exact
+//! (patch test). On a uniform mesh under pressure the element is nodally exact for Lamé's
+//! cylinder, as Jog and Annabattula report for theirs.
 //!
 //! Only the 4-node element: the 5- and 6-node transition elements and the Pian-Sumihara element
 //! are rejected in axisymmetric analysis (see [`super::check_element`]).
