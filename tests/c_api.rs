@@ -708,6 +708,57 @@ fn axisymmetric_element_routines() {
     assert!(k.iter().all(|&v| v == SENTINEL), "written on an error");
 }
 
+/// The model API takes one analysis kind per model: an axisymmetric model is accepted, one whose
+/// materials mix axisymmetric and plane strain is rejected (`HYCON_ERROR_INVALID_MATERIAL`), and
+/// Pian-Sumihara in axisymmetry is `HYCON_ERROR_BAD_ELEMENT`.
+#[test]
+fn model_api_takes_one_analysis_kind() {
+    const AXI: HyconMaterial = HyconMaterial {
+        youngs: 1000.0,
+        poisson: 0.3,
+        thickness: 1.0,
+        analysis: HYCON_AXISYMMETRIC,
+    };
+    let coords = [0.0, 0.0, 1.0, 0.0, 2.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0, 1.0];
+    let offsets = [0usize, 4, 8];
+    let nodes = [0usize, 1, 4, 3, 1, 2, 5, 4];
+    let which = [0usize, 1];
+    let new_model = |kind: i32, materials: &[HyconMaterial]| -> HyconStatus {
+        let block = HyconElementBlock {
+            offsets: offsets.as_ptr(),
+            nodes: nodes.as_ptr(),
+            n_elements: 2,
+            materials: which.as_ptr(),
+            kind,
+        };
+        let mut model: *mut HyconModel = ptr::null_mut();
+        // SAFETY: all arrays hold the stated counts; the handle is freed below.
+        unsafe {
+            let st = hycon_model_new(
+                &mut model,
+                coords.as_ptr(),
+                6,
+                &block,
+                materials.as_ptr(),
+                materials.len(),
+            );
+            hycon_model_free(model);
+            st
+        }
+    };
+    assert_status(new_model(HYCON_ELEMENT_HYBRID, &[AXI, AXI]), HYCON_OK, "");
+    assert_status(
+        new_model(HYCON_ELEMENT_HYBRID, &[AXI, STEEL]),
+        HYCON_ERROR_INVALID_MATERIAL,
+        "one model takes one analysis kind",
+    );
+    assert_status(
+        new_model(HYCON_ELEMENT_PIAN_SUMIHARA, &[AXI, AXI]),
+        HYCON_ERROR_BAD_ELEMENT,
+        "element 0: the Pian-Sumihara element is not available in axisymmetric analysis",
+    );
+}
+
 #[test]
 fn stress_routines_agree_with_safe_api() {
     let coords = [0.0, 0.0, 2.0, 0.3, 2.4, 1.9, -0.2, 1.1];
