@@ -1008,7 +1008,9 @@ HyconStatus hycon_contact_constraint_rows(const struct HyconContact *contact,
                                           size_t *needed);
 
 // Check one element's shape for a formulation: node count, finite coordinates, positive area,
-// counter-clockwise order, convexity (tolerances relative to the element size).
+// counter-clockwise order, convexity (tolerances relative to the element size). It takes no
+// material, so it does not check what axisymmetry adds (4 nodes, `r >= 0`, no Pian-Sumihara):
+// `hycon_element_stiffness` does.
 //
 // `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise.
 //
@@ -1106,7 +1108,8 @@ HyconStatus hycon_element_stress_components(const struct HyconMaterial *material
 // Traction `{tx, ty} = sigma n` (outward unit normal `n`) at parameter `s` in `[0, 1]` along
 // boundary edge `edge` of an element, the edge running from local node `edge` to local node
 // `edge + 1` (cyclically, so `edge < n_nodes`), from nodal displacements `q` (`2 * n_nodes`
-// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success.
+// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success (in axisymmetry
+// the meridian traction `{t_r, t_z}`, a pressure: force per area).
 //
 // # Safety
 // `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or

@@ -41,6 +41,14 @@
 //! `x0 y0 x1 y1 ...`. Q4 and Pian-Sumihara take the 4 corners; the hybrid element takes 4 to 6
 //! nodes (corners plus mid-side nodes on straight edges, in boundary order). Element dofs are
 //! `u0 v0 u1 v1 ...` in the same node order; element matrices are `2n x 2n`, row-major.
+//!
+//! # Axisymmetric analysis
+//! With a `HYCON_AXISYMMETRIC` material, `x` is the radius `r >= 0` and `y` the axial
+//! coordinate `z`; dofs are `u_r u_z` per node. Every integral is weighted by `2 pi r`: element
+//! matrices, loads and reactions are for the full circle (a nodal force is the force summed
+//! over the circumference). The thickness must be 1. Stresses have 4 components
+//! `{sigma_r, sigma_z, tau_rz, sigma_theta}` (`hycon_element_stress`); edge tractions are the
+//! meridian components `{t_r, t_z}`.
 
 use crate::element::{self, Formulation};
 use crate::error::{Error, ShapeError};
