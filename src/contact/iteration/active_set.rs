@@ -229,15 +229,16 @@ impl ActiveSet {
     }
 }
 
-/// `(active, stick, slip)` counts.
+/// `(active, stick, slip)` counts (active: every state but open, frictionless included).
 pub(super) fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
     let all = states.iter().flatten();
+    let active = all.clone().filter(|s| **s != NodeState::Open).count();
     let stick = all.clone().filter(|s| **s == NodeState::Stick).count();
     let slip = all
         .clone()
         .filter(|s| matches!(s, NodeState::Slip { .. }))
         .count();
-    (stick + slip, stick, slip)
+    (active, stick, slip)
 }
 
 /// The nodes that are stick in one state set and slip in the other, with the slip state.

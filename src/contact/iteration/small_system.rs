@@ -225,7 +225,7 @@ impl ContactAnalysis {
                 let b = dot(&normal, uc) - rg;
                 let tangent = || self.directed(&node.coupling, node.tangent);
                 let (col, basis) = match state {
-                    NodeState::Slip { sign } if !law.is_frictionless() => {
+                    NodeState::Slip { sign } => {
                         let mut c = normal.clone();
                         let w = law.slip_coefficient(sign);
                         c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
