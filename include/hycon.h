@@ -68,12 +68,6 @@
 #include <stdint.h>
 #include <stddef.h>
 
-// A converged state may violate the discrete contact conditions by at most this, relative to
-// the problem's scale (see [`ContactAnalysis::violation`]): the hair that a node locked open
-// or in slip is allowed ([`EDGE_PENETRATION`], [`SLIP_REVERSAL`]); the rules themselves hold
-// the other nodes to their tolerances (`1e-9` and `1e-6` by default).
-#define CONDITION_LIMIT EDGE_PENETRATION
-
 // Major version of the library this header belongs to (from `Cargo.toml`).
 #define HYCON_VERSION_MAJOR 0
 

@@ -416,7 +416,9 @@ fn a_press_whose_corner_alternates_between_stick_and_slip_settles() {
     let mu = p.friction;
     for node in analysis.node_results(0).unwrap() {
         match node.state {
-            hycon::contact::iteration::NodeState::Stick => assert!(node.ts.abs() <= mu * node.tn.abs() * (1.0 + 1e-9)),
+            hycon::contact::iteration::NodeState::Stick => {
+                assert!(node.ts.abs() <= mu * node.tn.abs() * (1.0 + 1e-9))
+            }
             hycon::contact::iteration::NodeState::Slip { sign } => {
                 assert!((node.ts.abs() - mu * node.tn.abs()).abs() <= 1e-12 * node.tn.abs());
                 assert!(f64::from(sign) * node.ts <= 0.0, "{node:?}");

@@ -15,8 +15,8 @@ use hycon_lab::presses::{Press, Ranges};
 const NARROW_SEED_1: [usize; 56] = [
     80, 112, 121, 247, 298, 300, 318, 321, 330, 357, 376, 389, 391, 447, 510, 578, 579, 599, 600,
     611, 632, 677, 694, 702, 710, 745, 748, 802, 849, 875, 881, 892, 908, 918, 949, 1020, 1047,
-    1064, 1114, 1200, 1235, 1280, 1329, 1344, 1405, 1527, 1553, 1555, 1568, 1616, 1633, 1780,
-    1819, 1862, 1887, 1896,
+    1064, 1114, 1200, 1235, 1280, 1329, 1344, 1405, 1527, 1553, 1555, 1568, 1616, 1633, 1780, 1819,
+    1862, 1887, 1896,
 ];
 
 /// Presses of `hycon bench presses --seed 1` (wide ranges, the first 2,000) that fail with the
@@ -24,8 +24,8 @@ const NARROW_SEED_1: [usize; 56] = [
 /// satisfies the conditions: see the README, "Presses that settle").
 const WIDE_SEED_1: [usize; 39] = [
     4, 22, 60, 70, 201, 247, 442, 459, 507, 588, 622, 674, 677, 730, 886, 966, 1003, 1034, 1201,
-    1255, 1394, 1399, 1418, 1426, 1431, 1433, 1489, 1515, 1541, 1617, 1638, 1690, 1695, 1766,
-    1849, 1874, 1901, 1965, 1989,
+    1255, 1394, 1399, 1418, 1426, 1431, 1433, 1489, 1515, 1541, 1617, 1638, 1690, 1695, 1766, 1849,
+    1874, 1901, 1965, 1989,
 ];
 
 /// The largest worst-violation over the converged iterations (each increment's last record).
@@ -34,7 +34,11 @@ fn converged_violation(analysis: &ContactAnalysis) -> f64 {
     records
         .iter()
         .enumerate()
-        .filter(|(i, r)| records.get(i + 1).is_none_or(|n| n.increment != r.increment))
+        .filter(|(i, r)| {
+            records
+                .get(i + 1)
+                .is_none_or(|n| n.increment != r.increment)
+        })
         .map(|(_, r)| r.violation)
         .fold(0.0, f64::max)
 }
