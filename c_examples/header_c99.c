@@ -40,6 +40,7 @@ HYCON_ORDER(HyconIterationRecord, stick, slip);
 HYCON_ORDER(HyconIterationRecord, slip, changes);
 HYCON_ORDER(HyconIterationRecord, changes, r);
 HYCON_ORDER(HyconIterationRecord, r, condition);
+HYCON_ORDER(HyconIterationRecord, condition, violation);
 HYCON_STATIC_ASSERT(HyconContactOptions_first, offsetof(HyconContactOptions, tolerance) == 0);
 HYCON_ORDER(HyconContactOptions, tolerance, gap_tolerance);
 HYCON_ORDER(HyconContactOptions, gap_tolerance, tension_tolerance);
