@@ -451,7 +451,8 @@ static bool close_state(const State *x, const State *y) {
 static bool pressed(const State *s) {
     size_t i;
     for (i = 0; i < NA; ++i) {
-        EXPECT(s->a[i].state == HYCON_NODE_STICK || s->a[i].state == HYCON_NODE_SLIP);
+        EXPECT(s->a[i].state == HYCON_NODE_STICK || s->a[i].state == HYCON_NODE_SLIP ||
+               s->a[i].state == HYCON_NODE_FRICTIONLESS);
         EXPECT(s->a[i].tn < 0.0);
     }
     return true;

@@ -14,7 +14,10 @@
  *     renumbering (a random permutation), to 1e-8 of the peak under small kinematics and 1e-5
  *     (ten times the iteration's tolerance) under finite ones, and under rotation to at least
  *     1e4 eps |X| / approach (the coordinates' round-off across the surfaces, amplified by the
- *     contact system's condition); a failing problem fails alike;
+ *     contact system's condition); a failing problem fails alike, and since 0.7.0 a problem
+ *     that fails at all is a violation too, except the class that has no state satisfying
+ *     the discrete conditions (a B node penetrating between two open A nodes: the much
+ *     stiffer body is the multiplier side), which is counted;
  *  3. random bad calls between the increments (NULL pointers, wrong lengths, non-finite
  *     values, buffers too small, unknown pairs and records, bad options, a dof prescribed
  *     twice, bad elements) each return an error with a message, leave their output buffers
@@ -352,6 +355,9 @@ static bool hostile_call(HyconContact *c, const Problem *p, const Variant *v, co
 
 typedef struct {
     HyconStatus status; /* of the first failing call, or HYCON_OK */
+    /* the failure is the class that has no state satisfying the conditions: a B node
+     * penetrates between two open A nodes (a much stiffer multiplier side A) */
+    bool no_state;
     size_t na, zero_iterations;
     double tn[3][MAXA], ts[3][MAXA];
 } Outcome;
@@ -380,7 +386,12 @@ static Outcome run(const Problem *p, const Variant *v, size_t hostile) {
         HyconNodeResult r[MAXA];
         totals(p, v, &m, step == 0 ? 0.0 : p->slide, load, qp);
         o.status = hycon_contact_increment(c, load, 2 * m.nn, qp, 2 * m.nn, &info);
-        if (o.status != HYCON_OK) break;
+        if (o.status != HYCON_OK) {
+            char message[1024];
+            hycon_last_error_message(message, sizeof message);
+            o.no_state = strstr(message, "a B node penetrates between two open A nodes") != NULL;
+            break;
+        }
         if (step == 2) o.zero_iterations = info.iterations;
         o.status = hycon_contact_node_results(c, 0, r, m.na, NULL);
         for (i = 0; i < m.na; ++i) o.tn[step][i] = r[i].tn, o.ts[step][i] = r[i].ts;
@@ -410,7 +421,8 @@ int main(int argc, char **argv) {
     double seconds = argc > 1 ? atof(argv[1]) : 3.0;
     uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
     unsigned long max_rounds = argc > 3 ? strtoul(argv[3], NULL, 10) : 0;
-    unsigned long rounds = 0, failures = 0, failed_problems = 0, total = 0, by_status[100];
+    unsigned long rounds = 0, failures = 0, failed_problems = 0, no_state = 0, total = 0,
+                  by_status[100];
     clock_t start = clock();
     size_t k;
     rng = seed * 0x9E3779B97F4A7C15ULL + 1;
@@ -424,9 +436,18 @@ int main(int argc, char **argv) {
         bool ok = true;
         size_t i, nn = (p.lower[0] + 1) * (p.lower[1] + 1) + (p.upper[0] + 1) * (p.upper[1] + 1);
         ++rounds;
-        if (base.status != HYCON_OK) {
+        if (base.status != HYCON_OK && base.no_state) {
+            /* no state satisfies the discrete conditions (README, "Presses that settle"):
+             * counted, not a violation */
+            ++no_state;
+        } else if (base.status != HYCON_OK) {
+            /* since 0.7.0 every other problem of this distribution settles: one that fails
+             * (alike in every variant or not) is a violation */
             ++failed_problems;
             by_status[(size_t)(-base.status) % 100]++;
+            fprintf(stderr, "round %lu: the problem fails with %s\n", rounds,
+                    hycon_status_name(base.status));
+            ok = false;
         }
         /* 1. the zero increment */
         if (base.status == HYCON_OK) {
@@ -489,9 +510,10 @@ int main(int argc, char **argv) {
             ++failures;
         }
     }
-    printf("contact_randomized: seed %llu, %lu rounds (%lu problems failing alike in every "
-           "variant), %lu violations\n",
-           (unsigned long long)seed, rounds, failed_problems, failures);
+    printf("contact_randomized: seed %llu, %lu rounds (%lu problems failing, alike in every "
+           "variant or not: each a violation; %lu without a state that satisfies the "
+           "conditions, a B node between open A nodes), %lu violations\n",
+           (unsigned long long)seed, rounds, failed_problems, no_state, failures);
     for (k = 1; k < 100; ++k)
         if (by_status[k] > 0)
             printf("  failing alike with %-19s %lu\n", hycon_status_name(-(HyconStatus)k),

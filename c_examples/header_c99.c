@@ -40,6 +40,7 @@ HYCON_ORDER(HyconIterationRecord, stick, slip);
 HYCON_ORDER(HyconIterationRecord, slip, changes);
 HYCON_ORDER(HyconIterationRecord, changes, r);
 HYCON_ORDER(HyconIterationRecord, r, condition);
+HYCON_ORDER(HyconIterationRecord, condition, violation);
 HYCON_STATIC_ASSERT(HyconContactOptions_first, offsetof(HyconContactOptions, tolerance) == 0);
 HYCON_ORDER(HyconContactOptions, tolerance, gap_tolerance);
 HYCON_ORDER(HyconContactOptions, gap_tolerance, tension_tolerance);
@@ -112,6 +113,7 @@ HYCON_STATIC_ASSERT(constants, HYCON_BACKEND_FAER != HYCON_BACKEND_CHOLMOD &&
                                    (HYCON_X | HYCON_Y) == HYCON_XY &&
                                    HYCON_NODE_OPEN != HYCON_NODE_STICK &&
                                    HYCON_NODE_STICK != HYCON_NODE_SLIP &&
+                                   HYCON_NODE_SLIP != HYCON_NODE_FRICTIONLESS &&
                                    HYCON_SIDE_A != HYCON_SIDE_B && HYCON_CSR_FULL > 0 &&
                                    HYCON_CSR_LOWER > 0 && HYCON_CSR_UPPER > 0 &&
                                    HYCON_PLATE_DISPLACEMENT != HYCON_PLATE_FORCE &&

@@ -141,6 +141,10 @@ Summary summarize(const std::vector<HyconNodeResult> &nodes, double step_directi
                 }
                 break;
             }
+            case HYCON_NODE_FRICTIONLESS:
+                // this pair has friction: a frictionless node would be a wrong state
+                expect(false, at + ": frictionless node on a frictional pair");
+                break;
             default:
                 expect(false, at + ": unknown state");
         }

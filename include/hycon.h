@@ -143,11 +143,12 @@ typedef struct HyconIterationRecord {
     size_t increment;
     // Iteration within the increment (1-based).
     size_t iteration;
-    // Active (stick + slip) A nodes in this iteration's solve.
+    // Active (stick + slip + frictionless) A nodes in this iteration's solve.
     size_t active;
     // Stick nodes among them.
     size_t stick;
-    // Slip nodes among them.
+    // Slip nodes among them (frictional pairs only; frictionless nodes are neither stick nor
+    // slip).
     size_t slip;
     // State changes decided after the solve.
     size_t changes;
@@ -157,6 +158,13 @@ typedef struct HyconIterationRecord {
     double r;
     // Estimated 1-norm condition number of the small contact system (1 when empty).
     double condition;
+    // The worst violation of the discrete contact conditions by this iteration's solution
+    // (open gaps >= 0; closed nodes in compression with closed gaps; stick nodes inside the
+    // friction cone and not sliding; slip opposing the friction), relative to the problem's
+    // scale (gaps to the increment's motion, at most the mean A segment; tractions to the
+    // largest; slips to the motion). At convergence at most 1e-4, else the increment fails
+    // with `HYCON_ERROR_CONTACT`.
+    double violation;
 } HyconIterationRecord;
 
 // Called with every iteration record; return 0 to go on, nonzero to stop the increment (it
@@ -296,7 +304,7 @@ typedef struct HyconIncrementInfo {
     size_t increment;
     // Iterations used.
     size_t iterations;
-    // Active (stick + slip) A nodes at convergence.
+    // Active (stick + slip + frictionless) A nodes at convergence.
     size_t active;
     // Slip nodes at convergence.
     size_t slip;
@@ -312,7 +320,7 @@ typedef int32_t HyconNodeState;
 typedef struct HyconNodeResult {
     // Node id (the caller's numbering).
     size_t node;
-    // `HYCON_NODE_OPEN`, `HYCON_NODE_STICK` or `HYCON_NODE_SLIP`.
+    // `HYCON_NODE_OPEN`, `HYCON_NODE_STICK`, `HYCON_NODE_SLIP` or `HYCON_NODE_FRICTIONLESS`.
     HyconNodeState state;
     // Slip direction along `tangent` of A relative to B (+1 or -1) for a slip node, else 0.
     int32_t slip_sign;
@@ -551,6 +559,10 @@ typedef struct HyconSolidMaterial {
 
 // In contact and sliding (`ts = mu sign tn`).
 #define HYCON_NODE_SLIP 3
+
+// In contact without friction (a pair with friction 0; `ts = 0`). Before 0.7.0 such a node
+// was reported as `HYCON_NODE_SLIP` with `slip_sign` +1.
+#define HYCON_NODE_FRICTIONLESS 4
 
 // The multiplier side A: the entry is `F^A_kj`.
 #define HYCON_SIDE_A 1

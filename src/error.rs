@@ -174,6 +174,24 @@ pub enum ContactError {
         /// That slide over the increment's motion.
         relative: f64,
     },
+    /// A converged state violates the discrete contact conditions by more than
+    /// `CONDITION_LIMIT` (1e-4) of the problem's scale (gaps against the gap scale, tractions
+    /// against the largest, slips against the increment's motion): the rules settled on a
+    /// state that is not a solution.
+    #[error(
+        "increment {increment}: the converged state violates the contact conditions at node \
+         {node}: {condition} ({relative:.1e} of the problem's scale)"
+    )]
+    ConditionViolated {
+        /// Increment number (1-based).
+        increment: usize,
+        /// The A node.
+        node: usize,
+        /// Which condition, in words.
+        condition: &'static str,
+        /// The violation relative to its scale.
+        relative: f64,
+    },
     /// A node penetrates the opposite surface where the pairing does not see it: a B node
     /// deeper than the search distance below an open A segment, or an A node with no B segment
     /// within the search distance (one surface pushed through the other).

@@ -17,7 +17,9 @@
 //! * all of these to 1e-8 of the peak traction under small kinematics (round-off: given the
 //!   contact set the problem is linear), to 1e-5 under finite kinematics (ten times the
 //!   iteration's tolerance: the nonlinear geometry's fixed point is found to that);
-//! * an error is the same error in every variant (its kind), and never a panic.
+//! * every problem converges (0.7.0; 0.6.2 failed about 2.6% of them alike in every variant),
+//!   and an error in a variant would have to be the same error in every variant (its kind),
+//!   never a panic.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
@@ -295,6 +297,10 @@ proptest! {
         seed in any::<u64>(),
     ) {
         let base = run(&p, &Variant::identity());
+        // 0.7.0: every problem of this distribution settles (0.6.2 failed about 2.6% of them
+        // alike in every variant: `hycon bench presses --ranges narrow`), so no problem fails
+        // alike
+        prop_assert!(base.is_ok(), "the problem fails: {base:?}");
         // to round-off under small kinematics (given the contact set the problem is linear);
         // under finite ones to the iteration's tolerance (1e-6 of the increment's motion): the
         // fixed point of the nonlinear geometry is found to that, and a variant's round-off may
@@ -377,12 +383,12 @@ proptest! {
 }
 
 /// A press the random problems contain: a punch one element wide, with friction, whose corner
-/// node alternates between stick and slip. Locked in slip, it would converge sliding against its
-/// friction by a tenth of the press (the friction pushing it along its slip, which the Coulomb
-/// law forbids); the increment fails instead, naming the node, and keeps the last converged
-/// state (no contact yet). Frictionless, the same press converges.
+/// node alternates between stick and slip under the paper's rules (0.6.2 locked it in slip,
+/// where it slid against its friction by a tenth of the press, and failed the increment). The
+/// rules of 0.7.0 settle it on a state that satisfies the conditions: every node keeps the
+/// friction law, the record's worst violation at convergence is within the limit.
 #[test]
-fn a_node_locked_in_slip_may_not_slide_against_its_friction() {
+fn a_press_whose_corner_alternates_between_stick_and_slip_settles() {
     let p = Problem {
         lower: [3, 1],
         upper: [1, 3],
@@ -399,21 +405,27 @@ fn a_node_locked_in_slip_may_not_slide_against_its_friction() {
     let v = Variant::identity();
     let (mut analysis, top) = analysis(&p, &v).unwrap();
     let n = analysis.model().unwrap().mesh.n_nodes();
-    let before = analysis.node_results(0).unwrap();
-    let err = analysis
+    analysis
         .increment(&vec![0.0; 2 * n], &totals(&p, &v, n, &top, 0.0))
-        .unwrap_err();
-    match &err {
-        Error::Contact(hycon::ContactError::SlipReversal { relative, .. }) => {
-            assert!(*relative > 1e-2, "{err}")
-        }
-        other => panic!("expected a slip reversal, got {other}"),
-    }
-    assert_eq!(
-        analysis.node_results(0).unwrap(),
-        before,
-        "the state is kept"
+        .unwrap();
+    let last = analysis.records().last().unwrap();
+    assert!(
+        last.violation <= hycon::contact::iteration::CONDITION_LIMIT,
+        "{last:?}"
     );
+    let mu = p.friction;
+    for node in analysis.node_results(0).unwrap() {
+        match node.state {
+            hycon::contact::iteration::NodeState::Stick => {
+                assert!(node.ts.abs() <= mu * node.tn.abs() * (1.0 + 1e-9))
+            }
+            hycon::contact::iteration::NodeState::Slip { sign } => {
+                assert!((node.ts.abs() - mu * node.tn.abs()).abs() <= 1e-12 * node.tn.abs());
+                assert!(f64::from(sign) * node.ts <= 0.0, "{node:?}");
+            }
+            other => panic!("{other:?}: the punch is pressed on its whole width"),
+        }
+    }
     let frictionless = Problem { friction: 0.0, ..p };
     assert!(run(&frictionless, &v).is_ok());
 }

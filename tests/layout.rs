@@ -165,7 +165,7 @@ rust_structs! {
         monitor,
         monitor_data,
     },
-    HyconIterationRecord { increment, iteration, active, stick, slip, changes, r, condition },
+    HyconIterationRecord { increment, iteration, active, stick, slip, changes, r, condition, violation },
     HyconIncrementInfo { increment, iterations, active, slip },
     HyconNodeResult {
         node,
@@ -270,6 +270,7 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_NODE_OPEN,
         HYCON_NODE_STICK,
         HYCON_NODE_SLIP,
+        HYCON_NODE_FRICTIONLESS,
         HYCON_SIDE_A,
         HYCON_SIDE_B,
         HYCON_CSR_FULL,

@@ -189,15 +189,20 @@ enum Bench {
         #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
         threads: u32,
     },
-    /// Random two-block presses (the distribution of tests/contact_properties.rs: pressed,
-    /// slid, the last totals repeated), counted by how the contact iteration ends.
+    /// Random two-block presses (pressed, slid, the last totals repeated), counted by how the
+    /// contact iteration ends with 0.7.0's rules and with the paper's alone; each failure
+    /// classified against a reference run in 50 sub-increments per phase.
     Presses {
-        /// How many presses.
+        /// How many presses per seed.
         #[arg(long, default_value_t = 20_000)]
         count: usize,
-        /// Seed of the draws.
-        #[arg(long, default_value_t = 1)]
-        seed: u64,
+        /// Seeds of the draws, comma separated (the issue's full run: 1,2,3,4,5).
+        #[arg(long, value_delimiter = ',', default_values_t = [1])]
+        seed: Vec<u64>,
+        /// `wide` (0.7.0: friction 0.05-1, modulus ratios 1e-4-1e4, meshes up to 32 a side)
+        /// or `narrow` (0.6.2's, the distribution of tests/contact_properties.rs).
+        #[arg(long, default_value = "wide")]
+        ranges: hycon_lab::presses::Ranges,
     },
     /// The L2 error of the contact pressure against where the Hertz edge falls between two
     /// nodes (frictionless reference scene, small kinematics): the method and the best
@@ -686,21 +691,14 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,
         Bench::Edge { n, positions } => edge(&n, positions)?,
-        Bench::Presses { count, seed } => {
-            let presses = hycon_lab::presses::Press::draw(count, seed);
-            let o = hycon_lab::presses::outcomes(&presses);
-            println!(
-                "{count} random two-block presses (seed {seed}): {} converged",
-                o.converged
-            );
-            for (kind, n) in &o.failed {
-                println!("  failed, {kind}: {n}");
-            }
-            for (decade, n) in &o.slip_reversal_decades {
-                println!(
-                    "  slip reversals of 1e{decade} to 1e{} of the motion: {n}",
-                    decade + 1
-                );
+        Bench::Presses {
+            count,
+            seed,
+            ranges,
+        } => {
+            for seed in seed {
+                let presses = hycon_lab::presses::Press::draw_from(ranges, count, seed);
+                presses_report(&hycon_lab::presses::outcomes(&presses), ranges, seed);
             }
         }
         Bench::Contact { n, threads } => {
@@ -1480,4 +1478,36 @@ fn contact_scale(
     std::fs::write(&path, md)?;
     println!("written: {}", path.display());
     Ok(())
+}
+
+/// Print the outcomes of `hycon bench presses` for one seed.
+fn presses_report(o: &hycon_lab::presses::Outcomes, ranges: hycon_lab::presses::Ranges, seed: u64) {
+    let ranges = format!("{ranges:?}").to_lowercase();
+    println!(
+        "{} random two-block presses ({ranges} ranges, seed {seed}): {} converged",
+        o.count, o.converged
+    );
+    for (kind, n) in &o.failed {
+        println!("  failed, {kind}: {n}");
+    }
+    println!(
+        "  converged through the fallback: {}; largest condition violation at convergence \
+         {:.1e} ({} over the limit)",
+        o.by_fallback, o.worst_violation, o.violating
+    );
+    println!("  the paper's rules alone: {} converged", o.paper_converged);
+    for (kind, n) in &o.paper_failed {
+        println!("    paper's rules failed, {kind}: {n}");
+    }
+    let per = |x: f64, n: usize| if n == 0 { 0.0 } else { x / n as f64 };
+    println!(
+        "  converged both ways: {} presses, iterations {} (0.7.0) / {} (paper), {:.2} s / {:.2} s",
+        o.both, o.iterations[0], o.iterations[1], o.seconds[0], o.seconds[1]
+    );
+    println!(
+        "  converged only with 0.7.0: {} presses, {:.1} iterations and {:.2} ms each",
+        o.rescued.0,
+        per(o.rescued.1 as f64, o.rescued.0),
+        1e3 * per(o.rescued.2, o.rescued.0)
+    );
 }

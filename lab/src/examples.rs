@@ -247,7 +247,7 @@ pub struct Increment {
     pub slide: f64,
     /// Contact iterations.
     pub iterations: usize,
-    /// Nodes in contact (stick + slip).
+    /// Nodes in contact (stick + slip + frictionless).
     pub active: usize,
     /// Stick nodes.
     pub stick: usize,
@@ -662,6 +662,7 @@ fn evaluate(
         .collect();
     let count = |name: &str| nodes.iter().filter(|n| n.state.name() == name).count();
     let (stick, slip) = (count("stick"), count("slip"));
+    let active = nodes.len() - count("open");
     let shear_l2_error = (friction > 0.0).then(|| {
         let (mut num, mut den) = (0.0, 0.0);
         for (row, n) in nodes.iter().zip(&sorted) {
@@ -704,7 +705,7 @@ fn evaluate(
         approach,
         slide,
         iterations,
-        active: stick + slip,
+        active,
         stick,
         slip,
         load,

@@ -1,12 +1,16 @@
-//! Random two-block presses, to see how often the contact iteration fails and why: the problem
-//! distribution of `tests/contact_properties.rs` (a lower block `[0, 2] x [0, 1]` held at its
-//! bottom, an upper block of random width, position and mesh a random gap above it, pressed
-//! down and then moved sideways through its top; random moduli, Poisson's ratios, friction and
-//! kinematics), drawn from a seed.
+//! Random two-block presses, to see how often the contact iteration fails and why: a lower
+//! block `[0, 2] x [0, 1]` held at its bottom, an upper block of random width, position and
+//! mesh a random gap above it, pressed down and then moved sideways through its top, the last
+//! totals repeated; random moduli, Poisson's ratios, friction and kinematics, drawn from a
+//! seed. Two distributions ([`Ranges`]): the narrow one of `tests/contact_properties.rs`
+//! (0.6.2's bench) and the wide one of 0.7.0 (friction 0.05 to 1, modulus ratios 1e-4 to 1e4,
+//! meshes up to 32 elements a side). Every press runs with the rules of 0.7.0 and with the
+//! paper's alone (`ContactAnalysis::set_fallback(false)`), and each failure is classified
+//! against a reference run of the same problem in many small sub-increments.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
-use hycon::error::{ContactError, Error, Result};
+use hycon::error::{Error, Result};
 use hycon::material::{Analysis, Material};
 use hycon::mesh::Mesh;
 use hycon::model::Model;
@@ -39,6 +43,40 @@ pub struct Press {
     pub kinematics: Kinematics,
 }
 
+/// Which problems [`Press::draw`] draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ranges {
+    /// The ranges of `tests/contact_properties.rs` and 0.6.2's bench: meshes of 2-6 x 1-3
+    /// (lower) and 1-4 x 1-3 (upper) elements, friction 0.05 to 0.6 (half of the presses
+    /// frictionless), modulus ratios 1e-2 to 1e2; the generator seeded with `seed | 1` (so
+    /// seeds 2 and 3 draw the same presses, as in 0.6.2).
+    Narrow,
+    /// 0.7.0's: meshes of 2-32 x 1-8 (lower) and 1-24 x 1-8 (upper) elements (the counts
+    /// across log-uniform), friction 0.05 to 1 (half frictionless), modulus ratios 1e-4 to
+    /// 1e4, the generator seeded through splitmix64 (every seed its own presses).
+    Wide,
+}
+
+impl std::str::FromStr for Ranges {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        match s {
+            "narrow" => Ok(Ranges::Narrow),
+            "wide" => Ok(Ranges::Wide),
+            _ => Err(format!("unknown ranges {s:?} (narrow or wide)")),
+        }
+    }
+}
+
+/// splitmix64's output function: distinct seeds, distinct well-mixed states.
+fn splitmix(seed: u64) -> u64 {
+    let mut z = seed.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
 /// A xorshift64 generator: reproducible draws from a seed, nothing more is needed here.
 struct Draws(u64);
 
@@ -58,26 +96,45 @@ impl Draws {
     fn int(&mut self, lo: usize, hi: usize) -> usize {
         lo + ((self.unit() * (hi - lo + 1) as f64) as usize).min(hi - lo)
     }
+
+    /// An integer in `lo..=hi`, log-uniform (`lo >= 1`).
+    fn log_int(&mut self, lo: usize, hi: usize) -> usize {
+        let (a, b) = ((lo as f64).ln(), ((hi + 1) as f64).ln());
+        (self.range(a, b).exp() as usize).clamp(lo, hi)
+    }
 }
 
 impl Press {
-    /// The `count` presses of `seed`, with the ranges of `tests/contact_properties.rs`.
+    /// The `count` presses of `seed` with the narrow ranges of `tests/contact_properties.rs`.
     pub fn draw(count: usize, seed: u64) -> Vec<Press> {
-        let mut d = Draws(seed | 1);
+        Self::draw_from(Ranges::Narrow, count, seed)
+    }
+
+    /// The `count` presses of `seed` with `ranges`.
+    pub fn draw_from(ranges: Ranges, count: usize, seed: u64) -> Vec<Press> {
+        let wide = ranges == Ranges::Wide;
+        let mut d = Draws(if wide { splitmix(seed) | 1 } else { seed | 1 });
         (0..count)
             .map(|_| {
-                let lower = [d.int(1, 5) + 1, d.int(1, 3)];
-                let upper = [d.int(1, 4), d.int(1, 3)];
+                let (lower, upper) = if wide {
+                    (
+                        [d.log_int(2, 32), d.int(1, 8)],
+                        [d.log_int(1, 24), d.int(1, 8)],
+                    )
+                } else {
+                    ([d.int(1, 5) + 1, d.int(1, 3)], [d.int(1, 4), d.int(1, 3)])
+                };
                 let (left, width) = (d.range(0.1, 0.8), d.range(0.4, 1.0));
                 let gap = d.range(0.0, 1e-3);
                 let depth = d.range(1e-4, 1e-2);
                 let slide = d.range(-0.2, 0.2) * depth;
-                let upper_modulus = 10f64.powf(d.range(-2.0, 2.0));
+                let decades = if wide { 4.0 } else { 2.0 };
+                let upper_modulus = 10f64.powf(d.range(-decades, decades));
                 let poisson = [d.range(-0.2, 0.45), d.range(-0.2, 0.45)];
                 let friction = if d.unit() < 0.5 {
                     0.0
                 } else {
-                    d.range(0.05, 0.6)
+                    d.range(0.05, if wide { 1.0 } else { 0.6 })
                 };
                 let kinematics = if d.unit() < 0.5 {
                     Kinematics::Small
@@ -103,6 +160,41 @@ impl Press {
 
     /// Press, slide, and repeat the last totals (three increments); the first error, if any.
     pub fn run(&self) -> Result<()> {
+        self.run_with(ContactOptions::default()).map(drop)
+    }
+
+    /// [`run`](Self::run) with `options` (the kinematics are the press's); the analysis after
+    /// its three increments.
+    pub fn run_with(&self, options: ContactOptions) -> Result<ContactAnalysis> {
+        self.run_in(options, true, 1)
+    }
+
+    /// The press in `steps` increments per phase (press, slide; then the last totals again),
+    /// with the fallback on or off (`ContactAnalysis::set_fallback`).
+    pub fn run_in(
+        &self,
+        options: ContactOptions,
+        fallback: bool,
+        steps: usize,
+    ) -> Result<ContactAnalysis> {
+        let (mut analysis, top) = self.analysis(options)?;
+        analysis.set_fallback(fallback);
+        let steps = steps.max(1);
+        let fraction = |i: usize| i as f64 / steps as f64;
+        let path = (1..=steps)
+            .map(|i| (fraction(i), 0.0))
+            .chain((1..=steps).map(|i| (1.0, fraction(i) * self.slide)))
+            .chain([(1.0, self.slide)]);
+        for (press, slide) in path {
+            let (f, qp) = self.totals_at(&analysis, &top, press, slide);
+            analysis.increment(&f, &qp)?;
+        }
+        Ok(analysis)
+    }
+
+    /// The press's analysis (before any increment) with `options` (the kinematics are the
+    /// press's), and the upper block's top nodes.
+    pub fn analysis(&self, options: ContactOptions) -> Result<(ContactAnalysis, Vec<usize>)> {
         let mut mesh = Mesh::new();
         let lower = block(&mut mesh, [0.0, 0.0], [2.0, 1.0], self.lower, 0);
         let upper = block(
@@ -119,7 +211,6 @@ impl Press {
         let mut b = row(&lower, self.lower, self.lower[1]);
         b.reverse();
         let top = row(&upper, self.upper, self.upper[1]);
-        let n = mesh.n_nodes();
         let materials = vec![
             Material::new(1.0, self.poisson[0], 1.0, Analysis::PlaneStrain)?,
             Material::new(
@@ -139,24 +230,37 @@ impl Press {
         };
         let options = ContactOptions {
             kinematics: self.kinematics,
-            ..ContactOptions::default()
+            ..options
         };
-        let mut analysis = ContactAnalysis::new(model, vec![pair], options)?;
-        let f = vec![0.0; 2 * n];
-        let totals = |slide: f64| {
-            let mut qp = vec![0.0; 2 * n];
-            for &node in &top {
-                qp[2 * node] = slide;
-                qp[2 * node + 1] = -(self.gap + self.depth);
-            }
-            qp
-        };
-        for slide in [0.0, self.slide, self.slide] {
-            analysis.increment(&f, &totals(slide))?;
+        Ok((ContactAnalysis::new(model, vec![pair], options)?, top))
+    }
+
+    /// The loads `(f, qp)` of the increment that presses the top down by the gap and the depth
+    /// and moves it sideways by `slide` (totals).
+    pub fn totals(&self, analysis: &ContactAnalysis, top: &[usize], slide: f64) -> Totals {
+        self.totals_at(analysis, top, 1.0, slide)
+    }
+
+    /// [`totals`](Self::totals) with the top pressed by `press` times the gap and the depth.
+    fn totals_at(
+        &self,
+        analysis: &ContactAnalysis,
+        top: &[usize],
+        press: f64,
+        slide: f64,
+    ) -> Totals {
+        let n = analysis.field_len();
+        let mut qp = vec![0.0; n];
+        for &node in top {
+            qp[2 * node] = slide;
+            qp[2 * node + 1] = -press * (self.gap + self.depth);
         }
-        Ok(())
+        (vec![0.0; n], qp)
     }
 }
+
+/// External forces and prescribed values of one increment (both over all dofs).
+pub type Totals = (Vec<f64>, Vec<f64>);
 
 /// A grid block from `origin` of `size` in `cells` quads into `mesh`; its node ids row by row.
 fn block(
@@ -187,46 +291,132 @@ fn block(
     ids
 }
 
-/// What happened to a set of presses: how many converged, and for the failures the error's
-/// kind (with or without friction); for a node locked in slip that slid against its friction,
-/// how far (over the increment's motion) by decade.
+/// Sub-increments per phase of the reference run that classifies a failure.
+pub const REFERENCE_STEPS: usize = 50;
+
+/// What happened to a set of presses with the rules of 0.7.0 (`new`) and with the paper's
+/// alone (`paper`).
 #[derive(Debug, Default)]
 pub struct Outcomes {
-    /// Presses whose three increments converged.
+    /// Presses.
+    pub count: usize,
+    /// Presses whose three increments converged, with the new rules.
     pub converged: usize,
-    /// Failed presses by error kind and friction.
+    /// Failed presses by error kind and friction, with the new rules; each failure's class
+    /// says whether the reference run in [`REFERENCE_STEPS`] sub-increments per phase settles
+    /// ("the reference settles": a failure the rules must not have) or fails too (with its
+    /// error kind: a problem without an answer that the increments can reach).
     pub failed: BTreeMap<String, usize>,
-    /// `SlipReversal` failures by the decade of their slide over the increment's motion.
-    pub slip_reversal_decades: BTreeMap<i32, usize>,
+    /// The same with the paper's rules alone (no reference run).
+    pub paper_failed: BTreeMap<String, usize>,
+    /// Presses converged with the paper's rules alone.
+    pub paper_converged: usize,
+    /// Presses that converged only through the fallback (in at least one increment).
+    pub by_fallback: usize,
+    /// Converged presses whose largest condition violation at convergence exceeds
+    /// `CONDITION_LIMIT` (must be none: the core fails such an increment).
+    pub violating: usize,
+    /// The largest condition violation at convergence over the converged presses.
+    pub worst_violation: f64,
+    /// Over the presses that converged both ways: count, iterations with the new rules and
+    /// with the paper's, seconds with each.
+    pub both: usize,
+    /// Iterations (new rules, paper's rules) over the presses converged both ways.
+    pub iterations: [usize; 2],
+    /// Seconds (new rules, paper's rules) over the presses converged both ways.
+    pub seconds: [f64; 2],
+    /// Iterations and seconds of the presses converged only with the new rules.
+    pub rescued: (usize, usize, f64),
 }
 
-/// Run every press of `presses` and count the outcomes.
+/// The largest condition violation at convergence (the last record of each increment).
+fn converged_violation(analysis: &ContactAnalysis) -> f64 {
+    let records = analysis.records();
+    records
+        .iter()
+        .enumerate()
+        .filter(|(i, r)| {
+            records
+                .get(i + 1)
+                .is_none_or(|n| n.increment != r.increment)
+        })
+        .map(|(_, r)| r.violation)
+        .fold(0.0, f64::max)
+}
+
+/// Run every press of `presses` both ways and count the outcomes; classify each failure of the
+/// new rules against the reference run.
 pub fn outcomes(presses: &[Press]) -> Outcomes {
-    let mut out = Outcomes::default();
-    for press in presses {
-        let Err(e) = press.run() else {
-            out.converged += 1;
-            continue;
-        };
-        if let Error::Contact(ContactError::SlipReversal { relative, .. }) = &e {
-            *out.slip_reversal_decades
-                .entry(relative.log10().floor() as i32)
-                .or_default() += 1;
-        }
-        let friction = if press.friction > 0.0 {
+    let mut out = Outcomes {
+        count: presses.len(),
+        ..Outcomes::default()
+    };
+    let friction = |p: &Press| {
+        if p.friction > 0.0 {
             "with friction"
         } else {
             "frictionless"
+        }
+    };
+    for press in presses {
+        let timed = |fallback: bool| {
+            let clock = std::time::Instant::now();
+            let r = press.run_in(ContactOptions::default(), fallback, 1);
+            (r, clock.elapsed().as_secs_f64())
         };
-        *out.failed
-            .entry(format!("{}, {friction}", kind(&e)))
-            .or_default() += 1;
+        let (new, new_seconds) = timed(true);
+        let (paper, paper_seconds) = timed(false);
+        match &paper {
+            Ok(_) => out.paper_converged += 1,
+            Err(e) => {
+                *out.paper_failed
+                    .entry(format!("{}, {}", kind(e), friction(press)))
+                    .or_default() += 1
+            }
+        }
+        match (&new, &paper) {
+            (Ok(a), Ok(b)) => {
+                out.both += 1;
+                out.iterations[0] += a.records().len();
+                out.iterations[1] += b.records().len();
+                out.seconds[0] += new_seconds;
+                out.seconds[1] += paper_seconds;
+            }
+            (Ok(a), Err(_)) => {
+                out.rescued.0 += 1;
+                out.rescued.1 += a.records().len();
+                out.rescued.2 += new_seconds;
+            }
+            _ => {}
+        }
+        match new {
+            Ok(a) => {
+                out.converged += 1;
+                out.by_fallback += usize::from(a.fallbacks() > 0);
+                let v = converged_violation(&a);
+                out.worst_violation = out.worst_violation.max(v);
+                out.violating += usize::from(v > hycon::contact::iteration::CONDITION_LIMIT);
+            }
+            Err(e) => {
+                let class = match press.run_in(ContactOptions::default(), true, REFERENCE_STEPS) {
+                    Ok(_) => "the reference settles".to_string(),
+                    Err(r) => format!("the reference fails too ({})", kind(&r)),
+                };
+                *out.failed
+                    .entry(format!("{}, {}: {class}", kind(&e), friction(press)))
+                    .or_default() += 1;
+            }
+        }
     }
     out
 }
 
-/// The error's variant by name (`SlipReversal`, `Singular`).
+/// The error's variant by name (`SlipReversal`, `Singular`), with the condition of a
+/// `ConditionViolated`.
 fn kind(e: &Error) -> String {
+    if let Error::Contact(hycon::ContactError::ConditionViolated { condition, .. }) = e {
+        return format!("ConditionViolated ({condition})");
+    }
     let debug = match e {
         Error::Contact(c) => format!("{c:?}"),
         other => format!("{other:?}"),

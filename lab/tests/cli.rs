@@ -89,7 +89,10 @@ fn hertz_json_has_the_fields_and_finite_numbers() {
                 for key in ["x", "p", "p_forces", "q", "p_exact", "q_exact"] {
                     finite(&node[key], key);
                 }
-                assert!(["open", "stick", "slip"].contains(&node["state"].as_str().unwrap()));
+                assert!(
+                    ["open", "stick", "slip", "frictionless"]
+                        .contains(&node["state"].as_str().unwrap())
+                );
             }
         }
         let t = &run["timings"];
@@ -487,11 +490,12 @@ fn committed_sweeps_parse_with_their_kinematics() {
     assert!(old.iter().all(|r| r.case.kinematics == Kinematics::Finite));
 }
 
-/// `bench presses` accounts for every press (converged or failed by kind), and only presses
-/// with friction can fail with a node locked in slip.
+/// `bench presses` accounts for every press (converged or failed by kind and class), only
+/// presses with friction can fail with a node locked in slip, and no failure is one that the
+/// reference run in sub-increments settles.
 #[test]
 fn bench_presses_accounts_for_every_press() {
-    let out = hycon(&["bench", "presses", "--count", "400", "--seed", "7"]);
+    let out = hycon(&["bench", "presses", "--count", "200", "--seed", "7"]);
     assert!(
         out.status.success(),
         "{}",
@@ -512,7 +516,9 @@ fn bench_presses_accounts_for_every_press() {
         .filter(|l| l.trim_start().starts_with("failed, "))
         .map(|l| number(l.rsplit(": ").next().unwrap()))
         .sum();
-    assert_eq!(converged + failed, 400, "{text}");
-    assert!(converged > 300, "{text}");
+    assert_eq!(converged + failed, 200, "{text}");
+    assert!(converged > 190, "{text}");
     assert!(!text.contains("SlipReversal, frictionless"), "{text}");
+    assert!(!text.contains("the reference settles"), "{text}");
+    assert!(text.contains("the paper's rules alone"), "{text}");
 }

@@ -38,6 +38,7 @@ fn frictional_pressing_on_a_fine_mesh_converges() {
             }
             NodeState::Stick => assert!(n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9), "{n:?}"),
             NodeState::Open => assert_eq!((n.tn, n.ts), (0.0, 0.0)),
+            NodeState::Frictionless => panic!("a frictional pair has no frictionless node"),
         }
     }
     // pressing identical bodies: almost everything sticks, and Hertz holds
@@ -89,6 +90,9 @@ fn frictional_sliding_in_small_steps_converges() {
                         assert!((n.ts.abs() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max)
                     }
                     NodeState::Stick => assert!(n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9)),
+                    NodeState::Frictionless => {
+                        panic!("{k}: a frictional pair has no frictionless node")
+                    }
                 }
             }
         }

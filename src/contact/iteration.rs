@@ -79,11 +79,12 @@ mod checks;
 mod loads;
 mod plate;
 mod results;
+mod rules;
 mod small_system;
 use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
 use boundary::{Flexibility, NodeFlexibility};
-pub use checks::SMALL_SLIDING_LIMIT;
 use checks::change_ratio;
+pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Plate, plate_force};
@@ -359,15 +360,19 @@ pub enum NodeState {
         /// +1 or -1.
         sign: i8,
     },
+    /// In contact without friction (a pair with `friction = 0`): only the normal row, no
+    /// tangential traction (`ts = 0`). (Before 0.7.0 recorded as `Slip { sign: 1 }`.)
+    Frictionless,
 }
 
 impl NodeState {
-    /// `"open"`, `"stick"` or `"slip"`.
+    /// `"open"`, `"stick"`, `"slip"` or `"frictionless"`.
     pub fn name(&self) -> &'static str {
         match self {
             NodeState::Open => "open",
             NodeState::Stick => "stick",
             NodeState::Slip { .. } => "slip",
+            NodeState::Frictionless => "frictionless",
         }
     }
 }
@@ -377,7 +382,7 @@ impl NodeState {
 pub struct NodeResult {
     /// Node id (A side).
     pub node: usize,
-    /// Open, stick or slip.
+    /// Open, stick, slip or frictionless.
     pub state: NodeState,
     /// Normal traction on A (multiplier; `< 0` compression, pressure `p = -tn`).
     pub tn: f64,
@@ -423,11 +428,12 @@ pub struct IterationRecord {
     pub increment: usize,
     /// Iteration number within the increment (1-based).
     pub iteration: usize,
-    /// Active (stick + slip) nodes used in this iteration's solve.
+    /// Active (stick + slip + frictionless) nodes used in this iteration's solve.
     pub active: usize,
     /// Stick nodes among them.
     pub stick: usize,
-    /// Slip nodes among them.
+    /// Slip nodes among them (frictional pairs only; frictionless nodes are neither stick nor
+    /// slip).
     pub slip: usize,
     /// State changes decided after the solve.
     pub changes: usize,
@@ -436,6 +442,14 @@ pub struct IterationRecord {
     /// Estimated 1-norm condition number of the small contact system solved in this iteration
     /// (Hager's estimator; 1 when it is empty).
     pub condition: f64,
+    /// The worst violation of the discrete contact conditions by this iteration's solution
+    /// with its states (gap >= 0 at open nodes, `p >= 0` and a closed gap at closed ones,
+    /// `|ts| <= mu p` and no slip at stick nodes, slip opposing `ts` at slip nodes), relative
+    /// to the problem's scale: gaps to the gap scale (the increment's motion, at most the
+    /// mean A segment), tractions to the largest `|tn|`, slips to the motion scale. At
+    /// convergence it is at most [`CONDITION_LIMIT`] (else the increment fails with
+    /// [`ContactError::ConditionViolated`]).
+    pub violation: f64,
 }
 
 /// Summary of a converged increment.
@@ -552,6 +566,14 @@ pub struct ContactAnalysis {
     /// Factor `K` again in every iteration (a benchmark's control, see
     /// [`ContactAnalysis::set_refactor_each_iteration`]).
     refactor_each_iteration: bool,
+    /// Start a failed increment again from the fallback's states (`rules.rs`; on unless a
+    /// benchmark turns it off, see [`ContactAnalysis::set_fallback`]).
+    fallback: bool,
+    /// Increments that converged from the fallback's states.
+    fallbacks: usize,
+    /// The rules close an A node where a B node penetrates its open segments (off in the
+    /// fallback's attempt, whose condition check at convergence measures those penetrations).
+    pointwise_b: bool,
     /// The load (`f` and `q_p` at the prescribed dofs) of the last converged increment
     /// without a plate, and the locks it settled with.
     settled: Option<(Vec<f64>, Locks)>,
@@ -727,6 +749,9 @@ impl ContactAnalysis {
             reference_algebra: false,
             settled: None,
             refactor_each_iteration: false,
+            fallback: true,
+            fallbacks: 0,
+            pointwise_b: true,
             largest_motion: 0.0,
             largest_component_motion: 0.0,
             converged: None,
@@ -767,6 +792,20 @@ impl ContactAnalysis {
     /// that `hycon bench skip` can show what factoring once saves.
     pub fn set_refactor_each_iteration(&mut self, on: bool) {
         self.refactor_each_iteration = on;
+    }
+
+    /// Whether an increment that the paper's rules do not settle starts again from the states
+    /// of the projected solution of its conditions (`rules.rs`; on by default). Off, the
+    /// iteration is the paper's alone, as before 0.7.0: a benchmark's control (`hycon bench
+    /// presses` compares the two), not an option.
+    pub fn set_fallback(&mut self, on: bool) {
+        self.fallback = on;
+    }
+
+    /// How many increments so far converged only from the fallback's states (see
+    /// [`set_fallback`](Self::set_fallback)).
+    pub fn fallbacks(&self) -> usize {
+        self.fallbacks
     }
 
     /// Call `monitor` with every iteration record from now on (`None` removes it). When it
@@ -1083,20 +1122,14 @@ impl ContactAnalysis {
         } = self.load_solve(f, qp)?;
         finite(&u0c, number, 0)?;
         let border = control.and_then(|c| self.border(c, force0));
-        let clock = std::time::Instant::now();
         let mut states: Vec<Vec<NodeState>> = self
             .nodes
             .iter()
             .map(|v| v.iter().map(|d| d.state).collect())
             .collect();
-        // iterate on the contact dofs only; geometry from the start configuration
-        let startc = self.qc.clone();
-        let resolution = self.resolution();
-        let mut uc = startc.clone();
-        let mut surfaces = self.surfaces.clone();
         if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
             // a force-controlled body needs a support to start from: the nearest node
-            self.close_nearest(&surfaces, &mut states);
+            self.close_nearest(&self.surfaces, &mut states);
         }
         // the same totals again: resume with the last increment's locks, so that a contact
         // set it settled by locking settles at once on the same state
@@ -1104,15 +1137,84 @@ impl ContactAnalysis {
             (Some((last, locks)), None) if *last == load => locks.clone(),
             _ => Locks::default(),
         };
-        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds);
+        let attempt = Attempt {
+            number,
+            f,
+            qp,
+            control,
+            u0c: &u0c,
+            border: border.as_ref(),
+            force0,
+            load: &load,
+            startc: self.qc.clone(),
+            resolution: self.resolution(),
+            clock: std::time::Instant::now(),
+            // columns of a lazy F built during the iteration count as flexibility
+            flexibility_before: self.timings.flexibility,
+        };
         let mut records = Vec::new();
+        let first = self.iterate(&attempt, states, locks, &mut records);
+        match first {
+            Err(e) if self.fallback && border.is_none() && rules::settles_by_fallback(&e) => {
+                // the paper's rules did not settle: start again from the states of the
+                // projected solution of the linearized conditions (rules.rs)
+                // first with the paper's rules from those states; then with B nodes checked
+                // pointwise only at convergence (rules.rs)
+                let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
+                let mut info =
+                    self.iterate(&attempt, states.clone(), Locks::default(), &mut records);
+                if info.is_err() {
+                    self.pointwise_b = false;
+                    info = self.iterate(&attempt, states, Locks::default(), &mut records);
+                    self.pointwise_b = true;
+                }
+                // a state that settled but breaks a condition says more than the rules' failure
+                let info = info.map_err(|last| match last {
+                    Error::Contact(ContactError::ConditionViolated { .. }) => last,
+                    _ => e,
+                })?;
+                self.fallbacks += 1;
+                Ok(info)
+            }
+            other => other,
+        }
+    }
+
+    /// The iteration of one increment from `states` and `locks` (module docs), its records
+    /// appended to `records`; on convergence the state advances.
+    fn iterate(
+        &mut self,
+        attempt: &Attempt<'_>,
+        states: Vec<Vec<NodeState>>,
+        locks: Locks,
+        records: &mut Vec<IterationRecord>,
+    ) -> Result<IncrementInfo> {
+        let Attempt {
+            number,
+            f,
+            qp,
+            control,
+            u0c,
+            border,
+            force0,
+            load,
+            ref startc,
+            resolution,
+            clock,
+            flexibility_before,
+        } = *attempt;
+        // iterate on the contact dofs only; geometry from the start configuration
+        let mut uc = startc.clone();
+        let mut surfaces = self.surfaces.clone();
+        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds);
+        let first_record = records.len();
         // time of the refactor-every-iteration variant, counted as factorization
         let mut refactoring = 0.0;
-        // columns of a lazy F built during the iteration count as flexibility
-        let flexibility_before = self.timings.flexibility;
         let mut last: Option<(SmallSystem, boundary::Solution)> = None;
-        for iteration in 1..=self.options.max_iterations {
-            if self.refactor_each_iteration && iteration > 1 {
+        for step in 1..=self.options.max_iterations {
+            // iterations are counted over the increment's attempts
+            let iteration = first_record + step;
+            if self.refactor_each_iteration && step > 1 {
                 let clock = std::time::Instant::now();
                 self.bodies.refactorize()?;
                 self.flexibility = if self.bodies.lazy_flexibility() {
@@ -1124,22 +1226,22 @@ impl ContactAnalysis {
                 refactoring += clock.elapsed().as_secs_f64();
             }
             let states = set.states();
-            let system = self.build_system(&surfaces, states, &uc, &startc)?;
+            let system = self.build_system(&surfaces, states, &uc, startc)?;
             // the contact set settled and R measured the last change: the same system again,
             // whose solution is the last one to the bit (no factorization, no substitution)
             let solution = match last.take() {
                 Some((previous, solution)) if previous == system => solution,
-                _ => self.solve_iteration(&system, &u0c, border.as_ref())?,
+                _ => self.solve_iteration(&system, u0c, border)?,
             };
             let (tau, plate_motion, condition, uc_new) = solution.clone();
             let forces = system.forces(&tau, self.dofs.len());
             finite(&uc_new, number, iteration)?;
             self.widen_pairing(&uc_new, &mut surfaces)?;
-            self.update_geometry(&mut surfaces, &uc_new, &startc)?;
+            self.update_geometry(&mut surfaces, &uc_new, startc)?;
             let tractions = system.tractions(&tau, states, &self.laws);
-            let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, &startc)?;
+            let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
             let changes = set.changes(&proposed);
-            let r = change_ratio(&uc_new, &uc, &startc, resolution, self.options.tolerance);
+            let r = change_ratio(&uc_new, &uc, startc, resolution, self.options.tolerance);
             if !r.is_finite() {
                 return Err(ContactError::NonFinite {
                     increment: number,
@@ -1147,6 +1249,7 @@ impl ContactAnalysis {
                 }
                 .into());
             }
+            let violation = self.violation(&surfaces, states, &tractions, &uc_new, startc);
             let (active, stick, slip) = set.count();
             let record = IterationRecord {
                 increment: number,
@@ -1157,6 +1260,7 @@ impl ContactAnalysis {
                 changes,
                 r,
                 condition,
+                violation: violation.relative,
             };
             records.push(record);
             if let Some(monitor) = self
@@ -1174,17 +1278,26 @@ impl ContactAnalysis {
             if changes == 0 && r <= self.options.tolerance {
                 let states = set.states();
                 self.uncovered(&surfaces, states)?;
-                self.passed_through(&surfaces, states, &uc, &startc)?;
-                self.edge_penetration(number, &surfaces, set.locked_open(), &uc, &startc)?;
-                self.slip_reversal(number, &surfaces, states, set.locked_slip(), &uc, &startc)?;
+                self.passed_through(&surfaces, states, &uc, startc)?;
+                self.edge_penetration(number, &surfaces, set.locked_open(), &uc, startc)?;
+                self.slip_reversal(number, &surfaces, states, set.locked_slip(), &uc, startc)?;
                 self.small_sliding(number, states, &uc)?;
+                if violation.relative > CONDITION_LIMIT {
+                    return Err(ContactError::ConditionViolated {
+                        increment: number,
+                        node: self.external_a(violation.node),
+                        condition: violation.condition,
+                        relative: violation.relative,
+                    }
+                    .into());
+                }
                 self.timings.factorization += refactoring;
                 self.timings.iterations += clock.elapsed().as_secs_f64()
                     - refactoring
                     - (self.timings.flexibility - flexibility_before);
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
-                    let directions = border.as_ref().map_or(&[][..], |b| &b.directions[..]);
+                    let directions = border.map_or(&[][..], |b| &b.directions[..]);
                     plate.settle(
                         control,
                         (directions, &plate_motion),
@@ -1198,7 +1311,9 @@ impl ContactAnalysis {
                     prescribed,
                     contact: forces,
                 };
-                self.settled = control.is_none().then(|| (load, set.locks().clone()));
+                self.settled = control
+                    .is_none()
+                    .then(|| (load.to_vec(), set.locks().clone()));
                 return Ok(self.finish(
                     number,
                     iteration,
@@ -1207,7 +1322,7 @@ impl ContactAnalysis {
                     uc,
                     surfaces,
                     converged,
-                    records,
+                    std::mem::take(records),
                 ));
             }
             last = Some((system, solution));
@@ -1223,7 +1338,7 @@ impl ContactAnalysis {
         }
         Err(ContactError::NoConvergence {
             increment: number,
-            iterations: self.options.max_iterations,
+            iterations: records.len(),
             last_r: records.last().map_or(f64::NAN, |r: &IterationRecord| r.r),
         }
         .into())
@@ -1233,6 +1348,25 @@ impl ContactAnalysis {
     fn external_a(&self, (p, k): NodeKey) -> usize {
         self.bodies.external(self.pairs[p].a[k])
     }
+}
+
+/// What one increment's iteration starts from: its loads and their solve, the start state.
+struct Attempt<'a> {
+    number: usize,
+    f: &'a [f64],
+    qp: &'a [f64],
+    control: Option<[PlateControl; 2]>,
+    /// The load solve at the contact dofs.
+    u0c: &'a [f64],
+    border: Option<&'a Border>,
+    force0: [f64; 2],
+    /// The load (`f` and `q_p`) the increment's locks are kept with.
+    load: &'a [f64],
+    /// The converged displacement of the contact dofs the increment starts from.
+    startc: Vec<f64>,
+    resolution: f64,
+    clock: std::time::Instant,
+    flexibility_before: f64,
 }
 
 /// Mean A segment length of the polyline `a` at positions `x`.
@@ -1330,128 +1464,6 @@ fn check_host_nodes(pairs: &[ContactPair], bodies: &Bodies) -> Result<()> {
 }
 
 impl ContactAnalysis {
-    /// The paper's rules, proposing the next states from the set's current ones: penetration
-    /// (A nodes by weighted gap; B nodes pointwise over A segments whose two nodes are open),
-    /// tension, the friction cone and slip reversal. The rules respect the set's locks: a node
-    /// locked open does not close, a node locked in slip does not return to stick.
-    fn update_states(
-        &self,
-        set: &ActiveSet,
-        tractions: &[Vec<(f64, f64)>],
-        surfaces: &[ContactSurface],
-        uc: &[f64],
-        startc: &[f64],
-    ) -> Result<Vec<Vec<NodeState>>> {
-        let states = set.states();
-        let mut new = states.to_vec();
-        let x = self.positions(uc);
-        let xg = self.geometry_positions(&x);
-        for (p, surface) in surfaces.iter().enumerate() {
-            let law = &*self.laws[p];
-            let slip_tolerance = self.options.slip_tolerance * self.motion_scale(p, xg, uc, startc);
-            let reach = self.search_reach(p, xg, uc, startc);
-            // penetration is judged against the increment's own displacement scale
-            let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
-            let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
-            // a node closing while the surfaces slide past each other slides with them; one
-            // closing without relative motion sticks
-            let closed = |node: &geometry::ContactNode| {
-                let slip = self.slip_since_start(node, uc, startc);
-                if law.is_frictionless() {
-                    NodeState::Slip { sign: 1 }
-                } else if slip.abs() > slip_tolerance {
-                    NodeState::Slip {
-                        sign: if slip > 0.0 { 1 } else { -1 },
-                    }
-                } else {
-                    NodeState::Stick
-                }
-            };
-            // how deep each open node penetrates; which of them close is decided below
-            let mut depth: Vec<Option<f64>> = vec![None; surface.nodes.len()];
-            for (k, node) in surface.nodes.iter().enumerate() {
-                let (tn, ts) = tractions[p][k];
-                match states[p][k] {
-                    NodeState::Open => {
-                        if node.normal_gap < -gap_tolerance {
-                            depth[k] = Some(node.normal_gap);
-                        }
-                    }
-                    _ if tn > self.options.tension_tolerance * tn_max => {
-                        new[p][k] = NodeState::Open;
-                    }
-                    NodeState::Stick => {
-                        if ts.abs() > law.stick_limit(tn) * (1.0 + self.options.friction_tolerance)
-                        {
-                            new[p][k] = NodeState::Slip {
-                                sign: if ts > 0.0 { -1 } else { 1 },
-                            };
-                        }
-                    }
-                    NodeState::Slip { sign } if !law.is_frictionless() => {
-                        if set.may_stick((p, k))
-                            && f64::from(sign) * self.slip_since_start(node, uc, startc)
-                                < -slip_tolerance
-                        {
-                            new[p][k] = NodeState::Stick;
-                        }
-                    }
-                    NodeState::Slip { .. } => {}
-                }
-            }
-            // B nodes over A segments whose two nodes are open: the signed distance of the B
-            // node from the segment along its normal, the segment's point `xi`, normal and
-            // the B node's projection taken in the geometry's configuration (frozen under
-            // small kinematics: the distance is then linear in the displacements)
-            let a = &self.pairs[p].a;
-            let open: Vec<bool> = (0..a.len())
-                .map(|k| states[p][k] == NodeState::Open && depth[k].is_none())
-                .collect();
-            for (k, w) in a.windows(2).enumerate() {
-                if !(open[k] && open[k + 1]) {
-                    continue;
-                }
-                let (s0, s1) = (xg[w[0]], xg[w[1]]);
-                let d = [s1[0] - s0[0], s1[1] - s0[1]];
-                let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
-                let n = [d[1] / len, -d[0] / len];
-                // current segment end points (equal to s0, s1 under finite kinematics)
-                let (c0, c1) = (x[w[0]], x[w[1]]);
-                // only B nodes strictly inside the segment are checked here; under small
-                // kinematics they were found once, in the reference configuration
-                let candidates = match &self.interiors {
-                    Some(interiors) => interiors[p].segment(k),
-                    None => &self.pairs[p].b[..],
-                };
-                for &j in candidates {
-                    let (xi, inside) = geometry::interior_parameter(s0, s1, xg[j]);
-                    let hit = [c0[0] + xi * (c1[0] - c0[0]), c0[1] + xi * (c1[1] - c0[1])];
-                    let g = (x[j][0] - hit[0]) * n[0] + (x[j][1] - hit[1]) * n[1];
-                    if !inside || g >= -gap_tolerance {
-                        continue;
-                    }
-                    if g <= -reach {
-                        return Err(ContactError::BeyondSearchDistance {
-                            node: self.bodies.external(j),
-                            segment: [self.bodies.external(w[0]), self.bodies.external(w[1])],
-                            depth: -g,
-                            search_distance: reach,
-                        }
-                        .into());
-                    }
-                    let node = if xi < 0.5 { k } else { k + 1 };
-                    depth[node] = Some(depth[node].map_or(g, |d| d.min(g)));
-                }
-            }
-            // coverage is checked on the converged state only: an intermediate iterate may
-            // move a node at the end of a surface a hair past the other's end
-            for k in set.closing(p, &depth) {
-                new[p][k] = closed(&surface.nodes[k]);
-            }
-        }
-        Ok(new)
-    }
-
     /// Accept the converged iterate: store the contact state, the node data and the records;
     /// the full field is recovered only when asked for.
     #[allow(clippy::too_many_arguments)]

@@ -73,6 +73,9 @@ pub const HYCON_NODE_OPEN: HyconNodeState = 1;
 pub const HYCON_NODE_STICK: HyconNodeState = 2;
 /// In contact and sliding (`ts = mu sign tn`).
 pub const HYCON_NODE_SLIP: HyconNodeState = 3;
+/// In contact without friction (a pair with friction 0; `ts = 0`). Before 0.7.0 such a node
+/// was reported as `HYCON_NODE_SLIP` with `slip_sign` +1.
+pub const HYCON_NODE_FRICTIONLESS: HyconNodeState = 4;
 
 /// Which body a coupling entry belongs to, one of `HYCON_SIDE_*`.
 pub type HyconSide = i32;
@@ -111,11 +114,12 @@ pub struct HyconIterationRecord {
     pub increment: usize,
     /// Iteration within the increment (1-based).
     pub iteration: usize,
-    /// Active (stick + slip) A nodes in this iteration's solve.
+    /// Active (stick + slip + frictionless) A nodes in this iteration's solve.
     pub active: usize,
     /// Stick nodes among them.
     pub stick: usize,
-    /// Slip nodes among them.
+    /// Slip nodes among them (frictional pairs only; frictionless nodes are neither stick nor
+    /// slip).
     pub slip: usize,
     /// State changes decided after the solve.
     pub changes: usize,
@@ -125,6 +129,13 @@ pub struct HyconIterationRecord {
     pub r: f64,
     /// Estimated 1-norm condition number of the small contact system (1 when empty).
     pub condition: f64,
+    /// The worst violation of the discrete contact conditions by this iteration's solution
+    /// (open gaps >= 0; closed nodes in compression with closed gaps; stick nodes inside the
+    /// friction cone and not sliding; slip opposing the friction), relative to the problem's
+    /// scale (gaps to the increment's motion, at most the mean A segment; tractions to the
+    /// largest; slips to the motion). At convergence at most 1e-4, else the increment fails
+    /// with `HYCON_ERROR_CONTACT`.
+    pub violation: f64,
 }
 
 /// Called with every iteration record; return 0 to go on, nonzero to stop the increment (it
@@ -213,7 +224,7 @@ pub struct HyconIncrementInfo {
     pub increment: usize,
     /// Iterations used.
     pub iterations: usize,
-    /// Active (stick + slip) A nodes at convergence.
+    /// Active (stick + slip + frictionless) A nodes at convergence.
     pub active: usize,
     /// Slip nodes at convergence.
     pub slip: usize,
@@ -225,7 +236,7 @@ pub struct HyconIncrementInfo {
 pub struct HyconNodeResult {
     /// Node id (the caller's numbering).
     pub node: usize,
-    /// `HYCON_NODE_OPEN`, `HYCON_NODE_STICK` or `HYCON_NODE_SLIP`.
+    /// `HYCON_NODE_OPEN`, `HYCON_NODE_STICK`, `HYCON_NODE_SLIP` or `HYCON_NODE_FRICTIONLESS`.
     pub state: HyconNodeState,
     /// Slip direction along `tangent` of A relative to B (+1 or -1) for a slip node, else 0.
     pub slip_sign: i32,
@@ -486,6 +497,7 @@ fn record_to_c(r: &IterationRecord) -> HyconIterationRecord {
         changes: r.changes,
         r: r.r,
         condition: r.condition,
+        violation: r.violation,
     }
 }
 
@@ -1499,6 +1511,7 @@ pub unsafe extern "C" fn hycon_contact_node_results(
                         NodeState::Open => (HYCON_NODE_OPEN, 0),
                         NodeState::Stick => (HYCON_NODE_STICK, 0),
                         NodeState::Slip { sign } => (HYCON_NODE_SLIP, i32::from(sign)),
+                        NodeState::Frictionless => (HYCON_NODE_FRICTIONLESS, 0),
                     };
                     HyconNodeResult {
                         node: r.node,

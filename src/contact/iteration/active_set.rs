@@ -15,24 +15,13 @@
 //!
 //! Any other returning set is a cycle, reported with a node that flips.
 //!
-//! Which penetrating nodes close is decided here too ([`ActiveSet::closing`]): the zone grows
-//! by half of each penetrating band per iteration instead of by the whole band, so that it
-//! approaches its edge from inside.
+//! Which penetrating nodes close is decided with the other rules, in `rules.rs`
+//! ([`ActiveSet::closing`]).
 
 use super::NodeState;
 
 /// A node of the iteration: (pair, index of the A node in the pair).
 pub(super) type NodeKey = (usize, usize);
-
-/// A run of penetrating nodes away from the contact zone closes where its penetration is at
-/// least this fraction of its deepest ([`ActiveSet::closing`]).
-pub(super) const NEW_REGION_DEPTH: f64 = 0.9;
-
-/// Runs of penetrating nodes up to this long close whole ([`ActiveSet::closing`]): halving a
-/// run of two beside the zone made its edge node alternate open/closed where closing both
-/// converged (2 of 54 finite-sliding scenes of the robustness scan, reported in
-/// `docs/bench/contact_boundary.md`).
-pub(super) const WHOLE_RUN: usize = 2;
 
 /// What [`ActiveSet::commit`] did with a proposal.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -115,66 +104,6 @@ impl ActiveSet {
         &self.locks.slip
     }
 
-    /// The open nodes of pair `p` that close in this iteration (METHOD.md section 4, step 3a,
-    /// damped). `depth[k]` is `Some(d)` for an open node that penetrates (`d < 0`: the deeper of
-    /// its weighted gap and any B node's distance that closes it), `None` otherwise. Per run of
-    /// consecutive penetrating nodes:
-    /// * between two closed nodes (a hole in the zone): all of it;
-    /// * beside the zone on one side: the half nearest the zone (rounded up). The penetration
-    ///   beyond a zone was computed with the contact force on that zone, which is too small, so
-    ///   it overstates the band: closing all of it overshoots the edge, and the zone then
-    ///   shrinks by the one or two nodes per side whose traction turns tensile in each
-    ///   iteration. Halving approaches the edge from inside, where the zone grows fast
-    ///   (`bench contact` at n = 256: 46 iterations before, 20 now);
-    /// * away from the zone (a new contact region): the nodes within [`NEW_REGION_DEPTH`] of
-    ///   the deepest one, so that conforming surfaces close at once and curved ones grow from
-    ///   their deepest point.
-    ///
-    /// Nodes locked open are skipped; if that leaves a run's choice empty, every node of the
-    /// run that may close closes, so the iteration never stops on a penetrating node it could
-    /// close.
-    pub(super) fn closing(&self, p: usize, depth: &[Option<f64>]) -> Vec<usize> {
-        let closed = |k: usize| self.states[p][k] != NodeState::Open;
-        let mut chosen = Vec::new();
-        let mut k = 0;
-        while k < depth.len() {
-            if depth[k].is_none() {
-                k += 1;
-                continue;
-            }
-            let start = k;
-            while k < depth.len() && depth[k].is_some() {
-                k += 1;
-            }
-            let run = start..k;
-            let half = if run.len() <= WHOLE_RUN {
-                run.len()
-            } else {
-                run.len().div_ceil(2)
-            };
-            let before = start > 0 && closed(start - 1);
-            let after = k < depth.len() && closed(k);
-            let mut pick: Vec<usize> = match (before, after) {
-                (true, true) => run.clone().collect(),
-                (true, false) => (start..start + half).collect(),
-                (false, true) => (k - half..k).collect(),
-                (false, false) => {
-                    let d = |i: usize| depth[i].unwrap_or(0.0);
-                    let deepest = run.clone().map(d).fold(0.0, f64::min);
-                    run.clone()
-                        .filter(|&i| d(i) <= NEW_REGION_DEPTH * deepest)
-                        .collect()
-                }
-            };
-            pick.retain(|&i| self.may_close((p, i)));
-            if pick.is_empty() {
-                pick = run.filter(|&i| self.may_close((p, i))).collect();
-            }
-            chosen.extend(pick);
-        }
-        chosen
-    }
-
     /// How many nodes `proposed` changes.
     pub(super) fn changes(&self, proposed: &[Vec<NodeState>]) -> usize {
         proposed
@@ -229,15 +158,16 @@ impl ActiveSet {
     }
 }
 
-/// `(active, stick, slip)` counts.
+/// `(active, stick, slip)` counts (active: every state but open, frictionless included).
 pub(super) fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
     let all = states.iter().flatten();
+    let active = all.clone().filter(|s| **s != NodeState::Open).count();
     let stick = all.clone().filter(|s| **s == NodeState::Stick).count();
     let slip = all
         .clone()
         .filter(|s| matches!(s, NodeState::Slip { .. }))
         .count();
-    (stick + slip, stick, slip)
+    (active, stick, slip)
 }
 
 /// The nodes that are stick in one state set and slip in the other, with the slip state.
@@ -316,71 +246,5 @@ mod tests {
         assert_eq!(edge.locked_open(), &[(0, 0)]);
         assert_eq!(edge.changes(&[vec![SLIP]]), 1);
         assert_eq!(edge.count(), (0, 0, 0));
-    }
-
-    /// Holes fill, bands beside the zone close by their nearer half (a band of two whole), new
-    /// regions from their deepest nodes; locked nodes are skipped without stopping the growth.
-    #[test]
-    fn closing_grows_the_zone_by_halves() {
-        use NodeState::Open;
-        let depths = |entries: &[(usize, f64)]| {
-            let mut depth = vec![None; 12];
-            for &(k, d) in entries {
-                depth[k] = Some(d);
-            }
-            depth
-        };
-        // closed: 3, 5 and 10
-        let mut states = vec![Open; 12];
-        for k in [3, 5, 10] {
-            states[k] = SLIP;
-        }
-        let set = ActiveSet::new(vec![states.clone()], Locks::default(), 1);
-        // a band of 3 left of node 3, a hole at 4, a band of 4 right of node 5, a band of two
-        // right of node 10
-        let band = [
-            (0, -1.0),
-            (1, -2.0),
-            (2, -3.0),
-            (4, -1.0),
-            (6, -5.0),
-            (7, -4.0),
-        ];
-        let rest = [(8, -3.0), (9, -2.0), (11, -1.0)];
-        let depth = depths(&[&band[..], &rest[..]].concat());
-        // 6..10 lies between 5 and 10: a hole, all of it
-        assert_eq!(set.closing(0, &depth), vec![1, 2, 4, 6, 7, 8, 9, 11]);
-        let depth = depths(&[
-            (0, -1.0),
-            (1, -2.0),
-            (2, -3.0),
-            (6, -5.0),
-            (7, -4.0),
-            (8, -1.0),
-        ]);
-        assert_eq!(set.closing(0, &depth), vec![1, 2, 6, 7]);
-        let depth = depths(&[(6, -5.0), (7, -4.0)]);
-        assert_eq!(
-            set.closing(0, &depth),
-            vec![6, 7],
-            "a band of two closes whole"
-        );
-        // a new region: within 0.9 of its deepest node, which need not be at its middle
-        let open = ActiveSet::new(vec![vec![Open; 12]], Locks::default(), 1);
-        let depth = depths(&[(1, -0.5), (2, -0.95), (3, -1.0), (4, -0.91), (5, -0.2)]);
-        assert_eq!(open.closing(0, &depth), vec![2, 3, 4]);
-        // conforming surfaces: all at once
-        assert_eq!(
-            open.closing(0, &[Some(-1.0); 12]),
-            (0..12).collect::<Vec<_>>()
-        );
-        // the chosen half locked open: the rest of the band closes instead
-        let locks = Locks {
-            slip: Vec::new(),
-            open: vec![(0, 1), (0, 2)],
-        };
-        let locked = ActiveSet::new(vec![states], locks, 1);
-        let depth = depths(&[(0, -1.0), (1, -2.0), (2, -3.0)]);
-        assert_eq!(locked.closing(0, &depth), vec![0]);
     }
 }

@@ -1302,6 +1302,33 @@ impl ContactAnalysis {
         Ok((tau[..m].to_vec(), plate_motion, condition, uc))
     }
 
+    /// The small matrix `S_ij = row_i . F col_j` of `system`, dense (the fallback of
+    /// `rules.rs` works on it): from the node flexibility under small kinematics, from the
+    /// columns of `F` under finite kinematics or the reference algebra.
+    pub(super) fn dense_matrix(&mut self, system: &SmallSystem) -> Result<DMatrix<f64>> {
+        let m = system.rows.len();
+        let mut s = DMatrix::zeros(m, m);
+        if self.options.kinematics == Kinematics::Small && !self.reference_algebra {
+            let (rows, cols) = self.node_directions(system)?;
+            let n = &self.node_flexibility.n;
+            for (j, parts) in cols.iter().enumerate() {
+                for (i, &row) in rows.iter().enumerate() {
+                    s[(i, j)] = parts.iter().fold(0.0, |sum, &(b, c)| sum + c * n[b][row]);
+                }
+            }
+        } else {
+            self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
+            let mut y = vec![0.0; self.dofs.len()];
+            for (j, col) in system.cols.iter().enumerate() {
+                self.apply_flexibility(col, &mut y);
+                for (i, row) in system.rows.iter().enumerate() {
+                    s[(i, j)] = dot(row, &y);
+                }
+            }
+        }
+        Ok(s)
+    }
+
     /// Build the part of a lazy `F` that the first increment certainly needs: under small
     /// kinematics the directions of each pair's A node with the smallest reference gap (the
     /// first to close; normal, and tangent with friction), under finite kinematics the columns

@@ -315,3 +315,122 @@ impl ContactAnalysis {
         Ok(())
     }
 }
+
+/// A converged state may violate the discrete contact conditions by at most this, relative to
+/// the problem's scale (see [`ContactAnalysis::violation`]): the hair that a node locked open
+/// or in slip is allowed ([`EDGE_PENETRATION`], [`SLIP_REVERSAL`]); the rules themselves hold
+/// the other nodes to their tolerances (`1e-9` and `1e-6` by default).
+pub const CONDITION_LIMIT: f64 = EDGE_PENETRATION;
+
+/// The worst violation of the discrete contact conditions in a state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Violation {
+    /// The violation relative to its scale (0: every condition holds).
+    pub(super) relative: f64,
+    /// The A node where it is worst.
+    pub(super) node: NodeKey,
+    /// Which condition, in words.
+    pub(super) condition: &'static str,
+}
+
+impl ContactAnalysis {
+    /// The worst violation of the discrete contact conditions, node by node, in the state
+    /// `states` with tractions `tractions` at displacement `uc` (METHOD.md section 4), each
+    /// relative to its scale: gaps to the gap scale `g_s` of the pair
+    /// ([`gap_scale`](Self::gap_scale)), tractions to the pair's largest `|tn|`, slips
+    /// (weighted, since the increment began) to the motion scale `v_s`
+    /// ([`motion_scale`](Self::motion_scale)):
+    ///
+    /// ```text
+    /// open:           gap >= 0                       max(0, -gap) / g_s
+    /// closed:         p = -tn >= 0                   max(0, tn) / tn_max
+    ///                 gap = 0 (complementarity)      |gap| / g_s
+    /// stick:          |ts| <= mu p                   max(0, |ts| - mu p) / tn_max
+    ///                 no slip                        |v| / v_s
+    /// slip:           slip opposes ts (sign v >= 0)  max(0, -sign v) / v_s
+    /// B node over an A segment whose two nodes are open (pointwise):
+    ///                 distance >= 0                  max(0, -distance) / g_s
+    /// ```
+    ///
+    /// The last line is measured only when the rules do not check B nodes themselves (the
+    /// fallback's last attempt, see `rules.rs`): otherwise the rules close the nearer A node
+    /// of a B node that penetrates by more than the gap tolerance (a node locked open
+    /// excepted, as 0.6.2 did).
+    ///
+    /// (a slip node carries `ts = mu sign tn` by construction, a frictionless one `ts = 0`).
+    pub(super) fn violation(
+        &self,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+        tractions: &[Vec<(f64, f64)>],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Violation {
+        let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
+        let mut worst = Violation {
+            relative: 0.0,
+            node: (0, 0),
+            condition: "none",
+        };
+        for (p, surface) in surfaces.iter().enumerate() {
+            let gap_scale = self.gap_scale(p, xg, uc, startc);
+            let slip_scale = self.motion_scale(p, xg, uc, startc);
+            let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
+            let per_traction = |v: f64| if tn_max > 0.0 { v / tn_max } else { 0.0 };
+            let law = &*self.laws[p];
+            for (k, node) in surface.nodes.iter().enumerate() {
+                let (tn, ts) = tractions[p][k];
+                let gap = node.normal_gap;
+                let slip = || self.slip_since_start(node, uc, startc);
+                let mut found = |relative: f64, condition: &'static str| {
+                    if relative > worst.relative {
+                        worst = Violation {
+                            relative,
+                            node: (p, k),
+                            condition,
+                        };
+                    }
+                };
+                if states[p][k] == NodeState::Open {
+                    if gap.is_finite() {
+                        found(-gap / gap_scale, "an open node penetrates");
+                    }
+                    continue;
+                }
+                found(per_traction(tn), "a closed node is in tension");
+                found(gap.abs() / gap_scale, "a closed node's gap is not closed");
+                match states[p][k] {
+                    NodeState::Stick => {
+                        found(
+                            per_traction(ts.abs() - law.stick_limit(tn)),
+                            "a stick node is outside the friction cone",
+                        );
+                        found(slip().abs() / slip_scale, "a stick node slides");
+                    }
+                    NodeState::Slip { sign } if !law.is_frictionless() => found(
+                        -f64::from(sign) * slip() / slip_scale,
+                        "a slip node slides against its friction",
+                    ),
+                    _ => {}
+                }
+            }
+            if self.pointwise_b {
+                // the rules hold these: they close the nearer A node
+                continue;
+            }
+            let open: Vec<bool> = states[p].iter().map(|s| *s == NodeState::Open).collect();
+            for (k, _, xi, g) in self.b_node_distances(p, &open, &x, xg) {
+                let node = (p, if xi < 0.5 { k } else { k + 1 });
+                if -g / gap_scale > worst.relative {
+                    worst = Violation {
+                        relative: -g / gap_scale,
+                        node,
+                        condition: "a B node penetrates between two open A nodes",
+                    };
+                }
+            }
+        }
+        worst
+    }
+}

@@ -216,18 +216,17 @@ impl ContactAnalysis {
         for (p, surface) in surfaces.iter().enumerate() {
             let law = &*self.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let state = states[p][k];
-                if state == NodeState::Open {
+                let rows = rules::rows_of(states[p][k], law);
+                if rows == rules::Rows::None {
                     continue;
                 }
                 let normal = self.directed(&node.coupling, node.normal);
                 let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
                 let b = dot(&normal, uc) - rg;
                 let tangent = || self.directed(&node.coupling, node.tangent);
-                let (col, basis) = match state {
-                    NodeState::Slip { sign } if !law.is_frictionless() => {
+                let (col, basis) = match rows {
+                    rules::Rows::NormalSlip(w) => {
                         let mut c = normal.clone();
-                        let w = law.slip_coefficient(sign);
                         c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
                         (c, vec![(p, k, Row::Normal, 1.0), (p, k, Row::Tangent, w)])
                     }
@@ -238,7 +237,7 @@ impl ContactAnalysis {
                 sys.cols.push(col);
                 sys.basis.push(basis);
                 sys.b.push(b);
-                if state == NodeState::Stick {
+                if rows == rules::Rows::NormalTangent {
                     let t = tangent();
                     sys.unknowns.push((p, k, Row::Tangent));
                     sys.b.push(dot(&t, startc));
