@@ -69,6 +69,15 @@ struct Scene {
 
 impl Scene {
     fn new(press: Press, options: ContactOptions) -> hycon::Result<Scene> {
+        Scene::build(press, options, false)
+    }
+
+    /// As [`new`](Self::new), with the upper block's top tied to a rigid plate.
+    fn with_plate(press: Press, options: ContactOptions) -> hycon::Result<Scene> {
+        Scene::build(press, options, true)
+    }
+
+    fn build(press: Press, options: ContactOptions, plate: bool) -> hycon::Result<Scene> {
         let mut mesh = Mesh::new();
         let lower = block(&mut mesh, [0.0, 0.0], [2.0, 1.0], press.lower, 0);
         let upper = block(
@@ -107,7 +116,11 @@ impl Scene {
             kinematics: press.kinematics,
             ..options
         };
-        let analysis = ContactAnalysis::new(model, vec![pair], options)?;
+        let analysis = if plate {
+            ContactAnalysis::with_plate(model, vec![pair], options, top.clone())?
+        } else {
+            ContactAnalysis::new(model, vec![pair], options)?
+        };
         Ok(Scene {
             analysis,
             top,
@@ -229,6 +242,8 @@ fn a_large_frictional_slide_converges_in_sub_increments() {
         let info = cut.step(press.depth, slide).unwrap();
         assert_eq!(info.increment, 2);
         assert!(info.sub_increments >= 2 && info.cutbacks >= 1, "{info:?}");
+        // `K` was factored once, for the whole analysis
+        assert_eq!(cut.analysis.factorizations(), 1);
         // records: increment 2 throughout, sub-increments 1..=n in order, each ending converged
         let records = &cut.analysis.records()[kept..];
         assert_eq!(records.len(), info.iterations);
@@ -256,6 +271,60 @@ fn a_large_frictional_slide_converges_in_sub_increments() {
             assert!(r.ts.abs() <= press.friction * r.tn.abs() * (1.0 + 1e-8) + 1e-12 * peak);
         }
     }
+}
+
+/// The same slide driven through a rigid plate tied to the upper block's top: displacement
+/// control in both directions gives the prescribed-top results bit for bit (sub-increments
+/// included); with the press force-controlled (the force of the pressed state) and the slide
+/// displacement-controlled, the plate's force-controlled direction is interpolated as a force
+/// (its motion solved for in every sub-increment), and the plate ends carrying the force and
+/// moved by the slide.
+#[test]
+fn a_plate_slide_is_cut_back_with_its_controls() {
+    use hycon::contact::iteration::PlateControl::{Displacement, Force};
+    let (press, slide) = SLIDE;
+    let mut prescribed = Scene::new(press, ContactOptions::default()).unwrap();
+    prescribed.step(press.depth, 0.0).unwrap();
+    let want = prescribed.step(press.depth, slide).unwrap();
+    let mut plate = Scene::with_plate(press, ContactOptions::default()).unwrap();
+    let n = plate.n;
+    let (f, qp) = (vec![0.0; 2 * n], vec![0.0; 2 * n]);
+    let down = -(press.gap + press.depth);
+    plate
+        .analysis
+        .increment_with_plate(&f, &qp, [Displacement(0.0), Displacement(down)])
+        .unwrap();
+    let (_, pressed) = plate.analysis.plate().unwrap();
+    let got = plate
+        .analysis
+        .increment_with_plate(&f, &qp, [Displacement(slide), Displacement(down)])
+        .unwrap();
+    assert_eq!(got, want);
+    let bits = |a: &ContactAnalysis| -> Vec<u64> {
+        let r = a.node_results(0).unwrap();
+        r.iter()
+            .flat_map(|n| [n.tn.to_bits(), n.ts.to_bits()])
+            .collect()
+    };
+    assert_eq!(bits(&plate.analysis), bits(&prescribed.analysis));
+
+    let mut forced = Scene::with_plate(press, ContactOptions::default()).unwrap();
+    let load = [Displacement(0.0), Force(pressed[1])];
+    forced.analysis.increment_with_plate(&f, &qp, load).unwrap();
+    let info = forced
+        .analysis
+        .increment_with_plate(&f, &qp, [Displacement(slide), Force(pressed[1])])
+        .unwrap();
+    let (u, force) = forced.analysis.plate().unwrap();
+    assert_eq!(u[0], slide);
+    assert!(
+        (force[1] / pressed[1] - 1.0).abs() < 1e-9,
+        "{force:?} vs {pressed:?}"
+    );
+    let top = forced.top[0];
+    let field = forced.analysis.displacement().unwrap();
+    assert_eq!((field[2 * top], field[2 * top + 1]), (u[0], u[1]));
+    eprintln!("force-controlled slide: {info:?}");
 }
 
 /// With `cutback_depth = 0` the increment fails at once, as before 0.7.0: the monitor sees one
@@ -489,6 +558,40 @@ fn host_pair(
     reversed: bool,
     a_inside: Vec<Option<[f64; 2]>>,
 ) -> hycon::Result<ContactAnalysis> {
+    host_pair_with(gap, reversed, a_inside, None)
+}
+
+/// As [`host_pair`], with the host's elements of body A: one square on A's first segment (its
+/// other two nodes held), which tells the side of body A without a point.
+fn host_pair_with_element(gap: f64, reversed: bool) -> hycon::Result<ContactAnalysis> {
+    use hycon::contact::bodies::{HostElements, HostNode};
+    let node = |id: usize, position: [f64; 2], equations: [Option<usize>; 2]| HostNode {
+        id,
+        position,
+        equations,
+    };
+    let elements = HostElements {
+        formulation: Formulation::Hybrid,
+        materials: vec![Material::new(1.0, 0.3, 1.0, Analysis::PlaneStrain)?],
+        element_material: vec![0],
+        offsets: vec![0, 4],
+        nodes: vec![0, 1, 100, 101],
+        node_table: vec![
+            node(0, [0.0, gap], [Some(0), Some(1)]),
+            node(1, [0.25, gap], [Some(2), Some(3)]),
+            node(100, [0.25, gap + 0.25], [None, None]),
+            node(101, [0.0, gap + 0.25], [None, None]),
+        ],
+    };
+    host_pair_with(gap, reversed, vec![], Some(elements))
+}
+
+fn host_pair_with(
+    gap: f64,
+    reversed: bool,
+    a_inside: Vec<Option<[f64; 2]>>,
+    elements: Option<hycon::contact::bodies::HostElements>,
+) -> hycon::Result<ContactAnalysis> {
     use hycon::contact::bodies::{Csr, HostNode, HostStiffness, HostSystem, Triangle};
     let mut nodes = Vec::new();
     for i in 0..5 {
@@ -516,7 +619,7 @@ fn host_pair(
             values: vec![1.0; n],
             triangle: Triangle::Full,
         }),
-        elements: None,
+        elements,
         a_inside,
     };
     let (mut a, mut b): (Vec<usize>, Vec<usize>) = ((0..5).collect(), (5..10).collect());
@@ -571,6 +674,13 @@ fn a_host_pair_lying_back_to_back_is_rejected() {
     }
     // apart, the geometry tells: no point needed
     host_pair(0.2, false, vec![]).unwrap();
+    // the host's elements tell the side too (the centroid of the element with A's first
+    // segment)
+    for gap in [0.0, 0.01] {
+        host_pair_with_element(gap, false).unwrap();
+        let e = message(host_pair_with_element(gap, true)).unwrap();
+        assert!(e.contains("A has its body on its right"), "{gap}: {e}");
+    }
     // a pair accepted with its point presses as it should: A pushed down closes (the springs
     // let the nodes alternate: 3 of 5 carry it) and nothing penetrates
     let above = Some([0.5, 0.1]);

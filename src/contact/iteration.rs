@@ -482,7 +482,8 @@ pub struct IterationRecord {
 pub struct IncrementInfo {
     /// Increment number (1-based).
     pub increment: usize,
-    /// Iterations used.
+    /// Iterations used (summed over the converged sub-increments: the records
+    /// [`ContactAnalysis::records`] keeps of the increment).
     pub iterations: usize,
     /// Active nodes at convergence.
     pub active: usize,
@@ -698,7 +699,14 @@ impl ContactAnalysis {
                 pairs.len()
             )));
         }
-        let a_inside = system.a_inside.clone();
+        // the host's point inside body A, or the centroid of its element on a segment of A
+        let a_inside: Vec<Option<[f64; 2]>> = (0..pairs.len())
+            .map(|i| {
+                let given = system.a_inside.get(i).copied().flatten();
+                let beside = || system.elements.as_ref()?.centroid_beside(&pairs[i].a);
+                given.or_else(beside)
+            })
+            .collect();
         let clock = std::time::Instant::now();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::host(system, options.backend, lazy, options.threads)?;

@@ -247,7 +247,8 @@ const OPTIONS_FIRST_BLOCK: usize = std::mem::size_of::<HyconContactOptions>();
 pub struct HyconIncrementInfo {
     /// Increment number (1-based).
     pub increment: usize,
-    /// Iterations used.
+    /// Iterations used (summed over the converged sub-increments: the records
+    /// `hycon_contact_records` keeps of the increment).
     pub iterations: usize,
     /// Active (stick + slip) A nodes at convergence.
     pub active: usize,
@@ -1150,8 +1151,9 @@ pub unsafe extern "C" fn hycon_host_add_pair(
 /// Needed where the geometry cannot tell: when A and B touch (lie within half a segment of each
 /// other) wherever they are near each other, facing surfaces and back-to-back ones (both
 /// polylines reversed) look the same, and `hycon_contact_new_host` rejects such a pair without
-/// it. Surfaces apart (or curved away from each other around a contact) need none, and a point
-/// given is checked in any case.
+/// it, unless the host gave its elements (`hycon_host_set_elements`) with one on a segment of
+/// A (its centroid is then the point). Surfaces apart (or curved away from each
+/// other around a contact) need none, and a point given is checked in any case.
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `inside`), `HYCON_ERROR_INVALID_ARGUMENT` (an
 /// unknown pair, a non-finite point, one beyond the ends of the A polyline, one on its outward
@@ -1318,7 +1320,9 @@ pub unsafe extern "C" fn hycon_host_set_elements(
 /// equations last) and read the flexibility off the factor, or build the flexibility from
 /// batched solves through its callback. `options` NULL means the defaults.
 ///
-/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` (no pair, no stiffness or solver given),
+/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` (no pair, no stiffness or solver given, a pair
+/// whose polylines run the same way or lie back to back, a pair whose surfaces touch wherever
+/// they are near each other without `hycon_host_set_pair_inside`, bad options),
 /// `HYCON_ERROR_SINGULAR` (the CSR matrix is not positive definite: a body not held),
 /// `HYCON_ERROR_CALLBACK` (the solver failed or returned non-finite values).
 ///

@@ -43,8 +43,10 @@ pub(super) fn retryable(e: &Error) -> bool {
     )
 }
 
-/// Everything an increment may change in the analysis (besides caches that are exact
-/// functions of `K` and timings), restored when a cut-back increment fails.
+/// Everything an increment may change in the analysis (besides timings and the caches of `K`'s
+/// responses), restored when a cut-back increment fails. The node flexibility is not copied
+/// (it can be large, and only grows with exact values) unless the pairing was widened, when it
+/// is rebuilt (see [`ContactAnalysis::restore`]).
 struct Snapshot {
     qc: Vec<f64>,
     surfaces: Vec<ContactSurface>,
@@ -61,7 +63,6 @@ struct Snapshot {
     plate: Option<Plate>,
     loads: Vec<LoadSolve>,
     field: OnceLock<(Vec<f64>, f64)>,
-    node_flexibility: NodeFlexibility,
 }
 
 /// The start and the target of an increment, interpolated.
@@ -115,11 +116,16 @@ impl ContactAnalysis {
             plate: self.plate.clone(),
             loads: self.loads.clone(),
             field: self.field.clone(),
-            node_flexibility: self.node_flexibility.clone(),
         }
     }
 
+    /// Put back what [`snapshot`](Self::snapshot) kept. If a sub-increment widened the pairing
+    /// (small kinematics, see `widen_pairing`), the node flexibility may hold directions of
+    /// the wider pairing: it is emptied, to be rebuilt as nodes close.
     fn restore(&mut self, s: Snapshot) {
+        if s.reach != self.reach {
+            self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
+        }
         let recovered = self.field.take().map_or(0.0, |f| f.1);
         self.timings.recovery += recovered;
         self.qc = s.qc;
@@ -137,7 +143,6 @@ impl ContactAnalysis {
         self.plate = s.plate;
         self.loads = s.loads;
         self.field = s.field;
-        self.node_flexibility = s.node_flexibility;
     }
 
     /// The interpolation between the last converged state and the target `(f, qp, control)`.
@@ -203,7 +208,11 @@ impl ContactAnalysis {
             } else {
                 reached + step
             };
-            let (f_s, qp_s, control_s) = path.at(next);
+            let (f_s, mut qp_s, control_s) = path.at(next);
+            if let Some(control) = control_s {
+                // a force-controlled plate direction's motion is solved for, not prescribed
+                self.drive_plate(&mut qp_s, control);
+            }
             self.sub_increment = info.sub_increments + 1;
             // every sub-increment is increment number `info.increment`
             self.increment = info.increment - 1;
