@@ -616,7 +616,8 @@ pub struct ContactAnalysis {
     /// Seconds of displacement recoveries not kept in `field` (displacement increments).
     recovery: Mutex<f64>,
     /// Recent load solves, reused when a new load is a combination of their loads.
-    loads: Vec<LoadSolve>,
+    /// (Shared, so that the cutback's snapshot copies no vector.)
+    loads: Vec<std::sync::Arc<LoadSolve>>,
     /// Converged node data, per pair, per A node.
     nodes: Vec<Vec<NodeData>>,
     /// The contact geometry of every pair in the reference configuration (the frozen pairing

@@ -43,15 +43,22 @@ pub(super) fn retryable(e: &Error) -> bool {
     )
 }
 
-/// Everything an increment may change in the analysis (besides timings and the caches of `K`'s
-/// responses), restored when a cut-back increment fails. The node flexibility is not copied
-/// (it can be large, and only grows with exact values) unless the pairing was widened, when it
-/// is rebuilt (see [`ContactAnalysis::restore`]).
-struct Snapshot {
-    qc: Vec<f64>,
-    surfaces: Vec<ContactSurface>,
-    reference: Vec<ContactSurface>,
+/// What a failed try may change in the analysis besides timings and the caches of `K`'s
+/// responses (the load solves kept, and the pairing when it is widened), taken before the
+/// first try: no vector is copied (the load solves are shared, and the displacement field is
+/// moved out, nothing reading it during an increment).
+struct Before {
+    loads: Vec<std::sync::Arc<LoadSolve>>,
     reach: Vec<f64>,
+    reference: Vec<ContactSurface>,
+    surfaces: Vec<ContactSurface>,
+    field: OnceLock<(Vec<f64>, f64)>,
+}
+
+/// The rest of the state a converged sub-increment changes, taken when the first try failed
+/// (which left it as it was).
+struct Converging {
+    qc: Vec<f64>,
     nodes: Vec<Vec<NodeData>>,
     converged: Option<Converged>,
     previous: Option<Converged>,
@@ -61,8 +68,6 @@ struct Snapshot {
     increment: usize,
     records: usize,
     plate: Option<Plate>,
-    loads: Vec<LoadSolve>,
-    field: OnceLock<(Vec<f64>, f64)>,
 }
 
 /// The start and the target of an increment, interpolated.
@@ -99,12 +104,19 @@ impl Path<'_> {
 }
 
 impl ContactAnalysis {
-    fn snapshot(&self) -> Snapshot {
-        Snapshot {
-            qc: self.qc.clone(),
-            surfaces: self.surfaces.clone(),
-            reference: self.reference.clone(),
+    fn before(&mut self) -> Before {
+        Before {
+            loads: self.loads.clone(),
             reach: self.reach.clone(),
+            reference: self.reference.clone(),
+            surfaces: self.surfaces.clone(),
+            field: std::mem::take(&mut self.field),
+        }
+    }
+
+    fn converging(&self) -> Converging {
+        Converging {
+            qc: self.qc.clone(),
             nodes: self.nodes.clone(),
             converged: self.converged.clone(),
             previous: self.previous.clone(),
@@ -114,35 +126,46 @@ impl ContactAnalysis {
             increment: self.increment,
             records: self.records.len(),
             plate: self.plate.clone(),
-            loads: self.loads.clone(),
-            field: self.field.clone(),
         }
     }
 
-    /// Put back what [`snapshot`](Self::snapshot) kept. If a sub-increment widened the pairing
-    /// (small kinematics, see `widen_pairing`), the node flexibility may hold directions of
-    /// the wider pairing: it is emptied, to be rebuilt as nodes close.
-    fn restore(&mut self, s: Snapshot) {
-        if s.reach != self.reach {
+    /// Put back what [`before`](Self::before) took. If a try widened the pairing (small
+    /// kinematics, see `widen_pairing`), the node flexibility may hold directions of the wider
+    /// pairing: it is emptied, to be rebuilt as nodes close.
+    fn restore_before(&mut self, b: Before) {
+        if b.reach != self.reach {
             self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
         }
-        let recovered = self.field.take().map_or(0.0, |f| f.1);
-        self.timings.recovery += recovered;
-        self.qc = s.qc;
-        self.surfaces = s.surfaces;
-        self.reference = s.reference;
-        self.reach = s.reach;
-        self.nodes = s.nodes;
-        self.converged = s.converged;
-        self.previous = s.previous;
-        self.settled = s.settled;
-        self.largest_motion = s.largest_motion;
-        self.largest_component_motion = s.largest_component_motion;
-        self.increment = s.increment;
-        self.records.truncate(s.records);
-        self.plate = s.plate;
-        self.loads = s.loads;
-        self.field = s.field;
+        self.loads = b.loads;
+        self.reach = b.reach;
+        self.reference = b.reference;
+        self.surfaces = b.surfaces;
+        if let Some((_, seconds)) = self.field.take() {
+            self.timings.recovery += seconds;
+        }
+        self.field = b.field;
+    }
+
+    /// Keep the result of a converged increment: the field moved out by
+    /// [`before`](Self::before) belongs to the state before it (its recovery time is counted,
+    /// as [`finish`](Self::finish) counts it).
+    fn forget_before(&mut self, b: Before) {
+        if let Some((_, seconds)) = b.field.into_inner() {
+            self.timings.recovery += seconds;
+        }
+    }
+
+    fn restore_converging(&mut self, c: Converging) {
+        self.qc = c.qc;
+        self.nodes = c.nodes;
+        self.converged = c.converged;
+        self.previous = c.previous;
+        self.settled = c.settled;
+        self.largest_motion = c.largest_motion;
+        self.largest_component_motion = c.largest_component_motion;
+        self.increment = c.increment;
+        self.records.truncate(c.records);
+        self.plate = c.plate;
     }
 
     /// The interpolation between the last converged state and the target `(f, qp, control)`.
@@ -191,7 +214,19 @@ impl ContactAnalysis {
             .take_while(|&h| h >= self.options.cutback_min_fraction)
             .last()
             .unwrap_or(1.0);
-        let snapshot = self.snapshot();
+        let before = self.before();
+        // the whole step first: most increments end here
+        let first = self.run_increment(f, qp, control);
+        let cut = matches!(&first, Err(e) if retryable(e) && smallest < 1.0);
+        if !cut {
+            match first {
+                Ok(_) => self.forget_before(before),
+                Err(_) => self.restore_before(before),
+            }
+            return first;
+        }
+        // the first try left the converged state as it was: keep it for a failure below
+        let converging = self.converging();
         let path = self.path(f, qp, control);
         let mut info = IncrementInfo {
             increment: self.increment + 1,
@@ -199,9 +234,9 @@ impl ContactAnalysis {
             active: 0,
             slip: 0,
             sub_increments: 0,
-            cutbacks: 0,
+            cutbacks: 1,
         };
-        let (mut reached, mut step, mut streak) = (0.0f64, 1.0f64, 0);
+        let (mut reached, mut step, mut streak) = (0.0f64, 0.5f64, 0);
         while reached < 1.0 {
             let next = if reached + step >= 1.0 {
                 1.0
@@ -233,15 +268,17 @@ impl ContactAnalysis {
                     (step, streak) = (0.5 * step, 0);
                 }
                 Err(e) => {
-                    self.restore(snapshot);
+                    self.restore_converging(converging);
+                    self.restore_before(before);
                     self.sub_increment = 1;
                     return Err(e);
                 }
             }
         }
-        self.increment = info.increment;
+        self.forget_before(before);
         // the increment spans the whole step: its displacement increment is from the start
-        self.previous = snapshot.converged;
+        self.previous = converging.converged;
+        self.increment = info.increment;
         self.sub_increment = 1;
         Ok(info)
     }
