@@ -840,9 +840,10 @@ impl ContactAnalysis {
         self.refactor_each_iteration = on;
     }
 
-    /// Call `monitor` with every iteration record from now on (`None` removes it). When it
-    /// returns `false` the increment stops with [`Error::Callback`] and the last converged
-    /// state is kept.
+    /// Call `monitor` with every iteration record from now on, also those of the tries the
+    /// automatic cutback halves (see [`IterationRecord::sub_increment`]; `None` removes it).
+    /// When it returns `false` the increment stops with [`Error::Callback`] (not retried) and
+    /// the last converged state is kept.
     pub fn set_monitor(&mut self, monitor: Option<Monitor>) {
         *self
             .monitor

@@ -132,8 +132,10 @@ pub struct HyconIterationRecord {
     pub sub_increment: usize,
 }
 
-/// Called with every iteration record; return 0 to go on, nonzero to stop the increment (it
-/// then fails with `HYCON_ERROR_CALLBACK` and the last converged state is kept). Called on the
+/// Called with every iteration record, also those of the tries the automatic cutback halves
+/// (`record->sub_increment` says which sub-increment a record belongs to); return 0 to go on,
+/// nonzero to stop the increment (it then fails with `HYCON_ERROR_CALLBACK`, not retried, and
+/// the last converged state is kept). Called on the
 /// thread that called `hycon_contact_increment*`. Must not unwind (no C++ exceptions, no
 /// longjmp) through hycon.
 pub type HyconMonitorFn = Option<
