@@ -1404,7 +1404,8 @@ fn check_facing(
 
 /// A point `inside` body A must lie on A's body side (the left) of the A polyline, whose node
 /// positions are `a` in order, beside it rather than beyond its ends (see [`facing::side`]):
-/// then A has its body on its left, and with B facing it ([`check_facing`]) so has B.
+/// then A has its body on its left, and with B facing it (checked when the analysis is
+/// created) so has B.
 ///
 /// # Errors
 /// [`Error::InvalidInput`]: a non-finite point, one beyond the polyline's ends, or one on its
