@@ -131,6 +131,15 @@ fn analysis(
     p: &Problem,
     v: &Variant,
 ) -> std::result::Result<(ContactAnalysis, Vec<usize>), String> {
+    analysis_with(p, v, ContactOptions::default())
+}
+
+/// As [`analysis`], with `options` (their kinematics replaced by the problem's).
+fn analysis_with(
+    p: &Problem,
+    v: &Variant,
+    options: ContactOptions,
+) -> std::result::Result<(ContactAnalysis, Vec<usize>), String> {
     let mut mesh = Mesh::new();
     let lower = block(&mut mesh, 0.0, 0.0, 2.0, 1.0, p.lower, 0);
     let upper = block(&mut mesh, p.left, 1.0 + p.gap, p.width, 1.0, p.upper, 1);
@@ -184,7 +193,7 @@ fn analysis(
     };
     let options = ContactOptions {
         kinematics: p.kinematics,
-        ..ContactOptions::default()
+        ..options
     };
     let analysis = ContactAnalysis::new(model, vec![pair], options).map_err(|e| error_kind(&e))?;
     Ok((analysis, top))

@@ -52,8 +52,9 @@ fn frictional_pressing_on_a_fine_mesh_converges() {
 /// alternate between closing it (a hair of tension) and opening it (a hair of penetration).
 /// The iteration locks such a node open; every increment converges, the friction law holds, and
 /// no open node penetrates by more than `1e-4` of the increment's motion. Without the locks
-/// (`lock_rounds = 0`) the same path fails with a cycling contact set, so this test exercises
-/// the mechanism.
+/// (`lock_rounds = 0`) the automatic cutback settles the path in sub-increments; without both
+/// (`cutback_depth = 0` too) it fails with a cycling contact set, so this test exercises both
+/// mechanisms.
 #[test]
 fn frictional_sliding_in_small_steps_converges() {
     let mu = 0.3;
@@ -68,10 +69,11 @@ fn frictional_sliding_in_small_steps_converges() {
     .build()
     .unwrap();
     let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
-    let run = |lock_rounds: usize| -> hycon::Result<()> {
+    let run = |lock_rounds: usize, cutback_depth: usize| -> hycon::Result<()> {
         // the disk slides 2 half-widths: finite kinematics
         let options = ContactOptions {
             lock_rounds,
+            cutback_depth,
             kinematics: Kinematics::Finite,
             ..ContactOptions::default()
         };
@@ -98,8 +100,12 @@ fn frictional_sliding_in_small_steps_converges() {
         }
         Ok(())
     };
-    run(ContactOptions::default().lock_rounds).unwrap();
-    let err = run(0).unwrap_err();
+    let defaults = ContactOptions::default();
+    run(defaults.lock_rounds, defaults.cutback_depth).unwrap();
+    // without the locks the automatic cutback settles it in sub-increments (0.7.0); without
+    // both, the set cycles
+    run(0, defaults.cutback_depth).unwrap();
+    let err = run(0, 0).unwrap_err();
     assert!(
         matches!(
             err,

@@ -196,6 +196,13 @@ pub struct HostSystem {
     pub stiffness: HostStiffness,
     /// Optionally, the elements along the A polylines, for tractions from element stresses.
     pub elements: Option<HostElements>,
+    /// Per pair, a point inside body A (the multiplier side), or `None`; empty for none at
+    /// all. Where a pair's surfaces touch (within half a segment of each other) the polylines
+    /// alone cannot tell facing surfaces from back-to-back ones (both reversed): such a pair
+    /// needs it, unless [`elements`](Self::elements) has an element on a segment of A (its
+    /// centroid is then taken). A point given is checked to lie on A's body side of its
+    /// polyline (see [`check_a_inside`](crate::contact::iteration::check_a_inside)).
+    pub a_inside: Vec<Option<[f64; 2]>>,
 }
 
 /// Elements of a host along its A polylines (those owning the A segments), with hycon's element
@@ -216,6 +223,44 @@ pub struct HostElements {
     pub nodes: Vec<usize>,
     /// Every node the elements use: id, reference position, equations.
     pub node_table: Vec<HostNode>,
+}
+
+impl HostElements {
+    /// The centroid of the first element that has a segment of the polyline `ids` (host ids)
+    /// as an edge, either way round, if one does: a point inside that element's body, the
+    /// nodes' mean position of a convex element. One pass over the elements.
+    pub fn centroid_beside(&self, ids: &[usize]) -> Option<[f64; 2]> {
+        let segments: std::collections::HashSet<(usize, usize)> = ids
+            .windows(2)
+            .map(|w| (w[0].min(w[1]), w[0].max(w[1])))
+            .collect();
+        let element = self
+            .offsets
+            .windows(2)
+            .map(|w| &self.nodes[w[0]..w[1]])
+            .find(|e| {
+                (0..e.len()).any(|i| {
+                    let (p, q) = (e[i], e[(i + 1) % e.len()]);
+                    segments.contains(&(p.min(q), p.max(q)))
+                })
+            })?;
+        let position = |id: usize| {
+            self.node_table
+                .iter()
+                .find(|n| n.id == id)
+                .map(|n| n.position)
+        };
+        let points: Vec<[f64; 2]> = element
+            .iter()
+            .map(|&n| position(n))
+            .collect::<Option<_>>()?;
+        let k = points.len() as f64;
+        Some(
+            points
+                .iter()
+                .fold([0.0, 0.0], |c, x| [c[0] + x[0] / k, c[1] + x[1] / k]),
+        )
+    }
 }
 
 /// Check host elements as [`ContactAnalysis::host`](super::iteration::ContactAnalysis::host)
@@ -400,6 +445,7 @@ impl Bodies {
             nodes,
             stiffness,
             elements,
+            ..
         } = system;
         let elements = elements
             .map(|e| ElementPatch::new(e, equations))

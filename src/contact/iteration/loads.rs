@@ -17,7 +17,7 @@ pub(super) struct LoadSolve {
 /// Coefficients `c` with `new = sum_i c_i old_i` to round-off (relative 1e-13), if the loads
 /// `old` span `new` without cancellation (`sum |c_i| |old_i| <= 4 |new|`, so that combining
 /// their solutions loses no accuracy).
-pub(super) fn combination(new: &[f64], old: &[LoadSolve]) -> Option<Vec<f64>> {
+pub(super) fn combination(new: &[f64], old: &[std::sync::Arc<LoadSolve>]) -> Option<Vec<f64>> {
     let k = old.len();
     if k == 0 {
         return None;
@@ -141,11 +141,11 @@ impl ContactAnalysis {
         if self.loads.len() == KEPT_LOADS {
             self.loads.remove(0);
         }
-        self.loads.push(LoadSolve {
+        self.loads.push(std::sync::Arc::new(LoadSolve {
             load: load.clone(),
             u0c: u0c.clone(),
             plate_force,
-        });
+        }));
         Ok(Solved {
             u0c,
             plate_force,

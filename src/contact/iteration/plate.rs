@@ -258,11 +258,11 @@ impl ContactAnalysis {
         qp: &[f64],
         control: [PlateControl; 2],
     ) -> Result<IncrementInfo> {
-        let Some(plate) = &self.plate else {
+        if self.plate.is_none() {
             return Err(Error::InvalidInput(
                 "increment_with_plate needs an analysis built with_plate".into(),
             ));
-        };
+        }
         if control.iter().any(|c| match c {
             PlateControl::Displacement(v) | PlateControl::Force(v) => !v.is_finite(),
         }) {
@@ -278,6 +278,17 @@ impl ContactAnalysis {
             )));
         }
         let mut qp = qp.to_vec();
+        self.drive_plate(&mut qp, control);
+        self.cut_increment(f, &qp, Some(control))
+    }
+
+    /// Write the plate's drive into the prescribed values `qp` at its nodes: the displacement
+    /// of a displacement-controlled direction, 0 in a force-controlled one (whose motion is an
+    /// unknown of the contact system). Nothing without a plate.
+    pub(super) fn drive_plate(&self, qp: &mut [f64], control: [PlateControl; 2]) {
+        let Some(plate) = &self.plate else {
+            return;
+        };
         for &node in &plate.nodes {
             for (d, c) in control.iter().enumerate() {
                 qp[dof(node, d)] = match c {
@@ -286,6 +297,5 @@ impl ContactAnalysis {
                 };
             }
         }
-        self.run_increment(f, &qp, Some(control))
     }
 }
