@@ -70,7 +70,7 @@
 //! piece, and every candidate is tested exactly. The cost is near-linear in the number of
 //! segments.
 
-use crate::element::geometry::GAUSS2_UNIT;
+use crate::element::geometry::{GAUSS2_UNIT, edge_normal};
 use crate::error::{Error, Result};
 
 /// B nodes projecting within this fraction of an A segment's length of its end project onto it.
@@ -482,10 +482,9 @@ fn evaluate_impl(
     w.seg_len.clear();
     w.seg_normal.clear();
     for s in a.windows(2) {
-        let d = sub(x[s[1]], x[s[0]]);
-        let h = d[0].hypot(d[1]);
+        let (n, h) = edge_normal(x[s[0]], x[s[1]]);
         w.seg_len.push(h);
-        w.seg_normal.push([d[1] / h, -d[0] / h]);
+        w.seg_normal.push(n);
     }
     // nodes: frame, weight, F^A
     out.nodes.resize_with(na, ContactNode::default);
@@ -495,15 +494,13 @@ fn evaluate_impl(
             if k + 1 < na { w.seg_len[k] } else { 0.0 },
         );
         // sum_e h_e n_e = (x_{k+1} - x_{k-1}) rotated clockwise
-        let d = sub(x[a[(k + 1).min(na - 1)]], x[a[k.saturating_sub(1)]]);
-        let len = d[0].hypot(d[1]);
+        let (n, len) = edge_normal(x[a[k.saturating_sub(1)]], x[a[(k + 1).min(na - 1)]]);
         if len <= 1e-12 * (hl + hr) {
             return Err(Error::InvalidInput(format!(
                 "contact polyline A folds back onto itself at node {} (no nodal normal)",
                 a[k]
             )));
         }
-        let n = [d[1] / len, -d[0] / len];
         node.node = a[k];
         node.normal = n;
         node.tangent = [n[1], -n[0]];

@@ -66,6 +66,7 @@ use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{self, ContactSurface};
 use crate::assembly::dof;
+use crate::element::geometry::edge_normal;
 use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
@@ -1412,9 +1413,7 @@ impl ContactAnalysis {
                     continue;
                 }
                 let (s0, s1) = (xg[w[0]], xg[w[1]]);
-                let d = [s1[0] - s0[0], s1[1] - s0[1]];
-                let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
-                let n = [d[1] / len, -d[0] / len];
+                let (n, _) = edge_normal(s0, s1);
                 // current segment end points (equal to s0, s1 under finite kinematics)
                 let (c0, c1) = (x[w[0]], x[w[1]]);
                 // only B nodes strictly inside the segment are checked here; under small
