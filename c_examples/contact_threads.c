@@ -471,7 +471,7 @@ static void *solve_problem(void *arg) {
     }
     if (check(&job->host, hycon_host_new(&desc, host.n), "hycon_host_new") &&
         check(&job->host,
-              hycon_host_add_pair(desc, &a_nodes, &b_nodes, p->friction, NULL),
+              hycon_host_add_pair(desc, &a_nodes, &b_nodes, p->friction, HYCON_PLANE_STRAIN, 1.0, NULL),
               "host add pair") &&
         check(&job->host, hycon_host_set_solver(desc, host_solve, &host), "set solver"))
         check(&job->host, hycon_contact_new_host(&ch, desc, NULL), "hycon_contact_new_host");

@@ -117,6 +117,7 @@ impl HostSide {
             nodes,
             stiffness,
             elements: None,
+            measures: vec![pair.measure_on(model).unwrap()],
         }
     }
 }

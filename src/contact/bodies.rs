@@ -196,6 +196,12 @@ pub struct HostSystem {
     pub stiffness: HostStiffness,
     /// Optionally, the elements along the A polylines, for tractions from element stresses.
     pub elements: Option<HostElements>,
+    /// The surface measure of each contact pair's A side, in the order of the pairs (its
+    /// thickness in plane analysis, `2 pi r` in axisymmetry; all pairs of one kind): the
+    /// contact integrals are weighted by it, so that the tractions are pressures and the
+    /// contact forces are in the units of the host's stiffness (per thickness, or over the full
+    /// circle).
+    pub measures: Vec<crate::contact::geometry::SurfaceMeasure>,
 }
 
 /// Elements of a host along its A polylines (those owning the A segments), with hycon's element
@@ -400,6 +406,7 @@ impl Bodies {
             nodes,
             stiffness,
             elements,
+            measures: _,
         } = system;
         let elements = elements
             .map(|e| ElementPatch::new(e, equations))
