@@ -43,6 +43,16 @@ pub enum ShapeError {
         /// Local node index (0-based) of the reflex corner.
         node: usize,
     },
+    /// In axisymmetry, a node with a negative radius `x < 0` (beyond round-off of the element
+    /// size): the section must lie on the side `r >= 0` of the axis.
+    #[error("node at local index {node} has a negative radius (axisymmetric: x = r >= 0)")]
+    NegativeRadius {
+        /// Local node index (0-based).
+        node: usize,
+    },
+    /// The formulation or node count is not available for the material's analysis kind.
+    #[error("{0}")]
+    Unsupported(&'static str),
 }
 
 /// The crate-wide error type.

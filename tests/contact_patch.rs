@@ -152,6 +152,7 @@ fn run(case: Case) -> Outcome {
     let (nu_lower, nu_upper) = match case.analysis {
         Analysis::PlaneStrain => (0.2, 0.4),
         Analysis::PlaneStress => (0.15, 0.35),
+        Analysis::Axisymmetric => unreachable!("a plane patch test"),
     };
     let lower_mat = Material::new(3.0, nu_lower, t, case.analysis).unwrap();
     let upper_mat = Material::new(7.0, nu_upper, t, case.analysis).unwrap();
@@ -193,6 +194,7 @@ fn run(case: Case) -> Outcome {
             m.poisson * (1.0 + m.poisson) * P / m.youngs,
         ],
         Analysis::PlaneStress => [-P / m.youngs, m.poisson * P / m.youngs],
+        Analysis::Axisymmetric => unreachable!("a plane patch test"),
     };
     let eps = |m: &Material| strain(m)[0];
     let lateral = |m: &Material| strain(m)[1];

@@ -114,14 +114,22 @@ impl Default for SurfaceMeasure {
 
 impl SurfaceMeasure {
     /// The measure of a surface of analysis kind `analysis` and thickness `thickness`: `t` in
-    /// plane analysis.
+    /// plane analysis, `2 pi r` in axisymmetry (where the thickness must be exactly 1, as for
+    /// an axisymmetric [`Material`]).
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] for a thickness that is not finite, positive and within
-    /// [`SCALE_RANGE`].
+    /// [`Error::InvalidInput`] for a plane thickness that is not finite, positive and within
+    /// [`SCALE_RANGE`], or an axisymmetric one other than 1.
     pub fn new(analysis: Analysis, thickness: f64) -> Result<Self> {
         let m = match analysis {
             Analysis::PlaneStrain | Analysis::PlaneStress => SurfaceMeasure::Plane { thickness },
+            Analysis::Axisymmetric if thickness == 1.0 => SurfaceMeasure::Axisymmetric,
+            Analysis::Axisymmetric => {
+                return Err(Error::InvalidInput(format!(
+                    "axisymmetric thickness must be 1, got {thickness} (the measure is 2 pi r, \
+                     the full circle)"
+                )));
+            }
         };
         m.validate()?;
         Ok(m)
@@ -134,6 +142,7 @@ impl SurfaceMeasure {
             Analysis::PlaneStrain | Analysis::PlaneStress => SurfaceMeasure::Plane {
                 thickness: material.thickness,
             },
+            Analysis::Axisymmetric => SurfaceMeasure::Axisymmetric,
         }
     }
 

@@ -733,8 +733,9 @@ pub unsafe extern "C" fn hycon_contact_options_default(
 /// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `coords`, `elements`,
 /// `materials`, or an array of `elements` with a nonzero length), `HYCON_ERROR_INVALID_ARGUMENT`
 /// (lengths, unknown node ids, non-finite coordinates, unknown kind, misaligned pointers),
-/// `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex
-/// element, named by index).
+/// `HYCON_ERROR_INVALID_MATERIAL` (also materials of different analysis kinds: one model takes
+/// one kind), `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex element, named by
+/// index; in axisymmetry also a node at `x < 0`, Pian-Sumihara or a 5- or 6-node element).
 ///
 /// # Safety
 /// `out` must point to a writable pointer; `coords` NULL or `2 n_nodes` readable doubles;
@@ -1015,17 +1016,19 @@ impl HyconHost {
 /// `HYCON_FIXED` for a dof the host holds at zero), ordered with its body on the left. A node
 /// in several pairs must be given the same coordinates and equations each time. `friction >= 0`
 /// is the Coulomb coefficient. `analysis` and `thickness` are those of the A side's elements
-/// (`HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS` and its thickness `t`): the contact integrals
-/// are weighted by A's surface measure `t ds`, so the tractions are pressures (force per area)
-/// and the contact forces are in the units of the host's stiffness (which carries `t`). All
-/// pairs of a host share one analysis kind. The pair's index is written to `index` unless it
+/// (`HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS` and its thickness `t`, or
+/// `HYCON_AXISYMMETRIC` and 1): the contact integrals are weighted by A's surface measure,
+/// `t ds` or `2 pi r ds` (the full circle), so the tractions are pressures (force per area)
+/// and the contact forces are in the units of the host's stiffness (which carries `t`, or is
+/// over the full circle). All pairs of a host share one analysis kind. The pair's index is written to `index` unless it
 /// is NULL. The arrays are copied; on an error the host is unchanged.
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
 /// `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
 /// fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
 /// a bad friction coefficient, an unknown analysis kind or one other than the host's earlier
-/// pairs', a thickness that is not finite and positive, a misaligned pointer).
+/// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), a misaligned
+/// pointer).
 ///
 /// # Safety
 /// `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
