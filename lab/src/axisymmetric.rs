@@ -336,3 +336,279 @@ impl StackedCylinders {
         Ok(StackedScene { model, pair })
     }
 }
+
+/// Hertz's sphere on a half-space: `a = (3 P R / (4 E*))^(1/3)`, `p0 = 3 P / (2 pi a^2)`,
+/// `p(r) = p0 sqrt(1 - r^2 / a^2)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HertzSphere {
+    /// Contact radius `a`.
+    pub radius: f64,
+    /// Peak pressure `p0`.
+    pub peak: f64,
+}
+
+impl HertzSphere {
+    /// The closed form for load `p` (full circle), sphere radius `r`, effective modulus `e_star`.
+    pub fn new(p: f64, r: f64, e_star: f64) -> Self {
+        let a = (3.0 * p * r / (4.0 * e_star)).cbrt();
+        HertzSphere {
+            radius: a,
+            peak: 3.0 * p / (2.0 * std::f64::consts::PI * a * a),
+        }
+    }
+
+    /// Pressure at radius `r` (0 outside the contact).
+    pub fn pressure(&self, r: f64) -> f64 {
+        let s = 1.0 - (r / self.radius).powi(2);
+        if s > 0.0 { self.peak * s.sqrt() } else { 0.0 }
+    }
+}
+
+/// A sphere (radius `R`) pressed onto a half-space, axisymmetric: the sphere as the quarter
+/// disk `r >= 0` of the meridian (the lower half of [`generate::half_disk_with`] cut at the
+/// axis), its flat top `z = R` moved down by the approach; the half-space as the cylinder
+/// `0 <= r <= 4R`, `-4R <= z <= 0`, held at its bottom. Both meshes graded 2:1 toward the
+/// contact zone (`r <= 1.5 a`) with quadrilaterals only (`Transition::Quads`, the axisymmetric
+/// hybrid element takes 4 nodes), element size `h = a / n` there, 16 cells per size band. The
+/// axis nodes are held radially. A = the block's top (multipliers), B = the sphere's surface;
+/// frictionless.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereOnBlock {
+    /// Elements per target contact radius.
+    pub elements_per_radius: usize,
+    /// `R / a` of the target contact radius.
+    pub radius_over_contact: f64,
+    /// `E_sphere / E_block` (`E_block = 1`, `nu = 0.3` both).
+    pub modulus_ratio: f64,
+}
+
+/// A built [`SphereOnBlock`].
+#[derive(Debug, Clone)]
+pub struct SphereScene {
+    /// Block then sphere.
+    pub model: Model,
+    /// Block top (A) against the sphere's surface (B).
+    pub pair: ContactPair,
+    /// The sphere's top face nodes (axially prescribed).
+    pub top: Vec<usize>,
+    /// Effective modulus `E*`.
+    pub e_star: f64,
+    /// Target contact radius (`R = 1`).
+    pub target: f64,
+}
+
+/// The quarter `x >= 0` of a mesh symmetric about `x = 0` with element edges along it: its
+/// elements with every node at `x >= 0`, nodes renumbered; node sets `"arc"` and `"top"`: the
+/// chains of the kept edges of those edge sets, in order.
+fn right_half(m: &Mesh) -> Mesh {
+    let mut out = Mesh::new();
+    let mut new = vec![usize::MAX; m.n_nodes()];
+    for e in 0..m.n_elements() {
+        let nodes = m.element(e);
+        // the generator's nodes on x = 0 sit there to round-off (1e-16): snapped onto the axis
+        let snap = 1e-12;
+        if nodes.iter().any(|&i| m.nodes[i][0] < -snap) {
+            continue;
+        }
+        let ids: Vec<usize> = nodes
+            .iter()
+            .map(|&i| {
+                if new[i] == usize::MAX {
+                    let [x, y] = m.nodes[i];
+                    new[i] = out.push_node([if x.abs() <= snap { 0.0 } else { x }, y]);
+                }
+                new[i]
+            })
+            .collect();
+        out.push_element(&ids, m.element_material[e]);
+    }
+    for set in ["arc", "top"] {
+        let kept: Vec<[usize; 2]> = m.edge_sets[set]
+            .iter()
+            .filter(|e| e.iter().all(|&i| new[i] != usize::MAX))
+            .map(|e| e.map(|i| new[i]))
+            .collect();
+        out.node_sets.insert(set.into(), chain(&kept));
+    }
+    out
+}
+
+impl SphereOnBlock {
+    /// Build the scene (`R = 1`).
+    pub fn build(&self) -> Result<SphereScene> {
+        let n = self.elements_per_radius as f64;
+        let a = 1.0 / self.radius_over_contact;
+        let h = a / n;
+        let w = 4.0;
+        let layers = 16;
+        let zone = 1.5 * a;
+        let block_grading = [generate::Grading::toward_line(
+            [0.0, 0.0],
+            [zone, 0.0],
+            h,
+            layers,
+        )];
+        let block = generate::graded_rectangle_with(
+            0.0,
+            -w,
+            [w, w],
+            [1, 1],
+            &block_grading,
+            generate::Transition::Quads,
+        );
+        let disk_grading = [generate::Grading::toward_line(
+            [-zone, 0.0],
+            [zone, 0.0],
+            h,
+            layers,
+        )];
+        let sphere = right_half(&generate::half_disk_with(
+            1.0,
+            &disk_grading,
+            generate::Transition::Quads,
+        ));
+        let block_material = Material::new(1.0, 0.3, 1.0, Analysis::Axisymmetric)?;
+        let sphere_material = Material::new(self.modulus_ratio, 0.3, 1.0, Analysis::Axisymmetric)?;
+        let mut mesh = Mesh::new();
+        mesh.append(&block, 0, "block.");
+        mesh.append(&sphere, 1, "sphere.");
+        let within = |set: &str, hi: f64, mesh: &Mesh| -> Vec<usize> {
+            mesh.node_sets[set]
+                .iter()
+                .copied()
+                .filter(|&i| mesh.nodes[i][0] <= hi)
+                .collect()
+        };
+        let pair = ContactPair {
+            a: within("block.top", zone + 0.5 * a, &mesh),
+            b: within("sphere.arc", zone + a, &mesh),
+            friction: 0.0,
+        };
+        let top = mesh.node_sets["sphere.top"].clone();
+        let bottom: Vec<usize> = (0..mesh.n_nodes())
+            .filter(|&i| mesh.nodes[i][1] == -w)
+            .collect();
+        let axis: Vec<usize> = (0..mesh.n_nodes())
+            .filter(|&i| mesh.nodes[i][0] == 0.0)
+            .collect();
+        let mut model = Model::new(
+            mesh,
+            vec![block_material, sphere_material],
+            Formulation::Hybrid,
+        );
+        model.fix_dir(&bottom, 1, 0.0)?;
+        model.fix_dir(&axis, 0, 0.0)?;
+        model.fix_dir(&top, 1, 0.0)?;
+        let e_star = 1.0
+            / (1.0 / block_material.effective_modulus()
+                + 1.0 / sphere_material.effective_modulus());
+        Ok(SphereScene {
+            model,
+            pair,
+            top,
+            e_star,
+            target: a,
+        })
+    }
+}
+
+/// The sphere's contact pressure against Hertz at the same load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereComparison {
+    /// Total normal load `P` (full circle, from the contact forces on A).
+    pub load: f64,
+    /// Hertz at that load.
+    pub hertz: HertzSphere,
+    /// Peak pressure read at the axis: the multiplier of the node at `r = 0`.
+    pub peak: f64,
+    /// Peak pressure from the moments on `r dr`: for Hertz `M1 = integral p r dr = p0 a^2 / 3`,
+    /// so `p0 = 3 M1 / a^2 = 6 M1^2 / (5 M3)` with `a` from [`radius`](Self::radius) (the same
+    /// as `3 P / (2 pi a^2)`, `P = 2 pi M1`).
+    pub peak_from_moments: f64,
+    /// Contact radius from the pressure's moments on `r dr`: for Hertz
+    /// `integral p r^3 dr / integral p r dr = 2 a^2 / 5`, so `a = sqrt(5 M3 / (2 M1))`.
+    pub radius: f64,
+    /// `||p_h - p_H|| / ||p_H||` in L2 over `r dr` (the surface measure), `p_h` linear
+    /// between the A nodes.
+    pub l2_error: f64,
+    /// Nodes in contact.
+    pub active: usize,
+}
+
+/// 5-point Gauss-Legendre on [0, 1]: (abscissa, weight).
+const GAUSS5: [(f64, f64); 5] = [
+    (0.046_910_077_030_668, 0.118_463_442_528_095),
+    (0.230_765_344_947_158, 0.239_314_335_249_683),
+    (0.5, 0.284_444_444_444_444_4),
+    (0.769_234_655_052_842, 0.239_314_335_249_683),
+    (0.953_089_922_969_332, 0.118_463_442_528_095),
+];
+
+impl SphereScene {
+    /// The contact analysis.
+    pub fn analysis(&self, options: ContactOptions) -> Result<ContactAnalysis> {
+        ContactAnalysis::new(self.model.clone(), vec![self.pair.clone()], options)
+    }
+
+    /// Prescribed values: the sphere's top moved down by `approach`.
+    pub fn prescribed(&self, approach: f64) -> Vec<f64> {
+        let mut qp = self.model.prescribed_values();
+        for &n in &self.top {
+            qp[2 * n + 1] = -approach;
+        }
+        qp
+    }
+
+    /// Hertz's approach `a^2 / R` of the target contact radius.
+    pub fn hertz_approach(&self) -> f64 {
+        self.target * self.target
+    }
+
+    /// Compare the converged multipliers with Hertz at the converged load (small kinematics:
+    /// positions are the reference ones).
+    pub fn compare(&self, analysis: &ContactAnalysis) -> Result<SphereComparison> {
+        let nodes = analysis.node_results(0)?;
+        let load: f64 = nodes
+            .iter()
+            .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+            .sum();
+        let hertz = HertzSphere::new(load, 1.0, self.e_star);
+        let mut points: Vec<[f64; 2]> = nodes
+            .iter()
+            .map(|n| [self.model.mesh.nodes[n.node][0], -n.tn])
+            .collect();
+        points.sort_by(|u, v| u[0].total_cmp(&v[0]));
+        let peak = points[0][1];
+        // moments and the L2 error on r dr, exact for the piecewise-linear p_h (5-point Gauss,
+        // degree 9) and split at r = a for Hertz's square-root edge
+        let (mut m1, mut m3, mut num, mut den) = (0.0, 0.0, 0.0, 0.0);
+        for w in points.windows(2) {
+            let ([ra, pa], [rb, pb]) = (w[0], w[1]);
+            let mut cuts = vec![ra];
+            if ra < hertz.radius && hertz.radius < rb {
+                cuts.push(hertz.radius);
+            }
+            cuts.push(rb);
+            for c in cuts.windows(2) {
+                for (g, wt) in GAUSS5 {
+                    let r = c[0] + g * (c[1] - c[0]);
+                    let ph = pa + (r - ra) / (rb - ra) * (pb - pa);
+                    let d = wt * (c[1] - c[0]) * r;
+                    m1 += d * ph;
+                    m3 += d * ph * r * r;
+                    num += d * (ph - hertz.pressure(r)).powi(2);
+                    den += d * hertz.pressure(r).powi(2);
+                }
+            }
+        }
+        Ok(SphereComparison {
+            load,
+            hertz,
+            peak,
+            peak_from_moments: 1.2 * m1 * m1 / m3,
+            radius: (2.5 * m3 / m1).sqrt(),
+            l2_error: (num / den).sqrt(),
+            active: nodes.iter().filter(|n| n.tn < 0.0).count(),
+        })
+    }
+}
