@@ -1630,6 +1630,15 @@ mod tests {
         );
         let e = check_measures(&[plane(-1.0)], 1).unwrap_err().to_string();
         assert!(e.contains("thickness"), "{e}");
+        // axisymmetric: the measure is 2 pi r, the thickness must be 1
+        let axi = SurfaceMeasure::new(Analysis::Axisymmetric, 1.0).unwrap();
+        assert_eq!(axi, SurfaceMeasure::Axisymmetric);
+        let e = SurfaceMeasure::new(Analysis::Axisymmetric, 2.0)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("2 pi r"), "{e}");
+        let m = Material::new(1.0, 0.3, 1.0, Analysis::Axisymmetric).unwrap();
+        assert_eq!(SurfaceMeasure::of(&m), SurfaceMeasure::Axisymmetric);
     }
 
     /// Options and pairs are checked in the core, so a Rust caller gets the same errors as a C
