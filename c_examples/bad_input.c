@@ -334,6 +334,41 @@ static bool test_status_names(void) {
     return true;
 }
 
+/* Axisymmetric mode (HYCON_AXISYMMETRIC): a ring element on the axis works and its stress has 4
+ * components (exactly 4 written); a thickness other than 1, Pian-Sumihara, a 5-node element
+ * and a node at r < 0 are rejected, outputs untouched. */
+static bool test_axisymmetric(void) {
+    static const HyconMaterial axi = {1000.0, 0.4999, 1.0, HYCON_AXISYMMETRIC};
+    static const double ring[8] = {0, 0, 1, 0, 1, 1, 0, 1}; /* two nodes on the axis */
+    static const double q[8] = {0, 0, 1e-3, 0, 1e-3, 0, 0, 0};
+    static const double five[10] = {1, 0, 1.5, 0, 2, 0, 2, 1, 1, 1};
+    static const double left[8] = {-1, 0, 1, 0, 1, 1, -1, 1};
+    HyconMaterial thick = axi;
+    double k[HYCON_MAX_DOF * HYCON_MAX_DOF], s[5];
+    const size_t len = HYCON_MAX_DOF * HYCON_MAX_DOF;
+    size_t count = 0;
+    EXPECT(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, ring, &axi, k, 64) == HYCON_OK);
+    EXPECT(isfinite(k[0]) && k[0] > 0.0);
+    fill(s, 5);
+    EXPECT(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, ring, &axi, q, 0.5, 0.5, s) ==
+           HYCON_OK);
+    EXPECT(isfinite(s[0]) && isfinite(s[3]) && s[4] == sentinel);
+    EXPECT(hycon_element_stress_components(&axi, &count) == HYCON_OK && count == 4);
+    EXPECT(hycon_element_stress_components(&steel, &count) == HYCON_OK && count == 3);
+    fill(k, len);
+    thick.thickness = 2.0;
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, ring, &thick, k, len),
+                     HYCON_ERROR_INVALID_MATERIAL, "2 pi r"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, 4, ring, &axi, k, len),
+                     HYCON_ERROR_BAD_ELEMENT, "axisymmetric"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 5, five, &axi, k, len),
+                     HYCON_ERROR_BAD_ELEMENT, "4-node elements only"));
+    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, left, &axi, k, len),
+                     HYCON_ERROR_BAD_ELEMENT, "negative radius"));
+    EXPECT(untouched(k, len));
+    return true;
+}
+
 int main(void) {
     static const struct {
         const char *name;
@@ -352,6 +387,7 @@ int main(void) {
         {"message_protocol", test_message_protocol},
         {"stress_routines", test_stress_routines},
         {"status_names", test_status_names},
+        {"axisymmetric", test_axisymmetric},
     };
     size_t i, n = sizeof tests / sizeof tests[0];
     int failures = 0;

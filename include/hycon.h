@@ -1069,7 +1069,8 @@ HyconStatus hycon_element_stiffness(HyconElementKind kind,
 // suffices.
 //
 // Hybrid elements evaluate their assumed stress field `P beta` with `beta = H^-1 G q`; Q4
-// evaluates `D B q` (not finite on the axis `r = 0` in axisymmetry). The point should lie in the
+// evaluates `D B q` (on the axis `r = 0` in axisymmetry with `eps_theta = du_r / dr`, the limit
+// when `u_r = 0` there, as it must be prescribed). The point should lie in the
 // element; outside it the value is an extrapolation (a non-finite result is reported as
 // `HYCON_ERROR_INVALID_ARGUMENT`).
 //

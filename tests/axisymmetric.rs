@@ -268,7 +268,11 @@ fn patch_test_constant_stress_is_exact() {
                     let c = mesh.nodes[mesh.element(e)[2]];
                     let centre = field.at_centre_full();
                     let near = field.at_full([0.9 * c[0] + 0.05, 0.9 * c[1] + 0.05]);
-                    for got in [centre, near] {
+                    // on the axis (the left edge's midpoint of the elements touching it): finite
+                    // and exact, Q4 with the limit eps_theta = du_r / dr
+                    let [a, d] = [0, 3].map(|i| mesh.nodes[mesh.element(e)[i]]);
+                    let on_axis = (a[0] == 0.0).then(|| field.at_full([0.0, 0.5 * (a[1] + d[1])]));
+                    for got in [Some(centre), Some(near), on_axis].into_iter().flatten() {
                         let err = (0..4).map(|i| (got[i] - s[i]).abs()).fold(0.0, f64::max);
                         assert!(err < 1e-9, "{f:?} {name} nu = {nu} element {e}: {got:?}");
                     }

@@ -57,7 +57,10 @@ use nalgebra::{SMatrix, SVector};
 pub const N_BETA: usize = 7;
 
 /// Strain-displacement matrix `B` (4 x 8, rows `eps_r, eps_z, gamma_rz, eps_theta`), `det J`
-/// and the physical point at `(xi, eta)`. The hoop row is `N_i / r` (`r > 0` at interior points).
+/// and the physical point at `(xi, eta)`. The hoop row is `N_i / r` (`r > 0` at interior points,
+/// where the element matrices are integrated). On the axis (`r` below round-off of the element
+/// size: stress evaluation only) it is the limit `dN_i / dr`, which holds when `u_r = 0` there
+/// (`u_r / r -> du_r / dr`), as the axis nodes must be prescribed.
 pub fn strain_displacement(
     map: &Bilinear,
     xi: f64,
@@ -68,8 +71,13 @@ pub fn strain_displacement(
     let p = map.point(xi, eta);
     let mut b = SMatrix::<f64, 4, 8>::zeros();
     b.fixed_rows_mut::<3>(0).copy_from(&plane);
+    let on_axis = p[0] <= 1e-12 * det.abs().sqrt();
     for (i, ni) in n.iter().enumerate() {
-        b[(3, 2 * i)] = ni / p[0];
+        b[(3, 2 * i)] = if on_axis {
+            plane[(0, 2 * i)]
+        } else {
+            ni / p[0]
+        };
     }
     (b, det, p)
 }
@@ -90,7 +98,8 @@ pub fn q4_stiffness_into(map: &Bilinear, material: &Material, out: &mut ElementM
 }
 
 /// Q4 stress `D B q` (`[sigma_r, sigma_z, tau_rz, sigma_theta]`) at `(xi, eta)` from the 8
-/// element dofs `q` (not finite on the axis, where `B`'s hoop row is).
+/// element dofs `q` (on the axis with the limit `eps_theta = du_r / dr`, see
+/// [`strain_displacement`]).
 pub fn q4_stress(map: &Bilinear, material: &Material, q: &[f64], xi: f64, eta: f64) -> [f64; 4] {
     let (b, _, _) = strain_displacement(map, xi, eta);
     let s =
