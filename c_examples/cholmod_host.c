@@ -372,7 +372,7 @@ int main(int argc, char **argv) {
 
     /* path 1: the solve callback (CHOLMOD) */
     CHECK(hycon_host_new(&host_cb, n_eq));
-    CHECK(hycon_host_add_pair(host_cb, &a_nodes, &b_nodes, 0.0, NULL));
+    CHECK(hycon_host_add_pair(host_cb, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0, NULL));
     CHECK(hycon_host_set_solver(host_cb, cholmod_solve_cb, chol));
     CHECK(hycon_contact_new_host(&c_cb, host_cb, &options));
     hycon_host_free(host_cb); /* the analysis is independent of the description */
@@ -384,7 +384,7 @@ int main(int argc, char **argv) {
     for (k = 0; k <= n_eq; ++k) row_ptr[k] = (size_t)((int *)kff->p)[k];
     for (k = 0; k < row_ptr[n_eq]; ++k) columns[k] = (size_t)((int *)kff->i)[k];
     CHECK(hycon_host_new(&host_csr, n_eq));
-    CHECK(hycon_host_add_pair(host_csr, &a_nodes, &b_nodes, 0.0, NULL));
+    CHECK(hycon_host_add_pair(host_csr, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0, NULL));
     CHECK(hycon_host_set_csr(host_csr, row_ptr, columns, (const double *)kff->x,
                              HYCON_CSR_LOWER));
     { /* the host's elements (as hycon's Q4), so that hycon also gives the tractions from the

@@ -332,8 +332,8 @@ static HyconHost *make_host(const Host *h) {
     int64_t a_eq[2 * NA], b_eq[2 * NB];
     host_pair_arrays(h, a_xy, a_eq, b_xy, b_eq);
     if (hycon_host_new(&d, h->n) != HYCON_OK) return NULL;
-    if (hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), FRICTION, NULL) !=
-            HYCON_OK ||
+    if (hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), FRICTION,
+                            HYCON_PLANE_STRAIN, 1.0, NULL) != HYCON_OK ||
         hycon_host_set_pair_inside(d, 0, upper_inside) != HYCON_OK) {
         hycon_host_free(d);
         return NULL;
@@ -537,10 +537,10 @@ static bool test_null_views(void) {
     ok = ok && STATUS_FN(hycon_model_add_pair, (model, LINE(pair_a, NA), NULL, 0.1, &index),
                          HYCON_ERROR_NULL_POINTER, "b is NULL");
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, NULL, HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, NULL, HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_NULL_POINTER, "a is NULL");
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), NULL, 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), NULL, 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_NULL_POINTER, "b is NULL");
     /* a misaligned optional output is rejected like a required one, and nothing is added */
     ok = ok && STATUS_FN(hycon_model_add_pair,
@@ -1635,12 +1635,43 @@ static bool test_host_reversed_a(void) {
         r_eq[2 * i + 1] = a_eq[2 * (NA - 1 - i) + 1];
     }
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
-    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(a, r_xy, r_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0, NULL),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(a, r_xy, r_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0, HYCON_PLANE_STRAIN, 1.0, NULL),
                       HYCON_OK, NULL);
     ok = ok && STATUS(hycon_host_set_solver(d, host_solve, &host), HYCON_OK, NULL);
     ok = ok && STATUS_FN(hycon_contact_new_host, (&c, d, NULL), HYCON_ERROR_INVALID_ARGUMENT,
                          "A and B run the same way");
     ok = ok && c == MARKER(HyconContact);
+    hycon_host_free(d);
+    return ok;
+}
+
+/* A host pair takes the A side's analysis kind and thickness: an unknown kind, a thickness
+ * that is not finite and positive are rejected, and the host is left unchanged. */
+static bool test_host_pair_measure(void) {
+    HyconHost *d = NULL;
+    double a_xy[2 * NA], b_xy[2 * NB];
+    int64_t a_eq[2 * NA], b_eq[2 * NB];
+    size_t index = 99;
+    bool ok = true;
+    host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
+    EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA),
+                                          HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0, 7, 1.0, &index),
+                      HYCON_ERROR_INVALID_ARGUMENT, "unknown analysis 7");
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA),
+                                          HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0,
+                                          HYCON_PLANE_STRESS, 0.0, &index),
+                      HYCON_ERROR_INVALID_ARGUMENT, "thickness");
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA),
+                                          HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0,
+                                          HYCON_PLANE_STRAIN, NAN, &index),
+                      HYCON_ERROR_INVALID_ARGUMENT, "thickness");
+    ok = ok && index == 99;
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA),
+                                          HOST_NODES(pair_b, b_xy, b_eq, NB), 0.0,
+                                          HYCON_PLANE_STRESS, 2.5, &index),
+                      HYCON_OK, NULL);
+    ok = ok && index == 0;
     hycon_host_free(d);
     return ok;
 }
@@ -1997,22 +2028,22 @@ static bool test_host_add_pair_null_pointers(void) {
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
 #define HOST_NULL(args, part)                                                                  \
     ok = ok && STATUS_FN(hycon_host_add_pair, args, HYCON_ERROR_NULL_POINTER, part)
-    HOST_NULL((NULL, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+    HOST_NULL((NULL, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
               "host is NULL");
-    HOST_NULL((d, HOST_NODES(NULL, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index), "a.ids is NULL");
-    HOST_NULL((d, HOST_NODES(pair_a, NULL, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+    HOST_NULL((d, HOST_NODES(NULL, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index), "a.ids is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, NULL, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
               "a.coords is NULL");
-    HOST_NULL((d, HOST_NODES(pair_a, a_xy, NULL, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, NULL, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
               "a.equations is NULL");
-    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(NULL, b_xy, b_eq, NB), 0.1, &index), "b.ids is NULL");
-    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, NULL, b_eq, NB), 0.1, &index),
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(NULL, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index), "b.ids is NULL");
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, NULL, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
               "b.coords is NULL");
-    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, NULL, NB), 0.1, &index),
+    HOST_NULL((d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, NULL, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
               "b.equations is NULL");
 #undef HOST_NULL
     ok = ok && index == 777;
     /* nothing was added: the good call gets index 0 */
-    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                       HYCON_OK, NULL) &&
          index == 0;
     hycon_host_free(d);
@@ -2028,10 +2059,10 @@ static bool test_host_add_pair_lengths(void) {
     host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(NULL, NULL, NULL, 0), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(NULL, NULL, NULL, 0), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "A polyline has 0 node(s)");
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, 1), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, 1), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "B polyline has 1 node(s)");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -2048,12 +2079,12 @@ static bool test_host_add_pair_non_finite(void) {
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     a_xy[1] = NAN;
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "a.coords[1]");
     a_xy[1] = coords[2 * pair_a[0] + 1];
     b_xy[4] = INFINITY;
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "b.coords[4] = inf is not finite");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -2074,23 +2105,23 @@ static bool test_host_add_pair_not_a_chain(void) {
     a[2] = a[0];
     sprintf(part, "node %u appears twice", (unsigned)a[0]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     /* a node in both polylines */
     memcpy(a, pair_a, sizeof a);
     a[1] = pair_b[3];
     sprintf(part, "node %u is in both polylines", (unsigned)pair_b[3]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     /* a zero-length segment: the second B node on the third */
     b_xy[2] = b_xy[4];
     b_xy[3] = b_xy[5];
     sprintf(part, "segment %u -> %u has zero length", (unsigned)pair_b[1], (unsigned)pair_b[2]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
-    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                       HYCON_ERROR_INVALID_ARGUMENT, "B polyline is not a chain");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -2112,19 +2143,19 @@ static bool test_host_add_pair_unknown_ids(void) {
     bad[3] = (int64_t)host.n;
     sprintf(part, "equation %u is out of range", (unsigned)host.n);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     bad[3] = -2;
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "equation -2 is out of range");
     memcpy(bad, a_eq, sizeof bad);
     bad[2] = b_eq[0]; /* an A dof on a B node's equation */
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, a_xy, bad, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "shares an equation");
     ok = ok && index == 777;
-    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+    ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                       HYCON_OK, NULL) &&
          index == 0;
     /* the same nodes again with other coordinates */
@@ -2132,7 +2163,7 @@ static bool test_host_add_pair_unknown_ids(void) {
     moved[2] += 0.01;
     sprintf(part, "A node %u was given before", (unsigned)pair_a[1]);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, moved, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, &index),
+                         (d, HOST_NODES(pair_a, moved, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), 0.1, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, part);
     ok = ok && index == 0;
     hycon_host_free(d);
@@ -2148,10 +2179,10 @@ static bool test_host_add_pair_bad_friction(void) {
     host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), NAN, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), NAN, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "friction");
     ok = ok && STATUS_FN(hycon_host_add_pair,
-                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), -1.0, &index),
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB), -1.0, HYCON_PLANE_STRAIN, 1.0, &index),
                          HYCON_ERROR_INVALID_ARGUMENT, "friction");
     ok = ok && index == 777;
     hycon_host_free(d);
@@ -2479,6 +2510,7 @@ int main(void) {
     } tests[] = {
         {"options_default", test_options_default},
         {"options_size_and_cutback", test_options_size_and_cutback},
+        {"host_pair_measure", test_host_pair_measure},
         {"model_new_null_pointers", test_model_new_null_pointers},
         {"null_views", test_null_views},
         {"model_new_zero_lengths", test_model_new_zero_lengths},

@@ -14,6 +14,13 @@ if(HYCON_CARGO_FEATURES MATCHES "suitesparse")
   hycon_test(hertz_model_cholmod hertz_model 12 cholmod)
 endif()
 
+# axisymmetric: the shrink fit of two thick tubes through the model API (an initial overlap,
+# Lame's pressure)
+hycon_example(shrink_fit shrink_fit.c C hycon::hycon)
+hycon_test(shrink_fit shrink_fit)
+hycon_valgrind_test(valgrind_shrink_fit shrink_fit 4)
+hycon_asan_test(shrink_fit shrink_fit.c C)
+
 # 4b: a host with its own Q4 elements and CHOLMOD (Debian's libsuitesparse-dev has no CMake or
 # pkg-config file: find the header and the library directly), through the solve callback,
 # checked against the CSR path and the model API

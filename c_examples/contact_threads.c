@@ -472,7 +472,7 @@ static void *solve_problem(void *arg) {
     }
     if (check(&job->host, hycon_host_new(&desc, host.n), "hycon_host_new") &&
         check(&job->host,
-              hycon_host_add_pair(desc, &a_nodes, &b_nodes, p->friction, NULL),
+              hycon_host_add_pair(desc, &a_nodes, &b_nodes, p->friction, HYCON_PLANE_STRAIN, 1.0, NULL),
               "host add pair") &&
         /* the blocks touch: say which side body A (the upper block) is on */
         check(&job->host, hycon_host_set_pair_inside(desc, 0, inside), "host pair inside") &&

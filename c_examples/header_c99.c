@@ -164,8 +164,8 @@ static HyconStatus (*const fn_contact_new)(HyconContact **, const HyconModel *,
 static HyconStatus (*const fn_host_new)(HyconHost **, size_t) = hycon_host_new;
 static void (*const fn_host_free)(HyconHost *) = hycon_host_free;
 static HyconStatus (*const fn_host_add_pair)(HyconHost *, const HyconHostNodes *,
-                                             const HyconHostNodes *, double,
-                                             size_t *) = hycon_host_add_pair;
+                                             const HyconHostNodes *, double, HyconAnalysis,
+                                             double, size_t *) = hycon_host_add_pair;
 static HyconStatus (*const fn_host_set_pair_inside)(HyconHost *, size_t, const double *) =
     hycon_host_set_pair_inside;
 static HyconStatus (*const fn_host_set_csr)(HyconHost *, const size_t *, const size_t *,

@@ -71,7 +71,8 @@ hycon::Result<hycon::Host> make_host() {
     const std::size_t a_nodes[2] = {0, 1}, b_nodes[2] = {2, 3};  // A right to left, B left to right
     const double a_coords[4] = {1.0, 0.0, 0.0, 0.0}, b_coords[4] = {0.0, kGap, 1.0, kGap};
     const std::int64_t a_eq[4] = {0, 1, 2, 3}, b_eq[4] = {4, 5, 6, 7};
-    const auto pair = host->add_pair(a_nodes, a_coords, a_eq, b_nodes, b_coords, b_eq, 0.0);
+    const auto pair = host->add_pair(a_nodes, a_coords, a_eq, b_nodes, b_coords, b_eq, 0.0,
+                                     HYCON_PLANE_STRAIN, 1.0);
     if (!pair) return hycon::Result<hycon::Host>(pair.status());
     // the surfaces lie within half a segment: say which side body A is on (below A)
     const hycon::Status side = host->set_pair_inside(*pair, {0.5, -0.5});

@@ -103,7 +103,7 @@ static HyconHost *hc_host(size_t n_equations, const HyconHostNodes *a,
                           double friction) {
     HyconHost *host = NULL;
     HC(hycon_host_new(&host, n_equations));
-    HC(hycon_host_add_pair(host, a, b, friction, NULL));
+    HC(hycon_host_add_pair(host, a, b, friction, HYCON_PLANE_STRAIN, 1.0, NULL));
     return host;
 }
 

@@ -361,9 +361,10 @@ typedef struct HyconNodeResult {
     HyconNodeState state;
     // Slip direction along `tangent` of A relative to B (+1 or -1) for a slip node, else 0.
     int32_t slip_sign;
-    // Normal traction on A (the multiplier; `< 0` compression, pressure `p = -tn`).
+    // Normal traction on A (the multiplier, force per area for every analysis kind and
+    // thickness; `< 0` compression, pressure `p = -tn`).
     double tn;
-    // Tangential traction on A along `tangent`.
+    // Tangential traction on A along `tangent` (force per area).
     double ts;
     // Nodal normal (A's outward): of the reference configuration under small kinematics, of
     // the converged one under finite kinematics.
@@ -372,9 +373,10 @@ typedef struct HyconNodeResult {
     double tangent[2];
     // Current position (reference position plus the converged displacement).
     double position[2];
-    // Tributary length `integral M_k ds`, measured in the configuration the geometry lives in
-    // (reference under small kinematics, converged under finite): the tractions are per unit
-    // length of it, so `sum -tn * weight` is the normal load only where A is straight.
+    // Tributary measure `integral M_k dS` (`dS = t ds`, A's thickness `t`), measured in the
+    // configuration the geometry lives in (reference under small kinematics, converged under
+    // finite): the tractions are per unit of it (pressures), so `sum -tn * weight` is the
+    // normal load only where A is straight.
     double weight;
     // Weighted normal gap per unit length (`< 0` penetration; infinite where B does not
     // cover the node's support).
@@ -387,7 +389,7 @@ typedef struct HyconNodeResult {
 typedef struct HyconBNodeResult {
     // Node id (the caller's numbering).
     size_t node;
-    // `integral L^B_j ds` over the projected overlap (0 outside it).
+    // `integral L^B_j dS` over the projected overlap (0 outside it; `dS` A's measure).
     double weight;
     // Equivalent nodal contact force on B (x, y).
     double force[2];
@@ -420,7 +422,7 @@ typedef struct HyconTimings {
 typedef struct HyconContactNode {
     // Node id (the caller's numbering).
     size_t node;
-    // `integral M_k ds` over the node's support.
+    // `integral M_k dS` over the node's support (`dS = t ds`, A's surface measure).
     double weight;
     // Fraction of the support covered by B, in [0, 1].
     double coverage;
@@ -428,7 +430,7 @@ typedef struct HyconContactNode {
     double normal[2];
     // Nodal tangent `s_k = (n_y, -n_x)`.
     double tangent[2];
-    // Weighted gap vector `R_C,k = integral M_k (x^A - x^B) ds` (x, y).
+    // Weighted gap vector `R_C,k = integral M_k (x^A - x^B) dS` (x, y).
     double gap[2];
     // `-n_k . R_C,k / covered weight`: normal gap as a length (`< 0` penetration; infinite
     // when nothing is covered).
@@ -438,8 +440,8 @@ typedef struct HyconContactNode {
 // Which body a coupling entry belongs to, one of `HYCON_SIDE_*`.
 typedef int32_t HyconSide;
 
-// One entry of the contact-element matrices: `F^A_kj = integral M_k L^A_j ds` or
-// `F^B_kj = integral M_k L^B_j(x^B) ds` (both >= 0). The constraint row of A node `k` is
+// One entry of the contact-element matrices: `F^A_kj = integral M_k L^A_j dS` or
+// `F^B_kj = integral M_k L^B_j(x^B) dS` (both >= 0; `dS` A's surface measure). The constraint row of A node `k` is
 // `sum_j F^A_kj u_j - sum_j F^B_kj u_j` (per component).
 typedef struct HyconCouplingEntry {
     // Index `k` of the A node within the pair's A polyline.
@@ -789,13 +791,20 @@ void hycon_host_free(struct HyconHost *host);
 // each a `HyconHostNodes` (node ids, reference coordinates, equation numbers with
 // `HYCON_FIXED` for a dof the host holds at zero), ordered with its body on the left. A node
 // in several pairs must be given the same coordinates and equations each time. `friction >= 0`
-// is the Coulomb coefficient. The pair's index is written to `index` unless it is NULL. The
-// arrays are copied; on an error the host is unchanged.
+// is the Coulomb coefficient. `analysis` and `thickness` are those of the A side's elements
+// (`HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS` and its thickness `t`, or
+// `HYCON_AXISYMMETRIC` and 1): the contact integrals are weighted by A's surface measure,
+// `t ds` or `2 pi r ds` (the full circle), so the tractions are pressures (force per area)
+// and the contact forces are in the units of the host's stiffness (which carries `t`, or is
+// over the full circle). All pairs of a host share one analysis kind. The pair's index is written to `index` unless it
+// is NULL. The arrays are copied; on an error the host is unchanged.
 //
 // Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
 // `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
 // fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
-// a bad friction coefficient, a misaligned pointer).
+// a bad friction coefficient, an unknown analysis kind or one other than the host's earlier
+// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), a misaligned
+// pointer).
 //
 // # Safety
 // `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
@@ -804,6 +813,8 @@ HyconStatus hycon_host_add_pair(struct HyconHost *host,
                                 const struct HyconHostNodes *a,
                                 const struct HyconHostNodes *b,
                                 double friction,
+                                HyconAnalysis analysis,
+                                double thickness,
                                 size_t *index);
 
 // Say which side body A of pair `pair` (an index from `hycon_host_add_pair`) is on: `inside`

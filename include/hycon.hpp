@@ -447,11 +447,12 @@ class Host {
     }
 
     // Add a pair: per polyline, node ids, 2 n reference coordinates and 2 n equation numbers
-    // (HYCON_FIXED for a dof held at zero). Returns the pair's index.
+    // (HYCON_FIXED for a dof held at zero); the A side's analysis kind and thickness (the
+    // contact tractions are pressures on A's surface measure). Returns the pair's index.
     Result<std::size_t> add_pair(View<std::size_t> a_nodes, View<double> a_coords,
                                  View<std::int64_t> a_equations, View<std::size_t> b_nodes,
                                  View<double> b_coords, View<std::int64_t> b_equations,
-                                 double friction) {
+                                 double friction, HyconAnalysis analysis, double thickness) {
         if (a_coords.size() != 2 * a_nodes.size() || a_equations.size() != 2 * a_nodes.size() ||
             b_coords.size() != 2 * b_nodes.size() || b_equations.size() != 2 * b_nodes.size())
             return detail::invalid("each polyline needs 2 coordinates and 2 equations per node");
@@ -460,7 +461,8 @@ class Host {
         const HyconHostNodes b = {b_nodes.data(), b_coords.data(), b_equations.data(),
                                   b_nodes.size()};
         std::size_t index = 0;
-        const Status s = Status::from(hycon_host_add_pair(get(), &a, &b, friction, &index));
+        const Status s = Status::from(hycon_host_add_pair(get(), &a, &b, friction, analysis,
+                                                          thickness, &index));
         return Result<std::size_t>(s, index);
     }
 

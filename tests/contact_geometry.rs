@@ -8,9 +8,14 @@
 //! the same scales. The finite-difference check states its own tolerance.
 
 use hycon::Error;
-use hycon::contact::geometry::{ContactNode, ContactSurface, evaluate, evaluate_into};
+use hycon::contact::geometry::{
+    ContactNode, ContactSurface, SurfaceMeasure, evaluate, evaluate_into,
+};
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
+
+/// Plane, unit thickness (the measure of every test here but the measure tests).
+const UNIT: SurfaceMeasure = SurfaceMeasure::Plane { thickness: 1.0 };
 
 const EXACT: f64 = 1e-13;
 const INVARIANT: f64 = 1e-12;
@@ -94,7 +99,7 @@ fn sign_conventions() {
     // A below y = 0 going right to left; B above
     for (gap, name) in [(0.05, "open"), (-0.03, "penetrating")] {
         let (a, b, x) = flat(&[0.0, 1.0, 2.0], &[-0.5, 2.5], gap, 0.0);
-        let s = evaluate(&a, &b, &x, 1.0).unwrap();
+        let s = evaluate(&a, &b, &x, 1.0, UNIT).unwrap();
         for nd in &s.nodes {
             assert_eq!(nd.normal, [0.0, 1.0], "{name}");
             assert_eq!(nd.tangent, [1.0, 0.0], "{name}");
@@ -112,7 +117,7 @@ fn sign_conventions() {
     let (a, _, mut x) = flat(&[0.0, 1.0, 2.0], &[], 0.0, 0.0);
     x.push([2.5, 0.1]);
     x.push([-0.5, 0.1]);
-    let s = evaluate(&a, &[3, 4], &x, 1.0).unwrap();
+    let s = evaluate(&a, &[3, 4], &x, 1.0, UNIT).unwrap();
     for nd in &s.nodes {
         assert_eq!(nd.coverage, 0.0);
         assert_eq!(nd.normal_gap, f64::INFINITY);
@@ -132,7 +137,7 @@ fn nodal_frame_is_length_weighted() {
         [5.0, 5.0],
         [-5.0, 5.0],
     ];
-    let s = evaluate(&[0, 1, 2], &[3, 4], &x, 100.0).unwrap();
+    let s = evaluate(&[0, 1, 2], &[3, 4], &x, 100.0, UNIT).unwrap();
     let m = s.nodes[1].normal;
     let norm = 5f64.sqrt();
     assert!(
@@ -156,7 +161,7 @@ fn node_to_node_fb_equals_fa() {
     let (a, b, x) = flat(&xs, &xs, 0.0, 0.0);
     // the A node at the same place as B node j
     let partner = |j: usize| *a.iter().find(|&&m| x[m] == x[j]).unwrap();
-    let s = evaluate(&a, &b, &x, 1.0).unwrap();
+    let s = evaluate(&a, &b, &x, 1.0, UNIT).unwrap();
     let total: f64 = s.nodes.iter().map(|n| n.weight).sum();
     assert!(close(total, 3.2, EXACT));
     for nd in &s.nodes {
@@ -204,7 +209,7 @@ fn node_to_internode_row_sums_constant_and_linear_gap() {
     for (name, xb) in cases {
         for (g0, slope) in [(0.0, 0.0), (0.013, 0.0), (-0.007, 0.0), (0.004, 0.011)] {
             let (a, b, x) = flat(&xa, &xb, g0, slope);
-            let s = evaluate(&a, &b, &x, 0.5).unwrap();
+            let s = evaluate(&a, &b, &x, 0.5, UNIT).unwrap();
             let total: f64 = s.nodes.iter().map(|n| n.weight).sum();
             assert!(close(total, 1.0, EXACT), "{name}");
             for (k, nd) in s.nodes.iter().enumerate() {
@@ -249,7 +254,7 @@ fn fb_reproduces_linear_fields_of_b() {
     let xa = random_spacing(0.0, 2.0, 7, &mut rng);
     let xb = random_spacing(-0.1, 2.1, 19, &mut rng);
     let (a, b, x) = flat(&xa, &xb, 0.02, 0.0);
-    let s = evaluate(&a, &b, &x, 0.5).unwrap();
+    let s = evaluate(&a, &b, &x, 0.5, UNIT).unwrap();
     let f = |v: f64| 0.3 - 1.7 * v;
     for (k, nd) in s.nodes.iter().enumerate() {
         let (_, fb) = split(nd, &a);
@@ -306,7 +311,7 @@ fn coverage_is_the_exact_covered_fraction() {
             x.len() - 1
         })
         .collect();
-    let s = evaluate(&a, &b, &x, 1.0).unwrap();
+    let s = evaluate(&a, &b, &x, 1.0, UNIT).unwrap();
     let by_x = |v: f64| s.nodes.iter().find(|n| x[n.node][0] == v).unwrap();
     // |g| = 1 on the flanks at x = 3.9 + 0.1 * 0.9 / 4.9 and symmetric
     let xa_ = 3.9 + 0.1 * 0.9 / 4.9;
@@ -377,7 +382,7 @@ fn b_curving_back_picks_the_nearest_facing_hit() {
                 x.len() - 1
             })
             .collect();
-        let s = evaluate(&a, &b, &x, 2.0).unwrap();
+        let s = evaluate(&a, &b, &x, 2.0, UNIT).unwrap();
         for nd in &s.nodes {
             assert_eq!(nd.coverage, 1.0);
             assert!(
@@ -424,7 +429,7 @@ fn switch_between_crossing_sheets_is_exact() {
             x.len() - 1
         })
         .collect();
-    let s = evaluate(&a, &b, &x, 1.0).unwrap();
+    let s = evaluate(&a, &b, &x, 1.0, UNIT).unwrap();
     let g = |v: f64| {
         if v < 0.6 {
             0.2 + 0.1 * v
@@ -545,7 +550,7 @@ fn invariance_under_rigid_motion_and_scaling() {
     let mut rng = Rng(2024);
     for trial in 0..5 {
         let (a, b, x) = wavy_pair(&mut rng);
-        let s = evaluate(&a, &b, &x, 0.2).unwrap();
+        let s = evaluate(&a, &b, &x, 0.2, UNIT).unwrap();
         assert!(
             s.nodes.iter().any(|n| n.normal_gap < 0.0),
             "some penetration"
@@ -557,7 +562,7 @@ fn invariance_under_rigid_motion_and_scaling() {
         );
         let id = [[1.0, 0.0], [0.0, 1.0]];
         let moved: Vec<[f64; 2]> = x.iter().map(|p| [p[0] + 3.7, p[1] - 2.1]).collect();
-        let t = evaluate(&a, &b, &moved, 0.2).unwrap();
+        let t = evaluate(&a, &b, &moved, 0.2, UNIT).unwrap();
         assert_same(
             &s,
             &t,
@@ -573,7 +578,7 @@ fn invariance_under_rigid_motion_and_scaling() {
             .iter()
             .map(|p| [c * p[0] - sn * p[1] + 0.5, sn * p[0] + c * p[1] - 0.25])
             .collect();
-        let t = evaluate(&a, &b, &turned, 0.2).unwrap();
+        let t = evaluate(&a, &b, &turned, 0.2, UNIT).unwrap();
         assert_same(
             &s,
             &t,
@@ -583,7 +588,7 @@ fn invariance_under_rigid_motion_and_scaling() {
             &format!("trial {trial}, rotation"),
         );
         let scaled: Vec<[f64; 2]> = x.iter().map(|p| [1e3 * p[0], 1e3 * p[1]]).collect();
-        let t = evaluate(&a, &b, &scaled, 200.0).unwrap();
+        let t = evaluate(&a, &b, &scaled, 200.0, UNIT).unwrap();
         assert_same(
             &s,
             &t,
@@ -664,7 +669,7 @@ fn coupling_matches_finite_differences_at_zero_gap() {
     let mut rng = Rng(31);
     for trial in 0..3 {
         let (a, b, x, flat) = closed_circle_pair(&mut rng);
-        let base = evaluate(&a, &b, &x, 0.1).unwrap();
+        let base = evaluate(&a, &b, &x, 0.1, UNIT).unwrap();
         let h = 2.0 * (PI / 32.0).sin(); // B's chord; A's segments are 0.1 h to h
         assert!(base.all_covered());
         for nd in &base.nodes {
@@ -682,7 +687,7 @@ fn coupling_matches_finite_differences_at_zero_gap() {
                 for dir in 0..2 {
                     let mut xp = x.clone();
                     xp[j][dir] += eps;
-                    let pert = evaluate(&a, &b, &xp, 0.1).unwrap();
+                    let pert = evaluate(&a, &b, &xp, 0.1, UNIT).unwrap();
                     for (k, (p, q)) in base.nodes.iter().zip(&pert.nodes).enumerate() {
                         let n = p.normal;
                         let fd =
@@ -729,6 +734,263 @@ fn coupling_matches_finite_differences_at_zero_gap() {
 }
 
 // ------------------------------------------------------------------------------------------------
+// The surface measure (plane thickness, axisymmetric 2 pi r)
+// ------------------------------------------------------------------------------------------------
+
+/// Plane, thickness `t`: every integral (weights, covered weights, `R_C`, coupling) is `t` times
+/// the unit-thickness one, to round-off (one product); frames, coverage and the gaps as lengths
+/// do not change. Random non-matching, tilted surfaces.
+#[test]
+fn plane_thickness_scales_every_integral() {
+    let mut rng = Rng(5);
+    for trial in 0..6 {
+        let xa = random_spacing(0.0, 1.0, 5 + trial, &mut rng);
+        let xb = random_spacing(-0.1, 1.05, 3 + 2 * trial, &mut rng);
+        let (a, b, x) = flat(&xa, &xb, 0.02 * (rng.next() - 0.3), 0.03 * rng.next());
+        let t = 0.1 + 4.0 * rng.next();
+        let one = evaluate(&a, &b, &x, 1.0, UNIT).unwrap();
+        let thick = evaluate(&a, &b, &x, 1.0, SurfaceMeasure::Plane { thickness: t }).unwrap();
+        let same = |u: f64, v: f64| (u - v).abs() <= 4.0 * f64::EPSILON * u.abs().max(v.abs());
+        for (p, q) in one.nodes.iter().zip(&thick.nodes) {
+            assert!(same(t * p.weight, q.weight) && same(t * p.covered_weight, q.covered_weight));
+            assert!(same(t * p.gap[0], q.gap[0]) && same(t * p.gap[1], q.gap[1]));
+            assert_eq!(p.coupling.len(), q.coupling.len());
+            for (u, v) in p.coupling.iter().zip(&q.coupling) {
+                assert!(u.0 == v.0 && same(t * u.1, v.1), "trial {trial}");
+            }
+            assert_eq!(
+                (p.normal, p.tangent, p.coverage),
+                (q.normal, q.tangent, q.coverage)
+            );
+            assert!(same(p.normal_gap, q.normal_gap) && same(p.mean_distance, q.mean_distance));
+        }
+    }
+}
+
+/// `integral_0^1 f` by Simpson's rule on `pieces` equal pieces (exact for cubics on each).
+fn simpson(f: &dyn Fn(f64) -> f64, pieces: usize) -> f64 {
+    (0..pieces)
+        .map(|i| {
+            let (u, v) = (i as f64 / pieces as f64, (i + 1) as f64 / pieces as f64);
+            (v - u) / 6.0 * (f(u) + 4.0 * f(0.5 * (u + v)) + f(v))
+        })
+        .sum()
+}
+
+/// Axisymmetric: `dS = 2 pi r ds`. A flat meridian `z = 0` from the axis to `r = R` (A below,
+/// `n = +z`, random spacing, its first node in r on the axis) against a non-matching, tilted
+/// B above (`z = g0 + slope r`, B's nodes at random r):
+/// * the weights sum to the disk's area `pi R^2`; a node on the axis has the weight
+///   `integral_0^h (1 - r/h) 2 pi r dr = pi h^2 / 3 > 0` and its segment's normal;
+/// * every `F^A`, `F^B` and `R_C` entry equals its integral (`M_k`, `L^B_j`, `g` linear in r,
+///   times `2 pi r`: cubics, integrated here by Simpson's rule split at B's nodes, exact);
+/// * row sums: `sum_j F^A_kj = weight_k`, `sum_j F^B_kj = covered weight_k`;
+/// * a constant gap is reproduced: `normal_gap = mean_distance = g0`.
+#[test]
+fn axisymmetric_integrals_are_exact() {
+    let mut rng = Rng(17);
+    let big_r = 2.0;
+    for trial in 0..6 {
+        let xa = random_spacing(0.0, big_r, 4 + trial, &mut rng);
+        let xb = random_spacing(0.0, 1.1 * big_r, 3 + 2 * trial, &mut rng);
+        let slope = if trial % 2 == 0 { 0.0 } else { 0.01 };
+        let g0 = 0.01;
+        let (a, b, x) = flat(&xa, &xb, g0, slope);
+        let s = evaluate(&a, &b, &x, 1.0, SurfaceMeasure::Axisymmetric).unwrap();
+        let area = PI * big_r * big_r;
+        let total: f64 = s.nodes.iter().map(|n| n.weight).sum();
+        assert!(
+            close(total, area, EXACT * area),
+            "trial {trial}: {total} vs {area}"
+        );
+        // A is listed right to left: the last node is on the axis
+        let axis = s.nodes.last().unwrap();
+        let h = xa[1];
+        assert_eq!(x[axis.node][0], 0.0);
+        assert!(close(axis.weight, PI * h * h / 3.0, EXACT * area));
+        assert_eq!(axis.normal, [0.0, 1.0]);
+        let g = |r: f64| g0 + slope * r;
+        let hat = |nodes: &[f64], j: usize, r: f64| -> f64 {
+            let left = j > 0 && r >= nodes[j - 1] && r <= nodes[j];
+            let right = j + 1 < nodes.len() && r >= nodes[j] && r <= nodes[j + 1];
+            if left {
+                (r - nodes[j - 1]) / (nodes[j] - nodes[j - 1])
+            } else if right {
+                (nodes[j + 1] - r) / (nodes[j + 1] - nodes[j])
+            } else {
+                0.0
+            }
+        };
+        // integral over [0, R] of f(r) 2 pi r dr, split at A's and B's nodes
+        let mut cuts: Vec<f64> = xa
+            .iter()
+            .chain(&xb)
+            .copied()
+            .filter(|&r| r <= big_r)
+            .collect();
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        let integral = |f: &dyn Fn(f64) -> f64| -> f64 {
+            cuts.windows(2)
+                .map(|w| {
+                    let len = w[1] - w[0];
+                    len * simpson(
+                        &|u| {
+                            let r = w[0] + u * len;
+                            f(r) * 2.0 * PI * r
+                        },
+                        1,
+                    )
+                })
+                .sum()
+        };
+        for node in &s.nodes {
+            // A's node index in xa (ascending r)
+            let ka = xa.iter().position(|&r| r == x[node.node][0]).unwrap();
+            let mk = |r: f64| hat(&xa, ka, r);
+            let scale = area;
+            assert!(close(node.weight, integral(&mk), EXACT * scale));
+            assert!(node.is_covered());
+            let gap_y = -integral(&|r| mk(r) * g(r));
+            assert!(close(node.gap[1], gap_y, EXACT * scale), "trial {trial}");
+            assert_eq!(node.gap[0], 0.0);
+            let (fa, fb) = split(node, &a);
+            for (&j, &v) in &fa {
+                let ja = xa.iter().position(|&r| r == x[j][0]).unwrap();
+                let exact = integral(&|r| mk(r) * hat(&xa, ja, r));
+                assert!(close(v, exact, EXACT * scale), "F^A trial {trial}");
+            }
+            for (&j, &v) in &fb {
+                let jb = xb.iter().position(|&r| r == x[j][0]).unwrap();
+                let exact = integral(&|r| mk(r) * hat(&xb, jb, r));
+                assert!(close(v, exact, EXACT * scale), "F^B trial {trial}");
+            }
+            let (sa, sb) = (fa.values().sum::<f64>(), fb.values().sum::<f64>());
+            assert!(
+                close(sa, node.weight, EXACT * scale)
+                    && close(sb, node.covered_weight, EXACT * scale)
+            );
+            if slope == 0.0 {
+                assert!(close(node.normal_gap, g0, EXACT) && close(node.mean_distance, g0, EXACT));
+            }
+        }
+    }
+}
+
+/// Axisymmetric, a curved meridian (a quarter of the unit circle from the pole on the axis to
+/// the equator, random angles): the weights sum to the area of the polyline's surface of
+/// revolution, `sum_e pi (r_e0 + r_e1) h_e` (frustums), and each nodal normal is the direction
+/// of `sum_e w_ke n_e` (`w_ke = integral_e M_k dS`), so a constant offset `g` of B along A's
+/// segment normals gives `R_C,k` parallel to `n_k`.
+#[test]
+fn axisymmetric_curved_meridian() {
+    let mut rng = Rng(23);
+    for trial in 0..4 {
+        let n = 6 + 3 * trial;
+        let angles = random_spacing(0.0, 0.5 * PI, n, &mut rng);
+        // the sphere's surface, body inside: counter-clockwise about the centre means from the
+        // equator (r = 1, z = 0) up to the pole (r = 0, z = 1): body on the left
+        let mut x: Vec<[f64; 2]> = angles.iter().rev().map(|&t| [t.sin(), t.cos()]).collect();
+        x[n][0] = 0.0; // the pole exactly on the axis
+        let a: Vec<usize> = (0..=n).collect();
+        // B: the same polyline moved outward by g along each node's circle radius, reversed
+        let g = 1e-3;
+        let b: Vec<usize> = (0..=n).rev().map(|k| k + n + 1).collect();
+        let outer: Vec<[f64; 2]> = x
+            .iter()
+            .map(|p| [p[0] * (1.0 + g), p[1] * (1.0 + g)])
+            .collect();
+        x.extend(outer);
+        let s = evaluate(&a, &b, &x, 0.1, SurfaceMeasure::Axisymmetric).unwrap();
+        let frustums: f64 = a
+            .windows(2)
+            .map(|w| {
+                let (p, q) = (x[w[0]], x[w[1]]);
+                PI * (p[0] + q[0]) * (q[0] - p[0]).hypot(q[1] - p[1])
+            })
+            .sum();
+        let total: f64 = s.nodes.iter().map(|n| n.weight).sum();
+        assert!(close(total, frustums, EXACT * frustums), "trial {trial}");
+        assert!((total / (2.0 * PI) - 1.0).abs() < 0.05); // about a hemisphere's 2 pi
+        for node in &s.nodes {
+            let cross = node.normal[0] * node.gap[1] - node.normal[1] * node.gap[0];
+            let along = -(node.normal[0] * node.gap[0] + node.normal[1] * node.gap[1]);
+            assert!(
+                along > 0.0 && cross.abs() < 1e-2 * along,
+                "trial {trial}: {node:?}"
+            );
+        }
+        let pole = s.nodes.last().unwrap();
+        assert!(pole.weight > 0.0 && pole.normal[1] > 0.9, "{pole:?}");
+    }
+}
+
+/// Axisymmetric coupling rows are the first-order change of the weighted normal gap at zero
+/// gap (the measure's own change multiplies the gap): a straight meridian away from the axis,
+/// non-matching B on it, every A and B node perturbed in r and z. Tolerance as in
+/// `coupling_matches_finite_differences_at_zero_gap` (straight rows), relative to the largest
+/// coupling entry.
+#[test]
+fn axisymmetric_coupling_matches_finite_differences() {
+    let mut rng = Rng(41);
+    let xa = random_spacing(1.0, 2.0, 7, &mut rng);
+    let xb = random_spacing(0.9, 2.1, 5, &mut rng);
+    let (a, b, x) = flat(&xa, &xb, 0.0, 0.0);
+    let m = SurfaceMeasure::Axisymmetric;
+    let base = evaluate(&a, &b, &x, 0.1, m).unwrap();
+    let cmax = base
+        .nodes
+        .iter()
+        .flat_map(|n| n.coupling.iter().map(|e| e.1.abs()))
+        .fold(0.0, f64::max);
+    let h = 1.0 / 7.0;
+    for eps in [1e-5 * h, 1e-6 * h] {
+        for &j in a.iter().chain(&b[1..b.len() - 1]) {
+            for dir in 0..2 {
+                let mut xp = x.clone();
+                xp[j][dir] += eps;
+                let pert = evaluate(&a, &b, &xp, 0.1, m).unwrap();
+                for (p, q) in base.nodes.iter().zip(&pert.nodes) {
+                    let n = p.normal;
+                    let fd = (n[0] * (q.gap[0] - p.gap[0]) + n[1] * (q.gap[1] - p.gap[1])) / eps;
+                    let c = p
+                        .coupling
+                        .iter()
+                        .find(|e| e.0 == j)
+                        .map_or(0.0, |e| e.1 * n[dir]);
+                    let tol = 2.0 * eps / h * cmax + 1e-9 * cmax;
+                    assert!(
+                        (fd - c).abs() <= tol,
+                        "node {} pert {j}/{dir}: {fd} vs {c}",
+                        p.node
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The measure's input checks: a plane thickness that is not finite and positive, an A node at
+/// `r < 0` in axisymmetry.
+#[test]
+fn measure_input_checks() {
+    let (a, b, x) = flat(&[0.0, 1.0], &[0.0, 1.0], 0.01, 0.0);
+    for t in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let m = message(evaluate(
+            &a,
+            &b,
+            &x,
+            1.0,
+            SurfaceMeasure::Plane { thickness: t },
+        ));
+        assert!(m.contains("thickness"), "{m}");
+    }
+    let (a, b, x) = flat(&[-0.5, 1.0], &[-0.5, 1.0], 0.01, 0.0);
+    let m = message(evaluate(&a, &b, &x, 1.0, SurfaceMeasure::Axisymmetric));
+    assert!(m.contains("r = -0.5 < 0"), "{m}");
+}
+
+// ------------------------------------------------------------------------------------------------
 // Input checks
 // ------------------------------------------------------------------------------------------------
 
@@ -743,25 +1005,25 @@ fn message(r: Result<ContactSurface, Error>) -> String {
 fn invalid_input_names_the_node() {
     let (a, b, x) = flat(&[0.0, 1.0, 2.0], &[0.0, 1.0, 2.0], 0.1, 0.0);
     // a = [0, 1, 2] (x = 2, 1, 0), b = [3, 4, 5]
-    let m = message(evaluate(&a[..1], &b, &x, 1.0));
+    let m = message(evaluate(&a[..1], &b, &x, 1.0, UNIT));
     assert!(m.contains("A") && m.contains("at least 2"), "{m}");
-    let m = message(evaluate(&a, &[3, 17], &x, 1.0));
+    let m = message(evaluate(&a, &[3, 17], &x, 1.0, UNIT));
     assert!(m.contains("node 17") && m.contains("out of range"), "{m}");
-    let m = message(evaluate(&[0, 1, 1, 2], &b, &x, 1.0));
+    let m = message(evaluate(&[0, 1, 1, 2], &b, &x, 1.0, UNIT));
     assert!(m.contains("node 1") && m.contains("consecutively"), "{m}");
-    let m = message(evaluate(&[0, 1, 2, 0], &b, &x, 1.0));
+    let m = message(evaluate(&[0, 1, 2, 0], &b, &x, 1.0, UNIT));
     assert!(m.contains("node 0") && m.contains("twice"), "{m}");
-    let m = message(evaluate(&a, &[3, 4, 5, 4], &x, 1.0));
+    let m = message(evaluate(&a, &[3, 4, 5, 4], &x, 1.0, UNIT));
     assert!(
         m.contains("B") && m.contains("node 4") && m.contains("twice"),
         "{m}"
     );
-    let m = message(evaluate(&a, &[3, 2, 5], &x, 1.0));
+    let m = message(evaluate(&a, &[3, 2, 5], &x, 1.0, UNIT));
     assert!(m.contains("node 2") && m.contains("both"), "{m}");
     // zero-length segment: a node placed on top of its neighbour
     let mut y = x.clone();
     y[1] = y[0];
-    let m = message(evaluate(&a, &b, &y, 1.0));
+    let m = message(evaluate(&a, &b, &y, 1.0, UNIT));
     assert!(
         m.contains("nodes 0 and 1") && m.contains("zero-length"),
         "{m}"
@@ -769,7 +1031,7 @@ fn invalid_input_names_the_node() {
     // A folding back onto itself: node 2 placed where node 0 is (different ids)
     let mut y = x.clone();
     y[2] = y[0];
-    let m = message(evaluate(&a, &b, &y, 1.0));
+    let m = message(evaluate(&a, &b, &y, 1.0, UNIT));
     assert!(m.contains("node 1") && m.contains("folds back"), "{m}");
     // non-finite coordinates, anywhere on A or B; never a panic
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
@@ -777,7 +1039,7 @@ fn invalid_input_names_the_node() {
             for c in 0..2 {
                 let mut y = x.clone();
                 y[node][c] = bad;
-                let m = message(evaluate(&a, &b, &y, 1.0));
+                let m = message(evaluate(&a, &b, &y, 1.0, UNIT));
                 assert!(
                     m.contains(&format!("node {node}")) && m.contains("non-finite"),
                     "{m}"
@@ -788,9 +1050,9 @@ fn invalid_input_names_the_node() {
     // a non-finite coordinate of a node outside the pair is none of its business
     let mut y = x.clone();
     y.push([f64::NAN, 0.0]);
-    assert!(evaluate(&a, &b, &y, 1.0).is_ok());
+    assert!(evaluate(&a, &b, &y, 1.0, UNIT).is_ok());
     for d in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        let m = message(evaluate(&a, &b, &x, d));
+        let m = message(evaluate(&a, &b, &x, d, UNIT));
         assert!(m.contains("search distance"), "{m}");
     }
 }
@@ -804,10 +1066,10 @@ fn invalid_input_names_the_node() {
 fn evaluate_into_reuses_buffers() {
     let mut rng = Rng(5);
     let (a, b, x) = wavy_pair(&mut rng);
-    let fresh = evaluate(&a, &b, &x, 0.2).unwrap();
+    let fresh = evaluate(&a, &b, &x, 0.2, UNIT).unwrap();
     let (a2, b2, x2) = flat(&[0.0, 0.5, 1.0], &[0.0, 1.0], 0.0, 0.0);
-    let mut reused = evaluate(&a2, &b2, &x2, 1.0).unwrap();
-    evaluate_into(&a, &b, &x, 0.2, &mut reused).unwrap();
+    let mut reused = evaluate(&a2, &b2, &x2, 1.0, UNIT).unwrap();
+    evaluate_into(&a, &b, &x, 0.2, UNIT, &mut reused).unwrap();
     assert_eq!(fresh.nodes, reused.nodes);
 }
 
@@ -837,7 +1099,7 @@ fn large_surfaces_evaluate_fast() {
         .collect();
     let h = (s1 - s0) / na as f64;
     let start = std::time::Instant::now();
-    let s = evaluate(&a, &b, &x, 3.0 * h).unwrap();
+    let s = evaluate(&a, &b, &x, 3.0 * h, UNIT).unwrap();
     let elapsed = start.elapsed();
     eprintln!("evaluate, {na} + {nb} segments: {elapsed:?}");
     assert!(s.all_covered());

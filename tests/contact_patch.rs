@@ -41,6 +41,14 @@
 //! per unit length of the current interface, which has widened by
 //! `eps_x = nu (1 + nu) p / E = 8e-5`; the contact pressure is therefore `p / (1 + eps_x)`
 //! (compared with `p` it is off by exactly `8e-5`, which is what a first run showed).
+//!
+//! Thickness (hycon 0.7.0): the contact integrals are weighted by A's measure `t ds`, so the
+//! multipliers are pressures for any thickness. `contact_patch_test_thickness` runs the three
+//! meshes at `t = 2.5` in plane strain and in plane stress (there with `E = 3, nu = 0.15` and
+//! `E = 7, nu = 0.35`, the same `nu / E`, so again both blocks widen alike): the top load is
+//! the pressure `p` on the area `t x 1` (nodal forces `p t h / 2` per edge end), and the
+//! multipliers, the nodal forces over the weights `integral M_k t ds` and the stresses must all
+//! be `p`, the reactions `p t`, and the total contact force `p t` times the width 1.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
@@ -86,6 +94,14 @@ struct Case {
     /// `x = 0`, the uniform widening at `x = 1`).
     hold_ends: bool,
     kinematics: Kinematics,
+    /// Plane strain or plane stress, and the thickness `t` of both blocks.
+    analysis: Analysis,
+    thickness: f64,
+}
+
+impl Case {
+    /// The reference cases' section: plane strain, unit thickness.
+    const PLANE_STRAIN_UNIT: (Analysis, f64) = (Analysis::PlaneStrain, 1.0);
 }
 
 /// Results of one case.
@@ -104,8 +120,12 @@ struct Outcome {
     stress_lower: f64,
     /// Largest reaction at the upper block's held corners, relative to `p * width`.
     reaction: f64,
-    /// Total vertical reaction of the lower block's bottom, relative to `p * width`, minus 1.
+    /// Total vertical reaction of the lower block's bottom, relative to `p * t * width`,
+    /// minus 1.
     support: f64,
+    /// Total normal contact force on A, `sum_k -n_k . force_k`, relative to `p * t * width`,
+    /// minus 1.
+    total: f64,
 }
 
 /// Nodes of an edge chain (body on the left), in order.
@@ -127,8 +147,15 @@ fn block(nx: usize, y0: f64, distortion: f64) -> Mesh {
 }
 
 fn run(case: Case) -> Outcome {
-    let lower_mat = Material::new(3.0, 0.2, 1.0, Analysis::PlaneStrain).unwrap();
-    let upper_mat = Material::new(7.0, 0.4, 1.0, Analysis::PlaneStrain).unwrap();
+    let t = case.thickness;
+    // the same lateral strain in both blocks: nu (1 + nu) / E (plane strain), nu / E (stress)
+    let (nu_lower, nu_upper) = match case.analysis {
+        Analysis::PlaneStrain => (0.2, 0.4),
+        Analysis::PlaneStress => (0.15, 0.35),
+        Analysis::Axisymmetric => unreachable!("a plane patch test"),
+    };
+    let lower_mat = Material::new(3.0, nu_lower, t, case.analysis).unwrap();
+    let upper_mat = Material::new(7.0, nu_upper, t, case.analysis).unwrap();
     let mut mesh = Mesh::new();
     mesh.append(&block(case.nx_b, -0.5, case.distortion), 0, "lower.");
     let first_upper = mesh.append(&block(case.nx_a, case.gap, case.distortion), 1, "upper.");
@@ -158,17 +185,24 @@ fn run(case: Case) -> Outcome {
     ];
     let top = 0.5 + case.gap;
     let (top_left, top_right) = (find(&mesh, 0.0, top, true), find(&mesh, 1.0, top, true));
-    // exact uniform state: eps_y = -(1 - nu^2) p / E in each block (sigma_x = 0, plane strain)
-    let eps = |m: &Material| -(1.0 - m.poisson * m.poisson) * P / m.youngs;
+    // exact uniform state (sigma_x = 0, sigma_y = -p): eps_y = -(1 - nu^2) p / E and
+    // eps_x = nu (1 + nu) p / E in plane strain, eps_y = -p / E and eps_x = nu p / E in plane
+    // stress
+    let strain = |m: &Material| match case.analysis {
+        Analysis::PlaneStrain => [
+            -(1.0 - m.poisson * m.poisson) * P / m.youngs,
+            m.poisson * (1.0 + m.poisson) * P / m.youngs,
+        ],
+        Analysis::PlaneStress => [-P / m.youngs, m.poisson * P / m.youngs],
+        Analysis::Axisymmetric => unreachable!("a plane patch test"),
+    };
+    let eps = |m: &Material| strain(m)[0];
+    let lateral = |m: &Material| strain(m)[1];
     let v_interface = 0.5 * eps(&lower_mat);
     let v_top = v_interface - case.gap + 0.5 * eps(&upper_mat);
-    // the same widening in both blocks: eps_x = nu (1 + nu) p / E
-    let widening = lower_mat.poisson * (1.0 + lower_mat.poisson) * P / lower_mat.youngs;
-    assert!(
-        (widening / (upper_mat.poisson * (1.0 + upper_mat.poisson) * P / upper_mat.youngs) - 1.0)
-            .abs()
-            < 1e-14
-    );
+    // the same widening in both blocks
+    let widening = lateral(&lower_mat);
+    assert!((widening / lateral(&upper_mat) - 1.0).abs() < 1e-14);
     let mut model = Model::new(mesh, vec![lower_mat, upper_mat], Formulation::Hybrid);
     model.fix_dir(&lower_bottom, 1, 0.0).unwrap();
     model.fix_dir(&[corner], 0, 0.0).unwrap();
@@ -180,7 +214,13 @@ fn run(case: Case) -> Outcome {
         model.fix_dir(&[top_left], 0, 0.0).unwrap();
     }
     model.fix_dir(&[top_left, top_right], 1, v_top).unwrap();
-    model.load_edges(&upper_top_edges, [0.0, -P]);
+    // the pressure p on the top's area t x 1: nodal forces p t h / 2 at both ends of each edge
+    for [i, j] in upper_top_edges {
+        let h = (model.mesh.nodes[j][0] - model.mesh.nodes[i][0]).abs();
+        for node in [i, j] {
+            model.nodal_forces.push((node, [0.0, -0.5 * P * t * h]));
+        }
+    }
     let pair = ContactPair {
         a: upper_bottom.clone(),
         b: lower_top.clone(),
@@ -246,10 +286,10 @@ fn run(case: Case) -> Outcome {
             }
             let j = lower_top[k];
             assert!(
-                (kq[2 * j] - f[2 * j]).abs() < 1e-9 * P * w,
+                (kq[2 * j] - f[2 * j]).abs() < 1e-9 * P * t * w,
                 "B node {j}: x force"
             );
-            rel(-(kq[2 * j + 1] - f[2 * j + 1]) / w)
+            rel(-(kq[2 * j + 1] - f[2 * j + 1]) / (t * w))
         })
         .fold(0.0, f64::max);
     let solution = Solution { q: q.clone() };
@@ -271,13 +311,19 @@ fn run(case: Case) -> Outcome {
     }
     let reaction = held
         .iter()
-        .map(|&d| (kq[d] - f[d]).abs() / P)
+        .map(|&d| (kq[d] - f[d]).abs() / (P * t))
         .fold(0.0, f64::max);
     let support = lower_bottom
         .iter()
         .map(|&j| kq[2 * j + 1] - f[2 * j + 1])
         .sum::<f64>()
-        / P
+        / (P * t)
+        - 1.0;
+    let total = nodes
+        .iter()
+        .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+        .sum::<f64>()
+        / (P * t)
         - 1.0;
     Outcome {
         iterations: info.iterations,
@@ -290,15 +336,32 @@ fn run(case: Case) -> Outcome {
         stress_lower,
         reaction,
         support,
+        total,
     }
 }
 
 #[test]
 fn contact_patch_test() {
-    let clock = std::time::Instant::now();
+    let gaps = [(1e-3, 4.0), (0.0, 4.0), (0.01, 0.02)];
+    check_all(cases(Case::PLANE_STRAIN_UNIT, &gaps));
+}
+
+/// At thickness 2.5, plane strain and plane stress: the multipliers are the pressure `p` (not
+/// `p t`), the total contact force is `p t` times the width (see the module docs).
+#[test]
+fn contact_patch_test_thickness() {
+    for analysis in [Analysis::PlaneStrain, Analysis::PlaneStress] {
+        check_all(cases((analysis, 2.5), &[(1e-3, 4.0)]));
+    }
+}
+
+/// The three meshes (A finer, equal, A coarser) with each `(gap, search distance)` under
+/// both kinematics, in the section `(analysis, thickness)`.
+fn cases((analysis, thickness): (Analysis, f64), gaps: &[(f64, f64)]) -> Vec<Case> {
     let mut cases = Vec::new();
-    for ((gap, search_distance), kinematics) in [(1e-3, 4.0), (0.0, 4.0), (0.01, 0.02)]
-        .into_iter()
+    for ((gap, search_distance), kinematics) in gaps
+        .iter()
+        .copied()
         .flat_map(|g| [(g, Kinematics::Small), (g, Kinematics::Finite)])
     {
         cases.push(Case {
@@ -310,6 +373,8 @@ fn contact_patch_test() {
             search_distance,
             hold_ends: true,
             kinematics,
+            analysis,
+            thickness,
         });
         cases.push(Case {
             name: "equal",
@@ -320,6 +385,8 @@ fn contact_patch_test() {
             search_distance,
             hold_ends: true,
             kinematics,
+            analysis,
+            thickness,
         });
         cases.push(Case {
             name: "A coarser",
@@ -330,13 +397,20 @@ fn contact_patch_test() {
             search_distance,
             hold_ends: true,
             kinematics,
+            analysis,
+            thickness,
         });
     }
+    cases
+}
+
+/// Run the cases, print a table, check every tolerance.
+fn check_all(cases: Vec<Case>) {
+    let clock = std::time::Instant::now();
+    let (analysis, t) = (cases[0].analysis, cases[0].thickness);
+    println!("contact patch test, p = {P}, {analysis:?}, t = {t}, lower E = 3, upper E = 7");
     println!(
-        "contact patch test, p = {P}, plane strain, lower E = 3 nu = 0.2, upper E = 7 nu = 0.4"
-    );
-    println!(
-        "{:>10} {:>6} {:>6} {:>6} {:>3} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "{:>10} {:>6} {:>6} {:>6} {:>3} {:>6} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
         "case",
         "kin.",
         "nx A/B",
@@ -349,12 +423,13 @@ fn contact_patch_test() {
         "sig up",
         "sig low",
         "reaction",
-        "support"
+        "support",
+        "total"
     );
     for case in cases {
         let o = run(case);
         println!(
-            "{:>10} {:>6} {:>3}/{:<2} {:>6.0e} {:>3} {:>3}/{:<2} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>+9.1e}",
+            "{:>10} {:>6} {:>3}/{:<2} {:>6.0e} {:>3} {:>3}/{:<2} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>9.1e} {:>+9.1e} {:>+9.1e}",
             case.name,
             case.kinematics.name(),
             case.nx_a,
@@ -369,13 +444,16 @@ fn contact_patch_test() {
             o.stress_upper,
             o.stress_lower,
             o.reaction,
-            o.support
+            o.support,
+            o.total
         );
         let what = format!(
-            "{} (gap {}, {} kinematics)",
+            "{} (gap {}, {} kinematics, {:?}, t = {})",
             case.name,
             case.gap,
-            case.kinematics.name()
+            case.kinematics.name(),
+            case.analysis,
+            case.thickness
         );
         assert_eq!(o.active, o.a_nodes, "{what}: every A node in contact");
         assert!(
@@ -413,6 +491,11 @@ fn contact_patch_test() {
             "{what}: support {:.2e}",
             o.support
         );
+        assert!(
+            o.total.abs() < tol::REACTION,
+            "{what}: total contact force {:.2e}",
+            o.total
+        );
     }
     println!("run time {:.2} s", clock.elapsed().as_secs_f64());
 }
@@ -434,6 +517,8 @@ fn contact_patch_test_free_ends() {
             search_distance: 4.0,
             hold_ends: false,
             kinematics,
+            analysis: Case::PLANE_STRAIN_UNIT.0,
+            thickness: Case::PLANE_STRAIN_UNIT.1,
         });
         assert!(
             o.multipliers < tol::PRESSURE && o.reaction < tol::REACTION,

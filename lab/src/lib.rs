@@ -7,12 +7,15 @@
 //! * [`cases`]: reference problems with closed forms or published values (Hertz, Cook's
 //!   membrane, the Pian-Sumihara cantilever).
 //! * [`scene`]: the disk-on-block contact scene of the paper and its comparison with Hertz.
+//! * [`axisymmetric`]: axisymmetric contact scenes with closed forms (shrink fit, push-out,
+//!   cylinders stacked on the axis).
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 //! * [`bench`](mod@bench): the measurements behind the README's performance figures.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
 #![warn(missing_docs)]
 
+pub mod axisymmetric;
 pub mod bench;
 pub mod cases;
 pub mod examples;

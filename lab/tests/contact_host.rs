@@ -118,6 +118,7 @@ impl HostSide {
             stiffness,
             elements: None,
             a_inside: Vec::new(),
+            measures: vec![pair.measure_on(model).unwrap()],
         }
     }
 }

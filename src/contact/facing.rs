@@ -7,19 +7,14 @@
 //! `p0 -> p1` has the outward normal `n = (d_y, -d_x) / |d|`, `d = p1 - p0`, and a node's
 //! normal is the length-weighted mean of its adjacent segments' normals.
 
-/// Outward unit normal of the segment `p -> q`.
-fn segment_normal(p: [f64; 2], q: [f64; 2]) -> [f64; 2] {
-    let d = [q[0] - p[0], q[1] - p[1]];
-    let len = d[0].hypot(d[1]);
-    [d[1] / len, -d[0] / len]
-}
+use crate::element::geometry::edge_normal;
 
 /// Outward unit normal of node `k` of the polyline `ids` at the positions `x`: the direction of
 /// `sum_e h_e n_e` over its one or two adjacent segments.
 pub fn node_normal(ids: &[usize], k: usize, x: &[[f64; 2]]) -> [f64; 2] {
     let (lo, hi) = (k.saturating_sub(1), (k + 1).min(ids.len() - 1));
     // sum_e h_e n_e telescopes to the rotated chord of the neighbours
-    segment_normal(x[ids[lo]], x[ids[hi]])
+    edge_normal(x[ids[lo]], x[ids[hi]]).0
 }
 
 /// Half the length of the one or two segments adjacent to node `k` (its tributary length).
@@ -80,7 +75,7 @@ pub fn facing(a: &[usize], b: &[usize], x: &[[f64; 2]], reach: f64) -> Facing {
             continue;
         };
         let na = node_normal(a, k, x);
-        let nb = segment_normal(x[b[seg]], x[b[seg + 1]]);
+        let nb = edge_normal(x[b[seg]], x[b[seg + 1]]).0;
         let cos = na[0] * nb[0] + na[1] * nb[1];
         let ahead = (q[0] - p[0]) * na[0] + (q[1] - p[1]) * na[1];
         if cos > 0.5 {
@@ -146,7 +141,7 @@ pub fn behind(
     let mut nearest: Option<(usize, f64)> = None;
     for seg in 0..ids.len() - 1 {
         let (q0, q1) = (x[ids[seg]], x[ids[seg + 1]]);
-        let ns = segment_normal(q0, q1);
+        let ns = edge_normal(q0, q1).0;
         if n[0] * ns[0] + n[1] * ns[1] >= 0.0 {
             continue;
         }

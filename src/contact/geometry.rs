@@ -31,22 +31,34 @@
 //! * B nodes that project within `1e-10 h` of an A segment's end are taken to project onto it,
 //!   so that surfaces of equal extent report full coverage despite round-off.
 //!
+//! # The surface measure
+//! Every integral below is over A's surface with the measure `dS = m(x^A) ds` of body A (the
+//! multiplier side), [`SurfaceMeasure`]: `m = t_A` (A's thickness) in plane analysis,
+//! `m = 2 pi r` (`r = x^A_0` at the integration point, the full circle) in axisymmetric
+//! analysis. The multipliers are then tractions per unit area (pressures) for every analysis
+//! kind and thickness, and the nodal forces `F^A^T t`, `F^B^T t` are forces on the whole body
+//! (per thickness `t_A`, or over the whole circle), as the element kernels' are. `r` is linear
+//! along a segment, so the measure adds one polynomial degree to every integrand: the
+//! closed forms below stay exact and so does the 2-point Gauss rule per piece (degree 3).
+//!
 //! # What is computed per A node `k` ([`ContactNode`])
 //! With `ds = h dxi` on each of the one or two A segments adjacent to `k` (its *support*):
-//! * `weight_k = integral M_k ds` (the tributary length, `(h_left + h_right) / 2`);
-//! * `F^A_kj = integral M_k L^A_j ds` over the whole support (`h/3` on the diagonal, `h/6` off
-//!   it, summed over the two segments);
-//! * `F^B_kj = integral M_k(xi) L^B_j(x^B(xi)) ds` over the covered part of the support, `L^B_j`
-//!   the hat functions of B's polyline at the hit point;
-//! * `R_C,k = integral M_k (x^A - x^B) ds = -integral M_k g n ds` (a 2-vector, the weighted
+//! * `weight_k = integral M_k dS` (the tributary measure: `t (h_left + h_right) / 2` in plane,
+//!   `sum_e 2 pi h_e (2 r_k + r_other) / 6` in axisymmetry);
+//! * `F^A_kj = integral M_k L^A_j dS` over the whole support (plane: `t h/3` on the diagonal,
+//!   `t h/6` off it, summed over the two segments; with `m` linear on a segment from `m_k` to
+//!   `m_j`: `h (3 m_k + m_j) / 12` on the diagonal and `h (m_k + m_j) / 12` off it);
+//! * `F^B_kj = integral M_k(xi) L^B_j(x^B(xi)) dS` over the covered part of the support,
+//!   `L^B_j` the hat functions of B's polyline at the hit point;
+//! * `R_C,k = integral M_k (x^A - x^B) dS = -integral M_k g n dS` (a 2-vector, the weighted
 //!   mismatch, over the covered part);
-//! * the nodal frame: `n_k = normalise(sum_e h_e n_e)` over the adjacent segments `e`
-//!   (**length-weighted** average of the segment normals; this is the direction of
-//!   `integral M_k n ds`, so a constant gap gives `R_C,k` parallel to `n_k` exactly), and
-//!   `s_k = (n_k.y, -n_k.x)`;
+//! * the nodal frame: `n_k = normalise(sum_e w_ke n_e)` over the adjacent segments `e`, with
+//!   `w_ke = integral_e M_k dS` (in plane `w_ke = t h_e / 2`: the **length-weighted** average
+//!   of the segment normals); this is the direction of `integral M_k n dS`, so a constant gap
+//!   gives `R_C,k` parallel to `n_k` exactly), and `s_k = (n_k.y, -n_k.x)`;
 //! * `coverage_k in [0, 1]`: the fraction of the support's length where a facing B segment was
 //!   found within `search_distance` (exactly `1.0` when fully covered);
-//! * `normal_gap_k = -n_k . R_C,k / integral_covered M_k ds`, a length, negative = penetration
+//! * `normal_gap_k = -n_k . R_C,k / integral_covered M_k dS`, a length, negative = penetration
 //!   (equal to `-n_k . R_C,k / weight_k` when fully covered);
 //! * the **coupling row** `c_kj`: `+F^A_kj` at A nodes, `-F^B_kj` at B nodes, so that with
 //!   nodal displacement increments `du`, `sum_j c_kj du_j` is the change of `R_C,k` with the
@@ -59,8 +71,14 @@
 //!   follows a tangential motion.
 //!
 //! Column sums of the B part give B's nodal weights over the projected overlap:
-//! `sum_k F^B_kj = integral L^B_j ds` (the hats `M_k` sum to one), for turning B's nodal
+//! `sum_k F^B_kj = integral L^B_j dS` (the hats `M_k` sum to one), for turning B's nodal
 //! forces into pressures.
+//!
+//! # Nodes on the axis
+//! In axisymmetry a node at `r = 0` (the end of a meridian on the axis) has `m = 0` there but
+//! a positive weight (`integral M_k 2 pi r ds = 2 pi h r_other / 6 > 0` over its segment), a
+//! normal that is its one segment's normal, and a normal row like any other node's; its
+//! radial displacement is the model's business (prescribed `u_r = 0`).
 //!
 //! # Candidate search
 //! B's segments are binned once per call in a uniform grid (cell size: the largest of the mean
@@ -70,8 +88,162 @@
 //! piece, and every candidate is tested exactly. The cost is near-linear in the number of
 //! segments.
 
-use crate::element::geometry::GAUSS2_UNIT;
+use crate::element::geometry::{GAUSS2_UNIT, edge_normal};
 use crate::error::{Error, Result};
+use crate::material::{Analysis, Material, SCALE_RANGE};
+
+/// The measure `dS = m(x) ds` of body A's contact surface (see the [module docs](self)): the
+/// contact integrals are weighted by it, so that the multipliers are pressures.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SurfaceMeasure {
+    /// Plane strain or plane stress: `m = t`, A's thickness.
+    Plane {
+        /// The thickness `t > 0` of A's elements.
+        thickness: f64,
+    },
+    /// Axisymmetric, the full circle: `m = 2 pi r`, `r = x[0] >= 0` at the point.
+    Axisymmetric,
+}
+
+impl Default for SurfaceMeasure {
+    /// Plane, unit thickness.
+    fn default() -> Self {
+        SurfaceMeasure::Plane { thickness: 1.0 }
+    }
+}
+
+impl SurfaceMeasure {
+    /// The measure of a surface of analysis kind `analysis` and thickness `thickness`: `t` in
+    /// plane analysis, `2 pi r` in axisymmetry (where the thickness must be exactly 1, as for
+    /// an axisymmetric [`Material`]).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a plane thickness that is not finite, positive and within
+    /// [`SCALE_RANGE`], or an axisymmetric one other than 1.
+    pub fn new(analysis: Analysis, thickness: f64) -> Result<Self> {
+        let m = match analysis {
+            Analysis::PlaneStrain | Analysis::PlaneStress => SurfaceMeasure::Plane { thickness },
+            Analysis::Axisymmetric if thickness == 1.0 => SurfaceMeasure::Axisymmetric,
+            Analysis::Axisymmetric => {
+                return Err(Error::InvalidInput(format!(
+                    "axisymmetric thickness must be 1, got {thickness} (the measure is 2 pi r, \
+                     the full circle)"
+                )));
+            }
+        };
+        m.validate()?;
+        Ok(m)
+    }
+
+    /// The measure of a body made of `material`: its thickness in plane analysis, `2 pi r` in
+    /// axisymmetric analysis.
+    pub fn of(material: &Material) -> Self {
+        match material.analysis {
+            Analysis::PlaneStrain | Analysis::PlaneStress => SurfaceMeasure::Plane {
+                thickness: material.thickness,
+            },
+            Analysis::Axisymmetric => SurfaceMeasure::Axisymmetric,
+        }
+    }
+
+    /// `m(x)`: `t`, or `2 pi x[0]`.
+    #[inline]
+    pub fn at(&self, x: [f64; 2]) -> f64 {
+        match *self {
+            SurfaceMeasure::Plane { thickness } => thickness,
+            SurfaceMeasure::Axisymmetric => 2.0 * std::f64::consts::PI * x[0],
+        }
+    }
+
+    /// Whether two measures are of the same analysis kind (plane or axisymmetric).
+    pub fn same_kind(&self, other: &SurfaceMeasure) -> bool {
+        std::mem::discriminant(self) == std::mem::discriminant(other)
+    }
+
+    /// Check a plane thickness: finite, positive, within [`SCALE_RANGE`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] saying what is wrong.
+    pub fn validate(&self) -> Result<()> {
+        match *self {
+            SurfaceMeasure::Plane { thickness: t } => {
+                if t.is_finite() && (SCALE_RANGE[0]..=SCALE_RANGE[1]).contains(&t) {
+                    Ok(())
+                } else {
+                    Err(Error::InvalidInput(format!(
+                        "contact surface thickness must be finite and in [{:e}, {:e}], got {t}",
+                        SCALE_RANGE[0], SCALE_RANGE[1]
+                    )))
+                }
+            }
+            SurfaceMeasure::Axisymmetric => Ok(()),
+        }
+    }
+
+    /// The integrals of one A node over its support (the segment `left -> x_k` ending at it
+    /// and the segment `x_k -> right` starting at it, each when present): `(weight, [F^A with
+    /// the left node, with itself, with the right node], normal direction)`, the direction
+    /// `sum_e w_ke n_e` unnormalised, with its length and the scale it is compared with (see
+    /// the [module docs](self)). In plane these are `t` times the length forms (`h/6`,
+    /// `h/3`, the rotated chord), bit for bit those of unit thickness when `t = 1`.
+    fn node_integrals(
+        &self,
+        left: Option<[f64; 2]>,
+        xk: [f64; 2],
+        right: Option<[f64; 2]>,
+    ) -> NodeIntegrals {
+        let segment = |p: [f64; 2], q: [f64; 2]| edge_normal(p, q);
+        let (nl, hl) = left.map_or(([0.0; 2], 0.0), |p| segment(p, xk));
+        let (nr, hr) = right.map_or(([0.0; 2], 0.0), |q| segment(xk, q));
+        match *self {
+            SurfaceMeasure::Plane { thickness: t } => {
+                // sum_e h_e n_e = (x_{k+1} - x_{k-1}) rotated clockwise
+                let (n, len) = edge_normal(left.unwrap_or(xk), right.unwrap_or(xk));
+                NodeIntegrals {
+                    weight: 0.5 * (hl + hr) * t,
+                    mass: [hl / 6.0 * t, (hl + hr) / 3.0 * t, hr / 6.0 * t],
+                    normal: n,
+                    normal_length: len,
+                    normal_scale: hl + hr,
+                }
+            }
+            SurfaceMeasure::Axisymmetric => {
+                let m = |x: [f64; 2]| self.at(x);
+                let mk = m(xk);
+                let (ml, mr) = (left.map_or(0.0, m), right.map_or(0.0, m));
+                // integral_e M_k dS and the mass entries for m linear along each segment
+                let (wl, wr) = (hl * (2.0 * mk + ml) / 6.0, hr * (2.0 * mk + mr) / 6.0);
+                if wl + wr <= 0.0 {
+                    // a support lying on the axis: no measure, the chord's normal
+                    let none = SurfaceMeasure::Plane { thickness: 0.0 };
+                    return none.node_integrals(left, xk, right);
+                }
+                let v = [wl * nl[0] + wr * nr[0], wl * nl[1] + wr * nr[1]];
+                let len = v[0].hypot(v[1]);
+                NodeIntegrals {
+                    weight: wl + wr,
+                    mass: [
+                        hl * (ml + mk) / 12.0,
+                        hl * (ml + 3.0 * mk) / 12.0 + hr * (3.0 * mk + mr) / 12.0,
+                        hr * (mk + mr) / 12.0,
+                    ],
+                    normal: [v[0] / len, v[1] / len],
+                    normal_length: len,
+                    normal_scale: wl + wr,
+                }
+            }
+        }
+    }
+}
+
+/// What [`SurfaceMeasure::node_integrals`] returns.
+struct NodeIntegrals {
+    weight: f64,
+    mass: [f64; 3],
+    normal: [f64; 2],
+    normal_length: f64,
+    normal_scale: f64,
+}
 
 /// B nodes projecting within this fraction of an A segment's length of its end project onto it.
 const END_SNAP: f64 = 1e-10;
@@ -89,20 +261,21 @@ pub struct ContactNode {
     pub normal: [f64; 2],
     /// Nodal tangent `s_k = (n_k.y, -n_k.x)`.
     pub tangent: [f64; 2],
-    /// `weight_k = integral M_k ds` over the whole support (tributary length).
+    /// `weight_k = integral M_k dS` over the whole support (the tributary measure: length
+    /// times thickness in plane, area of the full circle's band in axisymmetry).
     pub weight: f64,
-    /// `integral M_k ds` over the covered part of the support only (`== weight` when
+    /// `integral M_k dS` over the covered part of the support only (`== weight` when
     /// `coverage == 1`).
     pub covered_weight: f64,
     /// Fraction of the support's length where B was found, in `[0, 1]`; exactly `1.0` when fully
     /// covered. The contact solver must not activate a node with `coverage < 1`.
     pub coverage: f64,
-    /// `R_C,k = integral M_k (x^A - x^B) ds = -integral M_k g n ds` over the covered part.
+    /// `R_C,k = integral M_k (x^A - x^B) dS = -integral M_k g n dS` over the covered part.
     pub gap: [f64; 2],
     /// `-n_k . R_C,k / covered_weight`: the weighted normal gap as a length, negative =
     /// penetration. `f64::INFINITY` when nothing of the support is covered.
     pub normal_gap: f64,
-    /// `integral M_k g ds / covered_weight`, with each segment's own normal: the weighted mean
+    /// `integral M_k g dS / covered_weight`, with each segment's own normal: the weighted mean
     /// signed distance (equal to `normal_gap` where A is straight; on a curved A it reproduces a
     /// constant offset exactly, while `normal_gap` carries the factor `n_k . n_e`).
     /// `f64::INFINITY` when nothing of the support is covered.
@@ -151,23 +324,25 @@ impl ContactSurface {
 }
 
 /// Evaluate the contact pair `(a, b)` at the positions `x` (all nodes, indexed by node
-/// id): weights, `F^A`, `F^B`, `R_C`, nodal frames, coverage and coupling rows of every A node
-/// (equations in the [module docs](self)). `search_distance > 0` bounds `|g|` of a valid hit.
+/// id) with A's surface measure `measure`: weights, `F^A`, `F^B`, `R_C`, nodal frames, coverage
+/// and coupling rows of every A node (equations in the [module docs](self)).
+/// `search_distance > 0` bounds `|g|` of a valid hit.
 ///
 /// # Errors
 /// [`Error::InvalidInput`], naming the node, when a polyline has fewer than 2 nodes, a node id is
 /// out of range, a coordinate is not finite, a node repeats (consecutively or anywhere: a
 /// polyline must be a simple open chain), a segment has zero length, A and B share a node, A
-/// folds back onto itself at a node (no nodal normal), or `search_distance` is not positive and
-/// finite.
+/// folds back onto itself at a node (no nodal normal), an A node has `r < 0` in axisymmetry,
+/// the measure's thickness is invalid, or `search_distance` is not positive and finite.
 pub fn evaluate(
     a: &[usize],
     b: &[usize],
     x: &[[f64; 2]],
     search_distance: f64,
+    measure: SurfaceMeasure,
 ) -> Result<ContactSurface> {
     let mut out = ContactSurface::new();
-    evaluate_into(a, b, x, search_distance, &mut out)?;
+    evaluate_into(a, b, x, search_distance, measure, &mut out)?;
     Ok(out)
 }
 
@@ -181,9 +356,10 @@ pub fn evaluate_into(
     b: &[usize],
     x: &[[f64; 2]],
     search_distance: f64,
+    measure: SurfaceMeasure,
     out: &mut ContactSurface,
 ) -> Result<()> {
-    evaluate_impl(a, b, x, search_distance, out, false)
+    evaluate_impl(a, b, x, search_distance, measure, out, false)
 }
 
 /// One facing B segment that reaches into an A segment's strip.
@@ -224,7 +400,8 @@ struct Workspace {
     /// Per A segment: length and unit outward normal.
     seg_len: Vec<f64>,
     seg_normal: Vec<[f64; 2]>,
-    /// Per A node: uncovered length of the support, `integral_covered M_k g ds`.
+    /// Per A node: the support's length, its uncovered length, `integral_covered M_k g dS`.
+    support: Vec<f64>,
     uncovered: Vec<f64>,
     distance: Vec<f64>,
     sorted: Vec<(usize, u8)>,
@@ -464,6 +641,7 @@ fn evaluate_impl(
     b: &[usize],
     x: &[[f64; 2]],
     dist: f64,
+    measure: SurfaceMeasure,
     out: &mut ContactSurface,
     brute_force: bool,
 ) -> Result<()> {
@@ -472,8 +650,17 @@ fn evaluate_impl(
             "contact search distance must be positive and finite (got {dist})"
         )));
     }
+    measure.validate()?;
     check_polyline("A", a, x)?;
     check_polyline("B", b, x)?;
+    if measure == SurfaceMeasure::Axisymmetric
+        && let Some(&k) = a.iter().find(|&&k| x[k][0] < 0.0)
+    {
+        return Err(Error::InvalidInput(format!(
+            "contact polyline A: node {k} has r = {} < 0 (axisymmetric: x is the radius)",
+            x[k][0]
+        )));
+    }
     let w = &mut out.work;
     check_distinct(a, b, &mut w.sorted)?;
 
@@ -482,42 +669,42 @@ fn evaluate_impl(
     w.seg_len.clear();
     w.seg_normal.clear();
     for s in a.windows(2) {
-        let d = sub(x[s[1]], x[s[0]]);
-        let h = d[0].hypot(d[1]);
+        let (n, h) = edge_normal(x[s[0]], x[s[1]]);
         w.seg_len.push(h);
-        w.seg_normal.push([d[1] / h, -d[0] / h]);
+        w.seg_normal.push(n);
     }
     // nodes: frame, weight, F^A
     out.nodes.resize_with(na, ContactNode::default);
+    w.support.clear();
     for (k, node) in out.nodes.iter_mut().enumerate() {
-        let (hl, hr) = (
-            if k > 0 { w.seg_len[k - 1] } else { 0.0 },
-            if k + 1 < na { w.seg_len[k] } else { 0.0 },
-        );
-        // sum_e h_e n_e = (x_{k+1} - x_{k-1}) rotated clockwise
-        let d = sub(x[a[(k + 1).min(na - 1)]], x[a[k.saturating_sub(1)]]);
-        let len = d[0].hypot(d[1]);
-        if len <= 1e-12 * (hl + hr) {
+        let left = (k > 0).then(|| x[a[k - 1]]);
+        let right = (k + 1 < na).then(|| x[a[k + 1]]);
+        let m = measure.node_integrals(left, x[a[k]], right);
+        if m.normal_length <= 1e-12 * m.normal_scale {
             return Err(Error::InvalidInput(format!(
                 "contact polyline A folds back onto itself at node {} (no nodal normal)",
                 a[k]
             )));
         }
-        let n = [d[1] / len, -d[0] / len];
+        let n = m.normal;
         node.node = a[k];
         node.normal = n;
         node.tangent = [n[1], -n[0]];
-        node.weight = 0.5 * (hl + hr);
+        node.weight = m.weight;
         node.covered_weight = 0.0;
         node.gap = [0.0, 0.0];
         node.coupling.clear();
         if k > 0 {
-            node.coupling.push((a[k - 1], hl / 6.0));
+            node.coupling.push((a[k - 1], m.mass[0]));
         }
-        node.coupling.push((a[k], (hl + hr) / 3.0));
+        node.coupling.push((a[k], m.mass[1]));
         if k + 1 < na {
-            node.coupling.push((a[k + 1], hr / 6.0));
+            node.coupling.push((a[k + 1], m.mass[2]));
         }
+        // the support's length (coverage is a fraction of it)
+        let hl = if k > 0 { w.seg_len[k - 1] } else { 0.0 };
+        let hr = if k + 1 < na { w.seg_len[k] } else { 0.0 };
+        w.support.push(hl + hr);
     }
     w.uncovered.clear();
     w.uncovered.resize(na, 0.0);
@@ -664,13 +851,13 @@ fn evaluate_impl(
                 w.uncovered[k1] += len;
                 continue;
             };
-            // exact 2-point Gauss on the piece: M, L^B, g all affine in xi
+            // exact 2-point Gauss on the piece: M, L^B, g and the measure all affine in xi
             let mut fb = [[0.0; 2]; 2];
             let mut mg = [0.0; 2];
             let mut mw = [0.0; 2];
             for (gp, gw) in GAUSS2_UNIT {
                 let xi = xa + (xb - xa) * gp;
-                let wt = gw * len;
+                let wt = gw * len * measure.at(lerp(p0, p1, xi));
                 let mk = [1.0 - xi, xi];
                 let eta = c.eta(xi);
                 let lb = [1.0 - eta, eta];
@@ -697,7 +884,7 @@ fn evaluate_impl(
 
     // finish: coverage, gaps, merged coupling rows
     for (k, node) in out.nodes.iter_mut().enumerate() {
-        let support = 2.0 * node.weight;
+        let support = w.support[k];
         node.coverage = if w.uncovered[k] <= 0.0 {
             1.0
         } else {
@@ -787,7 +974,7 @@ mod tests {
     #[test]
     fn normal_points_into_b_and_tangent_convention() {
         let (a, b, x) = flat(&[0.0, 1.0, 2.0], &[0.0, 2.0], 0.1);
-        let s = evaluate(&a, &b, &x, 1.0).unwrap();
+        let s = evaluate(&a, &b, &x, 1.0, SurfaceMeasure::default()).unwrap();
         for nd in &s.nodes {
             assert_eq!(nd.normal, [0.0, 1.0]);
             assert_eq!(nd.tangent, [1.0, 0.0]);
@@ -841,8 +1028,17 @@ mod tests {
             let dist = [0.01, 0.05, 0.3, 5.0][trial % 4] * (0.5 + rnd());
             let mut fast = ContactSurface::new();
             let mut slow = ContactSurface::new();
-            evaluate_impl(&a, &b, &x, dist, &mut fast, false).unwrap();
-            evaluate_impl(&a, &b, &x, dist, &mut slow, true).unwrap();
+            evaluate_impl(
+                &a,
+                &b,
+                &x,
+                dist,
+                SurfaceMeasure::default(),
+                &mut fast,
+                false,
+            )
+            .unwrap();
+            evaluate_impl(&a, &b, &x, dist, SurfaceMeasure::default(), &mut slow, true).unwrap();
             assert_eq!(fast.nodes, slow.nodes, "trial {trial}");
             assert!(
                 fast.nodes.iter().any(|n| n.covered_weight > 0.0),
@@ -854,9 +1050,10 @@ mod tests {
     #[test]
     fn reuse_gives_identical_results() {
         let (a, b, x) = flat(&[0.0, 0.3, 1.0, 1.4, 2.0], &[-0.1, 0.7, 1.1, 2.2], 0.05);
-        let fresh = evaluate(&a, &b, &x, 1.0).unwrap();
-        let mut reused = evaluate(&b[..2], &a[..3], &x, 1.0).unwrap_or_default();
-        evaluate_into(&a, &b, &x, 1.0, &mut reused).unwrap();
+        let fresh = evaluate(&a, &b, &x, 1.0, SurfaceMeasure::default()).unwrap();
+        let mut reused =
+            evaluate(&b[..2], &a[..3], &x, 1.0, SurfaceMeasure::default()).unwrap_or_default();
+        evaluate_into(&a, &b, &x, 1.0, SurfaceMeasure::default(), &mut reused).unwrap();
         assert_eq!(fresh.nodes, reused.nodes);
     }
 }

@@ -64,8 +64,9 @@
 use super::bodies::{Bodies, HostSystem};
 use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
-use super::geometry::{self, ContactSurface};
+use super::geometry::{self, ContactSurface, SurfaceMeasure};
 use crate::assembly::dof;
+use crate::element::geometry::edge_normal;
 use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
@@ -149,6 +150,42 @@ impl ContactPair {
 
     fn check_friction(&self) -> Result<()> {
         self.friction_law().map(drop)
+    }
+
+    /// The surface measure of the pair on `model` ([`SurfaceMeasure::of`] the material of the
+    /// elements that own A's segments): the contact integrals are weighted by it, so that the
+    /// multipliers are pressures. Call after [`check_on`](Self::check_on).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when A's segments lie on elements of different thicknesses or
+    /// kinds (the pair's tractions would have no one measure).
+    pub fn measure_on(&self, model: &Model) -> Result<SurfaceMeasure> {
+        let edges = model.mesh.directed_edges();
+        let mut measure: Option<SurfaceMeasure> = None;
+        for w in self.a.windows(2) {
+            let Some(&(e, _)) = edges.get(&(w[0], w[1])) else {
+                return Err(Error::InvalidInput(format!(
+                    "the A polyline's segment {} -> {} is not an element edge",
+                    w[0], w[1]
+                )));
+            };
+            let material = model.mesh.element_material[e];
+            let m = SurfaceMeasure::of(model.materials.get(material).ok_or_else(|| {
+                Error::InvalidInput(format!("element {e} has no material {material}"))
+            })?);
+            match measure {
+                Some(first) if first != m => {
+                    return Err(Error::InvalidInput(format!(
+                        "the A polyline lies on elements of different measures ({first:?} and \
+                         {m:?} at segment {} -> {}): a pair's tractions are per one measure; \
+                         split the pair",
+                        w[0], w[1]
+                    )));
+                }
+                _ => measure = Some(m),
+            }
+        }
+        Ok(measure.unwrap_or_default())
     }
 
     /// The friction law between the pair's surfaces: Coulomb with coefficient
@@ -418,9 +455,10 @@ pub struct NodeResult {
     pub node: usize,
     /// Open, stick, slip or frictionless.
     pub state: NodeState,
-    /// Normal traction on A (multiplier; `< 0` compression, pressure `p = -tn`).
+    /// Normal traction on A (multiplier, force per area for every analysis kind and
+    /// thickness; `< 0` compression, pressure `p = -tn`).
     pub tn: f64,
-    /// Tangential traction on A along `s`.
+    /// Tangential traction on A along `s` (force per area).
     pub ts: f64,
     /// Nodal normal (A's outward): of the reference configuration under small kinematics, of
     /// the converged one under finite kinematics.
@@ -429,9 +467,10 @@ pub struct NodeResult {
     pub tangent: [f64; 2],
     /// Current position (reference position plus the converged displacement).
     pub position: [f64; 2],
-    /// Tributary length `integral of M_k ds`, measured in the configuration the geometry lives
-    /// in (reference under small kinematics, converged under finite): the tractions are per
-    /// unit length of it, and it divides nodal forces into pressures.
+    /// Tributary measure `integral of M_k dS` (`dS = t ds` in plane, `2 pi r ds` in
+    /// axisymmetry: an area), measured in the configuration the geometry lives in (reference
+    /// under small kinematics, converged under finite): the tractions are per unit of it, and
+    /// it divides nodal forces into pressures.
     pub weight: f64,
     /// Normal weighted gap per unit length (`< 0` penetration; infinite where B does not cover
     /// the node's support).
@@ -445,7 +484,7 @@ pub struct NodeResult {
 pub struct BNodeResult {
     /// Node id (B side).
     pub node: usize,
-    /// `integral of L^B_j ds` over the projected overlap.
+    /// `integral of L^B_j dS` over the projected overlap (A's measure `dS`).
     pub weight: f64,
     /// Equivalent nodal contact force on B (global x, y).
     pub force: [f64; 2],
@@ -586,6 +625,8 @@ pub struct ContactAnalysis {
     bodies: Bodies,
     /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
     pairs: Vec<ContactPair>,
+    /// The surface measure of each pair's A side (all of one kind).
+    measures: Vec<SurfaceMeasure>,
     /// The friction law of each pair: all the iteration knows of its friction.
     laws: Vec<Box<dyn FrictionLaw>>,
     options: ContactOptions,
@@ -685,9 +726,15 @@ impl ContactAnalysis {
     /// block).
     pub fn new(model: Model, pairs: Vec<ContactPair>, options: ContactOptions) -> Result<Self> {
         options.validate()?;
-        for (i, pair) in pairs.iter().enumerate() {
-            pair.check_on(&model.mesh).map_err(|e| in_pair(i, e))?;
-        }
+        let measures = pairs
+            .iter()
+            .enumerate()
+            .map(|(i, pair)| {
+                pair.check_on(&model.mesh)
+                    .and_then(|_| pair.measure_on(&model))
+                    .map_err(|e| in_pair(i, e))
+            })
+            .collect::<Result<Vec<_>>>()?;
         let mut dofs: Vec<usize> = pairs
             .iter()
             .flat_map(|p| p.a.iter().chain(&p.b))
@@ -697,7 +744,7 @@ impl ContactAnalysis {
         dofs.dedup();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::model(model, &dofs, options.backend, lazy, options.threads)?;
-        Self::setup(bodies, pairs, dofs, options, None)
+        Self::setup(bodies, pairs, measures, dofs, options, None)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -707,7 +754,7 @@ impl ContactAnalysis {
     /// an active node touches under finite kinematics). Loads are the host's right-hand sides
     /// ([`increment`](Self::increment) with empty `qp`), displacements its equations.
     pub fn host(
-        system: HostSystem,
+        mut system: HostSystem,
         pairs: Vec<ContactPair>,
         options: ContactOptions,
     ) -> Result<Self> {
@@ -730,6 +777,8 @@ impl ContactAnalysis {
                 given.or_else(beside)
             })
             .collect();
+        let measures = std::mem::take(&mut system.measures);
+        check_measures(&measures, pairs.len())?;
         let clock = std::time::Instant::now();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::host(system, options.backend, lazy, options.threads)?;
@@ -748,7 +797,7 @@ impl ContactAnalysis {
             })
             .collect();
         let dofs = (0..2 * n_nodes).collect();
-        let mut analysis = Self::setup(bodies, pairs, dofs, options, Some(a_inside))?;
+        let mut analysis = Self::setup(bodies, pairs, measures, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }
@@ -758,10 +807,12 @@ impl ContactAnalysis {
     fn setup(
         mut bodies: Bodies,
         pairs: Vec<ContactPair>,
+        measures: Vec<SurfaceMeasure>,
         dofs: Vec<usize>,
         options: ContactOptions,
         a_inside: Option<Vec<Option<[f64; 2]>>>,
     ) -> Result<Self> {
+        check_measures(&measures, pairs.len())?;
         let mut slot = vec![None; 2 * bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
@@ -779,7 +830,7 @@ impl ContactAnalysis {
             .iter()
             .map(|p| options.search_distance * mean_segment(&p.a, bodies.positions()))
             .collect();
-        let reference = evaluate_pairs(&pairs, bodies.positions(), &reach)?;
+        let reference = evaluate_pairs(&pairs, &measures, bodies.positions(), &reach)?;
         let interiors = (options.kinematics == Kinematics::Small).then(|| {
             pairs
                 .iter()
@@ -831,6 +882,7 @@ impl ContactAnalysis {
             loads: Vec::new(),
             bodies,
             pairs,
+            measures,
             laws,
             options,
             flexibility,
@@ -1081,7 +1133,8 @@ impl ContactAnalysis {
                 for (p, surface) in surfaces.iter_mut().enumerate() {
                     let pair = &self.pairs[p];
                     let distance = self.search_reach(p, &x, uc, startc);
-                    geometry::evaluate_into(&pair.a, &pair.b, &x, distance, surface)?;
+                    let measure = self.measures[p];
+                    geometry::evaluate_into(&pair.a, &pair.b, &x, distance, measure, surface)?;
                 }
             }
             Kinematics::Small => {
@@ -1135,7 +1188,8 @@ impl ContactAnalysis {
                 continue;
             }
             let reach = 4.0 * motion;
-            let wider = geometry::evaluate(&pair.a, &pair.b, self.bodies.positions(), reach)?;
+            let x = self.bodies.positions();
+            let wider = geometry::evaluate(&pair.a, &pair.b, x, reach, self.measures[p])?;
             let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
                 .enumerate()
                 .any(|(k, (new, old))| new != old && self.node_flexibility.knows(p, k));
@@ -1455,16 +1509,19 @@ fn mean_segment(a: &[usize], x: &[[f64; 2]]) -> f64 {
     total / (a.len().max(2) - 1) as f64
 }
 
-/// The contact geometry of every pair at positions `x`, B paired with A within `reach[p]`.
+/// The contact geometry of every pair at positions `x`, B paired with A within `reach[p]`,
+/// weighted by the pair's measure.
 fn evaluate_pairs(
     pairs: &[ContactPair],
+    measures: &[SurfaceMeasure],
     x: &[[f64; 2]],
     reach: &[f64],
 ) -> Result<Vec<ContactSurface>> {
     pairs
         .iter()
+        .zip(measures)
         .zip(reach)
-        .map(|(p, &r)| geometry::evaluate(&p.a, &p.b, x, r))
+        .map(|((p, &m), &r)| geometry::evaluate(&p.a, &p.b, x, r, m))
         .collect()
 }
 
@@ -1475,6 +1532,30 @@ enum Side {
     Edges,
     /// A host: a point inside body A, if it gave one (see [`HostSystem::a_inside`]).
     Inside(Option<[f64; 2]>),
+}
+
+/// One valid measure per pair, all of one kind (plane or axisymmetric).
+fn check_measures(measures: &[SurfaceMeasure], pairs: usize) -> Result<()> {
+    if measures.len() != pairs {
+        return Err(Error::InvalidInput(format!(
+            "{} surface measures for {pairs} contact pairs (one per pair)",
+            measures.len()
+        )));
+    }
+    for (i, m) in measures.iter().enumerate() {
+        m.validate().map_err(|e| in_pair(i, e))?;
+        if !m.same_kind(&measures[0]) {
+            return Err(in_pair(
+                i,
+                Error::InvalidInput(format!(
+                    "its surface measure {m:?} is not of the kind of pair 0's ({:?}): all \
+                     pairs of an analysis share one analysis kind",
+                    measures[0]
+                )),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// A pair's polylines must face each other in the reference configuration: of the A nodes
@@ -1648,6 +1729,69 @@ impl ContactAnalysis {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A pair's measure comes from the material of the elements that own A's segments; A on
+    /// elements of two thicknesses is rejected; an analysis's measures are one per pair, valid
+    /// and of one kind.
+    #[test]
+    fn pair_measure_from_the_model() {
+        use crate::material::{Analysis, Material};
+        // two unit squares side by side (materials 0 and 1), a third on top of the first
+        let mut mesh = crate::mesh::Mesh::new();
+        mesh.nodes = vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [0.0, 1.0],
+        ];
+        mesh.push_element(&[0, 1, 4, 5], 0);
+        mesh.push_element(&[1, 2, 3, 4], 1);
+        let material = |t: f64| Material::new(1.0, 0.3, t, Analysis::PlaneStress).unwrap();
+        let model = |t1: f64| {
+            Model::new(
+                mesh.clone(),
+                vec![material(2.5), material(t1)],
+                crate::element::Formulation::Hybrid,
+            )
+        };
+        let top = ContactPair {
+            a: vec![3, 4, 5],
+            b: vec![0, 1],
+            friction: 0.0,
+        };
+        let one = ContactPair {
+            a: vec![4, 5],
+            ..top.clone()
+        };
+        let plane = |thickness| SurfaceMeasure::Plane { thickness };
+        assert_eq!(one.measure_on(&model(1.0)).unwrap(), plane(2.5));
+        assert_eq!(top.measure_on(&model(2.5)).unwrap(), plane(2.5));
+        let e = top.measure_on(&model(1.0)).unwrap_err().to_string();
+        assert!(e.contains("different measures"), "{e}");
+        check_measures(&[plane(1.0), plane(2.0)], 2).unwrap();
+        let e = check_measures(&[plane(1.0)], 2).unwrap_err().to_string();
+        assert!(e.contains("1 surface measures for 2 contact pairs"), "{e}");
+        let e = check_measures(&[plane(1.0), SurfaceMeasure::Axisymmetric], 2)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("contact pair 1") && e.contains("one analysis kind"),
+            "{e}"
+        );
+        let e = check_measures(&[plane(-1.0)], 1).unwrap_err().to_string();
+        assert!(e.contains("thickness"), "{e}");
+        // axisymmetric: the measure is 2 pi r, the thickness must be 1
+        let axi = SurfaceMeasure::new(Analysis::Axisymmetric, 1.0).unwrap();
+        assert_eq!(axi, SurfaceMeasure::Axisymmetric);
+        let e = SurfaceMeasure::new(Analysis::Axisymmetric, 2.0)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("2 pi r"), "{e}");
+        let m = Material::new(1.0, 0.3, 1.0, Analysis::Axisymmetric).unwrap();
+        assert_eq!(SurfaceMeasure::of(&m), SurfaceMeasure::Axisymmetric);
+    }
 
     /// Options and pairs are checked in the core, so a Rust caller gets the same errors as a C
     /// caller: each bad value is named.

@@ -181,8 +181,13 @@ impl Frame {
     }
 }
 
-/// Outward unit normal and length of the edge from `a` to `b` of a counter-clockwise polygon:
-/// the edge direction rotated clockwise.
+/// Outward unit normal and length of the segment from `a` to `b` of a boundary that has its
+/// body on the left (an edge of a counter-clockwise element, a segment of a contact polyline):
+/// `n = (d_y, -d_x) / |d|`, `d = b - a`, the segment's direction rotated clockwise.
+///
+/// The one home of this convention: the element kernels, the contact kernels, the facing check,
+/// the iteration's pointwise B-node check and the results all call it (a nodal normal of a
+/// polyline is the normal of the chord of its neighbours, `sum_e h_e n_e` telescoped).
 #[inline]
 pub fn edge_normal(a: [f64; 2], b: [f64; 2]) -> ([f64; 2], f64) {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);

@@ -20,6 +20,7 @@ use super::*;
 use crate::contact::bodies::{
     Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
 };
+use crate::contact::geometry::SurfaceMeasure;
 use crate::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, IterationRecord, Kinematics, Monitor, NodeState,
     PlateControl,
@@ -284,9 +285,10 @@ pub struct HyconNodeResult {
     pub state: HyconNodeState,
     /// Slip direction along `tangent` of A relative to B (+1 or -1) for a slip node, else 0.
     pub slip_sign: i32,
-    /// Normal traction on A (the multiplier; `< 0` compression, pressure `p = -tn`).
+    /// Normal traction on A (the multiplier, force per area for every analysis kind and
+    /// thickness; `< 0` compression, pressure `p = -tn`).
     pub tn: f64,
-    /// Tangential traction on A along `tangent`.
+    /// Tangential traction on A along `tangent` (force per area).
     pub ts: f64,
     /// Nodal normal (A's outward): of the reference configuration under small kinematics, of
     /// the converged one under finite kinematics.
@@ -295,9 +297,10 @@ pub struct HyconNodeResult {
     pub tangent: [f64; 2],
     /// Current position (reference position plus the converged displacement).
     pub position: [f64; 2],
-    /// Tributary length `integral M_k ds`, measured in the configuration the geometry lives in
-    /// (reference under small kinematics, converged under finite): the tractions are per unit
-    /// length of it, so `sum -tn * weight` is the normal load only where A is straight.
+    /// Tributary measure `integral M_k dS` (`dS = t ds`, A's thickness `t`), measured in the
+    /// configuration the geometry lives in (reference under small kinematics, converged under
+    /// finite): the tractions are per unit of it (pressures), so `sum -tn * weight` is the
+    /// normal load only where A is straight.
     pub weight: f64,
     /// Weighted normal gap per unit length (`< 0` penetration; infinite where B does not
     /// cover the node's support).
@@ -312,7 +315,7 @@ pub struct HyconNodeResult {
 pub struct HyconBNodeResult {
     /// Node id (the caller's numbering).
     pub node: usize,
-    /// `integral L^B_j ds` over the projected overlap (0 outside it).
+    /// `integral L^B_j dS` over the projected overlap (0 outside it; `dS` A's measure).
     pub weight: f64,
     /// Equivalent nodal contact force on B (x, y).
     pub force: [f64; 2],
@@ -331,7 +334,7 @@ pub struct HyconBNodeResult {
 pub struct HyconContactNode {
     /// Node id (the caller's numbering).
     pub node: usize,
-    /// `integral M_k ds` over the node's support.
+    /// `integral M_k dS` over the node's support (`dS = t ds`, A's surface measure).
     pub weight: f64,
     /// Fraction of the support covered by B, in [0, 1].
     pub coverage: f64,
@@ -339,15 +342,15 @@ pub struct HyconContactNode {
     pub normal: [f64; 2],
     /// Nodal tangent `s_k = (n_y, -n_x)`.
     pub tangent: [f64; 2],
-    /// Weighted gap vector `R_C,k = integral M_k (x^A - x^B) ds` (x, y).
+    /// Weighted gap vector `R_C,k = integral M_k (x^A - x^B) dS` (x, y).
     pub gap: [f64; 2],
     /// `-n_k . R_C,k / covered weight`: normal gap as a length (`< 0` penetration; infinite
     /// when nothing is covered).
     pub normal_gap: f64,
 }
 
-/// One entry of the contact-element matrices: `F^A_kj = integral M_k L^A_j ds` or
-/// `F^B_kj = integral M_k L^B_j(x^B) ds` (both >= 0). The constraint row of A node `k` is
+/// One entry of the contact-element matrices: `F^A_kj = integral M_k L^A_j dS` or
+/// `F^B_kj = integral M_k L^B_j(x^B) dS` (both >= 0; `dS` A's surface measure). The constraint row of A node `k` is
 /// `sum_j F^A_kj u_j - sum_j F^B_kj u_j` (per component).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -462,6 +465,8 @@ pub struct HyconHost {
     pairs: Vec<ContactPair>,
     /// Per pair, a point inside body A (`hycon_host_set_pair_inside`).
     a_inside: Vec<Option<[f64; 2]>>,
+    /// The surface measure of each pair's A side.
+    measures: Vec<SurfaceMeasure>,
     stiffness: Option<HostSource>,
     elements: Option<HostElements>,
 }
@@ -1047,6 +1052,7 @@ pub unsafe extern "C" fn hycon_host_new(
                     nodes: Vec::new(),
                     pairs: Vec::new(),
                     a_inside: Vec::new(),
+                    measures: Vec::new(),
                     stiffness: None,
                     elements: None,
                 },
@@ -1101,13 +1107,20 @@ impl HyconHost {
 /// each a `HyconHostNodes` (node ids, reference coordinates, equation numbers with
 /// `HYCON_FIXED` for a dof the host holds at zero), ordered with its body on the left. A node
 /// in several pairs must be given the same coordinates and equations each time. `friction >= 0`
-/// is the Coulomb coefficient. The pair's index is written to `index` unless it is NULL. The
-/// arrays are copied; on an error the host is unchanged.
+/// is the Coulomb coefficient. `analysis` and `thickness` are those of the A side's elements
+/// (`HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS` and its thickness `t`, or
+/// `HYCON_AXISYMMETRIC` and 1): the contact integrals are weighted by A's surface measure,
+/// `t ds` or `2 pi r ds` (the full circle), so the tractions are pressures (force per area)
+/// and the contact forces are in the units of the host's stiffness (which carries `t`, or is
+/// over the full circle). All pairs of a host share one analysis kind. The pair's index is written to `index` unless it
+/// is NULL. The arrays are copied; on an error the host is unchanged.
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
 /// `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
 /// fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
-/// a bad friction coefficient, a misaligned pointer).
+/// a bad friction coefficient, an unknown analysis kind or one other than the host's earlier
+/// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), a misaligned
+/// pointer).
 ///
 /// # Safety
 /// `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
@@ -1118,12 +1131,25 @@ pub unsafe extern "C" fn hycon_host_add_pair(
     a: *const HyconHostNodes,
     b: *const HyconHostNodes,
     friction: f64,
+    analysis: HyconAnalysis,
+    thickness: f64,
     index: *mut usize,
 ) -> HyconStatus {
     boundary("hycon_host_add_pair", || {
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
         let index = optional(index, "index")?;
+        let kind =
+            analysis_from_c(analysis).ok_or_else(|| Fail::invalid(unknown_analysis(analysis)))?;
+        let measure = SurfaceMeasure::new(kind, thickness)?;
+        if let Some(first) = h.measures.first()
+            && !first.same_kind(&measure)
+        {
+            return Err(Fail::invalid(format!(
+                "all pairs of a host share one analysis kind: this pair's ({kind:?}) differs from \
+                 the earlier pairs'"
+            )));
+        }
         let a = unsafe { read_host_nodes(a, "a", "A", h.equations)? };
         let b = unsafe { read_host_nodes(b, "b", "B", h.equations)? };
         let ids = |nodes: &[HostNode]| nodes.iter().map(|n| n.id).collect::<Vec<_>>();
@@ -1151,6 +1177,7 @@ pub unsafe extern "C" fn hycon_host_add_pair(
         }
         h.pairs.push(pair);
         h.a_inside.push(None);
+        h.measures.push(measure);
         // SAFETY: the caller's contract on `index`.
         unsafe { put(index, h.pairs.len() - 1) };
         Ok(())
@@ -1378,6 +1405,7 @@ pub unsafe extern "C" fn hycon_contact_new_host(
             stiffness,
             elements: h.elements.clone(),
             a_inside: h.a_inside.clone(),
+            measures: h.measures.clone(),
         };
         let mut analysis = ContactAnalysis::host(system, h.pairs.clone(), opts)?;
         analysis.set_monitor(monitor);

@@ -633,21 +633,31 @@ unsafe fn read_material(m: *const HyconMaterial) -> Result<Material, Fail> {
     // SAFETY: non-null and aligned (checked); the caller guarantees a readable struct of
     // plain doubles and an int32_t (every bit pattern is valid).
     let m = unsafe { m.read() };
-    let analysis = match m.analysis {
-        HYCON_PLANE_STRAIN => Analysis::PlaneStrain,
-        HYCON_PLANE_STRESS => Analysis::PlaneStress,
-        HYCON_AXISYMMETRIC => Analysis::Axisymmetric,
-        a => {
-            return Err(Fail::new(
-                HYCON_ERROR_INVALID_MATERIAL,
-                format!(
-                    "invalid material: unknown analysis {a} (expected HYCON_PLANE_STRAIN = 1, \
-                     HYCON_PLANE_STRESS = 2 or HYCON_AXISYMMETRIC = 3)"
-                ),
-            ));
-        }
-    };
+    let analysis = analysis_from_c(m.analysis).ok_or_else(|| {
+        Fail::new(
+            HYCON_ERROR_INVALID_MATERIAL,
+            format!("invalid material: {}", unknown_analysis(m.analysis)),
+        )
+    })?;
     Ok(Material::new(m.youngs, m.poisson, m.thickness, analysis)?)
+}
+
+/// The analysis kind of a C `HyconAnalysis` value (`None`: unknown).
+pub(crate) fn analysis_from_c(a: HyconAnalysis) -> Option<Analysis> {
+    match a {
+        HYCON_PLANE_STRAIN => Some(Analysis::PlaneStrain),
+        HYCON_PLANE_STRESS => Some(Analysis::PlaneStress),
+        HYCON_AXISYMMETRIC => Some(Analysis::Axisymmetric),
+        _ => None,
+    }
+}
+
+/// The message for an unknown `HyconAnalysis` value.
+pub(crate) fn unknown_analysis(a: HyconAnalysis) -> String {
+    format!(
+        "unknown analysis {a} (expected HYCON_PLANE_STRAIN = 1, HYCON_PLANE_STRESS = 2 or \
+         HYCON_AXISYMMETRIC = 3)"
+    )
 }
 
 /// Check a fixed-size output `(ptr, len)` (its size stated by the function's other

@@ -4,6 +4,7 @@
 
 use super::{BNodeResult, ContactAnalysis, NodeResult};
 use crate::contact::geometry::ContactSurface;
+use crate::element::geometry::edge_normal;
 use crate::error::{Error, Result};
 
 /// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `2k` (normal,
@@ -197,9 +198,7 @@ impl ContactAnalysis {
                     pair.b[i.saturating_sub(1)],
                     pair.b[(i + 1).min(pair.b.len() - 1)],
                 );
-                let d = [xg[next][0] - xg[prev][0], xg[next][1] - xg[prev][1]];
-                let len = d[0].hypot(d[1]);
-                let n = [d[1] / len, -d[0] / len];
+                let (n, _) = edge_normal(xg[prev], xg[next]);
                 let pressure = if weight[i] > 0.0 {
                     -(force[i][0] * n[0] + force[i][1] * n[1]) / weight[i]
                 } else {

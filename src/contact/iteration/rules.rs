@@ -248,9 +248,7 @@ impl ContactAnalysis {
                 continue;
             }
             let (s0, s1) = (xg[w[0]], xg[w[1]]);
-            let d = [s1[0] - s0[0], s1[1] - s0[1]];
-            let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
-            let n = [d[1] / len, -d[0] / len];
+            let (n, _) = edge_normal(s0, s1);
             // current segment end points (equal to s0, s1 under finite kinematics)
             let (c0, c1) = (x[w[0]], x[w[1]]);
             // under small kinematics the B nodes inside each segment were found once, in the
