@@ -98,6 +98,9 @@
 // Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
 #define HYCON_FIXED -1
 
+// The largest `HyconContactOptions::cutback_depth`.
+#define HYCON_MAX_CUTBACK_DEPTH 52
+
 // Nodes of a brick.
 #define HYCON_BRICK_NODES 8
 
@@ -106,8 +109,6 @@
 
 // Largest number of stress parameters of a brick (18, the hybrid brick's).
 #define HYCON_BRICK_MAX_BETA 18
-// The largest `HyconContactOptions::cutback_depth`.
-#define HYCON_MAX_CUTBACK_DEPTH 52
 
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with

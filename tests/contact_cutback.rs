@@ -59,7 +59,11 @@ fn block(
     ids
 }
 
-/// The analysis of a press with `options`, and the upper block's top nodes.
+/// The analysis of a press with `options`, and the upper block's top nodes. It runs the
+/// paper's rules alone (`set_fallback(false)`): 0.7.0's fallback settles the slides below in
+/// one step, so the cutback is tested here as the mechanism it is, on increments the rules
+/// fail (a_large_frictional_slide_converges_in_sub_increments checks the fallback settles
+/// them too).
 struct Scene {
     analysis: ContactAnalysis,
     top: Vec<usize>,
@@ -116,11 +120,12 @@ impl Scene {
             kinematics: press.kinematics,
             ..options
         };
-        let analysis = if plate {
+        let mut analysis = if plate {
             ContactAnalysis::with_plate(model, vec![pair], options, top.clone())?
         } else {
             ContactAnalysis::new(model, vec![pair], options)?
         };
+        analysis.set_fallback(false);
         Ok(Scene {
             analysis,
             top,
@@ -233,6 +238,13 @@ fn a_large_frictional_slide_converges_in_sub_increments() {
             matches!(e, Error::Contact(ContactError::SlipReversal { .. })),
             "{e}"
         );
+        // 0.7.0's rules (the fallback on) settle the same slide without cutting back
+        let mut settled = Scene::new(press, off()).unwrap();
+        settled.analysis.set_fallback(true);
+        settled.step(press.depth, 0.0).unwrap();
+        let info = settled.step(press.depth, slide).unwrap();
+        assert_eq!((info.sub_increments, info.cutbacks), (1, 0));
+        assert_eq!(settled.analysis.fallbacks(), 1);
 
         let mut cut = Scene::new(press, ContactOptions::default()).unwrap();
         let first = cut.step(press.depth, 0.0).unwrap();
@@ -621,6 +633,7 @@ fn host_pair_with(
         }),
         elements,
         a_inside,
+        measures: vec![hycon::contact::geometry::SurfaceMeasure::default()],
     };
     let (mut a, mut b): (Vec<usize>, Vec<usize>) = ((0..5).collect(), (5..10).collect());
     if reversed {

@@ -122,7 +122,7 @@ pub fn side(ids: &[usize], x: &[[f64; 2]], p: [f64; 2]) -> Option<f64> {
     } else if eta >= 1.0 {
         node_normal(ids, seg + 1, x)
     } else {
-        segment_normal(x[ids[seg]], x[ids[seg + 1]])
+        edge_normal(x[ids[seg]], x[ids[seg + 1]]).0
     };
     Some((p[0] - q[0]) * n[0] + (p[1] - q[1]) * n[1])
 }

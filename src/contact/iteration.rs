@@ -518,8 +518,9 @@ pub struct IterationRecord {
     /// The worst violation of the discrete contact conditions by this iteration's solution
     /// with its states (gap >= 0 at open nodes, `p >= 0` and a closed gap at closed ones,
     /// `|ts| <= mu p` and no slip at stick nodes, slip opposing `ts` at slip nodes), relative
-    /// to the problem's scale: gaps to the gap scale (the increment's motion, at most the
-    /// mean A segment), tractions to the largest `|tn|`, slips to the motion scale. At
+    /// to the problem's scale: open nodes' penetration to the gap scale (the increment's motion,
+    /// at most the mean A segment), closed nodes' gaps and slips to the motion, tractions to
+    /// the largest `|tn|`. At
     /// convergence it is at most [`CONDITION_LIMIT`] (else the increment fails with
     /// [`ContactError::ConditionViolated`]).
     pub violation: f64,

@@ -133,9 +133,9 @@ pub struct HyconIterationRecord {
     /// The worst violation of the discrete contact conditions by this iteration's solution
     /// (open gaps >= 0; closed nodes in compression with closed gaps; stick nodes inside the
     /// friction cone and not sliding; slip opposing the friction), relative to the problem's
-    /// scale (gaps to the increment's motion, at most the mean A segment; tractions to the
-    /// largest; slips to the motion). At convergence at most 1e-4, else the increment fails
-    /// with `HYCON_ERROR_CONTACT`.
+    /// scale (open gaps to the increment's motion, at most the mean A segment; closed gaps and
+    /// slips to the motion; tractions to the largest). At convergence at most 1e-4, else the
+    /// increment fails with `HYCON_ERROR_CONTACT`.
     pub violation: f64,
     /// The sub-increment (1-based) this iteration belongs to: 1 unless the automatic cutback
     /// split the increment (see `HyconContactOptions::cutback_depth`). A sub-increment that

@@ -416,7 +416,9 @@ impl ContactAnalysis {
         };
         for (p, surface) in surfaces.iter().enumerate() {
             let gap_scale = self.gap_scale(p, xg, uc, startc);
-            let slip_scale = self.motion_scale(p, xg, uc, startc);
+            // a closed node's gap and a stick node's slip are solved for: what is left of them
+            // is round-off of the motion, however far the bodies move
+            let motion_scale = self.motion_scale(p, xg, uc, startc);
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
             let per_traction = |v: f64| if tn_max > 0.0 { v / tn_max } else { 0.0 };
             let law = &*self.laws[p];
@@ -440,17 +442,17 @@ impl ContactAnalysis {
                     continue;
                 }
                 found(per_traction(tn), "a closed node is in tension");
-                found(gap.abs() / gap_scale, "a closed node's gap is not closed");
+                found(gap.abs() / motion_scale, "a closed node's gap is not closed");
                 match states[p][k] {
                     NodeState::Stick => {
                         found(
                             per_traction(ts.abs() - law.stick_limit(tn)),
                             "a stick node is outside the friction cone",
                         );
-                        found(slip().abs() / slip_scale, "a stick node slides");
+                        found(slip().abs() / motion_scale, "a stick node slides");
                     }
                     NodeState::Slip { sign } if !law.is_frictionless() => found(
-                        -f64::from(sign) * slip() / slip_scale,
+                        -f64::from(sign) * slip() / motion_scale,
                         "a slip node slides against its friction",
                     ),
                     _ => {}
