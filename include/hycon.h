@@ -234,7 +234,8 @@ typedef struct HyconElementBlock {
     HyconElementKind kind;
 } HyconElementBlock;
 
-// Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`.
+// Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`,
+// `HYCON_AXISYMMETRIC`. One model (and one host) uses one kind.
 typedef int32_t HyconAnalysis;
 
 // Isotropic linear elastic material.
@@ -244,9 +245,9 @@ typedef struct HyconMaterial {
     // Poisson's ratio, `-1 < nu < 0.5`.
     double poisson;
     // Thickness `t > 0`, within [1e-100, 1e100] (plane strain: the depth results are reported
-    // per, usually 1).
+    // per, usually 1); exactly 1 in axisymmetry (the measure is `2 pi r`).
     double thickness;
-    // `HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS`.
+    // `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS` or `HYCON_AXISYMMETRIC`.
     HyconAnalysis analysis;
 } HyconMaterial;
 
@@ -461,12 +462,13 @@ typedef struct HyconSolidMaterial {
 #define HYCON_ERROR_INVALID_ARGUMENT -2
 
 // The material is invalid: `E <= 0`, `nu` outside `(-1, 0.5)`, `t <= 0`, non-finite values,
-// unknown analysis type.
+// unknown analysis type, axisymmetric with `t != 1`, a model mixing analysis kinds.
 #define HYCON_ERROR_INVALID_MATERIAL -3
 
 // An element has a bad shape or node count: degenerate (zero area, coincident nodes),
-// inverted (clockwise), non-convex, or a node count the formulation does not take. The
-// message names the element (its index when the call handles a mesh) and the defect.
+// inverted (clockwise), non-convex, or a node count the formulation does not take; in
+// axisymmetry also a node at `x = r < 0` or a formulation / node count not available there.
+// The message names the element (its index when the call handles a mesh) and the defect.
 #define HYCON_ERROR_BAD_ELEMENT -4
 
 // A global system is singular (a body not held against rigid motion).
@@ -503,6 +505,16 @@ typedef struct HyconSolidMaterial {
 
 // Plane stress (`sigma_z = 0`).
 #define HYCON_PLANE_STRESS 2
+
+// Axisymmetric: a solid of revolution about the y axis, `x = r >= 0` (radial), `y = z`
+// (axial), no torsion. Strains `{eps_r, eps_z, gamma_rz, eps_theta = u_r / r}`, stresses
+// `{sigma_r, sigma_z, tau_rz, sigma_theta}`. **Measure: the full circle**: every volume and
+// surface integral is weighted by `2 pi r` (element matrices, loads, reactions, contact forces,
+// energies), so a nodal force is the force summed over the whole circumference. The thickness
+// must be exactly 1. Elements: the hybrid element (4 nodes, 7 stress parameters) and Q4;
+// Pian-Sumihara and the 5- and 6-node transition elements are rejected
+// (`HYCON_ERROR_BAD_ELEMENT`). Prescribe `u_r = 0` at nodes on the axis.
+#define HYCON_AXISYMMETRIC 3
 
 // faer (always available; the default).
 #define HYCON_BACKEND_FAER 1
@@ -625,8 +637,9 @@ HyconStatus hycon_contact_options_default(struct HyconContactOptions *out);
 // The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `coords`, `elements`,
 // `materials`, or an array of `elements` with a nonzero length), `HYCON_ERROR_INVALID_ARGUMENT`
 // (lengths, unknown node ids, non-finite coordinates, unknown kind, misaligned pointers),
-// `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex
-// element, named by index).
+// `HYCON_ERROR_INVALID_MATERIAL` (also materials of different analysis kinds: one model takes
+// one kind), `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex element, named by
+// index; in axisymmetry also a node at `x < 0`, Pian-Sumihara or a 5- or 6-node element).
 //
 // # Safety
 // `out` must point to a writable pointer; `coords` NULL or `2 n_nodes` readable doubles;
@@ -1050,7 +1063,9 @@ HyconStatus hycon_contact_constraint_rows(const struct HyconContact *contact,
                                           size_t *needed);
 
 // Check one element's shape for a formulation: node count, finite coordinates, positive area,
-// counter-clockwise order, convexity (tolerances relative to the element size).
+// counter-clockwise order, convexity (tolerances relative to the element size). It takes no
+// material, so it does not check what axisymmetry adds (4 nodes, `r >= 0`, no Pian-Sumihara):
+// `hycon_element_stiffness` does.
 //
 // `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise.
 //
@@ -1070,7 +1085,9 @@ HyconStatus hycon_element_check(HyconElementKind kind, size_t n_nodes, const dou
 // * `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise. Q4 and
 //   Pian-Sumihara take 4 nodes, the hybrid element 4 to 6 (corners plus mid-side nodes on
 //   straight edges, in boundary order).
-// * `material`: finite, `E > 0`, `-1 < nu < 0.5`, `t > 0`, known analysis; `t` multiplies `K`.
+// * `material`: finite, `E > 0`, `-1 < nu < 0.5`, `t > 0`, known analysis; `t` multiplies `K`
+//   in plane analyses; `HYCON_AXISYMMETRIC` (`t = 1`, `x = r >= 0`) integrates with `2 pi r`
+//   (the whole ring's stiffness) and takes 4 nodes, hybrid (7 beta) or Q4.
 // * `k_out`, `k_len`: output array of at least `(2n)^2` doubles (`HYCON_MAX_DOF^2 = 144` always
 //   suffices); only the first `(2n)^2` are written, and only on success.
 //
@@ -1088,17 +1105,21 @@ HyconStatus hycon_element_stiffness(HyconElementKind kind,
                                     double *k_out,
                                     size_t k_len);
 
-// Stress `{sx, sy, txy}` at the physical point `(px, py)` of an element, recovered from its
-// nodal displacements `q` (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`).
+// Stress at the physical point `(px, py)` of an element, recovered from its nodal
+// displacements `q` (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): `out` receives
+// `{sx, sy, txy}` (3 doubles) in plane strain and plane stress, and
+// `{sigma_r, sigma_z, tau_rz, sigma_theta}` (**4 doubles**) with a `HYCON_AXISYMMETRIC`
+// material. `hycon_element_stress_components(material)` tells the count; a buffer of 4 always
+// suffices.
 //
 // Hybrid elements evaluate their assumed stress field `P beta` with `beta = H^-1 G q`; Q4
-// evaluates `D B q`. The point should lie in the element; outside it the value is an
-// extrapolation (a non-finite result is reported as `HYCON_ERROR_INVALID_ARGUMENT`).
-// `out` receives 3 doubles on success.
+// evaluates `D B q` (not finite on the axis `r = 0` in axisymmetry). The point should lie in the
+// element; outside it the value is an extrapolation (a non-finite result is reported as
+// `HYCON_ERROR_INVALID_ARGUMENT`).
 //
 // # Safety
 // `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
-// a readable struct; `out` NULL or writable for 3 doubles.
+// a readable struct; `out` NULL or writable for 3 doubles (4 in axisymmetry).
 HyconStatus hycon_element_stress(HyconElementKind kind,
                                  size_t n_nodes,
                                  const double *coords,
@@ -1110,7 +1131,7 @@ HyconStatus hycon_element_stress(HyconElementKind kind,
 
 // Stress parameters `beta` of a hybrid element, recovered from its nodal displacements `q`
 // (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): 7 for the hybrid element with 4 or 5
-// nodes, 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
+// nodes (and the axisymmetric hybrid element), 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
 //
 // `out`, `len`, `needed`: the header's size convention (`HYCON_MAX_BETA` always suffices; the
 // size query `(NULL, 0, &needed)` gives the count, 0 for Q4).
@@ -1129,10 +1150,21 @@ HyconStatus hycon_element_stress_params(HyconElementKind kind,
                                         size_t len,
                                         size_t *needed);
 
+// Number of stress components `hycon_element_stress` writes for `material`: 3 (`{sx, sy, txy}`)
+// in plane strain and plane stress, 4 (`{sigma_r, sigma_z, tau_rz, sigma_theta}`) in
+// axisymmetry, into `*out`.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_MATERIAL`.
+//
+// # Safety
+// `material` NULL or a readable struct; `out` NULL or a writable `size_t`.
+HyconStatus hycon_element_stress_components(const struct HyconMaterial *material, size_t *out);
+
 // Traction `{tx, ty} = sigma n` (outward unit normal `n`) at parameter `s` in `[0, 1]` along
 // boundary edge `edge` of an element, the edge running from local node `edge` to local node
 // `edge + 1` (cyclically, so `edge < n_nodes`), from nodal displacements `q` (`2 * n_nodes`
-// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success.
+// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success (in axisymmetry
+// the meridian traction `{t_r, t_z}`, a pressure: force per area).
 //
 // # Safety
 // `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or

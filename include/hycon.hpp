@@ -211,6 +211,24 @@ inline Result<std::vector<double>> element_stiffness(HyconElementKind kind, View
     return k;
 }
 
+// Stress at the physical point (px, py) of an element from its nodal displacements `q`
+// (2n values): {sx, sy, txy} in plane analyses, {sigma_r, sigma_z, tau_rz, sigma_theta} with a
+// HYCON_AXISYMMETRIC material (hycon_element_stress_components tells the count).
+inline Result<std::vector<double>> element_stress(HyconElementKind kind, View<double> coords,
+                                                  const HyconMaterial &material,
+                                                  View<double> q, double px, double py) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    if (q.size() != coords.size()) return detail::invalid("q must hold 2 values per node");
+    std::size_t count = 0;
+    Status s = Status::from(hycon_element_stress_components(&material, &count));
+    if (!s.ok()) return s;
+    std::vector<double> out(count);
+    s = Status::from(hycon_element_stress(kind, coords.size() / 2, coords.data(), &material,
+                                          q.data(), px, py, out.data()));
+    if (!s.ok()) return s;
+    return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // 3D element routines: 8-node bricks (numbering at HyconBrickKind in hycon.h)
 

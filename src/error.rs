@@ -60,6 +60,16 @@ pub enum ShapeError {
         /// Local face index (0-based).
         face: usize,
     },
+    /// In axisymmetry, a node with a negative radius `x < 0` (beyond round-off of the element
+    /// size): the section must lie on the side `r >= 0` of the axis.
+    #[error("node at local index {node} has a negative radius (axisymmetric: x = r >= 0)")]
+    NegativeRadius {
+        /// Local node index (0-based).
+        node: usize,
+    },
+    /// The formulation or node count is not available for the material's analysis kind.
+    #[error("{0}")]
+    Unsupported(&'static str),
 }
 
 /// The crate-wide error type.

@@ -8,9 +8,10 @@
 //! asked for.
 
 use crate::assembly::{DofMap, SparsePattern, dof, for_each_selected_element_matrix};
+use crate::element::geometry::GAUSS2_UNIT;
 use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
 use crate::error::{Error, Result};
-use crate::material::Material;
+use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
 use crate::solver::{Backend, SparseCholesky};
 use faer::Mat;
@@ -26,13 +27,15 @@ pub struct Prescribed {
     pub value: f64,
 }
 
-/// A line load on a boundary edge `[a, b]`, linear along it: force per unit length of edge
-/// (traction times thickness), given as global `[fx, fy]` at `a` and at `b`.
+/// A distributed load on a boundary edge `[a, b]`, linear along it: a traction (force per unit
+/// area), given as global `[fx, fy]` at `a` and at `b`. Its nodal forces are integrated with the
+/// measure of the edge's material ([`Material::measure`]): `t ds` in plane analyses, `2 pi r ds`
+/// in axisymmetry (full-circle forces).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LineLoad {
     /// The edge's end nodes.
     pub nodes: [usize; 2],
-    /// Force per unit length at the two ends.
+    /// Traction (force per unit area) at the two ends.
     pub load: [[f64; 2]; 2],
 }
 
@@ -126,7 +129,7 @@ impl Model {
         Ok(())
     }
 
-    /// A uniform line load (force per unit length) on every edge of `edges`.
+    /// A uniform traction (force per unit area; see [`LineLoad`]) on every edge of `edges`.
     pub fn load_edges(&mut self, edges: &[[usize; 2]], load: [f64; 2]) {
         self.line_loads.extend(edges.iter().map(|&nodes| LineLoad {
             nodes,
@@ -134,18 +137,44 @@ impl Model {
         }));
     }
 
-    /// Check materials, mesh, element shapes, boundary conditions and loads.
+    /// The analysis kind of the model's materials (plane strain if it has none). A model does
+    /// not mix kinds ([`Model::validate`]).
+    pub fn analysis(&self) -> Analysis {
+        self.materials
+            .first()
+            .map_or(Analysis::PlaneStrain, |m| m.analysis)
+    }
+
+    /// Check materials (one analysis kind for all), mesh, element shapes (for their material's
+    /// kind), boundary conditions and loads.
     pub fn validate(&self) -> Result<()> {
         for m in &self.materials {
             m.validate()?;
+        }
+        let kind = self.analysis();
+        if let Some((i, m)) = self
+            .materials
+            .iter()
+            .enumerate()
+            .find(|(_, m)| m.analysis != kind)
+        {
+            return Err(Error::Material(format!(
+                "material {i} is {} but material 0 is {}: one model takes one analysis kind",
+                m.analysis.name(),
+                kind.name()
+            )));
         }
         self.mesh.validate()?;
         let n = self.mesh.n_nodes();
         let mut coords = [[0.0; 2]; MAX_NODES];
         for e in 0..self.mesh.n_elements() {
             let k = self.mesh.element_coords(e, &mut coords);
-            element::check_shape(self.formulation, &coords[..k])
-                .map_err(|kind| Error::at_element(kind, e))?;
+            let material = self.materials.get(self.mesh.element_material[e]);
+            match material {
+                Some(m) => element::check_element(self.formulation, &coords[..k], m),
+                None => element::check_shape(self.formulation, &coords[..k]),
+            }
+            .map_err(|kind| Error::at_element(kind, e))?;
         }
         let mut seen = vec![false; 2 * n];
         for p in &self.prescribed {
@@ -178,25 +207,71 @@ impl Model {
         Ok(())
     }
 
-    /// External force vector over all dofs: nodal forces plus consistent line-load forces
-    /// (`f_a = L (2 q_a + q_b) / 6`, `f_b = L (q_a + 2 q_b) / 6` for a linear load `q`).
+    /// External force vector over all dofs: nodal forces plus the consistent forces of the
+    /// line loads, `f_a = integral of N_a q m ds` with `N_a` the linear shape function of end
+    /// `a`, `q` the linear traction and `m` the measure: in plane analyses `m = t` and
+    /// `f_a = t L (2 q_a + q_b) / 6`, `f_b = t L (q_a + 2 q_b) / 6`; in axisymmetry `m = 2 pi r`
+    /// is linear too and two-point Gauss integrates the cubic integrand exactly.
     pub fn external_forces(&self) -> Vec<f64> {
         let mut f = vec![0.0; 2 * self.mesh.n_nodes()];
         for &(node, force) in &self.nodal_forces {
             f[dof(node, 0)] += force[0];
             f[dof(node, 1)] += force[1];
         }
+        // the measure depends on the material through t only: look for the edge's element only
+        // when the thicknesses differ
+        let uniform = self
+            .materials
+            .windows(2)
+            .all(|w| w[0].thickness == w[1].thickness);
         for l in &self.line_loads {
             let [a, b] = l.nodes;
             let (pa, pb) = (self.mesh.nodes[a], self.mesh.nodes[b]);
             let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
+            let material = if uniform {
+                self.materials.first()
+            } else {
+                self.edge_material(a, b)
+            };
+            let Some(material) = material else {
+                continue; // a node outside every element: `validate` reports the model
+            };
             for dir in 0..2 {
                 let (qa, qb) = (l.load[0][dir], l.load[1][dir]);
-                f[dof(a, dir)] += len * (2.0 * qa + qb) / 6.0;
-                f[dof(b, dir)] += len * (qa + 2.0 * qb) / 6.0;
+                if material.analysis == Analysis::Axisymmetric {
+                    for (s, w) in GAUSS2_UNIT {
+                        let x = [pa[0] + s * (pb[0] - pa[0]), pa[1] + s * (pb[1] - pa[1])];
+                        let q = (qa + s * (qb - qa)) * material.measure(x) * w * len;
+                        f[dof(a, dir)] += (1.0 - s) * q;
+                        f[dof(b, dir)] += s * q;
+                    }
+                } else {
+                    let t = material.thickness;
+                    f[dof(a, dir)] += t * len * (2.0 * qa + qb) / 6.0;
+                    f[dof(b, dir)] += t * len * (qa + 2.0 * qb) / 6.0;
+                }
             }
         }
         f
+    }
+
+    /// The material of an element with `a` and `b` as consecutive nodes (the element the edge
+    /// bounds), else of an element holding `a`; `None` if `a` is in no element or its material
+    /// index is out of range.
+    fn edge_material(&self, a: usize, b: usize) -> Option<&Material> {
+        let mesh = &self.mesh;
+        let has_edge = |e: usize| {
+            let nodes = mesh.element(e);
+            let n = nodes.len();
+            (0..n).any(|i| {
+                let (p, q) = (nodes[i], nodes[(i + 1) % n]);
+                (p, q) == (a, b) || (p, q) == (b, a)
+            })
+        };
+        let element = (0..mesh.n_elements())
+            .find(|&e| has_edge(e))
+            .or_else(|| (0..mesh.n_elements()).find(|&e| mesh.element(e).contains(&a)))?;
+        self.materials.get(mesh.element_material[element])
     }
 
     /// Prescribed displacement values over all dofs (zero where free).
@@ -417,10 +492,12 @@ impl Solution {
     }
 }
 
-/// Every connected body must be held against its three rigid-body motions by prescribed
-/// displacements: the rigid modes `(1, 0)`, `(0, 1)`, `(-(y - yc), x - xc) / L` restricted to the
-/// body's prescribed dofs must have rank 3. Also rejects nodes that belong to no element and are
-/// not fully prescribed.
+/// Every connected body must be held against its rigid-body motions by prescribed
+/// displacements: in plane analyses the rigid modes `(1, 0)`, `(0, 1)`, `(-(y - yc), x - xc) / L`
+/// restricted to the body's prescribed dofs must have rank 3; in axisymmetry the only rigid
+/// motion is the axial translation `(0, 1)` (a radial translation strains the hoop), so some
+/// axial displacement of the body must be prescribed. Also rejects nodes that belong to no
+/// element and are not fully prescribed.
 fn check_rigid_body_support(model: &Model) -> Result<()> {
     let mesh = &model.mesh;
     let body = connected_bodies(mesh);
@@ -436,13 +513,25 @@ fn check_rigid_body_support(model: &Model) -> Result<()> {
             "node {node} belongs to no element and is not fully prescribed"
         )));
     }
+    let axisymmetric = model.analysis() == Analysis::Axisymmetric;
     for b in 0..n_bodies {
         let nodes: Vec<usize> = (0..mesh.n_nodes())
             .filter(|&i| body[i] == Some(b))
             .collect();
+        let first = nodes.first().copied().unwrap_or(0);
+        if axisymmetric {
+            if !nodes.iter().any(|&i| prescribed[i][1]) {
+                return Err(Error::Singular(format!(
+                    "body {b} (the {} nodes connected to node {first}) is not held against its \
+                     axial translation: prescribe the axial (y = z) displacement of one of its \
+                     nodes",
+                    nodes.len()
+                )));
+            }
+            continue;
+        }
         let rank = rigid_mode_rank(mesh, &nodes, &prescribed);
         if rank < 3 {
-            let first = nodes.first().copied().unwrap_or(0);
             return Err(Error::Singular(format!(
                 "body {b} (the {} nodes connected to node {first}) is not held against rigid \
                  motion: its prescribed displacements fix only {rank} of its 3 rigid-body modes",

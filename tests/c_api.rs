@@ -456,6 +456,12 @@ fn bad_enums_are_rejected() {
         HYCON_ERROR_INVALID_MATERIAL,
         "unknown analysis 0",
     );
+    m.analysis = HYCON_AXISYMMETRIC + 1;
+    assert_status(
+        stiffness(HYCON_ELEMENT_Q4, &SQUARE, &m, &mut k),
+        HYCON_ERROR_INVALID_MATERIAL,
+        "HYCON_AXISYMMETRIC = 3",
+    );
     assert!(k.iter().all(|&v| v == SENTINEL));
 }
 
@@ -587,6 +593,170 @@ fn element_routines_are_thread_safe() {
     for t in threads {
         t.join().unwrap();
     }
+}
+
+/// Axisymmetric mode (`HYCON_AXISYMMETRIC`): the stiffness equals the safe API's bit for bit,
+/// `hycon_element_stress` writes 4 components (`{sigma_r, sigma_z, tau_rz, sigma_theta}`, and
+/// not one more), `hycon_element_stress_components` says 4 (3 in plane), the hybrid element has
+/// 7 beta; a thickness other than 1, Pian-Sumihara, a 5-node element and a node at `r < 0` are
+/// rejected with messages that say why.
+#[test]
+fn axisymmetric_element_routines() {
+    const AXI: HyconMaterial = HyconMaterial {
+        youngs: 1000.0,
+        poisson: 0.49,
+        thickness: 1.0,
+        analysis: HYCON_AXISYMMETRIC,
+    };
+    let coords = [0.0, 0.0, 2.0, 0.3, 2.4, 1.9, 0.0, 1.1]; // two nodes on the axis
+    let nodes: Vec<[f64; 2]> = coords.chunks(2).map(|c| [c[0], c[1]]).collect();
+    let q = [0.0, 0.0, 0.01, 0.002, 0.013, -0.004, 0.0, -0.003];
+    let material = Material::new(1000.0, 0.49, 1.0, Analysis::Axisymmetric).unwrap();
+    for (kind, f) in [
+        (HYCON_ELEMENT_HYBRID, Formulation::Hybrid),
+        (HYCON_ELEMENT_Q4, Formulation::Q4),
+    ] {
+        let mut k = [SENTINEL; 65];
+        assert_status(stiffness(kind, &coords, &AXI, &mut k), HYCON_OK, "");
+        let mut safe = ElementMatrix::zeros();
+        element::stiffness_into(f, &nodes, &material, &mut safe).unwrap();
+        for i in 0..8 {
+            for j in 0..8 {
+                assert_eq!(k[i * 8 + j], safe[(i, j)], "{f:?} ({i}, {j})");
+            }
+        }
+        assert_eq!(k[64], SENTINEL);
+        let field = element::recover_stress(f, &nodes, &material, &q).unwrap();
+        let mut s = [SENTINEL; 5];
+        let mut beta = [SENTINEL; HYCON_MAX_BETA];
+        let mut n_beta = 0usize;
+        // SAFETY: all pointers valid for the lengths documented (4 stress values here).
+        unsafe {
+            let ptrs = (coords.as_ptr(), &AXI as *const HyconMaterial, q.as_ptr());
+            assert_status(
+                hycon_element_stress(kind, 4, ptrs.0, ptrs.1, ptrs.2, 1.1, 0.8, s.as_mut_ptr()),
+                HYCON_OK,
+                "",
+            );
+            assert_status(
+                hycon_element_stress_params(
+                    kind,
+                    4,
+                    ptrs.0,
+                    ptrs.1,
+                    ptrs.2,
+                    beta.as_mut_ptr(),
+                    beta.len(),
+                    &mut n_beta,
+                ),
+                HYCON_OK,
+                "",
+            );
+        }
+        assert_eq!(s[..4], field.at_full([1.1, 0.8]), "{f:?}");
+        assert_eq!(s[4], SENTINEL, "{f:?}: a fifth value written");
+        assert_eq!(n_beta, if f == Formulation::Hybrid { 7 } else { 0 });
+    }
+    let mut count = 0usize;
+    // SAFETY: valid material and output.
+    unsafe {
+        assert_status(
+            hycon_element_stress_components(&AXI, &mut count),
+            HYCON_OK,
+            "",
+        );
+        assert_eq!(count, 4);
+        assert_status(
+            hycon_element_stress_components(&STEEL, &mut count),
+            HYCON_OK,
+            "",
+        );
+        assert_eq!(count, 3);
+        assert_status(
+            hycon_element_stress_components(ptr::null(), &mut count),
+            HYCON_ERROR_NULL_POINTER,
+            "material is NULL",
+        );
+    }
+    let mut k = [SENTINEL; 144];
+    let thick = HyconMaterial {
+        thickness: 2.0,
+        ..AXI
+    };
+    assert_status(
+        stiffness(HYCON_ELEMENT_HYBRID, &coords, &thick, &mut k),
+        HYCON_ERROR_INVALID_MATERIAL,
+        "2 pi r",
+    );
+    assert_status(
+        stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, &coords, &AXI, &mut k),
+        HYCON_ERROR_BAD_ELEMENT,
+        "not available in axisymmetric analysis",
+    );
+    let five = [1.0, 0.0, 1.5, 0.0, 2.0, 0.0, 2.0, 1.0, 1.0, 1.0];
+    assert_status(
+        stiffness(HYCON_ELEMENT_HYBRID, &five, &AXI, &mut k),
+        HYCON_ERROR_BAD_ELEMENT,
+        "4-node elements only",
+    );
+    let left = [-1.0, 0.0, 1.0, 0.0, 1.0, 1.0, -1.0, 1.0];
+    assert_status(
+        stiffness(HYCON_ELEMENT_Q4, &left, &AXI, &mut k),
+        HYCON_ERROR_BAD_ELEMENT,
+        "negative radius",
+    );
+    assert!(k.iter().all(|&v| v == SENTINEL), "written on an error");
+}
+
+/// The model API takes one analysis kind per model: an axisymmetric model is accepted, one whose
+/// materials mix axisymmetric and plane strain is rejected (`HYCON_ERROR_INVALID_MATERIAL`), and
+/// Pian-Sumihara in axisymmetry is `HYCON_ERROR_BAD_ELEMENT`.
+#[test]
+fn model_api_takes_one_analysis_kind() {
+    const AXI: HyconMaterial = HyconMaterial {
+        youngs: 1000.0,
+        poisson: 0.3,
+        thickness: 1.0,
+        analysis: HYCON_AXISYMMETRIC,
+    };
+    let coords = [0.0, 0.0, 1.0, 0.0, 2.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0, 1.0];
+    let offsets = [0usize, 4, 8];
+    let nodes = [0usize, 1, 4, 3, 1, 2, 5, 4];
+    let which = [0usize, 1];
+    let new_model = |kind: i32, materials: &[HyconMaterial]| -> HyconStatus {
+        let block = HyconElementBlock {
+            offsets: offsets.as_ptr(),
+            nodes: nodes.as_ptr(),
+            n_elements: 2,
+            materials: which.as_ptr(),
+            kind,
+        };
+        let mut model: *mut HyconModel = ptr::null_mut();
+        // SAFETY: all arrays hold the stated counts; the handle is freed below.
+        unsafe {
+            let st = hycon_model_new(
+                &mut model,
+                coords.as_ptr(),
+                6,
+                &block,
+                materials.as_ptr(),
+                materials.len(),
+            );
+            hycon_model_free(model);
+            st
+        }
+    };
+    assert_status(new_model(HYCON_ELEMENT_HYBRID, &[AXI, AXI]), HYCON_OK, "");
+    assert_status(
+        new_model(HYCON_ELEMENT_HYBRID, &[AXI, STEEL]),
+        HYCON_ERROR_INVALID_MATERIAL,
+        "one model takes one analysis kind",
+    );
+    assert_status(
+        new_model(HYCON_ELEMENT_PIAN_SUMIHARA, &[AXI, AXI]),
+        HYCON_ERROR_BAD_ELEMENT,
+        "element 0: the Pian-Sumihara element is not available in axisymmetric analysis",
+    );
 }
 
 #[test]
@@ -784,4 +954,5 @@ fn c_examples_compile_and_pass() {
     compile_and_run("bad_input.c", false, &[]);
     compile_and_run("cook_c.c", false, &["8"]);
     compile_and_run("cook_cpp.cpp", true, &["8"]);
+    compile_and_run("lame_cpp.cpp", true, &["20"]);
 }

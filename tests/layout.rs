@@ -258,6 +258,7 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_ELEMENT_Q4,
         HYCON_PLANE_STRAIN,
         HYCON_PLANE_STRESS,
+        HYCON_AXISYMMETRIC,
         HYCON_BACKEND_FAER,
         HYCON_BACKEND_CHOLMOD,
         HYCON_KINEMATICS_SMALL,

@@ -50,12 +50,16 @@ fn kernels_do_not_allocate() {
         quad[2],
         quad[3],
     ];
-    let cases: [(Formulation, &[[f64; 2]]); 5] = [
-        (Formulation::Hybrid, &quad),
-        (Formulation::Hybrid, &five),
-        (Formulation::Hybrid, &six),
-        (Formulation::PianSumihara, &quad),
-        (Formulation::Q4, &quad),
+    let axi = Material::new(1.0, 0.3, 1.0, Analysis::Axisymmetric).unwrap();
+    let ring = [[0.5, 0.0], [1.6, 0.1], [1.5, 0.9], [0.4, 1.0]];
+    let cases: [(Formulation, &[[f64; 2]], &Material); 7] = [
+        (Formulation::Hybrid, &quad, &m),
+        (Formulation::Hybrid, &five, &m),
+        (Formulation::Hybrid, &six, &m),
+        (Formulation::PianSumihara, &quad, &m),
+        (Formulation::Q4, &quad, &m),
+        (Formulation::Hybrid, &ring, &axi),
+        (Formulation::Q4, &ring, &axi),
     ];
     let mut k = ElementMatrix::zeros();
     let q = [1e-3; 12];
@@ -63,10 +67,10 @@ fn kernels_do_not_allocate() {
     let before = ALLOCATIONS.load(Ordering::SeqCst);
     let mut checksum = 0.0;
     for _ in 0..100 {
-        for (f, coords) in cases {
-            element::stiffness_into(f, coords, &m, &mut k).unwrap();
-            let field = element::recover_stress(f, coords, &m, &q[..2 * coords.len()]).unwrap();
-            checksum += k[(0, 0)] + field.at([0.5, 0.5])[0] + field.edge_traction(1, 0.5)[1];
+        for (f, coords, m) in cases {
+            element::stiffness_into(f, coords, m, &mut k).unwrap();
+            let field = element::recover_stress(f, coords, m, &q[..2 * coords.len()]).unwrap();
+            checksum += k[(0, 0)] + field.at_full([0.5, 0.5])[3] + field.edge_traction(1, 0.5)[1];
         }
     }
     let after = ALLOCATIONS.load(Ordering::SeqCst);

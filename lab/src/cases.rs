@@ -53,8 +53,9 @@ pub fn cook_membrane_scaled(
         .ok_or_else(|| Error::InvalidInput(format!("Cook's membrane needs an even n, got {n}")))?;
     let mut model = Model::new(mesh, vec![material], formulation);
     model.fix(&clamped, [0.0, 0.0])?;
-    // total shear `force` over the loaded edge of length 16 `length`, per unit length
-    model.load_edges(&loaded, [0.0, force / (16.0 * length)]);
+    // total shear `force` over the loaded face, 16 `length` long and `t = length` thick: the
+    // traction (force per area) `force / (16 length^2)`
+    model.load_edges(&loaded, [0.0, force / (16.0 * length * length)]);
     let solution = model.solve()?;
     Ok(solution.displacement(tip)[1] / length)
 }

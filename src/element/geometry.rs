@@ -27,6 +27,13 @@ pub const GAUSS2: [(f64, f64); 2] = [
     (0.577_350_269_189_625_8, 1.0),
 ];
 
+/// Three-point Gauss rule on `[-1, 1]`: `(abscissa, weight)`; exact for quintics.
+pub const GAUSS3: [(f64, f64); 3] = [
+    (-0.774_596_669_241_483_4, 5.0 / 9.0),
+    (0.0, 8.0 / 9.0),
+    (0.774_596_669_241_483_4, 5.0 / 9.0),
+];
+
 /// Strang and Fix's 3-point rule on a triangle, exact for polynomials of degree 2: barycentric
 /// coordinates and weights summing to 1.
 pub const STRANG_FIX2: [([f64; 3], f64); 3] = [

@@ -17,14 +17,23 @@
 //!   where 7 beta would leave two spurious zero-energy modes. `K = G^T H^-1 G`.
 //! * [`Formulation::PianSumihara`]: the 5-beta hybrid quad, for comparison.
 //! * [`Formulation::Q4`]: the bilinear displacement quad with 2x2 Gauss, the baseline.
+//!
+//! # Analysis kinds
+//! The kernels read the analysis kind from the material. In plane strain and plane stress every
+//! integral is weighted by the thickness `t`. In axisymmetry ([`Analysis::Axisymmetric`],
+//! `x = r`, `y = z`) it is weighted by `2 pi r` and only 4-node elements are available:
+//! [`Formulation::Hybrid`] becomes the 7-beta axisymmetric hybrid element and
+//! [`Formulation::Q4`] the axisymmetric bilinear quad (see [`axisymmetric`]); Pian-Sumihara and
+//! the 5- and 6-node transition elements are rejected ([`ShapeError::Unsupported`]).
 
+pub mod axisymmetric;
 pub mod geometry;
 pub mod hybrid;
 pub mod pian_sumihara;
 pub mod q4;
 
 use crate::error::ShapeError;
-use crate::material::Material;
+use crate::material::{Analysis, Material};
 use geometry::{Bilinear, Frame, PolygonInfo};
 use nalgebra::{Cholesky, SMatrix, SVector};
 
@@ -89,6 +98,46 @@ pub fn check_shape(formulation: Formulation, coords: &[[f64; 2]]) -> Result<(), 
     checked(formulation, coords).map(|_| ())
 }
 
+/// [`check_shape`] plus what the material's analysis kind needs: in axisymmetry, 4 nodes, the
+/// hybrid or Q4 formulation, and every node at `r = x >= 0` (round-off of the element size
+/// below zero is accepted, for nodes on the axis).
+pub fn check_element(
+    formulation: Formulation,
+    coords: &[[f64; 2]],
+    material: &Material,
+) -> Result<(), ShapeError> {
+    checked_for(formulation, coords, material).map(|_| ())
+}
+
+fn checked_for(
+    formulation: Formulation,
+    coords: &[[f64; 2]],
+    material: &Material,
+) -> Result<PolygonInfo, ShapeError> {
+    if material.analysis == Analysis::Axisymmetric {
+        if formulation == Formulation::PianSumihara {
+            return Err(ShapeError::Unsupported(
+                "the Pian-Sumihara element is not available in axisymmetric analysis (use the \
+                 hybrid element or Q4)",
+            ));
+        }
+        if coords.len() != 4 {
+            return Err(ShapeError::Unsupported(
+                "axisymmetric analysis takes 4-node elements only (the 5- and 6-node transition \
+                 elements have no axisymmetric stress field): use a conforming mesh",
+            ));
+        }
+    }
+    let info = checked(formulation, coords)?;
+    if material.analysis == Analysis::Axisymmetric {
+        let size = info.area.sqrt();
+        if let Some(node) = coords.iter().position(|p| p[0] < -1e-10 * size) {
+            return Err(ShapeError::NegativeRadius { node });
+        }
+    }
+    Ok(info)
+}
+
 fn checked(formulation: Formulation, coords: &[[f64; 2]]) -> Result<PolygonInfo, ShapeError> {
     if !formulation.accepts(coords.len()) {
         return Err(ShapeError::NodeCount {
@@ -116,10 +165,16 @@ enum StressFamily {
     Hybrid7,
     /// Kubomura-Pian, 12 beta (6 nodes).
     Hybrid12,
+    /// Axisymmetric bilinear displacement quad.
+    AxiQ4,
+    /// Axisymmetric hybrid, 7 beta.
+    AxiHybrid,
 }
 
-fn family(formulation: Formulation, n_nodes: usize) -> StressFamily {
+fn family(formulation: Formulation, n_nodes: usize, analysis: Analysis) -> StressFamily {
     match formulation {
+        Formulation::Q4 if analysis == Analysis::Axisymmetric => StressFamily::AxiQ4,
+        Formulation::Hybrid if analysis == Analysis::Axisymmetric => StressFamily::AxiHybrid,
         Formulation::Q4 => StressFamily::Q4,
         Formulation::PianSumihara => StressFamily::PianSumihara,
         Formulation::Hybrid if hybrid::n_beta(n_nodes) == 12 => StressFamily::Hybrid12,
@@ -158,17 +213,23 @@ fn hybrid_beta<const NB: usize>(
 /// number of element dofs `2n`. Never allocates.
 ///
 /// Hybrid elements: `K = G^T H^-1 G`, computed as `W^T W` with `W = L^-1 G`, `H = L L^T`
-/// (no explicit inverse; symmetric by construction). Q4: `K = integral of B^T D B t dA`.
+/// (no explicit inverse; symmetric by construction). Q4: `K = integral of B^T D B dV`. The
+/// volume element is `dV = measure dA` ([`Material::measure`]: `t`, or `2 pi r`).
 pub fn stiffness_into(
     formulation: Formulation,
     coords: &[[f64; 2]],
     material: &Material,
     out: &mut ElementMatrix,
 ) -> Result<usize, ShapeError> {
-    let info = checked(formulation, coords)?;
+    let info = checked_for(formulation, coords, material)?;
     let map = || Bilinear::new(coords);
-    match family(formulation, coords.len()) {
+    match family(formulation, coords.len(), material.analysis) {
         StressFamily::Q4 => q4::stiffness_into(&map(), material, out),
+        StressFamily::AxiQ4 => axisymmetric::q4_stiffness_into(&map(), material, out),
+        StressFamily::AxiHybrid => hybrid_stiffness(
+            axisymmetric::matrices(&map(), &Frame::new(&info), material),
+            out,
+        )?,
         StressFamily::PianSumihara => {
             hybrid_stiffness(pian_sumihara::matrices(&map(), material), out)?
         }
@@ -197,31 +258,69 @@ pub struct StressField {
 }
 
 impl StressField {
-    /// Stress `[sx, sy, txy]` at a physical point `p` of the element.
+    /// The in-plane (meridian) stress `[sx, sy, txy]` (axisymmetry: `[sigma_r, sigma_z,
+    /// tau_rz]`) at a physical point `p` of the element.
     pub fn at(&self, p: [f64; 2]) -> [f64; 3] {
-        match self.formulation {
-            Formulation::Hybrid => hybrid::stress(&self.frame, self.beta(), p),
-            Formulation::PianSumihara | Formulation::Q4 => {
-                let map = Bilinear::new(&self.coords);
-                let [xi, eta] = map.inverse(p);
-                self.at_natural(&map, xi, eta)
+        let [a, b, c, _] = self.at_full(p);
+        [a, b, c]
+    }
+
+    /// All four stress components at a physical point `p`: `[sx, sy, txy, sz]` in plane
+    /// analyses (`sz = nu (sx + sy)` in plane strain, 0 in plane stress), `[sigma_r, sigma_z,
+    /// tau_rz, sigma_theta]` in axisymmetry.
+    pub fn at_full(&self, p: [f64; 2]) -> [f64; 4] {
+        if self.formulation == Formulation::Hybrid && !self.axisymmetric() {
+            return self.with_out_of_plane(hybrid::stress(&self.frame, self.beta(), p));
+        }
+        let map = Bilinear::new(&self.coords);
+        let [xi, eta] = map.inverse(p);
+        self.at_natural(&map, xi, eta)
+    }
+
+    fn axisymmetric(&self) -> bool {
+        self.material.analysis == Analysis::Axisymmetric
+    }
+
+    fn with_out_of_plane(&self, s: [f64; 3]) -> [f64; 4] {
+        [
+            s[0],
+            s[1],
+            s[2],
+            self.material.out_of_plane_stress(s).unwrap_or(0.0),
+        ]
+    }
+
+    /// The four components at natural coordinates of the bilinear map (not for the plane
+    /// hybrid element, whose field lives in its frame).
+    fn at_natural(&self, map: &Bilinear, xi: f64, eta: f64) -> [f64; 4] {
+        let q = self.q.as_slice();
+        match (self.formulation, self.axisymmetric()) {
+            (Formulation::Hybrid, true) => {
+                let p = map.point(xi, eta);
+                axisymmetric::stress(map, &self.frame, self.beta(), xi, eta, p)
             }
+            (Formulation::Q4, true) => axisymmetric::q4_stress(map, &self.material, q, xi, eta),
+            (Formulation::PianSumihara, _) => {
+                self.with_out_of_plane(pian_sumihara::stress(map, self.beta(), xi, eta))
+            }
+            _ => self.with_out_of_plane(q4::stress(map, &self.material, q, xi, eta)),
         }
     }
 
-    fn at_natural(&self, map: &Bilinear, xi: f64, eta: f64) -> [f64; 3] {
-        match self.formulation {
-            Formulation::PianSumihara => pian_sumihara::stress(map, self.beta(), xi, eta),
-            _ => q4::stress(map, &self.material, self.q.as_slice(), xi, eta),
-        }
-    }
-
-    /// Stress at the element's centre: the area centroid for the hybrid element, where it equals
-    /// the first three `beta` (the mean stress of the linear part); `xi = eta = 0` for the quads.
+    /// Stress at the element's centre: the area centroid for the plane hybrid element, where it
+    /// equals the first three `beta` (the mean stress of the linear part); `xi = eta = 0` for the
+    /// quads and the axisymmetric elements.
     pub fn at_centre(&self) -> [f64; 3] {
-        match self.formulation {
-            Formulation::Hybrid => self.at(self.frame.centre),
-            _ => self.at_natural(&Bilinear::new(&self.coords), 0.0, 0.0),
+        let [a, b, c, _] = self.at_centre_full();
+        [a, b, c]
+    }
+
+    /// All four components at the centre (see [`StressField::at_full`], [`StressField::at_centre`]).
+    pub fn at_centre_full(&self) -> [f64; 4] {
+        if self.formulation == Formulation::Hybrid && !self.axisymmetric() {
+            self.at_full(self.frame.centre)
+        } else {
+            self.at_natural(&Bilinear::new(&self.coords), 0.0, 0.0)
         }
     }
 
@@ -260,7 +359,7 @@ pub fn recover_stress(
     material: &Material,
     q: &[f64],
 ) -> Result<StressField, ShapeError> {
-    let info = checked(formulation, coords)?;
+    let info = checked_for(formulation, coords, material)?;
     let n = coords.len();
     let mut field = StressField {
         formulation,
@@ -276,8 +375,13 @@ pub fn recover_stress(
     field.q.as_mut_slice()[..2 * n].copy_from_slice(&q[..2 * n]);
     let (q, beta) = (&field.q, &mut field.beta);
     let map = || Bilinear::new(coords);
-    field.n_beta = match family(formulation, n) {
-        StressFamily::Q4 => 0,
+    field.n_beta = match family(formulation, n, material.analysis) {
+        StressFamily::Q4 | StressFamily::AxiQ4 => 0,
+        StressFamily::AxiHybrid => hybrid_beta(
+            axisymmetric::matrices(&map(), &field.frame, material),
+            q,
+            beta,
+        )?,
         StressFamily::PianSumihara => {
             hybrid_beta(pian_sumihara::matrices(&map(), material), q, beta)?
         }

@@ -728,8 +728,9 @@ pub unsafe extern "C" fn hycon_contact_options_default(
 /// The arrays are copied. Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `coords`, `elements`,
 /// `materials`, or an array of `elements` with a nonzero length), `HYCON_ERROR_INVALID_ARGUMENT`
 /// (lengths, unknown node ids, non-finite coordinates, unknown kind, misaligned pointers),
-/// `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex
-/// element, named by index).
+/// `HYCON_ERROR_INVALID_MATERIAL` (also materials of different analysis kinds: one model takes
+/// one kind), `HYCON_ERROR_BAD_ELEMENT` (inverted, degenerate or non-convex element, named by
+/// index; in axisymmetry also a node at `x < 0`, Pian-Sumihara or a 5- or 6-node element).
 ///
 /// # Safety
 /// `out` must point to a writable pointer; `coords` NULL or `2 n_nodes` readable doubles;

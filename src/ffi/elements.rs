@@ -69,6 +69,15 @@ impl ElementInput {
     }
 }
 
+/// Stress components written by `hycon_element_stress`: 3, or 4 in axisymmetry.
+fn stress_components(material: &Material) -> usize {
+    if material.analysis == crate::material::Analysis::Axisymmetric {
+        4
+    } else {
+        3
+    }
+}
+
 fn check_result(values: &[f64], what: &str) -> Result<(), Fail> {
     if values.iter().all(|v| v.is_finite()) {
         Ok(())
@@ -83,7 +92,9 @@ fn check_result(values: &[f64], what: &str) -> Result<(), Fail> {
 // Exported functions
 
 /// Check one element's shape for a formulation: node count, finite coordinates, positive area,
-/// counter-clockwise order, convexity (tolerances relative to the element size).
+/// counter-clockwise order, convexity (tolerances relative to the element size). It takes no
+/// material, so it does not check what axisymmetry adds (4 nodes, `r >= 0`, no Pian-Sumihara):
+/// `hycon_element_stiffness` does.
 ///
 /// `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise.
 ///
@@ -114,7 +125,9 @@ pub unsafe extern "C" fn hycon_element_check(
 /// * `coords`: `2 * n_nodes` doubles `x0 y0 x1 y1 ...`, nodes counter-clockwise. Q4 and
 ///   Pian-Sumihara take 4 nodes, the hybrid element 4 to 6 (corners plus mid-side nodes on
 ///   straight edges, in boundary order).
-/// * `material`: finite, `E > 0`, `-1 < nu < 0.5`, `t > 0`, known analysis; `t` multiplies `K`.
+/// * `material`: finite, `E > 0`, `-1 < nu < 0.5`, `t > 0`, known analysis; `t` multiplies `K`
+///   in plane analyses; `HYCON_AXISYMMETRIC` (`t = 1`, `x = r >= 0`) integrates with `2 pi r`
+///   (the whole ring's stiffness) and takes 4 nodes, hybrid (7 beta) or Q4.
 /// * `k_out`, `k_len`: output array of at least `(2n)^2` doubles (`HYCON_MAX_DOF^2 = 144` always
 ///   suffices); only the first `(2n)^2` are written, and only on success.
 ///
@@ -155,17 +168,21 @@ pub unsafe extern "C" fn hycon_element_stiffness(
     })
 }
 
-/// Stress `{sx, sy, txy}` at the physical point `(px, py)` of an element, recovered from its
-/// nodal displacements `q` (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`).
+/// Stress at the physical point `(px, py)` of an element, recovered from its nodal
+/// displacements `q` (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): `out` receives
+/// `{sx, sy, txy}` (3 doubles) in plane strain and plane stress, and
+/// `{sigma_r, sigma_z, tau_rz, sigma_theta}` (**4 doubles**) with a `HYCON_AXISYMMETRIC`
+/// material. `hycon_element_stress_components(material)` tells the count; a buffer of 4 always
+/// suffices.
 ///
 /// Hybrid elements evaluate their assumed stress field `P beta` with `beta = H^-1 G q`; Q4
-/// evaluates `D B q`. The point should lie in the element; outside it the value is an
-/// extrapolation (a non-finite result is reported as `HYCON_ERROR_INVALID_ARGUMENT`).
-/// `out` receives 3 doubles on success.
+/// evaluates `D B q` (not finite on the axis `r = 0` in axisymmetry). The point should lie in the
+/// element; outside it the value is an extrapolation (a non-finite result is reported as
+/// `HYCON_ERROR_INVALID_ARGUMENT`).
 ///
 /// # Safety
 /// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
-/// a readable struct; `out` NULL or writable for 3 doubles.
+/// a readable struct; `out` NULL or writable for 3 doubles (4 in axisymmetry).
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)] // flat C signature
 pub unsafe extern "C" fn hycon_element_stress(
@@ -186,17 +203,19 @@ pub unsafe extern "C" fn hycon_element_stress(
         check_pointer(out.cast_const(), "out")?;
         // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
         let field = unsafe { e.stress_field(&material, q)? };
-        let s = field.at([px, py]);
-        check_result(&s, "stress")?;
-        // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles (contract).
-        unsafe { write_doubles(out, &s) };
+        let s = field.at_full([px, py]);
+        let s = &s[..stress_components(&material)];
+        check_result(s, "stress")?;
+        // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles, 4 in
+        // axisymmetry (contract).
+        unsafe { write_doubles(out, s) };
         Ok(())
     })
 }
 
 /// Stress parameters `beta` of a hybrid element, recovered from its nodal displacements `q`
 /// (`2 * n_nodes` doubles, dof order `u0 v0 u1 v1 ...`): 7 for the hybrid element with 4 or 5
-/// nodes, 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
+/// nodes (and the axisymmetric hybrid element), 12 with 6 nodes, 5 for Pian-Sumihara, 0 for Q4.
 ///
 /// `out`, `len`, `needed`: the header's size convention (`HYCON_MAX_BETA` always suffices; the
 /// size query `(NULL, 0, &needed)` gives the count, 0 for Q4).
@@ -230,10 +249,33 @@ pub unsafe extern "C" fn hycon_element_stress_params(
     })
 }
 
+/// Number of stress components `hycon_element_stress` writes for `material`: 3 (`{sx, sy, txy}`)
+/// in plane strain and plane stress, 4 (`{sigma_r, sigma_z, tau_rz, sigma_theta}`) in
+/// axisymmetry, into `*out`.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_MATERIAL`.
+///
+/// # Safety
+/// `material` NULL or a readable struct; `out` NULL or a writable `size_t`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_element_stress_components(
+    material: *const HyconMaterial,
+    out: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_element_stress_components", || {
+        // SAFETY: the caller's contract on `material` and `out`.
+        unsafe {
+            let material = read_material(material)?;
+            write(out, stress_components(&material), "out")
+        }
+    })
+}
+
 /// Traction `{tx, ty} = sigma n` (outward unit normal `n`) at parameter `s` in `[0, 1]` along
 /// boundary edge `edge` of an element, the edge running from local node `edge` to local node
 /// `edge + 1` (cyclically, so `edge < n_nodes`), from nodal displacements `q` (`2 * n_nodes`
-/// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success.
+/// doubles, dof order `u0 v0 u1 v1 ...`). `out` receives 2 doubles on success (in axisymmetry
+/// the meridian traction `{t_r, t_z}`, a pressure: force per area).
 ///
 /// # Safety
 /// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or

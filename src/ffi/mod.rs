@@ -42,6 +42,14 @@
 //! `x0 y0 x1 y1 ...`. Q4 and Pian-Sumihara take the 4 corners; the hybrid element takes 4 to 6
 //! nodes (corners plus mid-side nodes on straight edges, in boundary order). Element dofs are
 //! `u0 v0 u1 v1 ...` in the same node order; element matrices are `2n x 2n`, row-major.
+//!
+//! # Axisymmetric analysis
+//! With a `HYCON_AXISYMMETRIC` material, `x` is the radius `r >= 0` and `y` the axial
+//! coordinate `z`; dofs are `u_r u_z` per node. Every integral is weighted by `2 pi r`: element
+//! matrices, loads and reactions are for the full circle (a nodal force is the force summed
+//! over the circumference). The thickness must be 1. Stresses have 4 components
+//! `{sigma_r, sigma_z, tau_rz, sigma_theta}` (`hycon_element_stress`); edge tractions are the
+//! meridian components `{t_r, t_z}`.
 
 use crate::element::{self, Formulation};
 use crate::error::{Error, ShapeError};
@@ -113,11 +121,12 @@ pub const HYCON_ERROR_NULL_POINTER: HyconStatus = -1;
 /// a misaligned pointer.
 pub const HYCON_ERROR_INVALID_ARGUMENT: HyconStatus = -2;
 /// The material is invalid: `E <= 0`, `nu` outside `(-1, 0.5)`, `t <= 0`, non-finite values,
-/// unknown analysis type.
+/// unknown analysis type, axisymmetric with `t != 1`, a model mixing analysis kinds.
 pub const HYCON_ERROR_INVALID_MATERIAL: HyconStatus = -3;
 /// An element has a bad shape or node count: degenerate (zero area, coincident nodes),
-/// inverted (clockwise), non-convex, or a node count the formulation does not take. The
-/// message names the element (its index when the call handles a mesh) and the defect.
+/// inverted (clockwise), non-convex, or a node count the formulation does not take; in
+/// axisymmetry also a node at `x = r < 0` or a formulation / node count not available there.
+/// The message names the element (its index when the call handles a mesh) and the defect.
 pub const HYCON_ERROR_BAD_ELEMENT: HyconStatus = -4;
 /// A global system is singular (a body not held against rigid motion).
 pub const HYCON_ERROR_SINGULAR: HyconStatus = -5;
@@ -148,12 +157,22 @@ pub const HYCON_ELEMENT_PIAN_SUMIHARA: HyconElementKind = 2;
 /// Bilinear displacement quadrilateral with 2x2 Gauss integration, 4 nodes.
 pub const HYCON_ELEMENT_Q4: HyconElementKind = 3;
 
-/// Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`.
+/// Two-dimensional idealisation, one of `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS`,
+/// `HYCON_AXISYMMETRIC`. One model (and one host) uses one kind.
 pub type HyconAnalysis = i32;
 /// Plane strain (`eps_z = 0`).
 pub const HYCON_PLANE_STRAIN: HyconAnalysis = 1;
 /// Plane stress (`sigma_z = 0`).
 pub const HYCON_PLANE_STRESS: HyconAnalysis = 2;
+/// Axisymmetric: a solid of revolution about the y axis, `x = r >= 0` (radial), `y = z`
+/// (axial), no torsion. Strains `{eps_r, eps_z, gamma_rz, eps_theta = u_r / r}`, stresses
+/// `{sigma_r, sigma_z, tau_rz, sigma_theta}`. **Measure: the full circle**: every volume and
+/// surface integral is weighted by `2 pi r` (element matrices, loads, reactions, contact forces,
+/// energies), so a nodal force is the force summed over the whole circumference. The thickness
+/// must be exactly 1. Elements: the hybrid element (4 nodes, 7 stress parameters) and Q4;
+/// Pian-Sumihara and the 5- and 6-node transition elements are rejected
+/// (`HYCON_ERROR_BAD_ELEMENT`). Prescribe `u_r = 0` at nodes on the axis.
+pub const HYCON_AXISYMMETRIC: HyconAnalysis = 3;
 
 /// Largest node count of one element.
 pub const HYCON_MAX_NODES: usize = 6;
@@ -178,9 +197,9 @@ pub struct HyconMaterial {
     /// Poisson's ratio, `-1 < nu < 0.5`.
     pub poisson: f64,
     /// Thickness `t > 0`, within [1e-100, 1e100] (plane strain: the depth results are reported
-    /// per, usually 1).
+    /// per, usually 1); exactly 1 in axisymmetry (the measure is `2 pi r`).
     pub thickness: f64,
-    /// `HYCON_PLANE_STRAIN` or `HYCON_PLANE_STRESS`.
+    /// `HYCON_PLANE_STRAIN`, `HYCON_PLANE_STRESS` or `HYCON_AXISYMMETRIC`.
     pub analysis: HyconAnalysis,
 }
 
@@ -616,12 +635,13 @@ unsafe fn read_material(m: *const HyconMaterial) -> Result<Material, Fail> {
     let analysis = match m.analysis {
         HYCON_PLANE_STRAIN => Analysis::PlaneStrain,
         HYCON_PLANE_STRESS => Analysis::PlaneStress,
+        HYCON_AXISYMMETRIC => Analysis::Axisymmetric,
         a => {
             return Err(Fail::new(
                 HYCON_ERROR_INVALID_MATERIAL,
                 format!(
-                    "invalid material: unknown analysis {a} (expected HYCON_PLANE_STRAIN = 1 \
-                     or HYCON_PLANE_STRESS = 2)"
+                    "invalid material: unknown analysis {a} (expected HYCON_PLANE_STRAIN = 1, \
+                     HYCON_PLANE_STRESS = 2 or HYCON_AXISYMMETRIC = 3)"
                 ),
             ));
         }

@@ -12,7 +12,6 @@
 //! 5- and 6-node transition elements `VTK_POLYGON` (7), nodes counter-clockwise in boundary order.
 
 use super::{Result, write_file};
-use hycon::material::Analysis;
 use hycon::model::{Model, Solution};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -43,12 +42,9 @@ pub fn to_string(model: &Model, q: &[f64]) -> Result<String> {
     let solution = Solution { q: q.to_vec() };
     let mut stress = Vec::with_capacity(n_cells);
     for e in 0..n_cells {
-        let s = solution.stress_field(model, e)?.at_centre();
-        let material = &model.materials[mesh.element_material[e]];
-        let sz = match material.analysis {
-            Analysis::PlaneStrain => material.poisson * (s[0] + s[1]),
-            Analysis::PlaneStress => 0.0,
-        };
+        // the out-of-plane normal stress: nu (sx + sy), 0, or the hoop stress
+        let [sx, sy, txy, sz] = solution.stress_field(model, e)?.at_centre_full();
+        let s = [sx, sy, txy];
         stress.push((s, von_mises(s, sz)));
     }
     let mut x = String::with_capacity(64 * (n_points + n_cells));
