@@ -396,6 +396,7 @@ static void *solve_problem(void *arg) {
     HyconPolyline a_line, b_line;
     HyconHostNodes a_nodes, b_nodes;
     size_t i, k;
+    const double inside[2] = {p->x0 + 0.5 * p->w, 1.5}; /* the upper block's centre */
 
     if (job->start != NULL) pthread_barrier_wait(job->start);
     job->start_time = now();
@@ -473,6 +474,8 @@ static void *solve_problem(void *arg) {
         check(&job->host,
               hycon_host_add_pair(desc, &a_nodes, &b_nodes, p->friction, NULL),
               "host add pair") &&
+        /* the blocks touch: say which side body A (the upper block) is on */
+        check(&job->host, hycon_host_set_pair_inside(desc, 0, inside), "host pair inside") &&
         check(&job->host, hycon_host_set_solver(desc, host_solve, &host), "set solver"))
         check(&job->host, hycon_contact_new_host(&ch, desc, NULL), "hycon_contact_new_host");
     hycon_host_free(desc);

@@ -40,7 +40,9 @@ HYCON_ORDER(HyconIterationRecord, stick, slip);
 HYCON_ORDER(HyconIterationRecord, slip, changes);
 HYCON_ORDER(HyconIterationRecord, changes, r);
 HYCON_ORDER(HyconIterationRecord, r, condition);
-HYCON_STATIC_ASSERT(HyconContactOptions_first, offsetof(HyconContactOptions, tolerance) == 0);
+HYCON_ORDER(HyconIterationRecord, condition, sub_increment);
+HYCON_STATIC_ASSERT(HyconContactOptions_first, offsetof(HyconContactOptions, size) == 0);
+HYCON_ORDER(HyconContactOptions, size, tolerance);
 HYCON_ORDER(HyconContactOptions, tolerance, gap_tolerance);
 HYCON_ORDER(HyconContactOptions, gap_tolerance, tension_tolerance);
 HYCON_ORDER(HyconContactOptions, tension_tolerance, friction_tolerance);
@@ -52,10 +54,14 @@ HYCON_ORDER(HyconContactOptions, lock_rounds, backend);
 HYCON_ORDER(HyconContactOptions, backend, kinematics);
 HYCON_ORDER(HyconContactOptions, kinematics, monitor);
 HYCON_ORDER(HyconContactOptions, monitor, monitor_data);
+HYCON_ORDER(HyconContactOptions, monitor_data, cutback_depth);
+HYCON_ORDER(HyconContactOptions, cutback_depth, cutback_min_fraction);
 HYCON_STATIC_ASSERT(HyconIncrementInfo_first, offsetof(HyconIncrementInfo, increment) == 0);
 HYCON_ORDER(HyconIncrementInfo, increment, iterations);
 HYCON_ORDER(HyconIncrementInfo, iterations, active);
 HYCON_ORDER(HyconIncrementInfo, active, slip);
+HYCON_ORDER(HyconIncrementInfo, slip, sub_increments);
+HYCON_ORDER(HyconIncrementInfo, sub_increments, cutbacks);
 HYCON_STATIC_ASSERT(HyconNodeResult_first, offsetof(HyconNodeResult, node) == 0);
 HYCON_ORDER(HyconNodeResult, node, state);
 HYCON_ORDER(HyconNodeResult, state, slip_sign);
@@ -158,6 +164,8 @@ static void (*const fn_host_free)(HyconHost *) = hycon_host_free;
 static HyconStatus (*const fn_host_add_pair)(HyconHost *, const HyconHostNodes *,
                                              const HyconHostNodes *, double,
                                              size_t *) = hycon_host_add_pair;
+static HyconStatus (*const fn_host_set_pair_inside)(HyconHost *, size_t, const double *) =
+    hycon_host_set_pair_inside;
 static HyconStatus (*const fn_host_set_csr)(HyconHost *, const size_t *, const size_t *,
                                             const double *, HyconTriangle) = hycon_host_set_csr;
 static HyconStatus (*const fn_host_set_solver)(HyconHost *, HyconSolveFn, void *) =
@@ -232,7 +240,8 @@ int main(void) {
         (any_function)fn_options_default, (any_function)fn_model_new, (any_function)fn_model_free,
         (any_function)fn_model_prescribe, (any_function)fn_model_add_pair,
         (any_function)fn_model_set_plate, (any_function)fn_contact_new, (any_function)fn_host_new,
-        (any_function)fn_host_free, (any_function)fn_host_add_pair, (any_function)fn_host_set_csr,
+        (any_function)fn_host_free, (any_function)fn_host_add_pair,
+        (any_function)fn_host_set_pair_inside, (any_function)fn_host_set_csr,
         (any_function)fn_host_set_solver, (any_function)fn_host_set_elements,
         (any_function)fn_contact_new_host,
         (any_function)fn_contact_free, (any_function)fn_increment,
@@ -255,7 +264,7 @@ int main(void) {
     }
     /* the plain C structs are usable from C: the defaults, with a C monitor */
     if (fn_options_default(&options) != HYCON_OK || !(options.tolerance > 0.0) ||
-        options.monitor != NULL) {
+        options.monitor != NULL || options.size != sizeof options || options.cutback_depth == 0) {
         fprintf(stderr, "hycon_contact_options_default failed\n");
         return 1;
     }

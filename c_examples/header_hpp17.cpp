@@ -73,6 +73,9 @@ hycon::Result<hycon::Host> make_host() {
     const std::int64_t a_eq[4] = {0, 1, 2, 3}, b_eq[4] = {4, 5, 6, 7};
     const auto pair = host->add_pair(a_nodes, a_coords, a_eq, b_nodes, b_coords, b_eq, 0.0);
     if (!pair) return hycon::Result<hycon::Host>(pair.status());
+    // the surfaces lie within half a segment: say which side body A is on (below A)
+    const hycon::Status side = host->set_pair_inside(*pair, {0.5, -0.5});
+    if (!side) return hycon::Result<hycon::Host>(side);
     return host;
 }
 

@@ -71,6 +71,10 @@
 #include <stdint.h>
 #include <stddef.h>
 
+// The largest [`ContactOptions::cutback_depth`] (a sub-increment of `2^-52` of the increment
+// is at the resolution of its own fraction).
+#define MAX_CUTBACK_DEPTH 52
+
 // Major version of the library this header belongs to (from `Cargo.toml`).
 #define HYCON_VERSION_MAJOR 0
 
@@ -106,6 +110,9 @@
 
 // Largest number of stress parameters of a brick (18, the hybrid brick's).
 #define HYCON_BRICK_MAX_BETA 18
+
+// The largest `HyconContactOptions::cutback_depth`.
+#define HYCON_MAX_CUTBACK_DEPTH 52
 
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
@@ -157,6 +164,11 @@ typedef struct HyconIterationRecord {
     double r;
     // Estimated 1-norm condition number of the small contact system (1 when empty).
     double condition;
+    // The sub-increment (1-based) this iteration belongs to: 1 unless the automatic cutback
+    // split the increment (see `HyconContactOptions::cutback_depth`). A sub-increment that
+    // fails is tried again, shorter, under the same index: the monitor sees both tries,
+    // `hycon_contact_records` keeps the converged one.
+    size_t sub_increment;
 } HyconIterationRecord;
 
 // Called with every iteration record; return 0 to go on, nonzero to stop the increment (it
@@ -165,10 +177,19 @@ typedef struct HyconIterationRecord {
 // longjmp) through hycon.
 typedef int32_t (*HyconMonitorFn)(void *user_data, const struct HyconIterationRecord *record);
 
-// Parameters of the contact iteration. Get the defaults with `hycon_contact_options_default`,
-// then override fields. Tolerances are relative (see each field), so results do not change
-// when units are rescaled.
+// Parameters of the contact iteration. Get the defaults with `hycon_contact_options_default`
+// (which also sets `size`), then override fields. Tolerances are relative (see each field), so
+// results do not change when units are rescaled.
+//
+// Versioned by `size`: a host that fills the struct itself sets
+// `size = sizeof(HyconContactOptions)`. hycon reads only the fields that fit in `size` and
+// defaults the rest (fields are only ever added at the end), so a host built against an older
+// header keeps working; a size below the 0.7.0 layout (the first with `size`), or above the
+// layout this library knows, is rejected with `HYCON_ERROR_INVALID_ARGUMENT`.
 typedef struct HyconContactOptions {
+    // `sizeof(HyconContactOptions)` as the host was compiled (set by
+    // `hycon_contact_options_default`).
+    size_t size;
     // Convergence tolerance on `R` (default 1e-6; the paper used 0.01).
     double tolerance;
     // Penetration tolerance, relative to the increment's displacement scale (default 1e-9).
@@ -212,6 +233,19 @@ typedef struct HyconContactOptions {
     HyconMonitorFn monitor;
     // Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.
     void *monitor_data;
+    // Automatic cutback (default 8; 0 switches it off: a failed increment fails at once, the
+    // behaviour before 0.7.0): an increment that fails for an iteration reason (no
+    // convergence, a cycling contact set, a locked node breaking its lock, a surface pushed
+    // beyond what the pairing sees) is taken again in sub-increments from the last converged
+    // state to the target (loads, prescribed values and plate controls interpolated
+    // linearly, each converged sub-increment the start of the next), halving a failed one at
+    // most `cutback_depth` times (up to `HYCON_MAX_CUTBACK_DEPTH`). `K` is not factored
+    // again and the interpolated loads cost no solve. Beyond the limit the increment fails
+    // and the analysis is exactly as before the call.
+    uint32_t cutback_depth;
+    // The shortest sub-increment the cutback tries, as a fraction of the increment, in
+    // `(0, 1]` (default 1/256).
+    double cutback_min_fraction;
 } HyconContactOptions;
 
 // Element formulation selector, one of the `HYCON_ELEMENT_*` values.
@@ -300,6 +334,11 @@ typedef struct HyconIncrementInfo {
     size_t active;
     // Slip nodes at convergence.
     size_t slip;
+    // Converged sub-increments the increment was taken in: 1 unless the automatic cutback
+    // split it.
+    size_t sub_increments;
+    // Sub-increments that failed and were tried again shorter (0 without cutback).
+    size_t cutbacks;
 } HyconIncrementInfo;
 
 // How a plate translation is driven in an increment, one of `HYCON_PLATE_*`.
@@ -480,8 +519,9 @@ typedef struct HyconSolidMaterial {
 // An output buffer is shorter than required; the message states the length needed.
 #define HYCON_ERROR_BUFFER_TOO_SMALL -7
 
-// A contact increment failed (no convergence, cycling contact set, contact reaching the end
-// of a surface); the last converged state is kept.
+// A contact increment failed, after the automatic cutback (no convergence, cycling contact set,
+// a surface pushed through the other or beyond what the pairing sees, at any depth and any
+// magnitude, contact reaching the end of a surface); the last converged state is kept.
 #define HYCON_ERROR_CONTACT -8
 
 // A caller-supplied callback (solve or monitor) returned a nonzero status or non-finite
@@ -756,6 +796,27 @@ HyconStatus hycon_host_add_pair(struct HyconHost *host,
                                 double friction,
                                 size_t *index);
 
+// Say which side body A of pair `pair` (an index from `hycon_host_add_pair`) is on: `inside`
+// is a point inside body A (2 doubles `x y`), beside its polyline rather than beyond its ends:
+// the centroid of the element that owns A's first segment, say. It must lie on A's body side
+// of the A polyline (its left), which confirms A's orientation; B's follows from facing A.
+// Replaces an earlier point of the pair.
+//
+// Needed where the geometry cannot tell: when A and B touch (lie within half a segment of each
+// other) wherever they are near each other, facing surfaces and back-to-back ones (both
+// polylines reversed) look the same, and `hycon_contact_new_host` rejects such a pair without
+// it. Surfaces apart (or curved away from each other around a contact) need none, and a point
+// given is checked in any case.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `inside`), `HYCON_ERROR_INVALID_ARGUMENT` (an
+// unknown pair, a non-finite point, one beyond the ends of the A polyline, one on its outward
+// side: A reversed, and with B facing it the pair back to back). On an error the host is
+// unchanged.
+//
+// # Safety
+// `host` must be a live handle; `inside` NULL or 2 readable doubles.
+HyconStatus hycon_host_set_pair_inside(struct HyconHost *host, size_t pair, const double *inside);
+
 // Give the host's stiffness as a CSR matrix over its `n_equations` equations (copied):
 // `row_ptr` has `n_equations + 1` entries starting at 0, `columns` and `values` have
 // `row_ptr[n_equations]`; `triangle` says which part is stored (`HYCON_CSR_FULL`, checked
@@ -839,11 +900,16 @@ void hycon_contact_free(struct HyconContact *contact);
 // `load_len` is the field length, which the size query of the displacement gives:
 // `hycon_contact_displacement(contact, NULL, 0, &load_len)`.
 //
-// On success the converged state advances and `info` (unless NULL) gets the summary. On
-// failure the last converged state is kept and the status says why: `HYCON_ERROR_CONTACT` (no
-// convergence, cycling contact set with the node named, penetration beyond the search
-// distance, contact reaching the end of a surface), `HYCON_ERROR_SINGULAR` (a body held only
-// by frictionless contact), `HYCON_ERROR_CALLBACK` (solver or monitor),
+// An increment that fails for an iteration reason is taken again in sub-increments (the
+// automatic cutback, `HyconContactOptions::cutback_depth`); it is still one increment, and
+// `info->sub_increments` says how many it took. On success the converged state advances and
+// `info` (unless NULL) gets the summary. On failure (beyond the cutback's limit) the analysis
+// is exactly as before the call and the status says why: `HYCON_ERROR_CONTACT` (no
+// convergence, cycling contact set with the node named, a surface pushed through the other or
+// beyond what the pairing sees, at any depth, including a motion so large that double
+// precision no longer resolves the surfaces, contact reaching the end of a surface),
+// `HYCON_ERROR_SINGULAR` (a body held only by frictionless contact), `HYCON_ERROR_CALLBACK`
+// (solver or monitor),
 // `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values or values beyond 1e300 in
 // magnitude, where the load plus the contact forces or the stresses may overflow: choose other
 // units; a plate analysis).

@@ -178,7 +178,8 @@ inline Result<std::array<std::int32_t, 3>> version() {
     return s.ok() ? Result<std::array<std::int32_t, 3>>(v) : Result<std::array<std::int32_t, 3>>(s);
 }
 
-// The default contact options (the values documented in hycon.h, no monitor).
+// The default contact options (the values documented in hycon.h, no monitor; `size` set, the
+// automatic cutback on).
 inline HyconContactOptions default_options() noexcept {
     HyconContactOptions options{};
     (void)hycon_contact_options_default(&options);  // cannot fail with a valid pointer
@@ -461,6 +462,13 @@ class Host {
         std::size_t index = 0;
         const Status s = Status::from(hycon_host_add_pair(get(), &a, &b, friction, &index));
         return Result<std::size_t>(s, index);
+    }
+
+    // Say which side body A of a pair is on: a point inside it, beside its polyline (needed
+    // where A and B touch everywhere, which the geometry alone cannot tell from a pair lying
+    // back to back; see hycon_host_set_pair_inside).
+    Status set_pair_inside(std::size_t pair, std::array<double, 2> inside) {
+        return Status::from(hycon_host_set_pair_inside(get(), pair, inside.data()));
     }
 
     // The stiffness in CSR over the n_equations equations (copied).

@@ -194,6 +194,27 @@ pub enum ContactError {
         /// The search distance it exceeds.
         search_distance: f64,
     },
+    /// Under finite kinematics an iterate moves the contact nodes so far that double precision
+    /// no longer resolves the surfaces at their current positions: a segment's length, or a
+    /// node's distance to the opposite surface, is below the round-off of the coordinates
+    /// (a press of `1e16` body sizes in one increment, say). The geometry cannot be evaluated
+    /// there, so no contact state can be judged: the surfaces are beyond what the pairing
+    /// sees.
+    #[error(
+        "increment {increment}: node {node} moves {motion:.3e}, beyond what the pairing sees: \
+         at that distance double precision does not resolve the contact surfaces (segment \
+         {length:.3e} long): reduce the load step"
+    )]
+    Unresolved {
+        /// Increment number (1-based).
+        increment: usize,
+        /// A node of the segment (the caller's id).
+        node: usize,
+        /// The node's displacement in the increment (a length).
+        motion: f64,
+        /// The segment's reference length.
+        length: f64,
+    },
     /// An active A node's support is not fully covered by the opposite surface (an integral
     /// over a hole would be wrong).
     #[error(

@@ -207,6 +207,7 @@ fn callback_path_matches_the_reference_with_fewer_solves() {
             nodes,
             stiffness: HostStiffness::Solver(Box::new(OwnSolver { factor, columns })),
             elements: None,
+            a_inside: Vec::new(),
         };
         ContactAnalysis::host(system, vec![pair.clone()], ContactOptions::default()).unwrap()
     };

@@ -117,6 +117,7 @@ impl HostSide {
             nodes,
             stiffness,
             elements: None,
+            a_inside: Vec::new(),
         }
     }
 }

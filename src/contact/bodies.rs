@@ -196,6 +196,12 @@ pub struct HostSystem {
     pub stiffness: HostStiffness,
     /// Optionally, the elements along the A polylines, for tractions from element stresses.
     pub elements: Option<HostElements>,
+    /// Per pair, a point inside body A (the multiplier side), or `None`; empty for none at
+    /// all. Where a pair's surfaces touch (within half a segment of each other) the polylines
+    /// alone cannot tell facing surfaces from back-to-back ones (both reversed): such a pair
+    /// needs it. A point given is checked to lie on A's body side of its polyline (see
+    /// [`check_a_inside`](crate::contact::iteration::check_a_inside)).
+    pub a_inside: Vec<Option<[f64; 2]>>,
 }
 
 /// Elements of a host along its A polylines (those owning the A segments), with hycon's element
@@ -400,6 +406,7 @@ impl Bodies {
             nodes,
             stiffness,
             elements,
+            ..
         } = system;
         let elements = elements
             .map(|e| ElementPatch::new(e, equations))

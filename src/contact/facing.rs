@@ -47,9 +47,13 @@ fn nearest_on_segment(ids: &[usize], seg: usize, p: [f64; 2], x: &[[f64; 2]]) ->
 /// within reach, classified by that nearest segment).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Facing {
-    /// B faces A from in front: normals opposed (`n_A . n_B < -1/2`), B on A's outward side or
-    /// behind it by less than half the node's tributary length (round-off, a discretised curve).
+    /// B faces A from in front: normals opposed (`n_A . n_B < -1/2`), B on A's outward side by
+    /// more than half the node's tributary length.
     pub facing: usize,
+    /// Normals opposed and B within half the node's tributary length of A, in front or behind
+    /// (touching surfaces, round-off, a discretised curve): the geometry cannot tell facing
+    /// surfaces from back-to-back ones (both polylines reversed) here.
+    pub touching: usize,
     /// Normals pointing the same way (`n_A . n_B > 1/2`): one polyline is reversed.
     pub same_way: usize,
     /// Normals opposed but B behind A by more than half the tributary length: back to back
@@ -85,6 +89,8 @@ pub fn facing(a: &[usize], b: &[usize], x: &[[f64; 2]], reach: f64) -> Facing {
         } else if cos < -0.5 && ahead < -0.5 * support(a, k, x) {
             out.behind += 1;
             first_behind.get_or_insert(k);
+        } else if cos < -0.5 && ahead <= 0.5 * support(a, k, x) {
+            out.touching += 1;
         } else if cos < -0.5 {
             out.facing += 1;
         }
@@ -95,6 +101,35 @@ pub fn facing(a: &[usize], b: &[usize], x: &[[f64; 2]], reach: f64) -> Facing {
         first_behind
     };
     out
+}
+
+/// On which side of the polyline `ids` the point `p` lies: the signed distance `(p - q) . n`
+/// from its nearest point `q` on the polyline, `n` the outward normal there (of the segment,
+/// or of the node when `q` is a node), negative on the body's side (the left). `None` when
+/// `p` lies beyond an end of the polyline (its nearest point is an end node and it projects
+/// outside the end segment), where the side is not defined.
+pub fn side(ids: &[usize], x: &[[f64; 2]], p: [f64; 2]) -> Option<f64> {
+    let last = ids.len() - 2;
+    let (seg, eta, q) = (0..=last)
+        .map(|seg| {
+            let (eta, q) = nearest_on_segment(ids, seg, p, x);
+            (seg, eta, q)
+        })
+        .min_by(|u, v| {
+            let d = |q: [f64; 2]| (q[0] - p[0]).hypot(q[1] - p[1]);
+            d(u.2).total_cmp(&d(v.2))
+        })?;
+    if (seg == 0 && eta < 0.0) || (seg == last && eta > 1.0) {
+        return None;
+    }
+    let n = if eta <= 0.0 {
+        node_normal(ids, seg, x)
+    } else if eta >= 1.0 {
+        node_normal(ids, seg + 1, x)
+    } else {
+        segment_normal(x[ids[seg]], x[ids[seg + 1]])
+    };
+    Some((p[0] - q[0]) * n[0] + (p[1] - q[1]) * n[1])
 }
 
 /// Whether the point `p` with outward normal `n` (a node of the other surface) lies behind the
@@ -150,10 +185,29 @@ mod tests {
     fn facing_surfaces_are_recognised() {
         let (a, b, x) = blocks(0.1);
         let f = facing(&a, &b, &x, 1.0);
-        assert_eq!((f.facing, f.same_way, f.behind), (5, 0, 0));
-        // touching surfaces face each other too
+        assert_eq!((f.facing + f.touching, f.same_way, f.behind), (5, 0, 0));
         let (a, b, x) = blocks(0.0);
+        assert_eq!(facing(&a, &b, &x, 1.0).touching, 5);
+        let (a, b, x) = blocks(0.2);
         assert_eq!(facing(&a, &b, &x, 1.0).facing, 5);
+        // touching surfaces cannot be told from back-to-back ones (both reversed)
+        let (mut a, mut b, x) = blocks(0.0);
+        a.reverse();
+        b.reverse();
+        assert_eq!(facing(&a, &b, &x, 1.0).touching, 5);
+    }
+
+    #[test]
+    fn a_point_inside_the_body_lies_on_its_side() {
+        let (a, _, x) = blocks(0.0);
+        // A's body (the upper block) lies above it
+        assert!(side(&a, &x, [0.3, 0.1]).unwrap() < 0.0);
+        assert!(side(&a, &x, [0.5, 0.1]).unwrap() < 0.0);
+        assert!(side(&a, &x, [0.3, -0.1]).unwrap() > 0.0);
+        assert_eq!(side(&a, &x, [-0.5, 0.1]), None);
+        let mut reversed = a.clone();
+        reversed.reverse();
+        assert!(side(&reversed, &x, [0.3, 0.1]).unwrap() > 0.0);
     }
 
     #[test]

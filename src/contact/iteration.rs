@@ -76,6 +76,7 @@ use std::sync::{Mutex, OnceLock, PoisonError};
 mod active_set;
 mod boundary;
 mod checks;
+mod cutback;
 mod loads;
 mod plate;
 mod results;
@@ -278,7 +279,26 @@ pub struct ContactOptions {
     /// are started per substitution and none outlives a call. A host that already runs one
     /// process or thread per core (MPI) keeps 1. Up to [`MAX_THREADS`].
     pub threads: usize,
+    /// Automatic cutback: how many times an increment that fails for an iteration reason (no
+    /// convergence, a cycling contact set, a locked node breaking its lock, a surface pushed
+    /// beyond what the pairing sees) may be halved. The step from the last converged state to
+    /// the target is then taken in sub-increments, loads and prescribed values (and a plate's
+    /// controls) interpolated linearly, each converged sub-increment the start of the next
+    /// (friction's path dependence); the shortest is `2^-cutback_depth` of the increment (and
+    /// not below [`cutback_min_fraction`](Self::cutback_min_fraction)). `K` is not factored
+    /// again, and an interpolated load costs no solve. Beyond the limit the increment fails
+    /// and the analysis is exactly as before the call. 0 switches the cutback off: a failed
+    /// increment fails at once (the behaviour before 0.7.0). Default 8; up to
+    /// [`MAX_CUTBACK_DEPTH`].
+    pub cutback_depth: usize,
+    /// The shortest sub-increment the cutback tries, as a fraction of the increment, in
+    /// `(0, 1]` (default `1 / 256`, as deep as the default depth).
+    pub cutback_min_fraction: f64,
 }
+
+/// The largest [`ContactOptions::cutback_depth`] (a sub-increment of `2^-52` of the increment
+/// is at the resolution of its own fraction).
+pub const MAX_CUTBACK_DEPTH: usize = 52;
 
 /// The largest [`ContactOptions::threads`].
 pub const MAX_THREADS: usize = 256;
@@ -324,6 +344,18 @@ impl ContactOptions {
                 "options.max_iterations must be at least 1".into(),
             ));
         }
+        if self.cutback_depth > MAX_CUTBACK_DEPTH {
+            return Err(Error::InvalidInput(format!(
+                "options.cutback_depth = {} must be from 0 (off) to {MAX_CUTBACK_DEPTH}",
+                self.cutback_depth
+            )));
+        }
+        let f = self.cutback_min_fraction;
+        if !(f > 0.0 && f <= 1.0) {
+            return Err(Error::InvalidInput(format!(
+                "options.cutback_min_fraction = {f} must be in (0, 1]"
+            )));
+        }
         Ok(())
     }
 }
@@ -342,6 +374,8 @@ impl Default for ContactOptions {
             lock_rounds: 3,
             backend: Backend::Faer,
             threads: 1,
+            cutback_depth: 8,
+            cutback_min_fraction: 1.0 / 256.0,
         }
     }
 }
@@ -436,6 +470,11 @@ pub struct IterationRecord {
     /// Estimated 1-norm condition number of the small contact system solved in this iteration
     /// (Hager's estimator; 1 when it is empty).
     pub condition: f64,
+    /// The sub-increment (1-based) of the increment this iteration belongs to: 1 unless the
+    /// automatic cutback split the increment (see [`ContactOptions::cutback_depth`]). A
+    /// sub-increment that fails is tried again, shorter, under the same index: the monitor
+    /// sees both tries, [`ContactAnalysis::records`] keeps the converged one.
+    pub sub_increment: usize,
 }
 
 /// Summary of a converged increment.
@@ -449,6 +488,11 @@ pub struct IncrementInfo {
     pub active: usize,
     /// Slip nodes at convergence.
     pub slip: usize,
+    /// Converged sub-increments the increment was taken in: 1 unless the automatic cutback
+    /// split it (see [`ContactOptions::cutback_depth`]).
+    pub sub_increments: usize,
+    /// Sub-increments that failed and were tried again shorter (0 without cutback).
+    pub cutbacks: usize,
 }
 
 /// Where the time of an analysis went (wall-clock seconds, accumulated over increments).
@@ -592,6 +636,8 @@ pub struct ContactAnalysis {
     records: Vec<IterationRecord>,
     timings: Timings,
     plate: Option<Plate>,
+    /// The sub-increment the iteration runs in (see [`IterationRecord::sub_increment`]).
+    sub_increment: usize,
     /// Behind a lock only so that the analysis is `Sync` (a `Monitor` is `Send`, not `Sync`):
     /// it is only called from `&mut self`.
     monitor: Mutex<Option<Monitor>>,
@@ -627,7 +673,7 @@ impl ContactAnalysis {
         dofs.dedup();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::model(model, &dofs, options.backend, lazy, options.threads)?;
-        Self::setup(bodies, pairs, dofs, options)
+        Self::setup(bodies, pairs, dofs, options, None)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -645,6 +691,14 @@ impl ContactAnalysis {
         for (i, pair) in pairs.iter().enumerate() {
             pair.check().map_err(|e| in_pair(i, e))?;
         }
+        if !system.a_inside.is_empty() && system.a_inside.len() != pairs.len() {
+            return Err(Error::InvalidInput(format!(
+                "a_inside has {} entries for {} pairs (give none, or one per pair)",
+                system.a_inside.len(),
+                pairs.len()
+            )));
+        }
+        let a_inside = system.a_inside.clone();
         let clock = std::time::Instant::now();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::host(system, options.backend, lazy, options.threads)?;
@@ -663,17 +717,19 @@ impl ContactAnalysis {
             })
             .collect();
         let dofs = (0..2 * n_nodes).collect();
-        let mut analysis = Self::setup(bodies, pairs, dofs, options)?;
+        let mut analysis = Self::setup(bodies, pairs, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }
 
-    /// The common part of the constructors: slots, `F`, node data.
+    /// The common part of the constructors: slots, `F`, node data. `a_inside`: a host's points
+    /// inside body A per pair (`None` for a model, whose element edges tell the sides).
     fn setup(
         mut bodies: Bodies,
         pairs: Vec<ContactPair>,
         dofs: Vec<usize>,
         options: ContactOptions,
+        a_inside: Option<Vec<Option<[f64; 2]>>>,
     ) -> Result<Self> {
         let mut slot = vec![None; 2 * bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
@@ -700,7 +756,12 @@ impl ContactAnalysis {
                 .collect()
         });
         for (i, pair) in pairs.iter().enumerate() {
-            check_facing(pair, &bodies, options.search_distance).map_err(|e| in_pair(i, e))?;
+            let side = match &a_inside {
+                None => Side::Edges,
+                Some(points) => Side::Inside(points.get(i).copied().flatten()),
+            };
+            check_facing(pair, &bodies, options.search_distance, side)
+                .map_err(|e| in_pair(i, e))?;
         }
         let laws = pairs
             .iter()
@@ -750,6 +811,7 @@ impl ContactAnalysis {
             records: Vec::new(),
             timings,
             plate: None,
+            sub_increment: 1,
             monitor: Mutex::new(None),
         };
         if !analysis.flexibility.is_full() {
@@ -966,6 +1028,7 @@ impl ContactAnalysis {
         match self.options.kinematics {
             Kinematics::Finite => {
                 let x = self.positions(uc);
+                self.resolved(&x)?;
                 for (p, surface) in surfaces.iter_mut().enumerate() {
                     let pair = &self.pairs[p];
                     let distance = self.search_reach(p, &x, uc, startc);
@@ -1066,7 +1129,7 @@ impl ContactAnalysis {
                 "this analysis has a rigid plate: use increment_with_plate".into(),
             ));
         }
-        self.run_increment(f, qp, None)
+        self.cut_increment(f, qp, None)
     }
 
     fn run_increment(
@@ -1157,6 +1220,7 @@ impl ContactAnalysis {
                 changes,
                 r,
                 condition,
+                sub_increment: self.sub_increment,
             };
             records.push(record);
             if let Some(monitor) = self
@@ -1260,12 +1324,29 @@ fn evaluate_pairs(
         .collect()
 }
 
+/// What tells the side of body A of a pair beyond the geometry of its polylines.
+#[derive(Debug, Clone, Copy)]
+enum Side {
+    /// A model: the element edges (checked by [`ContactPair::check_on`]).
+    Edges,
+    /// A host: a point inside body A, if it gave one (see [`HostSystem::a_inside`]).
+    Inside(Option<[f64; 2]>),
+}
+
 /// A pair's polylines must face each other in the reference configuration: of the A nodes
-/// with a B segment within the search distance, more must see B from in front than see it
-/// running the same way (one polyline reversed) or lying behind A (back to back: two faces of
-/// one body, or both polylines reversed); see [`facing::facing`]. Touching surfaces with both
-/// polylines reversed look like correct ones here; on a model the element edges catch them.
-fn check_facing(pair: &ContactPair, bodies: &Bodies, search_distance: f64) -> Result<()> {
+/// with a B segment within the search distance, more must see B from in front (farther than
+/// half a segment) than see it running the same way (one polyline reversed) or lying behind A
+/// (back to back: two faces of one body, or both polylines reversed); see
+/// [`facing::facing`]. Where the surfaces touch (within half a segment) the geometry cannot
+/// tell facing surfaces from back-to-back ones: on a model the element edges tell; a host
+/// whose pair touches everywhere it is judged must say which side body A is on (a point
+/// inside it, checked by [`check_a_inside`]), and a point it gives is always checked.
+fn check_facing(
+    pair: &ContactPair,
+    bodies: &Bodies,
+    search_distance: f64,
+    side: Side,
+) -> Result<()> {
     let x = bodies.positions();
     let f = facing::facing(
         &pair.a,
@@ -1273,9 +1354,9 @@ fn check_facing(pair: &ContactPair, bodies: &Bodies, search_distance: f64) -> Re
         x,
         search_distance * mean_segment(&pair.a, x),
     );
-    let judged = f.facing + f.same_way + f.behind;
+    let judged = f.facing + f.touching + f.same_way + f.behind;
     let node = |k: Option<usize>| k.map_or(0, |k| bodies.external(pair.a[k]));
-    if f.same_way > f.facing {
+    if f.same_way > f.facing + f.touching {
         return Err(Error::InvalidInput(format!(
             "A and B run the same way: at {} of the {judged} A nodes near B (A node {} first) \
              the outward normals of A and B point alike; each polyline must have its body on \
@@ -1293,7 +1374,51 @@ fn check_facing(pair: &ContactPair, bodies: &Bodies, search_distance: f64) -> Re
             node(f.example)
         )));
     }
-    Ok(())
+    match side {
+        Side::Edges => Ok(()),
+        Side::Inside(Some(p)) => {
+            let a: Vec<[f64; 2]> = pair.a.iter().map(|&n| x[n]).collect();
+            check_a_inside(&a, p)
+        }
+        Side::Inside(None) if f.touching > 0 && f.facing == 0 => Err(Error::InvalidInput(format!(
+            "A and B touch (at {} of the {judged} A nodes near B they lie within half a \
+                 segment of each other) and face each other nowhere farther apart: the \
+                 geometry cannot tell facing surfaces from back-to-back ones (both polylines \
+                 reversed). Say which side body A is on: a point inside it \
+                 (hycon_host_set_pair_inside; HostSystem::a_inside)",
+            f.touching
+        ))),
+        Side::Inside(None) => Ok(()),
+    }
+}
+
+/// A point `inside` body A must lie on A's body side (the left) of the A polyline, whose node
+/// positions are `a` in order, beside it rather than beyond its ends (see [`facing::side`]):
+/// then A has its body on its left, and with B facing it ([`check_facing`]) so has B.
+///
+/// # Errors
+/// [`Error::InvalidInput`]: a non-finite point, one beyond the polyline's ends, or one on its
+/// outward side (the A polyline reversed).
+pub fn check_a_inside(a: &[[f64; 2]], inside: [f64; 2]) -> Result<()> {
+    if !(inside[0].is_finite() && inside[1].is_finite()) {
+        return Err(Error::InvalidInput(format!(
+            "the point inside body A {inside:?} is not finite"
+        )));
+    }
+    let ids: Vec<usize> = (0..a.len()).collect();
+    match facing::side(&ids, a, inside) {
+        Some(d) if d < 0.0 => Ok(()),
+        Some(_) => Err(Error::InvalidInput(format!(
+            "the point {inside:?} inside body A lies on the outward side of the A polyline: \
+             A has its body on its right, so it is reversed (and B with it, if they face each \
+             other: the pair is back to back)"
+        ))),
+        None => Err(Error::InvalidInput(format!(
+            "the point {inside:?} inside body A lies beyond an end of the A polyline, where \
+             its side is not defined: give one beside it (the centroid of the element that \
+             owns A's first segment, say)"
+        ))),
+    }
 }
 
 /// An iterate's displacements `u` must be finite (see [`ContactError::NonFinite`]).
@@ -1491,6 +1616,8 @@ impl ContactAnalysis {
             iterations,
             active,
             slip,
+            sub_increments: 1,
+            cutbacks: 0,
         }
     }
 }

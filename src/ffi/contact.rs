@@ -125,6 +125,11 @@ pub struct HyconIterationRecord {
     pub r: f64,
     /// Estimated 1-norm condition number of the small contact system (1 when empty).
     pub condition: f64,
+    /// The sub-increment (1-based) this iteration belongs to: 1 unless the automatic cutback
+    /// split the increment (see `HyconContactOptions::cutback_depth`). A sub-increment that
+    /// fails is tried again, shorter, under the same index: the monitor sees both tries,
+    /// `hycon_contact_records` keeps the converged one.
+    pub sub_increment: usize,
 }
 
 /// Called with every iteration record; return 0 to go on, nonzero to stop the increment (it
@@ -154,12 +159,21 @@ pub type HyconSolveFn = Option<
     ) -> i32,
 >;
 
-/// Parameters of the contact iteration. Get the defaults with `hycon_contact_options_default`,
-/// then override fields. Tolerances are relative (see each field), so results do not change
-/// when units are rescaled.
+/// Parameters of the contact iteration. Get the defaults with `hycon_contact_options_default`
+/// (which also sets `size`), then override fields. Tolerances are relative (see each field), so
+/// results do not change when units are rescaled.
+///
+/// Versioned by `size`: a host that fills the struct itself sets
+/// `size = sizeof(HyconContactOptions)`. hycon reads only the fields that fit in `size` and
+/// defaults the rest (fields are only ever added at the end), so a host built against an older
+/// header keeps working; a size below the 0.7.0 layout (the first with `size`), or above the
+/// layout this library knows, is rejected with `HYCON_ERROR_INVALID_ARGUMENT`.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct HyconContactOptions {
+    /// `sizeof(HyconContactOptions)` as the host was compiled (set by
+    /// `hycon_contact_options_default`).
+    pub size: usize,
     /// Convergence tolerance on `R` (default 1e-6; the paper used 0.01).
     pub tolerance: f64,
     /// Penetration tolerance, relative to the increment's displacement scale (default 1e-9).
@@ -203,7 +217,29 @@ pub struct HyconContactOptions {
     pub monitor: HyconMonitorFn,
     /// Passed to `monitor`; must stay valid as long as the `HyconContact` that uses it.
     pub monitor_data: *mut c_void,
+    /// Automatic cutback (default 8; 0 switches it off: a failed increment fails at once, the
+    /// behaviour before 0.7.0): an increment that fails for an iteration reason (no
+    /// convergence, a cycling contact set, a locked node breaking its lock, a surface pushed
+    /// beyond what the pairing sees) is taken again in sub-increments from the last converged
+    /// state to the target (loads, prescribed values and plate controls interpolated
+    /// linearly, each converged sub-increment the start of the next), halving a failed one at
+    /// most `cutback_depth` times (up to `HYCON_MAX_CUTBACK_DEPTH`). `K` is not factored
+    /// again and the interpolated loads cost no solve. Beyond the limit the increment fails
+    /// and the analysis is exactly as before the call.
+    pub cutback_depth: u32,
+    /// The shortest sub-increment the cutback tries, as a fraction of the increment, in
+    /// `(0, 1]` (default 1/256).
+    pub cutback_min_fraction: f64,
 }
+
+/// The largest `HyconContactOptions::cutback_depth`.
+pub const HYCON_MAX_CUTBACK_DEPTH: u32 = 52;
+const _: () =
+    assert!(HYCON_MAX_CUTBACK_DEPTH as usize == crate::contact::iteration::MAX_CUTBACK_DEPTH);
+
+/// The size of the 0.7.0 layout of `HyconContactOptions`, the first with a `size` field: the
+/// smallest `size` accepted.
+const OPTIONS_FIRST_BLOCK: usize = std::mem::size_of::<HyconContactOptions>();
 
 /// Summary of a converged increment.
 #[repr(C)]
@@ -217,6 +253,11 @@ pub struct HyconIncrementInfo {
     pub active: usize,
     /// Slip nodes at convergence.
     pub slip: usize,
+    /// Converged sub-increments the increment was taken in: 1 unless the automatic cutback
+    /// split it.
+    pub sub_increments: usize,
+    /// Sub-increments that failed and were tried again shorter (0 without cutback).
+    pub cutbacks: usize,
 }
 
 /// Converged results at one A node (multiplier side).
@@ -405,6 +446,8 @@ pub struct HyconHost {
     equations: usize,
     nodes: Vec<HostNode>,
     pairs: Vec<ContactPair>,
+    /// Per pair, a point inside body A (`hycon_host_set_pair_inside`).
+    a_inside: Vec<Option<[f64; 2]>>,
     stiffness: Option<HostSource>,
     elements: Option<HostElements>,
 }
@@ -486,6 +529,7 @@ fn record_to_c(r: &IterationRecord) -> HyconIterationRecord {
         changes: r.changes,
         r: r.r,
         condition: r.condition,
+        sub_increment: r.sub_increment,
     }
 }
 
@@ -528,6 +572,9 @@ fn options_from_c(o: &HyconContactOptions) -> Result<(ContactOptions, Option<Mon
         backend,
         threads: usize::try_from(o.threads)
             .map_err(|_| Fail::invalid("options.threads does not fit in size_t"))?,
+        cutback_depth: usize::try_from(o.cutback_depth)
+            .map_err(|_| Fail::invalid("options.cutback_depth does not fit in size_t"))?,
+        cutback_min_fraction: o.cutback_min_fraction,
     };
     options.validate()?;
     let monitor = o.monitor.map(|monitor| {
@@ -673,9 +720,56 @@ unsafe fn read_options(
     if options.is_null() {
         return Ok((ContactOptions::default(), None));
     }
-    // SAFETY: forwarded contract.
-    let o = unsafe { handle(options, "options")? };
-    options_from_c(o)
+    check_pointer(options, "options")?;
+    // SAFETY: non-null and aligned (checked), and the host's struct begins with its size
+    let size = unsafe { options.cast::<usize>().read() };
+    let known = std::mem::size_of::<HyconContactOptions>();
+    if !(OPTIONS_FIRST_BLOCK..=known).contains(&size) {
+        return Err(Fail::invalid(format!(
+            "options.size = {size}: expected sizeof(HyconContactOptions), from \
+             {OPTIONS_FIRST_BLOCK} (the 0.7.0 layout, the first with a size) to {known} (this \
+             library's): fill the options with hycon_contact_options_default"
+        )));
+    }
+    // the fields that fit in `size`; the rest keep their defaults
+    let mut o = default_options();
+    // SAFETY: the host's struct is `size` readable bytes (its contract), `o` has `known >=
+    // size` bytes, every bit pattern copied is one the host wrote into a field of the same
+    // layout, and the two do not overlap
+    unsafe {
+        std::ptr::copy_nonoverlapping(
+            options.cast::<u8>(),
+            std::ptr::from_mut(&mut o).cast::<u8>(),
+            size,
+        );
+    }
+    options_from_c(&o)
+}
+
+/// The default options in their C form (no monitor).
+fn default_options() -> HyconContactOptions {
+    let d = ContactOptions::default();
+    HyconContactOptions {
+        size: std::mem::size_of::<HyconContactOptions>(),
+        tolerance: d.tolerance,
+        gap_tolerance: d.gap_tolerance,
+        tension_tolerance: d.tension_tolerance,
+        friction_tolerance: d.friction_tolerance,
+        slip_tolerance: d.slip_tolerance,
+        search_distance: d.search_distance,
+        max_iterations: d.max_iterations as u32,
+        lock_rounds: d.lock_rounds as u32,
+        backend: HYCON_BACKEND_FAER,
+        kinematics: match d.kinematics {
+            Kinematics::Small => HYCON_KINEMATICS_SMALL,
+            Kinematics::Finite => HYCON_KINEMATICS_FINITE,
+        },
+        threads: d.threads as u32,
+        monitor: None,
+        monitor_data: std::ptr::null_mut(),
+        cutback_depth: d.cutback_depth as u32,
+        cutback_min_fraction: d.cutback_min_fraction,
+    }
 }
 
 // ------------------------------------------------------------------------------------------
@@ -690,25 +784,7 @@ pub unsafe extern "C" fn hycon_contact_options_default(
     out: *mut HyconContactOptions,
 ) -> HyconStatus {
     boundary("hycon_contact_options_default", || {
-        let d = ContactOptions::default();
-        let o = HyconContactOptions {
-            tolerance: d.tolerance,
-            gap_tolerance: d.gap_tolerance,
-            tension_tolerance: d.tension_tolerance,
-            friction_tolerance: d.friction_tolerance,
-            slip_tolerance: d.slip_tolerance,
-            search_distance: d.search_distance,
-            max_iterations: d.max_iterations as u32,
-            lock_rounds: d.lock_rounds as u32,
-            backend: HYCON_BACKEND_FAER,
-            kinematics: match d.kinematics {
-                Kinematics::Small => HYCON_KINEMATICS_SMALL,
-                Kinematics::Finite => HYCON_KINEMATICS_FINITE,
-            },
-            threads: d.threads as u32,
-            monitor: None,
-            monitor_data: std::ptr::null_mut(),
-        };
+        let o = default_options();
         // SAFETY: the caller's contract on `out`.
         unsafe { write(out, o, "out") }
     })
@@ -955,6 +1031,7 @@ pub unsafe extern "C" fn hycon_host_new(
                     equations: n_equations,
                     nodes: Vec::new(),
                     pairs: Vec::new(),
+                    a_inside: Vec::new(),
                     stiffness: None,
                     elements: None,
                 },
@@ -1058,8 +1135,56 @@ pub unsafe extern "C" fn hycon_host_add_pair(
             return Err(e);
         }
         h.pairs.push(pair);
+        h.a_inside.push(None);
         // SAFETY: the caller's contract on `index`.
         unsafe { put(index, h.pairs.len() - 1) };
+        Ok(())
+    })
+}
+
+/// Say which side body A of pair `pair` (an index from `hycon_host_add_pair`) is on: `inside`
+/// is a point inside body A (2 doubles `x y`), beside its polyline rather than beyond its ends:
+/// the centroid of the element that owns A's first segment, say. It must lie on A's body side
+/// of the A polyline (its left), which confirms A's orientation; B's follows from facing A.
+/// Replaces an earlier point of the pair.
+///
+/// Needed where the geometry cannot tell: when A and B touch (lie within half a segment of each
+/// other) wherever they are near each other, facing surfaces and back-to-back ones (both
+/// polylines reversed) look the same, and `hycon_contact_new_host` rejects such a pair without
+/// it. Surfaces apart (or curved away from each other around a contact) need none, and a point
+/// given is checked in any case.
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `inside`), `HYCON_ERROR_INVALID_ARGUMENT` (an
+/// unknown pair, a non-finite point, one beyond the ends of the A polyline, one on its outward
+/// side: A reversed, and with B facing it the pair back to back). On an error the host is
+/// unchanged.
+///
+/// # Safety
+/// `host` must be a live handle; `inside` NULL or 2 readable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_host_set_pair_inside(
+    host: *mut HyconHost,
+    pair: usize,
+    inside: *const f64,
+) -> HyconStatus {
+    boundary("hycon_host_set_pair_inside", || {
+        // SAFETY (both): the caller's contract.
+        let h = unsafe { handle_mut(host, "host")? };
+        let p = unsafe { doubles(inside, 2, "inside")? };
+        let point = [p[0], p[1]];
+        let Some(ids) = h.pairs.get(pair).map(|p| p.a.clone()) else {
+            return Err(Fail::invalid(format!(
+                "pair {pair} is unknown (the host has {} pairs)",
+                h.pairs.len()
+            )));
+        };
+        let positions: Vec<[f64; 2]> = ids
+            .iter()
+            .filter_map(|&id| h.nodes.iter().find(|n| n.id == id).map(|n| n.position))
+            .collect();
+        crate::contact::iteration::check_a_inside(&positions, point)
+            .map_err(|e| Fail::invalid(format!("pair {pair}: {e}")))?;
+        h.a_inside[pair] = Some(point);
         Ok(())
     })
 }
@@ -1234,6 +1359,7 @@ pub unsafe extern "C" fn hycon_contact_new_host(
             nodes: h.nodes.clone(),
             stiffness,
             elements: h.elements.clone(),
+            a_inside: h.a_inside.clone(),
         };
         let mut analysis = ContactAnalysis::host(system, h.pairs.clone(), opts)?;
         analysis.set_monitor(monitor);
@@ -1261,6 +1387,8 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
         iterations: i.iterations,
         active: i.active,
         slip: i.slip,
+        sub_increments: i.sub_increments,
+        cutbacks: i.cutbacks,
     }
 }
 
@@ -1274,11 +1402,16 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
 /// `load_len` is the field length, which the size query of the displacement gives:
 /// `hycon_contact_displacement(contact, NULL, 0, &load_len)`.
 ///
-/// On success the converged state advances and `info` (unless NULL) gets the summary. On
-/// failure the last converged state is kept and the status says why: `HYCON_ERROR_CONTACT` (no
-/// convergence, cycling contact set with the node named, penetration beyond the search
-/// distance, contact reaching the end of a surface), `HYCON_ERROR_SINGULAR` (a body held only
-/// by frictionless contact), `HYCON_ERROR_CALLBACK` (solver or monitor),
+/// An increment that fails for an iteration reason is taken again in sub-increments (the
+/// automatic cutback, `HyconContactOptions::cutback_depth`); it is still one increment, and
+/// `info->sub_increments` says how many it took. On success the converged state advances and
+/// `info` (unless NULL) gets the summary. On failure (beyond the cutback's limit) the analysis
+/// is exactly as before the call and the status says why: `HYCON_ERROR_CONTACT` (no
+/// convergence, cycling contact set with the node named, a surface pushed through the other or
+/// beyond what the pairing sees, at any depth, including a motion so large that double
+/// precision no longer resolves the surfaces, contact reaching the end of a surface),
+/// `HYCON_ERROR_SINGULAR` (a body held only by frictionless contact), `HYCON_ERROR_CALLBACK`
+/// (solver or monitor),
 /// `HYCON_ERROR_INVALID_ARGUMENT` (lengths, non-finite values or values beyond 1e300 in
 /// magnitude, where the load plus the contact forces or the stresses may overflow: choose other
 /// units; a plate analysis).

@@ -134,8 +134,9 @@ pub const HYCON_ERROR_SINGULAR: HyconStatus = -5;
 pub const HYCON_ERROR_SOLVER: HyconStatus = -6;
 /// An output buffer is shorter than required; the message states the length needed.
 pub const HYCON_ERROR_BUFFER_TOO_SMALL: HyconStatus = -7;
-/// A contact increment failed (no convergence, cycling contact set, contact reaching the end
-/// of a surface); the last converged state is kept.
+/// A contact increment failed, after the automatic cutback (no convergence, cycling contact set,
+/// a surface pushed through the other or beyond what the pairing sees, at any depth and any
+/// magnitude, contact reaching the end of a surface); the last converged state is kept.
 pub const HYCON_ERROR_CONTACT: HyconStatus = -8;
 /// A caller-supplied callback (solve or monitor) returned a nonzero status or non-finite
 /// values; the last converged state is kept.

@@ -1229,6 +1229,14 @@ impl ContactAnalysis {
                 (lu, s_norm)
             }
         };
+        if !s_norm.is_finite() {
+            // the geometry of the iterate overflowed (a finite-kinematics press so deep that
+            // the surfaces stretch beyond double precision): not a singular system but an
+            // iterate that is not finite, which the iteration reports as such
+            // (`ContactError::NonFinite`)
+            let none = vec![f64::NAN; u0c.len()];
+            return Ok((vec![0.0; m], vec![0.0; k], f64::NAN, none));
+        }
         // beyond this the solution has fewer than 3 correct digits: treat it as singular
         let condition = solve_and_estimate(s_norm, &lu, rhs.as_mut())
             .filter(|&c| c < 1e-3 / f64::EPSILON)
@@ -1238,7 +1246,11 @@ impl ContactAnalysis {
         }
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
         if !tau.iter().all(|v| v.is_finite()) {
-            return Err(singular());
+            // the system passed the condition check, so its right-hand side overflowed on the
+            // way (a press of 1e300): the iterate is not finite, which the iteration reports
+            // as such (`ContactError::NonFinite`), not as a singular system
+            let none = vec![f64::NAN; u0c.len()];
+            return Ok((tau[..m].to_vec(), tau[m..].to_vec(), condition, none));
         }
         let mut uc = u0c.to_vec();
         match directions {

@@ -314,4 +314,45 @@ impl ContactAnalysis {
         }
         Ok(())
     }
+
+    /// Under finite kinematics the geometry is evaluated at the current positions
+    /// `x = X + u`, which double precision holds to about `POSITION_ROUND_OFF |x|`. When the
+    /// displacement `u` of a segment's end is so large that this round-off reaches the
+    /// segment's length (its reference length, the scale the mesh describes the surface at,
+    /// or its current one), the positions no longer carry the surface's shape: the segment's
+    /// direction, its normal and the gaps measured from it are round-off, and no contact state
+    /// can be judged (a press of `1e16` body sizes in one increment moved every A node far
+    /// behind B and left them all open; at `1e66` a segment collapsed to zero length; at
+    /// `1e300` both bodies were stretched to `1e299` and the contact system was singular).
+    /// Such an iterate fails the increment ([`ContactError::Unresolved`]), at any magnitude.
+    /// (Large coordinates alone, a model far from its origin, are the caller's choice and are
+    /// not judged here: only the motion is.)
+    pub(super) fn resolved(&self, x: &[[f64; 2]]) -> Result<()> {
+        let reference = self.bodies.positions();
+        let moved = |n: usize| (x[n][0] - reference[n][0]).hypot(x[n][1] - reference[n][1]);
+        for pair in &self.pairs {
+            for ids in [&pair.a, &pair.b] {
+                for w in ids.windows(2) {
+                    let length =
+                        |x: &[[f64; 2]]| (x[w[1]][0] - x[w[0]][0]).hypot(x[w[1]][1] - x[w[0]][1]);
+                    let motion = moved(w[0]).max(moved(w[1]));
+                    if length(x).min(length(reference)) <= POSITION_ROUND_OFF * motion {
+                        let node = if moved(w[0]) >= moved(w[1]) {
+                            w[0]
+                        } else {
+                            w[1]
+                        };
+                        return Err(ContactError::Unresolved {
+                            increment: self.increment + 1,
+                            node: self.bodies.external(node),
+                            motion,
+                            length: length(reference),
+                        }
+                        .into());
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
 }

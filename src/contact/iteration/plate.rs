@@ -290,6 +290,6 @@ impl ContactAnalysis {
                 };
             }
         }
-        self.run_increment(f, &qp, Some(control))
+        self.cut_increment(f, &qp, Some(control))
     }
 }

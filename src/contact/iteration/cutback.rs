@@ -1,0 +1,239 @@
+//! The automatic cutback: an increment that fails for an iteration reason is taken again in
+//! sub-increments between the last converged state and the target.
+//!
+//! With `s` the fraction of the increment reached, a sub-increment to `s'` applies the loads
+//! and prescribed values (and a plate's controls)
+//!
+//! ```text
+//! v(s') = v_start + s' (v_target - v_start)
+//! ```
+//!
+//! (`v(1)` is the target itself, bit for bit). A converged sub-increment is committed as the
+//! start of the next one, so friction's path dependence is followed sub-increment by
+//! sub-increment. A sub-increment that fails for an iteration reason is halved and tried again
+//! (down to `2^-cutback_depth` of the increment and no shorter than `cutback_min_fraction`);
+//! after two converged sub-increments in a row the step doubles again. `K` is never factored
+//! again: an interpolated load is a combination of the start's and the target's loads, whose
+//! solves are kept ([`super::loads`]), so it costs no solve.
+//!
+//! The host's increment stays one increment: the increment number advances once, the records
+//! of the converged sub-increments carry their index
+//! ([`IterationRecord::sub_increment`]), and the displacement increment spans the whole
+//! step. When the cutback reaches its limit, or a sub-increment fails for a reason that a
+//! shorter step cannot remove (bad input, a singular system, a callback's failure, a node
+//! left uncovered, small kinematics exceeded), everything the increment changed is restored
+//! and the error returned: the analysis is exactly as before the call.
+
+use super::*;
+
+/// Whether a shorter step may remove the cause of a failed increment: the iteration's own
+/// failures (no convergence, a cycling set, a locked node breaking its lock, a node beyond
+/// what the pairing sees, positions the geometry cannot resolve).
+pub(super) fn retryable(e: &Error) -> bool {
+    matches!(
+        e,
+        Error::Contact(
+            ContactError::NoConvergence { .. }
+                | ContactError::Cycling { .. }
+                | ContactError::EdgePenetration { .. }
+                | ContactError::SlipReversal { .. }
+                | ContactError::BeyondSearchDistance { .. }
+                | ContactError::Unresolved { .. }
+        )
+    )
+}
+
+/// Everything an increment may change in the analysis (besides caches that are exact
+/// functions of `K` and timings), restored when a cut-back increment fails.
+struct Snapshot {
+    qc: Vec<f64>,
+    surfaces: Vec<ContactSurface>,
+    reference: Vec<ContactSurface>,
+    reach: Vec<f64>,
+    nodes: Vec<Vec<NodeData>>,
+    converged: Option<Converged>,
+    previous: Option<Converged>,
+    settled: Option<(Vec<f64>, Locks)>,
+    largest_motion: f64,
+    largest_component_motion: f64,
+    increment: usize,
+    records: usize,
+    plate: Option<Plate>,
+    loads: Vec<LoadSolve>,
+    field: OnceLock<(Vec<f64>, f64)>,
+    node_flexibility: NodeFlexibility,
+}
+
+/// The start and the target of an increment, interpolated.
+struct Path<'a> {
+    f: (Vec<f64>, &'a [f64]),
+    qp: (Vec<f64>, &'a [f64]),
+    /// The plate's start values per direction (its converged displacement or force, as the
+    /// target controls it) and the target controls.
+    control: Option<([f64; 2], [PlateControl; 2])>,
+}
+
+/// `a + s (b - a)`, exactly `b` at `s = 1`.
+fn lerp(a: f64, b: f64, s: f64) -> f64 {
+    if s == 1.0 { b } else { a + s * (b - a) }
+}
+
+impl Path<'_> {
+    /// Loads, prescribed values and plate controls at fraction `s` of the increment.
+    fn at(&self, s: f64) -> (Vec<f64>, Vec<f64>, Option<[PlateControl; 2]>) {
+        let mix = |(a, b): &(Vec<f64>, &[f64])| -> Vec<f64> {
+            a.iter()
+                .zip(b.iter())
+                .map(|(&a, &b)| lerp(a, b, s))
+                .collect()
+        };
+        let control = self.control.map(|(start, target)| {
+            [0, 1].map(|d| match target[d] {
+                PlateControl::Displacement(u) => PlateControl::Displacement(lerp(start[d], u, s)),
+                PlateControl::Force(f) => PlateControl::Force(lerp(start[d], f, s)),
+            })
+        });
+        (mix(&self.f), mix(&self.qp), control)
+    }
+}
+
+impl ContactAnalysis {
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            qc: self.qc.clone(),
+            surfaces: self.surfaces.clone(),
+            reference: self.reference.clone(),
+            reach: self.reach.clone(),
+            nodes: self.nodes.clone(),
+            converged: self.converged.clone(),
+            previous: self.previous.clone(),
+            settled: self.settled.clone(),
+            largest_motion: self.largest_motion,
+            largest_component_motion: self.largest_component_motion,
+            increment: self.increment,
+            records: self.records.len(),
+            plate: self.plate.clone(),
+            loads: self.loads.clone(),
+            field: self.field.clone(),
+            node_flexibility: self.node_flexibility.clone(),
+        }
+    }
+
+    fn restore(&mut self, s: Snapshot) {
+        let recovered = self.field.take().map_or(0.0, |f| f.1);
+        self.timings.recovery += recovered;
+        self.qc = s.qc;
+        self.surfaces = s.surfaces;
+        self.reference = s.reference;
+        self.reach = s.reach;
+        self.nodes = s.nodes;
+        self.converged = s.converged;
+        self.previous = s.previous;
+        self.settled = s.settled;
+        self.largest_motion = s.largest_motion;
+        self.largest_component_motion = s.largest_component_motion;
+        self.increment = s.increment;
+        self.records.truncate(s.records);
+        self.plate = s.plate;
+        self.loads = s.loads;
+        self.field = s.field;
+        self.node_flexibility = s.node_flexibility;
+    }
+
+    /// The interpolation between the last converged state and the target `(f, qp, control)`.
+    fn path<'a>(
+        &self,
+        f: &'a [f64],
+        qp: &'a [f64],
+        control: Option<[PlateControl; 2]>,
+    ) -> Path<'a> {
+        let (f0, qp0) = match &self.converged {
+            Some(c) => (c.load.clone(), c.prescribed.clone()),
+            None => (vec![0.0; f.len()], vec![0.0; qp.len()]),
+        };
+        let control = control.map(|target| {
+            let (u, force) = self.plate().unwrap_or_default();
+            let start = [0, 1].map(|d| match target[d] {
+                PlateControl::Displacement(_) => u[d],
+                PlateControl::Force(_) => force[d],
+            });
+            (start, target)
+        });
+        Path {
+            f: (f0, f),
+            qp: (qp0, qp),
+            control,
+        }
+    }
+
+    /// One increment to the target `(f, qp, control)` with the automatic cutback (see the
+    /// module documentation): the whole step first, then halved sub-increments if it fails
+    /// for an iteration reason.
+    pub(super) fn cut_increment(
+        &mut self,
+        f: &[f64],
+        qp: &[f64],
+        control: Option<[PlateControl; 2]>,
+    ) -> Result<IncrementInfo> {
+        self.sub_increment = 1;
+        let depth = self.options.cutback_depth;
+        if depth == 0 {
+            return self.run_increment(f, qp, control);
+        }
+        // the step's lengths are powers of 2: `smallest` is the shortest the limits allow
+        let smallest = (0..depth)
+            .map(|k| 0.5f64.powi(k as i32 + 1))
+            .take_while(|&h| h >= self.options.cutback_min_fraction)
+            .last()
+            .unwrap_or(1.0);
+        let snapshot = self.snapshot();
+        let path = self.path(f, qp, control);
+        let mut info = IncrementInfo {
+            increment: self.increment + 1,
+            iterations: 0,
+            active: 0,
+            slip: 0,
+            sub_increments: 0,
+            cutbacks: 0,
+        };
+        let (mut reached, mut step, mut streak) = (0.0f64, 1.0f64, 0);
+        while reached < 1.0 {
+            let next = if reached + step >= 1.0 {
+                1.0
+            } else {
+                reached + step
+            };
+            let (f_s, qp_s, control_s) = path.at(next);
+            self.sub_increment = info.sub_increments + 1;
+            // every sub-increment is increment number `info.increment`
+            self.increment = info.increment - 1;
+            match self.run_increment(&f_s, &qp_s, control_s) {
+                Ok(done) => {
+                    info.iterations += done.iterations;
+                    info.active = done.active;
+                    info.slip = done.slip;
+                    info.sub_increments += 1;
+                    reached = next;
+                    streak += 1;
+                    if streak == 2 && step < 1.0 {
+                        (step, streak) = (2.0 * step, 0);
+                    }
+                }
+                Err(e) if retryable(&e) && step > smallest => {
+                    info.cutbacks += 1;
+                    (step, streak) = (0.5 * step, 0);
+                }
+                Err(e) => {
+                    self.restore(snapshot);
+                    self.sub_increment = 1;
+                    return Err(e);
+                }
+            }
+        }
+        self.increment = info.increment;
+        // the increment spans the whole step: its displacement increment is from the start
+        self.previous = snapshot.converged;
+        self.sub_increment = 1;
+        Ok(info)
+    }
+}
