@@ -291,6 +291,14 @@ impl<'a> Parser<'a> {
         if !seen_elements {
             return self.err(self.lines.len(), "no $Elements section");
         }
+        // named groups without elements are kept (a body or surface that was not meshed)
+        for (&(dim, tag), name) in &names {
+            mesh.groups.entry(name.clone()).or_insert_with(|| Group {
+                dim,
+                tag,
+                ..Group::default()
+            });
+        }
         Ok(mesh)
     }
 
@@ -582,7 +590,7 @@ pub fn boundary_chain<V>(
                 tag(s)
             )));
         }
-        if has_prev.insert(e, true).is_some() {
+        if has_prev.insert(e, true) == Some(true) {
             return Err(ChainError::NotAChain(format!(
                 "the lines meet at node {} from two sides (a chain has no forks)",
                 tag(e)

@@ -45,7 +45,7 @@ impl From<gmsh::GmshError> for SceneError {
         SceneError {
             message: message
                 .strip_prefix(&format!("{}:", file.display()))
-                .map_or(message.clone(), |m| format!("line{m}")),
+                .map_or(message.clone(), |m| format!("line {m}")),
             file,
         }
     }
