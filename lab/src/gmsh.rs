@@ -526,7 +526,8 @@ fn ccw(q: [usize; 4], x: &[[f64; 2]]) -> Result<[usize; 4], String> {
             (r[0] - p[0]).hypot(r[1] - p[1])
         })
         .fold(0.0_f64, f64::max);
-    if !(a.abs() > 1e-12 * scale * scale) {
+    // NaN areas (non-finite coordinates are rejected earlier) fall here too
+    if a.abs().is_nan() || a.abs() <= 1e-12 * scale * scale {
         return Err("a quadrilateral with zero area (degenerate or self-crossing)".into());
     }
     Ok(if a > 0.0 { q } else { [q[0], q[3], q[2], q[1]] })

@@ -528,17 +528,18 @@ impl Builder<'_> {
                 }
                 extent = extent.max(v.abs());
             }
+            let values: Vec<String> = [("x", s.x), ("y", s.y)]
+                .iter()
+                .filter_map(|(d, v)| v.map(|v| format!("u{d} = {v}")))
+                .collect();
             supports.push(format!(
                 "{:?}: {} nodes, {}{}",
                 s.group,
                 nodes.len(),
-                [("x", s.x), ("y", s.y)]
-                    .iter()
-                    .filter_map(|(d, v)| v.map(|v| format!("u{d} = {v} ")))
-                    .collect::<String>(),
+                values.join(", "),
                 s.curve
                     .as_ref()
-                    .map_or(String::new(), |c| format!("(curve {c})"))
+                    .map_or(String::new(), |c| format!(" (curve {c})"))
             ));
         }
         self.check_held(&model, &bodies, analysis)?;
@@ -680,16 +681,15 @@ impl Builder<'_> {
                     ))
                 })?;
                 let body = model.mesh.element_material[edges[&(chain[0], chain[1])].0];
-                if let Some(w) = chain
+                if chain
                     .windows(2)
-                    .find(|w| model.mesh.element_material[edges[&(w[0], w[1])].0] != body)
+                    .any(|w| model.mesh.element_material[edges[&(w[0], w[1])].0] != body)
                 {
-                    let _ = w;
                     return self.err(format!("{what}: group {name:?} runs over two bodies"));
                 }
                 for w in chain.windows(2) {
                     let key = (w[0].min(w[1]), w[0].max(w[1]));
-                    if let Some(other) = used.insert(key, format!("{what}")) {
+                    if let Some(other) = used.insert(key, what.clone()) {
                         return self.err(format!(
                             "{what}: group {name:?} overlaps {other} (a boundary segment in two \
                              pairs)"
@@ -960,6 +960,9 @@ impl Scene {
             let _ = writeln!(s, "  {l}");
         }
         let _ = writeln!(s, "loads:");
+        if self.loads.is_empty() {
+            let _ = writeln!(s, "  none");
+        }
         for l in &self.loads {
             let _ = writeln!(s, "  {l}");
         }

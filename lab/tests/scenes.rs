@@ -37,7 +37,7 @@ fn load_edited(tag: &str, from: &str, to: &str) -> Result<scenefile::Scene, Scen
 
 /// The error of a scene, with every `needles` in its message.
 fn expect_error(result: Result<scenefile::Scene, SceneError>, needles: &[&str]) {
-    let e = result.err().expect("the scene should be rejected");
+    let e = result.expect_err("the scene should be rejected");
     let text = e.to_string();
     for n in needles {
         assert!(text.contains(n), "{n:?} not in the error: {text}");
@@ -186,7 +186,7 @@ fn dry_run_says_what_hycon_understood() {
     for needle in [
         "base         group \"base\": 64 elements, 85 nodes, E = 200000, nu = 0.3",
         "punch        group \"punch\": 36 elements, 50 nodes, E = 70000, nu = 0.33",
-        "\"punch_top\": 10 nodes, ux = 0 uy = -0.001 (curve press)",
+        "\"punch_top\": 10 nodes, ux = 0, uy = -0.001 (curve press)",
         "A \"punch_bottom\" (body punch, 10 nodes, length 2.0000e0) on B \"base_top\"",
         "10 of 10 A nodes find B",
         "the sides face each other",
@@ -492,4 +492,38 @@ fn mesh_errors_name_the_mesh_file_and_line() {
     let broken = msh.replacen("\n17\n", "\nseventeen\n", 1);
     std::fs::write(path.with_file_name("press.msh"), broken).unwrap();
     expect_error(scenefile::load(&path), &["press.msh", "line ", "seventeen"]);
+}
+
+/// The example scenes shipped in examples/scenes: each checks and runs (in a copy, so the
+/// repository stays clean).
+#[test]
+fn example_scenes_run() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes");
+    let mut ran = 0;
+    for entry in std::fs::read_dir(&root).unwrap() {
+        let src = entry.unwrap().path();
+        let dir = std::env::temp_dir().join(format!(
+            "hycon-example-{}-{}",
+            std::process::id(),
+            src.file_name().unwrap().to_string_lossy()
+        ));
+        std::fs::create_dir_all(&dir).unwrap();
+        for f in std::fs::read_dir(&src).unwrap() {
+            let f = f.unwrap().path();
+            if f.is_file() {
+                std::fs::copy(&f, dir.join(f.file_name().unwrap())).unwrap();
+            }
+        }
+        for f in std::fs::read_dir(&dir).unwrap() {
+            let f = f.unwrap().path();
+            if f.extension().is_some_and(|e| e == "toml") {
+                let scene = scenefile::load(&f).unwrap();
+                assert!(scene.describe().contains("verdict: ready to run"));
+                let s = scenefile::run(&scene, &mut std::io::sink()).unwrap();
+                assert!(s.error.is_none(), "{}: {:?}", f.display(), s.error);
+                ran += 1;
+            }
+        }
+    }
+    assert!(ran >= 1);
 }
