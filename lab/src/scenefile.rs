@@ -644,14 +644,17 @@ impl Builder<'_> {
         // contact pairs
         let options = self.options(&spec.options)?;
         let mut pairs: Vec<Pair> = Vec::new();
-        let mut used: HashMap<(usize, usize), String> = HashMap::new();
+        // segments already carrying multipliers (A) or opposite to them (B), and by which pair:
+        // a segment may be B of several pairs (one base under two punches), never A twice nor
+        // A of one pair and B of another
+        let mut used: HashMap<(usize, usize), (bool, String)> = HashMap::new();
         for (k, c) in spec.contact.iter().enumerate() {
             let what = format!("contact pair {} ({:?} on {:?})", k + 1, c.a, c.b);
             if !(c.friction.is_finite() && c.friction >= 0.0) {
                 return self.err(format!("{what}: friction {} (finite, >= 0)", c.friction));
             }
             let mut sides = Vec::new();
-            for name in [&c.a, &c.b] {
+            for (name, is_a) in [(&c.a, true), (&c.b, false)] {
                 let g = self.group(name, &[1], &what)?;
                 if g.lines.is_empty() {
                     return self.err(format!("{what}: group {name:?} has no lines"));
@@ -689,11 +692,17 @@ impl Builder<'_> {
                 }
                 for w in chain.windows(2) {
                     let key = (w[0].min(w[1]), w[0].max(w[1]));
-                    if let Some(other) = used.insert(key, what.clone()) {
-                        return self.err(format!(
-                            "{what}: group {name:?} overlaps {other} (a boundary segment in two \
-                             pairs)"
-                        ));
+                    match used.get(&key) {
+                        Some((was_a, other)) if is_a || *was_a => {
+                            return self.err(format!(
+                                "{what}: group {name:?} overlaps {other} (a boundary segment \
+                                 on the multiplier side A of one pair is in another pair too)"
+                            ));
+                        }
+                        Some(_) => {}
+                        None => {
+                            used.insert(key, (is_a, what.clone()));
+                        }
                     }
                 }
                 sides.push((chain, body));

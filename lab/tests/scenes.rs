@@ -527,3 +527,53 @@ fn example_scenes_run() {
     }
     assert!(ran >= 1);
 }
+
+/// The press as an axisymmetric scene (x = r: a ring punch on a disk): it runs, linear in the
+/// load as in plane strain; a body held only radially is free along the axis; a thickness
+/// other than 1 is rejected (the measure is 2 pi r).
+#[test]
+fn axisymmetric_scene() {
+    let s = load_edited(
+        "axi",
+        "analysis = \"plane_strain\"",
+        "analysis = \"axisymmetric\"",
+    )
+    .unwrap();
+    assert!(s.describe().contains("axisymmetric"), "{}", s.describe());
+    let r = scenefile::run(&s, &mut std::io::sink()).unwrap();
+    assert!(r.error.is_none(), "{:?}", r.error);
+    let (p1, p2) = (&r.steps[0].pairs[0], &r.steps[1].pairs[0]);
+    assert!((p2.total_force[1] / p1.total_force[1] - 2.0).abs() < 1e-6);
+    let text = press_text()
+        .replacen(
+            "analysis = \"plane_strain\"",
+            "analysis = \"axisymmetric\"",
+            1,
+        )
+        .replacen("x = 0.0\ny = 0.0", "x = 0.0", 1);
+    expect_error(
+        scenefile::load(&scene_dir("axi-free", &text)),
+        &["body \"base\"", "translation in y (z, along the axis)"],
+    );
+    let text = press_text()
+        .replacen(
+            "analysis = \"plane_strain\"",
+            "analysis = \"axisymmetric\"",
+            1,
+        )
+        .replacen("thickness = 1.0 }", "thickness = 2.0 }", 1);
+    expect_error(
+        scenefile::load(&scene_dir("axi-t", &text)),
+        &["body \"base\": material", "2 pi r"],
+    );
+}
+
+/// Two pairs may share their B side (two punches on one base), not an A side.
+#[test]
+fn two_pairs_share_a_b_side() {
+    let msh = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples/scenes/two_punches/two_punches.toml");
+    let s = scenefile::load(&msh).unwrap();
+    assert_eq!(s.pairs.len(), 2);
+    assert_eq!(s.pairs[0].pair.b, s.pairs[1].pair.b);
+}

@@ -3,7 +3,8 @@
 
 The meshes are structured quadrilateral grids of rectangles, written the way Gmsh writes a
 recombined mesh: $PhysicalNames, $Entities (one entity per physical group), $Nodes, $Elements.
-Run from this folder: python3 make_msh.py (it rewrites every .msh it owns).
+Run from this folder: python3 make_msh.py . ../../../examples/scenes/two_punches (it rewrites
+every .msh it owns; examples/scenes/press/press.msh is press.msh).
 
 Options per body exercise the reader's normalisation: `cw` writes its quadrilaterals clockwise,
 `reverse` writes a boundary curve against the body's counter-clockwise direction (Gmsh's curve
@@ -91,8 +92,22 @@ def press(cw=False, reverse=(), tri=False, nx=16, ny=4):
     ]
 
 
+def two_punches(nx=24, ny=4):
+    """Three bodies, two contact pairs: two punches of different heights on one base [0, 6]."""
+    return [
+        {"name": "base", "rect": (0.0, -1.0, 6.0, 1.0, nx, ny),
+         "curves": {"top": "base_top", "bottom": "base_bottom"}},
+        {"name": "left_punch", "rect": (0.5, 0.0, 2.0, 1.0, 9, ny),
+         "curves": {"bottom": "left_bottom", "top": "left_top"}},
+        {"name": "right_punch", "rect": (3.5, 0.0, 2.0, 0.5, 7, 2),
+         "curves": {"bottom": "right_bottom", "top": "right_top"}},
+    ]
+
+
 if __name__ == "__main__":
     target = sys.argv[1] if len(sys.argv) > 1 else "."
     write(f"{target}/press.msh", press())
     write(f"{target}/press_cw.msh", press(cw=True, reverse=("base_top", "punch_bottom")))
     write(f"{target}/press_tri.msh", press(tri=True))
+    if len(sys.argv) > 2:
+        write(f"{sys.argv[2]}/two_punches.msh", two_punches())
