@@ -635,3 +635,94 @@ pub fn boundary_chain<V>(
     }
     Ok(chain)
 }
+
+/// A physical group to write: its name and elements (node ids of the mesh written).
+#[derive(Debug, Clone, PartialEq)]
+pub enum WriteGroup {
+    /// A 2D group: the mesh's elements of this material index (4-node elements only).
+    Surface(String, usize),
+    /// A 1D group: a polyline through these nodes.
+    Curve(String, Vec<usize>),
+    /// A 0D group: these nodes.
+    Points(String, Vec<usize>),
+}
+
+/// MSH 4.1 ASCII text of `mesh` with the physical groups `groups` (one entity per group), the
+/// inverse of [`parse`] for 4-node meshes: how the lab turns its generated scenes into
+/// scene-file meshes.
+///
+/// # Errors
+/// A message when an element of a surface group does not have 4 nodes.
+pub fn write(mesh: &hycon::mesh::Mesh, groups: &[WriteGroup]) -> Result<String, String> {
+    use std::fmt::Write as _;
+    let mut s = String::from("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n");
+    let dim = |g: &WriteGroup| match g {
+        WriteGroup::Surface(..) => 2,
+        WriteGroup::Curve(..) => 1,
+        WriteGroup::Points(..) => 0,
+    };
+    let name = |g: &WriteGroup| match g {
+        WriteGroup::Surface(n, _) | WriteGroup::Curve(n, _) | WriteGroup::Points(n, _) => n.clone(),
+    };
+    let _ = writeln!(s, "{}", groups.len());
+    for (k, g) in groups.iter().enumerate() {
+        let _ = writeln!(s, "{} {} \"{}\"", dim(g), k + 1, name(g));
+    }
+    s.push_str("$EndPhysicalNames\n$Entities\n");
+    let count = |d: usize| groups.iter().filter(|g| dim(g) == d).count();
+    let _ = writeln!(s, "{} {} {} 0", count(0), count(1), count(2));
+    // entity tag = physical tag (unique across dimensions here)
+    for d in 0..3 {
+        for (k, _) in groups.iter().enumerate().filter(|(_, g)| dim(g) == d) {
+            let bbox = if d == 0 { "0 0 0" } else { "0 0 0 0 0 0" };
+            let tail = if d == 0 { "" } else { " 0" };
+            let _ = writeln!(s, "{} {bbox} 1 {}{tail}", k + 1, k + 1);
+        }
+    }
+    let n = mesh.n_nodes();
+    let _ = writeln!(s, "$EndEntities\n$Nodes\n1 {n} 1 {n}\n2 0 0 {n}");
+    for i in 0..n {
+        let _ = writeln!(s, "{}", i + 1);
+    }
+    for p in &mesh.nodes {
+        let _ = writeln!(s, "{:e} {:e} 0", p[0], p[1]);
+    }
+    s.push_str("$EndNodes\n");
+    let mut blocks: Vec<(usize, usize, u32, Vec<Vec<usize>>)> = Vec::new();
+    for (k, g) in groups.iter().enumerate() {
+        let els: Vec<Vec<usize>> = match g {
+            WriteGroup::Surface(_, m) => {
+                let mut v = Vec::new();
+                for e in 0..mesh.n_elements() {
+                    if mesh.element_material[e] == *m {
+                        if mesh.element(e).len() != 4 {
+                            return Err(format!("element {e} has {} nodes", mesh.element(e).len()));
+                        }
+                        v.push(mesh.element(e).to_vec());
+                    }
+                }
+                v
+            }
+            WriteGroup::Curve(_, ids) => ids.windows(2).map(|w| w.to_vec()).collect(),
+            WriteGroup::Points(_, ids) => ids.iter().map(|&i| vec![i]).collect(),
+        };
+        let kind = [15, 1, 3][dim(g)];
+        blocks.push((dim(g), k + 1, kind, els));
+    }
+    let total: usize = blocks.iter().map(|b| b.3.len()).sum();
+    let _ = writeln!(s, "$Elements\n{} {total} 1 {total}", blocks.len());
+    let mut tag = 1;
+    for (d, ent, kind, els) in blocks {
+        let _ = writeln!(s, "{d} {ent} {kind} {}", els.len());
+        for e in els {
+            let _ = write!(s, "{tag}");
+            for i in e {
+                let _ = write!(s, " {}", i + 1);
+            }
+            s.push('\n');
+            tag += 1;
+        }
+    }
+    s.push_str("$EndElements\n");
+    Ok(s)
+}

@@ -577,3 +577,76 @@ fn two_pairs_share_a_b_side() {
     assert_eq!(s.pairs.len(), 2);
     assert_eq!(s.pairs[0].pair.b, s.pairs[1].pair.b);
 }
+
+/// The Hertz cylinder as a scene: the lab's disk-on-block mesh (4-node quadrilaterals only,
+/// 16 elements per target half-width) written as MSH by `gmsh::write`, read back through a
+/// scene file, pressed by a prescribed approach of the disk's top; p0 and a (from the second
+/// moment of the multiplier pressure) within 1% of the closed form at the measured load.
+#[test]
+fn hertz_scene_matches_the_closed_form() {
+    use hycon::mesh::generate::Transition;
+    use hycon_lab::gmsh::WriteGroup;
+    use hycon_lab::scene::{DiskOnBlock, compare_with_hertz};
+    let lab = DiskOnBlock {
+        transition: Transition::Quads,
+        ..DiskOnBlock::default()
+    }
+    .build()
+    .unwrap();
+    let m = &lab.model.mesh;
+    let msh = hycon_lab::gmsh::write(
+        m,
+        &[
+            WriteGroup::Surface("block".into(), 0),
+            WriteGroup::Surface("disk".into(), 1),
+            WriteGroup::Curve("block_top".into(), lab.pair.a.clone()),
+            WriteGroup::Curve("disk_arc".into(), lab.pair.b.clone()),
+            WriteGroup::Points("block_bottom".into(), m.node_sets["block.bottom"].clone()),
+            WriteGroup::Points("disk_top".into(), lab.top.clone()),
+        ],
+    )
+    .unwrap();
+    // in 2D the load is nearly linear in the approach and a grows as its square root: 3.1
+    // times the trial approach a^2 / R reaches about the target half-width
+    let approach = 3.1 * lab.half_width.powi(2) / lab.radius;
+    let text = format!(
+        "mesh = \"hertz.msh\"\n\
+         [[body]]\ngroup = \"block\"\nmaterial = {{ E = 1.0, nu = 0.3 }}\n\
+         [[body]]\ngroup = \"disk\"\nmaterial = {{ E = 1.0, nu = 0.3 }}\n\
+         [[support]]\ngroup = \"block_bottom\"\nx = 0.0\ny = 0.0\n\
+         [[support]]\ngroup = \"disk_top\"\nx = 0.0\ny = {}\n\
+         [[contact]]\na = \"block_top\"\nb = \"disk_arc\"\n\
+         [[step]]\nload = 1.0\n\
+         [output]\nvtu = false\nsvg = false\n",
+        -approach
+    );
+    let path = scene_dir("hertz", &text);
+    std::fs::write(path.with_file_name("hertz.msh"), msh).unwrap();
+    let scene = scenefile::load(&path).unwrap();
+    eprintln!("{} elements", scene.model.mesh.n_elements());
+    let mut a = hycon::contact::iteration::ContactAnalysis::new(
+        scene.model.clone(),
+        vec![scene.pairs[0].pair.clone()],
+        scene.options,
+    )
+    .unwrap();
+    let (f, qp) = scene.step_loads(0);
+    a.increment(&f, &qp).unwrap();
+    let mut rows = a.node_results(0).unwrap();
+    for r in &mut rows {
+        r.position = scene.model.mesh.nodes[r.node];
+    }
+    let c = compare_with_hertz(&rows, lab.radius, lab.e_star).unwrap();
+    let per_half_width = c.hertz.half_width / (lab.half_width / 16.0);
+    eprintln!(
+        "a {} vs {}, p0 {} vs {}, {per_half_width} elements per half-width",
+        c.half_width, c.hertz.half_width, c.peak, c.hertz.peak
+    );
+    assert!(per_half_width >= 16.0 * 0.95, "{per_half_width}");
+    assert!((c.half_width / c.hertz.half_width - 1.0).abs() < 0.01);
+    assert!((c.peak / c.hertz.peak - 1.0).abs() < 0.01);
+    // and through `run`: the same load
+    let r = scenefile::run(&scene, &mut std::io::sink()).unwrap();
+    let fy = r.steps[0].pairs[0].total_force[1].abs();
+    assert!((fy / c.load - 1.0).abs() < 1e-6, "{fy} vs {}", c.load);
+}
