@@ -589,6 +589,8 @@ fn hertz_scene_matches_the_closed_form() {
     use hycon_lab::scene::{DiskOnBlock, compare_with_hertz};
     let lab = DiskOnBlock {
         transition: Transition::Quads,
+        radius_over_half_width: 16,
+        band_layers: 8,
         ..DiskOnBlock::default()
     }
     .build()
@@ -610,7 +612,10 @@ fn hertz_scene_matches_the_closed_form() {
     // times the trial approach a^2 / R reaches about the target half-width
     let approach = 3.1 * lab.half_width.powi(2) / lab.radius;
     let text = format!(
-        "mesh = \"hertz.msh\"\n\
+        "# The Hertz cylinder: a half disk (R = 1) pressed onto a block, both E = 1, nu = 0.3,\n\
+         # plane strain; the mesh is the lab's disk-on-block scene (4-node quads, R / a = 16)\n\
+         # written by lab/tests/scenes.rs (HYCON_WRITE_EXAMPLES=1 rewrites it).\n\
+         mesh = \"hertz.msh\"\n\
          [[body]]\ngroup = \"block\"\nmaterial = {{ E = 1.0, nu = 0.3 }}\n\
          [[body]]\ngroup = \"disk\"\nmaterial = {{ E = 1.0, nu = 0.3 }}\n\
          [[support]]\ngroup = \"block_bottom\"\nx = 0.0\ny = 0.0\n\
@@ -621,7 +626,22 @@ fn hertz_scene_matches_the_closed_form() {
         -approach
     );
     let path = scene_dir("hertz", &text);
-    std::fs::write(path.with_file_name("hertz.msh"), msh).unwrap();
+    std::fs::write(path.with_file_name("hertz.msh"), &msh).unwrap();
+    // the example shipped in examples/scenes/hertz is this scene
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/hertz");
+    if std::env::var_os("HYCON_WRITE_EXAMPLES").is_some() {
+        std::fs::create_dir_all(&shipped).unwrap();
+        std::fs::write(shipped.join("hertz.msh"), &msh).unwrap();
+        std::fs::write(
+            shipped.join("hertz.toml"),
+            text.replace("vtu = false\n", "dir = \"out\"\n"),
+        )
+        .unwrap();
+    }
+    assert!(
+        std::fs::read_to_string(shipped.join("hertz.msh")).unwrap() == msh,
+        "examples/scenes/hertz/hertz.msh is stale: rerun with HYCON_WRITE_EXAMPLES=1"
+    );
     let scene = scenefile::load(&path).unwrap();
     eprintln!("{} elements", scene.model.mesh.n_elements());
     let mut a = hycon::contact::iteration::ContactAnalysis::new(
