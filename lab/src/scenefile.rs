@@ -9,7 +9,7 @@
 use crate::gmsh::{self, GmshMesh, Group};
 use hycon::contact::facing;
 use hycon::contact::iteration::{
-    ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult, NodeState,
+    ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult, NodeState, PlateControl,
 };
 use hycon::element::Formulation;
 use hycon::material::{Analysis, Material};
@@ -86,6 +86,26 @@ pub struct SceneSpec {
     /// What to write.
     #[serde(default)]
     pub output: OutputSpec,
+    /// A rigid plate: the nodes of a group moved together, each direction controlled by a
+    /// displacement or a force (the built-in scenes' force control).
+    pub plate: Option<PlateSpec>,
+}
+
+/// A rigid plate on a group (its nodes must carry no other support).
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlateSpec {
+    /// The physical group (points or lines) tied to the plate.
+    pub group: String,
+    /// `"displacement"` or `"force"`: what controls the plate in x.
+    pub x: String,
+    /// The same in y.
+    pub y: String,
+    /// The controls' totals at factor 1 of the curve `[x, y]` (a force is the total on the
+    /// plate).
+    pub value: [f64; 2],
+    /// The curve that scales them (default `load`).
+    pub curve: Option<String>,
 }
 
 fn plane_strain() -> String {
@@ -296,6 +316,8 @@ pub struct Scene {
     pub prescribed: Vec<(usize, f64, usize)>,
     /// Factors per step and curve.
     pub steps: Vec<Vec<f64>>,
+    /// The rigid plate: its nodes, force control per direction, values at factor 1, curve.
+    pub plate: Option<(Vec<usize>, [bool; 2], [f64; 2], usize)>,
     /// The analysis options.
     pub options: ContactOptions,
     /// Likely mistakes that do not stop the run (units, a pair out of reach).
@@ -542,6 +564,41 @@ impl Builder<'_> {
                     .map_or(String::new(), |c| format!(" (curve {c})"))
             ));
         }
+        let plate = match &spec.plate {
+            None => None,
+            Some(p) => {
+                let what = format!("plate on {:?}", p.group);
+                let g = self.group(&p.group, &[0, 1], &what)?;
+                let nodes = model_nodes(g, &p.group, &what)?;
+                let mut force = [false; 2];
+                for (d, kind) in [&p.x, &p.y].into_iter().enumerate() {
+                    force[d] = match kind.as_str() {
+                        "force" => true,
+                        "displacement" => false,
+                        _ => {
+                            return self
+                                .err(format!("{what}: control {kind:?} (displacement or force)"));
+                        }
+                    };
+                }
+                if p.value.iter().any(|v| !v.is_finite()) {
+                    return self.err(format!("{what}: a value is not finite"));
+                }
+                model.fix(&nodes, [0.0, 0.0]).or_else(|e| {
+                    self.err(format!("{what}: {e} (a plate node has a support too?)"))
+                })?;
+                supports.push(format!(
+                    "{:?}: {} nodes on a rigid plate, x by {} {}, y by {} {}",
+                    p.group,
+                    nodes.len(),
+                    p.x,
+                    p.value[0],
+                    p.y,
+                    p.value[1]
+                ));
+                Some((nodes, force, p.value, curve_of(&p.curve)))
+            }
+        };
         self.check_held(&model, &bodies, analysis)?;
 
         // loads: one force vector per curve
@@ -824,6 +881,7 @@ impl Builder<'_> {
             prescribed,
             steps,
             options,
+            plate,
             warnings,
         })
     }
@@ -1169,8 +1227,13 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
         scene.model.mesh.n_nodes(),
         pairs.len()
     );
-    let mut analysis = ContactAnalysis::new(scene.model.clone(), pairs, scene.options)
-        .map_err(|e| err(format!("setting up the analysis: {e}")))?;
+    let mut analysis = match &scene.plate {
+        None => ContactAnalysis::new(scene.model.clone(), pairs, scene.options),
+        Some(p) => {
+            ContactAnalysis::with_plate(scene.model.clone(), pairs, scene.options, p.0.clone())
+        }
+    }
+    .map_err(|e| err(format!("setting up the analysis: {e}")))?;
     let stem = scene
         .file
         .file_stem()
@@ -1190,7 +1253,21 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
     );
     for k in 0..scene.steps.len() {
         let (f, qp) = scene.step_loads(k);
-        let info = match analysis.increment(&f, &qp) {
+        let step = match &scene.plate {
+            None => analysis.increment(&f, &qp),
+            Some((_, force, value, curve)) => {
+                let s = scene.steps[k][*curve];
+                let c = |d: usize| {
+                    if force[d] {
+                        PlateControl::Force(s * value[d])
+                    } else {
+                        PlateControl::Displacement(s * value[d])
+                    }
+                };
+                analysis.increment_with_plate(&f, &qp, [c(0), c(1)])
+            }
+        };
+        let info = match step {
             Ok(i) => i,
             Err(e) => {
                 let m = format!("step {} did not converge: {e}", k + 1);

@@ -670,3 +670,33 @@ fn hertz_scene_matches_the_closed_form() {
     let fy = r.steps[0].pairs[0].total_force[1].abs();
     assert!((fy / c.load - 1.0).abs() < 1e-6, "{fy} vs {}", c.load);
 }
+
+/// A rigid plate on the punch's top, pushed by a force in y and held in x: the contact force
+/// on the punch balances the plate force at every step.
+#[test]
+fn rigid_plate_force_control_balances_the_contact_force() {
+    let text = press_text().replacen(
+        "[[support]]\ngroup = \"punch_top\"\nx = 0.0\ny = -1e-3\ncurve = \"press\"",
+        "[plate]\ngroup = \"punch_top\"\nx = \"displacement\"\ny = \"force\"\nvalue = [0.0, \
+         -100.0]\ncurve = \"press\"",
+        1,
+    );
+    let s = scenefile::load(&scene_dir("plate", &text)).unwrap();
+    assert!(
+        s.describe()
+            .contains("on a rigid plate, x by displacement 0, y by force -100")
+    );
+    let r = scenefile::run(&s, &mut std::io::sink()).unwrap();
+    assert!(r.error.is_none(), "{:?}", r.error);
+    for (step, load) in r.steps.iter().zip([50.0, 100.0]) {
+        let fy = step.pairs[0].total_force[1];
+        assert!((fy - load).abs() < 1e-6 * load, "{fy} vs {load}");
+    }
+    expect_error(
+        scenefile::load(&scene_dir(
+            "plate-bad",
+            &text.replacen("y = \"force\"", "y = \"push\"", 1),
+        )),
+        &["plate on \"punch_top\": control \"push\""],
+    );
+}
