@@ -291,6 +291,19 @@ pub struct Pair {
     pub reach: f64,
 }
 
+/// A rigid plate as built.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plate {
+    /// Its nodes (model ids).
+    pub nodes: Vec<usize>,
+    /// Force control (else displacement) per direction.
+    pub force: [bool; 2],
+    /// The controls at factor 1.
+    pub value: [f64; 2],
+    /// The curve (index into [`Scene::curves`]).
+    pub curve: usize,
+}
+
 /// A loaded, checked scene, ready to run.
 #[derive(Debug, Clone)]
 pub struct Scene {
@@ -316,8 +329,8 @@ pub struct Scene {
     pub prescribed: Vec<(usize, f64, usize)>,
     /// Factors per step and curve.
     pub steps: Vec<Vec<f64>>,
-    /// The rigid plate: its nodes, force control per direction, values at factor 1, curve.
-    pub plate: Option<(Vec<usize>, [bool; 2], [f64; 2], usize)>,
+    /// The rigid plate, if any.
+    pub plate: Option<Plate>,
     /// The analysis options.
     pub options: ContactOptions,
     /// Likely mistakes that do not stop the run (units, a pair out of reach).
@@ -596,7 +609,12 @@ impl Builder<'_> {
                     p.y,
                     p.value[1]
                 ));
-                Some((nodes, force, p.value, curve_of(&p.curve)))
+                Some(Plate {
+                    nodes,
+                    force,
+                    value: p.value,
+                    curve: curve_of(&p.curve),
+                })
             }
         };
         self.check_held(&model, &bodies, analysis)?;
@@ -1230,7 +1248,7 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
     let mut analysis = match &scene.plate {
         None => ContactAnalysis::new(scene.model.clone(), pairs, scene.options),
         Some(p) => {
-            ContactAnalysis::with_plate(scene.model.clone(), pairs, scene.options, p.0.clone())
+            ContactAnalysis::with_plate(scene.model.clone(), pairs, scene.options, p.nodes.clone())
         }
     }
     .map_err(|e| err(format!("setting up the analysis: {e}")))?;
@@ -1255,13 +1273,13 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
         let (f, qp) = scene.step_loads(k);
         let step = match &scene.plate {
             None => analysis.increment(&f, &qp),
-            Some((_, force, value, curve)) => {
-                let s = scene.steps[k][*curve];
+            Some(p) => {
+                let s = scene.steps[k][p.curve];
                 let c = |d: usize| {
-                    if force[d] {
-                        PlateControl::Force(s * value[d])
+                    if p.force[d] {
+                        PlateControl::Force(s * p.value[d])
                     } else {
-                        PlateControl::Displacement(s * value[d])
+                        PlateControl::Displacement(s * p.value[d])
                     }
                 };
                 analysis.increment_with_plate(&f, &qp, [c(0), c(1)])
