@@ -700,3 +700,21 @@ fn rigid_plate_force_control_balances_the_contact_force() {
         &["plate on \"punch_top\": control \"push\""],
     );
 }
+
+/// The frictional sliding example (examples/scenes/press_slide): pressed, then slid until the
+/// whole contact slips; then the tangential force is mu = 0.3 times the normal force (Coulomb
+/// at every node of a flat contact), and in the first, pressing-only step it is zero.
+#[test]
+fn sliding_scene_reaches_coulomb() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/press_slide");
+    let text = std::fs::read_to_string(src.join("press_slide.toml")).unwrap();
+    let scene = scenefile::load(&scene_dir("slide", &text)).unwrap();
+    let r = scenefile::run(&scene, &mut std::io::sink()).unwrap();
+    assert!(r.error.is_none(), "{:?}", r.error);
+    let first = &r.steps[0].pairs[0];
+    assert!(first.total_force[0].abs() < 1e-9 * first.total_force[1]);
+    let last = &r.steps.last().unwrap().pairs[0];
+    assert_eq!((last.active, last.slip), (10, 10));
+    let ratio = -last.total_force[0] / last.total_force[1];
+    assert!((ratio - 0.3).abs() < 1e-6, "{ratio}");
+}
