@@ -718,3 +718,33 @@ fn sliding_scene_reaches_coulomb() {
     let ratio = -last.total_force[0] / last.total_force[1];
     assert!((ratio - 0.3).abs() < 1e-6, "{ratio}");
 }
+
+/// The flat punch with rounded corners (examples/scenes/rounded_punch): the dry run sees the
+/// roundings as initial gaps up to their radius 0.3; under a plate force the contact force
+/// balances it at every step and the contact spreads onto the roundings as it grows.
+#[test]
+fn rounded_punch_spreads_and_balances() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/rounded_punch");
+    let dir = scene_dir(
+        "rounded",
+        &std::fs::read_to_string(src.join("rounded_punch.toml")).unwrap(),
+    );
+    std::fs::copy(
+        src.join("rounded_punch.msh"),
+        dir.with_file_name("rounded_punch.msh"),
+    )
+    .unwrap();
+    let scene = scenefile::load(&dir).unwrap();
+    let (lo, hi) = scene.pairs[0].gap_range.unwrap();
+    assert!(lo.abs() < 1e-12 && (hi - 0.3).abs() < 1e-12, "{lo} {hi}");
+    let r = scenefile::run(&scene, &mut std::io::sink()).unwrap();
+    assert!(r.error.is_none(), "{:?}", r.error);
+    let mut last = 0.0;
+    for (step, load) in r.steps.iter().zip([100.0, 1000.0, 4000.0]) {
+        let p = &step.pairs[0];
+        assert!((p.total_force[1] - load).abs() < 1e-6 * load, "{p:?}");
+        assert!(p.contact_length >= last);
+        last = p.contact_length;
+    }
+    assert!(last > 1.4, "{last}: the flat part is 1.4 long");
+}

@@ -3,8 +3,9 @@
 
 The meshes are structured quadrilateral grids of rectangles, written the way Gmsh writes a
 recombined mesh: $PhysicalNames, $Entities (one entity per physical group), $Nodes, $Elements.
-Run from this folder: python3 make_msh.py . ../../../examples/scenes/two_punches (it rewrites
-every .msh it owns; examples/scenes/press/press.msh is press.msh).
+Run from this folder: python3 make_msh.py . ../../../examples/scenes/two_punches
+../../../examples/scenes/rounded_punch (it rewrites every .msh it owns;
+examples/scenes/press/press.msh and press_slide/press.msh are press.msh).
 
 Options per body exercise the reader's normalisation: `cw` writes its quadrilaterals clockwise,
 `reverse` writes a boundary curve against the body's counter-clockwise direction (Gmsh's curve
@@ -13,8 +14,12 @@ direction is arbitrary), `tri` splits the body's quads into triangles (to be rej
 import sys
 
 
-def rect(x0, y0, w, h, nx, ny):
-    nodes = [(x0 + w * i / nx, y0 + h * j / ny) for j in range(ny + 1) for i in range(nx + 1)]
+def rect(x0, y0, w, h, nx, ny, bottom=None):
+    """A structured grid; `bottom(x)` lifts the bottom edge (the rows follow linearly)."""
+    def y(x, j):
+        b = y0 + (bottom(x) if bottom else 0.0)
+        return b + (y0 + h - b) * j / ny
+    nodes = [(x0 + w * i / nx, y(x0 + w * i / nx, j)) for j in range(ny + 1) for i in range(nx + 1)]
     quads = [(j * (nx + 1) + i, j * (nx + 1) + i + 1, (j + 1) * (nx + 1) + i + 1,
               (j + 1) * (nx + 1) + i) for j in range(ny) for i in range(nx)]
     # boundary edges, counter-clockwise around the body
@@ -30,7 +35,7 @@ def write(path, bodies, extra_points=()):
     nodes, surf, curves, points = [], [], [], []
     for b in bodies:
         off = len(nodes)
-        n, q, sides = rect(*b["rect"])
+        n, q, sides = rect(*b["rect"], bottom=b.get("bottom"))
         nodes += n
         if b.get("cw"):
             q = [(a, d, c, bb) for (a, bb, c, d) in q]
@@ -104,6 +109,21 @@ def two_punches(nx=24, ny=4):
     ]
 
 
+def rounded_punch(r=0.3):
+    """A flat punch [1, 3] x [0, 1] whose bottom corners are rounded with radius r, on a base."""
+    import math
+
+    def lift(x):
+        d = max(1.0 + r - x, x - (3.0 - r), 0.0)
+        return r - math.sqrt(max(r * r - d * d, 0.0))
+    return [
+        {"name": "base", "rect": (0.0, -1.0, 4.0, 1.0, 40, 8),
+         "curves": {"top": "base_top", "bottom": "base_bottom"}},
+        {"name": "punch", "rect": (1.0, 0.0, 2.0, 1.0, 21, 8), "bottom": lift,
+         "curves": {"bottom": "punch_bottom", "top": "punch_top"}},
+    ]
+
+
 if __name__ == "__main__":
     target = sys.argv[1] if len(sys.argv) > 1 else "."
     write(f"{target}/press.msh", press())
@@ -111,3 +131,5 @@ if __name__ == "__main__":
     write(f"{target}/press_tri.msh", press(tri=True))
     if len(sys.argv) > 2:
         write(f"{sys.argv[2]}/two_punches.msh", two_punches())
+    if len(sys.argv) > 3:
+        write(f"{sys.argv[3]}/rounded_punch.msh", rounded_punch())
