@@ -952,13 +952,38 @@ impl Builder<'_> {
         for p in &model.prescribed {
             held[p.node][p.dir] = true;
         }
-        for (b, body) in bodies.iter().enumerate() {
-            let mut nodes = BTreeSet::new();
-            for e in 0..model.mesh.n_elements() {
-                if model.mesh.element_material[e] == b {
-                    nodes.extend(model.mesh.element(e).iter().copied());
-                }
+        // connected pieces of elements (sharing nodes): each must be held on its own
+        let mesh = &model.mesh;
+        let mut parent: Vec<usize> = (0..mesh.n_nodes()).collect();
+        fn root(parent: &mut [usize], mut i: usize) -> usize {
+            while parent[i] != i {
+                parent[i] = parent[parent[i]];
+                i = parent[i];
             }
+            i
+        }
+        for e in 0..mesh.n_elements() {
+            let el = mesh.element(e);
+            for w in el.windows(2) {
+                let (a, b) = (root(&mut parent, w[0]), root(&mut parent, w[1]));
+                parent[a] = b;
+            }
+        }
+        let mut pieces: BTreeMap<usize, (usize, usize, BTreeSet<usize>)> = BTreeMap::new();
+        for e in 0..mesh.n_elements() {
+            let r = root(&mut parent, mesh.element(e)[0]);
+            let piece = pieces
+                .entry(r)
+                .or_insert_with(|| (mesh.element_material[e], 0, BTreeSet::new()));
+            piece.1 += 1;
+            piece.2.extend(mesh.element(e).iter().copied());
+        }
+        let mut per_body = vec![0usize; bodies.len()];
+        for (b, _, _) in pieces.values() {
+            per_body[*b] += 1;
+        }
+        for (b, elements, nodes) in pieces.values() {
+            let body = &bodies[*b];
             let x = &model.mesh.nodes;
             let n = nodes.len() as f64;
             let c = nodes
@@ -971,7 +996,7 @@ impl Builder<'_> {
                 .max(f64::MIN_POSITIVE);
             // Gram matrix of the rows (1, 0, -y) for held x and (0, 1, x) for held y
             let mut g = [[0.0_f64; 3]; 3];
-            for &i in &nodes {
+            for &i in nodes {
                 let (dx, dy) = ((x[i][0] - c[0]) / size, (x[i][1] - c[1]) / size);
                 for (dir, row) in [(0, [1.0, 0.0, -dy]), (1, [0.0, 1.0, dx])] {
                     if held[i][dir] {
@@ -999,11 +1024,20 @@ impl Builder<'_> {
                 )
             };
             if let Some(motion) = free {
+                let piece = if per_body[*b] > 1 {
+                    format!(
+                        " (its piece of {elements} elements around ({:.4e}, {:.4e}); the body has \
+                         {} separate pieces, each needs supports)",
+                        c[0], c[1], per_body[*b]
+                    )
+                } else {
+                    String::new()
+                };
                 return self.err(format!(
-                    "body {:?} is not held against rigid motion: its supports leave {motion} \
-                     free. hycon factors K before contact closes, so every body needs supports \
-                     of its own (a body pushed only through contact: hold it with a prescribed \
-                     displacement where the load goes in)",
+                    "body {:?}{piece} is not held against rigid motion: its supports leave \
+                     {motion} free. hycon factors K before contact closes, so every body needs \
+                     supports of its own (a body pushed only through contact: hold it with a \
+                     prescribed displacement where the load goes in)",
                     body.name
                 ));
             }

@@ -748,3 +748,31 @@ fn rounded_punch_spreads_and_balances() {
     }
     assert!(last > 1.4, "{last}: the flat part is 1.4 long");
 }
+
+/// A body group of two separate pieces, one of them without supports: named with the piece.
+#[test]
+fn mistake_body_piece_not_held() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/two_punches");
+    // both punches in the physical group "left_punch" (the right one's surface entity gets the
+    // left one's physical tag 2)
+    let msh = std::fs::read_to_string(src.join("two_punches.msh"))
+        .unwrap()
+        .replacen("3 0 0 0 1 1 0 1 3 0", "3 0 0 0 1 1 0 1 2 0", 1);
+    let text = "mesh = \"two_punches.msh\"\n\
+        [[body]]\ngroup = \"base\"\nmaterial = { E = 1.0, nu = 0.3 }\n\
+        [[body]]\ngroup = \"left_punch\"\nmaterial = { E = 1.0, nu = 0.3 }\n\
+        [[support]]\ngroup = \"base_bottom\"\nx = 0.0\ny = 0.0\n\
+        [[support]]\ngroup = \"left_top\"\nx = 0.0\ny = -1e-3\n\
+        [[contact]]\na = \"left_bottom\"\nb = \"base_top\"\n\
+        [[step]]\nload = 1.0\n";
+    let path = scene_dir("pieces", text);
+    std::fs::write(path.with_file_name("two_punches.msh"), msh).unwrap();
+    expect_error(
+        scenefile::load(&path),
+        &[
+            "body \"left_punch\" (its piece of 14 elements",
+            "2 separate pieces",
+            "translation in x",
+        ],
+    );
+}
