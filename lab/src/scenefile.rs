@@ -352,16 +352,58 @@ pub fn load(path: &Path) -> Result<Scene> {
     })?;
     let mesh_path = path.parent().unwrap_or(Path::new(".")).join(&spec.mesh);
     let gmsh = gmsh::read(&mesh_path)?;
+    // the lines of the items, for the messages (the spec parsed, this cannot fail)
+    let lines: ItemLines = toml::from_str(&text).unwrap_or_default();
+    let line_of = |items: &[ItemLine]| -> Vec<usize> {
+        items
+            .iter()
+            .map(|i| {
+                i.group
+                    .as_ref()
+                    .or(i.a.as_ref())
+                    .map_or(0, |g| 1 + text[..g.span().start].matches('\n').count())
+            })
+            .collect()
+    };
     Builder {
         file: path,
         gmsh: &gmsh,
+        lines: [
+            line_of(&lines.body),
+            line_of(&lines.support),
+            line_of(&lines.load),
+            line_of(&lines.contact),
+            line_of(lines.plate.as_slice()),
+        ],
     }
     .build(spec)
+}
+
+/// Where each item's `group` (or a pair's `a`) is written, read in a second pass.
+#[derive(Debug, Default, Deserialize)]
+struct ItemLines {
+    #[serde(default)]
+    body: Vec<ItemLine>,
+    #[serde(default)]
+    support: Vec<ItemLine>,
+    #[serde(default)]
+    load: Vec<ItemLine>,
+    #[serde(default)]
+    contact: Vec<ItemLine>,
+    plate: Option<ItemLine>,
+}
+
+#[derive(Debug, Deserialize)]
+struct ItemLine {
+    group: Option<toml::Spanned<toml::Value>>,
+    a: Option<toml::Spanned<toml::Value>>,
 }
 
 struct Builder<'a> {
     file: &'a Path,
     gmsh: &'a GmshMesh,
+    /// Lines of the bodies, supports, loads, contact pairs and the plate (0: unknown).
+    lines: [Vec<usize>; 5],
 }
 
 /// Shorthand for an error in the scene file.
@@ -397,6 +439,15 @@ fn dims(d: usize) -> &'static str {
 impl Builder<'_> {
     fn err<T>(&self, message: impl Into<String>) -> Result<T> {
         fail(self.file, message)
+    }
+
+    /// `" (line N)"` for item `k` of kind `kind` (0 body, 1 support, 2 load, 3 contact,
+    /// 4 plate), or nothing when unknown.
+    fn at(&self, kind: usize, k: usize) -> String {
+        match self.lines[kind].get(k) {
+            Some(&l) if l > 0 => format!(" (line {l})"),
+            _ => String::new(),
+        }
     }
 
     /// The group `name`, of one of the dimensions `want` (`what` says what it is for).
@@ -445,9 +496,9 @@ impl Builder<'_> {
         let mut mesh = Mesh::new();
         let mut id: Vec<Option<usize>> = vec![None; self.gmsh.nodes.len()];
         let mut bodies = Vec::new();
-        for b in &spec.body {
+        for (k, b) in spec.body.iter().enumerate() {
             let name = b.name.clone().unwrap_or_else(|| b.group.clone());
-            let what = format!("body {name:?}");
+            let what = format!("body {name:?}{}", self.at(0, k));
             let g = self.group(&b.group, &[2], &what)?;
             if g.quads.is_empty() {
                 return self.err(format!("{what}: group {:?} has no elements", b.group));
@@ -540,8 +591,8 @@ impl Builder<'_> {
         let mut supports = Vec::new();
         let mut prescribed = Vec::new();
         let mut extent = 0.0_f64;
-        for s in &spec.support {
-            let what = format!("support on {:?}", s.group);
+        for (k, s) in spec.support.iter().enumerate() {
+            let what = format!("support on {:?}{}", s.group, self.at(1, k));
             let g = self.group(&s.group, &[0, 1], &what)?;
             let nodes = model_nodes(g, &s.group, &what)?;
             if s.x.is_none() && s.y.is_none() {
@@ -580,7 +631,7 @@ impl Builder<'_> {
         let plate = match &spec.plate {
             None => None,
             Some(p) => {
-                let what = format!("plate on {:?}", p.group);
+                let what = format!("plate on {:?}{}", p.group, self.at(4, 0));
                 let g = self.group(&p.group, &[0, 1], &what)?;
                 let nodes = model_nodes(g, &p.group, &what)?;
                 let mut force = [false; 2];
@@ -624,8 +675,8 @@ impl Builder<'_> {
         let mut loads = Vec::new();
         let mut per_curve: Vec<(usize, Model)> = Vec::new();
         let mut warnings = Vec::new();
-        for l in &spec.load {
-            let what = format!("load on {:?}", l.group);
+        for (k, l) in spec.load.iter().enumerate() {
+            let what = format!("load on {:?}{}", l.group, self.at(2, k));
             let given = [
                 l.pressure.is_some(),
                 l.traction.is_some(),
@@ -724,7 +775,13 @@ impl Builder<'_> {
         // A of one pair and B of another
         let mut used: HashMap<(usize, usize), (bool, String)> = HashMap::new();
         for (k, c) in spec.contact.iter().enumerate() {
-            let what = format!("contact pair {} ({:?} on {:?})", k + 1, c.a, c.b);
+            let what = format!(
+                "contact pair {} ({:?} on {:?}){}",
+                k + 1,
+                c.a,
+                c.b,
+                self.at(3, k)
+            );
             if !(c.friction.is_finite() && c.friction >= 0.0) {
                 return self.err(format!("{what}: friction {} (finite, >= 0)", c.friction));
             }

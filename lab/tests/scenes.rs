@@ -312,7 +312,7 @@ fn mistake_body_with_no_elements() {
     std::fs::write(path.with_file_name("press.msh"), text).unwrap();
     expect_error(
         scenefile::load(&path),
-        &["body \"empty\": group \"empty\" has no elements"],
+        &["body \"empty\" (line 10): group \"empty\" has no elements"],
     );
 }
 
@@ -409,7 +409,7 @@ fn mistake_missing_material() {
             "material = { E = 70e3, nu = 0.33, thickness = 1.0 }",
             "",
         ),
-        &["body \"punch\": no material"],
+        &["body \"punch\" (line 10): no material"],
     );
     // a misspelt key is not ignored
     expect_error(
@@ -422,11 +422,11 @@ fn mistake_missing_material() {
 fn mistake_out_of_range_values() {
     expect_error(
         load_edited("nu", "nu = 0.33", "nu = 0.5"),
-        &["body \"punch\": material", "oisson"],
+        &["body \"punch\" (line 10): material", "oisson"],
     );
     expect_error(
         load_edited("E", "E = 70e3", "E = -70e3"),
-        &["body \"punch\": material"],
+        &["body \"punch\" (line 10): material"],
     );
     expect_error(
         load_edited("mu", "friction = 0.0", "friction = -0.1"),
@@ -564,7 +564,7 @@ fn axisymmetric_scene() {
         .replacen("thickness = 1.0 }", "thickness = 2.0 }", 1);
     expect_error(
         scenefile::load(&scene_dir("axi-t", &text)),
-        &["body \"base\": material", "2 pi r"],
+        &["body \"base\" (line 6): material", "2 pi r"],
     );
 }
 
@@ -697,7 +697,7 @@ fn rigid_plate_force_control_balances_the_contact_force() {
             "plate-bad",
             &text.replacen("y = \"force\"", "y = \"push\"", 1),
         )),
-        &["plate on \"punch_top\": control \"push\""],
+        &["plate on \"punch_top\" (line ", "control \"push\""],
     );
 }
 
