@@ -75,13 +75,13 @@
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 6
+#define HYCON_VERSION_MINOR 7
 
 // Patch version of the library this header belongs to.
-#define HYCON_VERSION_PATCH 2
+#define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 602
+#define HYCON_VERSION 700
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6
@@ -164,9 +164,9 @@ typedef struct HyconIterationRecord {
     // The worst violation of the discrete contact conditions by this iteration's solution
     // (open gaps >= 0; closed nodes in compression with closed gaps; stick nodes inside the
     // friction cone and not sliding; slip opposing the friction), relative to the problem's
-    // scale (gaps to the increment's motion, at most the mean A segment; tractions to the
-    // largest; slips to the motion). At convergence at most 1e-4, else the increment fails
-    // with `HYCON_ERROR_CONTACT`.
+    // scale (open gaps to the increment's motion, at most the mean A segment; closed gaps and
+    // slips to the motion; tractions to the largest). At convergence at most 1e-4, else the
+    // increment fails with `HYCON_ERROR_CONTACT`.
     double violation;
     // The sub-increment (1-based) this iteration belongs to: 1 unless the automatic cutback
     // split the increment (see `HyconContactOptions::cutback_depth`). A sub-increment that

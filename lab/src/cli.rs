@@ -142,6 +142,17 @@ enum Command {
         #[arg(long)]
         plane_strain: bool,
     },
+    /// Your own model: a TOML scene over a Gmsh mesh (see the README, "Your own model").
+    /// Prints a line per step (iterations, contact length, peak pressure, total force) and
+    /// writes the scene's outputs.
+    Run {
+        /// The scene file.
+        scene: PathBuf,
+        /// Read and check everything without solving: print the bodies, supports, loads,
+        /// contact pairs (lengths, initial gaps, facing), steps and a verdict.
+        #[arg(long)]
+        dry_run: bool,
+    },
     /// Performance measurements (printed, never asserted).
     Bench {
         #[command(subcommand)]
@@ -491,6 +502,7 @@ pub fn main() -> ExitCode {
             plane_strain,
         } => beam(element.into(), load, nx, ny, distortion, nu, plane_strain),
         Command::Bench { what } => bench(what, out.as_deref()),
+        Command::Run { scene, dry_run } => run_scene(&scene, dry_run),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -502,6 +514,24 @@ pub fn main() -> ExitCode {
 }
 
 type AnyResult<T = ()> = Result<T, Box<dyn std::error::Error>>;
+
+/// `hycon run [--dry-run] SCENE`: the dry run's description, or the run's table and files; a
+/// step that does not converge fails the command after the files of the converged steps.
+fn run_scene(path: &Path, dry_run: bool) -> AnyResult {
+    let scene = hycon_lab::scenefile::load(path)?;
+    if dry_run {
+        print!("{}", scene.describe());
+        return Ok(());
+    }
+    for w in &scene.warnings {
+        println!("warning: {w}");
+    }
+    let summary = hycon_lab::scenefile::run(&scene, &mut std::io::stdout())?;
+    match summary.error {
+        Some(e) => Err(e.into()),
+        None => Ok(()),
+    }
+}
 
 /// Cook's membrane for every element on n x n meshes, n = 2, 4, ..., max_n; printed and written
 /// to `out/cook.csv`.

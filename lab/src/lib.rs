@@ -13,12 +13,16 @@
 //! * [`bench`](mod@bench): the measurements behind the README's performance figures.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
+//! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).
+//! * [`scenefile`]: TOML scene files over Gmsh meshes (`hycon run`).
 #![warn(missing_docs)]
 
 pub mod axisymmetric;
 pub mod bench;
 pub mod cases;
 pub mod examples;
+pub mod gmsh;
 pub mod presses;
 pub mod report;
 pub mod scene;
+pub mod scenefile;

@@ -522,3 +522,51 @@ fn bench_presses_accounts_for_every_press() {
     assert!(!text.contains("the reference settles"), "{text}");
     assert!(text.contains("the paper's rules alone"), "{text}");
 }
+
+/// `hycon run --dry-run` prints the verdict and solves nothing; `hycon run` prints the step
+/// table and writes the files; a set-up mistake fails with the scene file and the group on
+/// stderr.
+#[test]
+fn run_scene_dry_run_run_and_a_mistake() {
+    let scratch = Scratch::new("run-scene");
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/press");
+    std::fs::create_dir_all(scratch.path()).unwrap();
+    for f in ["press.msh", "press.toml"] {
+        std::fs::copy(src.join(f), scratch.path().join(f)).unwrap();
+    }
+    let scene = scratch.path().join("press.toml");
+    let scene_arg = scene.to_str().unwrap();
+    let dry = hycon(&["run", "--dry-run", scene_arg]);
+    assert!(dry.status.success());
+    let text = String::from_utf8_lossy(&dry.stdout);
+    assert!(text.contains("verdict: ready to run"), "{text}");
+    assert!(
+        !scratch.path().join("out").exists(),
+        "the dry run wrote files"
+    );
+    let run = hycon(&["run", scene_arg]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let text = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        text.contains("contact len") && text.contains("wrote"),
+        "{text}"
+    );
+    assert!(scratch.path().join("out/press-summary.json").exists());
+    let bad = std::fs::read_to_string(&scene).unwrap().replacen(
+        "group = \"punch\"",
+        "group = \"punsh\"",
+        1,
+    );
+    std::fs::write(&scene, bad).unwrap();
+    let out = hycon(&["run", "--dry-run", scene_arg]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("press.toml") && err.contains("\"punsh\""),
+        "{err}"
+    );
+}
