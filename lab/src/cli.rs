@@ -1521,11 +1521,14 @@ fn presses_report(o: &hycon_lab::presses::Outcomes, ranges: hycon_lab::presses::
         println!("  failed, {kind}: {n}");
     }
     println!(
-        "  converged through the fallback: {}; largest condition violation at convergence \
-         {:.1e} ({} over the limit)",
-        o.by_fallback, o.worst_violation, o.violating
+        "  converged through the fallback: {}; cut back: {}; largest condition violation at \
+         convergence {:.1e} ({} over the limit)",
+        o.by_fallback, o.by_cutback, o.worst_violation, o.violating
     );
-    println!("  the paper's rules alone: {} converged", o.paper_converged);
+    println!(
+        "  the paper's rules alone (no fallback, no cutback, as 0.6.2): {} converged",
+        o.paper_converged
+    );
     for (kind, n) in &o.paper_failed {
         println!("    paper's rules failed, {kind}: {n}");
     }

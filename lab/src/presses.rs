@@ -307,12 +307,15 @@ pub struct Outcomes {
     /// ("the reference settles": a failure the rules must not have) or fails too (with its
     /// error kind: a problem without an answer that the increments can reach).
     pub failed: BTreeMap<String, usize>,
-    /// The same with the paper's rules alone (no reference run).
+    /// The same with the paper's rules alone, without the fallback and the cutback, as in 0.6.2
+    /// (no reference run).
     pub paper_failed: BTreeMap<String, usize>,
     /// Presses converged with the paper's rules alone.
     pub paper_converged: usize,
     /// Presses that converged only through the fallback (in at least one increment).
     pub by_fallback: usize,
+    /// Presses whose increments the automatic cutback split (in at least one increment).
+    pub by_cutback: usize,
     /// Converged presses whose largest condition violation at convergence exceeds
     /// `CONDITION_LIMIT` (must be none: the core fails such an increment).
     pub violating: usize,
@@ -359,9 +362,19 @@ pub fn outcomes(presses: &[Press]) -> Outcomes {
         }
     };
     for press in presses {
+        // 0.7.0: the fallback and the automatic cutback on (the defaults); the paper's rules
+        // alone: both off, as in 0.6.2
         let timed = |fallback: bool| {
+            let options = ContactOptions {
+                cutback_depth: if fallback {
+                    ContactOptions::default().cutback_depth
+                } else {
+                    0
+                },
+                ..ContactOptions::default()
+            };
             let clock = std::time::Instant::now();
-            let r = press.run_in(ContactOptions::default(), fallback, 1);
+            let r = press.run_in(options, fallback, 1);
             (r, clock.elapsed().as_secs_f64())
         };
         let (new, new_seconds) = timed(true);
@@ -393,6 +406,7 @@ pub fn outcomes(presses: &[Press]) -> Outcomes {
             Ok(a) => {
                 out.converged += 1;
                 out.by_fallback += usize::from(a.fallbacks() > 0);
+                out.by_cutback += usize::from(a.records().iter().any(|r| r.sub_increment > 1));
                 let v = converged_violation(&a);
                 out.worst_violation = out.worst_violation.max(v);
                 out.violating += usize::from(v > hycon::contact::iteration::CONDITION_LIMIT);
