@@ -148,8 +148,9 @@ enum Command {
     Run {
         /// The scene file.
         scene: PathBuf,
-        /// Read and check everything without solving: print the bodies, supports, loads,
-        /// contact pairs (lengths, initial gaps, facing), steps and a verdict.
+        /// Read and check everything without solving for contact: print the bodies, supports,
+        /// loads, contact pairs (lengths, initial gaps, facing), steps and a verdict (step 1 is
+        /// solved once, linearly without contact, to warn of strains beyond 0.05: units?).
         #[arg(long)]
         dry_run: bool,
     },
@@ -524,6 +525,7 @@ fn run_scene(path: &Path, dry_run: bool, out: Option<&Path>) -> AnyResult {
         scene.spec.output.dir = Some(std::path::absolute(dir)?);
     }
     if dry_run {
+        scene.check_first_solve();
         print!("{}", scene.describe());
         return Ok(());
     }

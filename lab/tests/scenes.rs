@@ -485,6 +485,45 @@ fn likely_unit_mistake_is_a_warning_in_the_dry_run() {
     );
 }
 
+/// The dry run solves step 1 linearly without contact: E in the wrong units (70 where the
+/// pressure of 100 is in the units of E = 70e3) strains the punch far beyond small strain and
+/// the warning names it; the right E gives no such warning.
+#[test]
+fn first_linear_solve_names_a_unit_mistake() {
+    let with_load = |e: &str| {
+        press_text()
+            .replacen(
+                "[[contact]]",
+                "[[load]]\ngroup = \"punch_left\"\npressure = 100.0\ncurve = \"press\"\n\n[[contact]]",
+                1,
+            )
+            .replacen("E = 70e3", e, 1)
+    };
+    let text = with_load("E = 70e3");
+    assert!(text.contains("pressure = 100.0"));
+    let mut right = scenefile::load(&scene_dir("units-right", &text)).unwrap();
+    let (strain, body) = right.check_first_solve().expect("the linear solve");
+    assert!(strain > 1e-4 && strain < 0.05, "{strain}");
+    assert_eq!(right.bodies[body].group, "punch");
+    assert!(right.warnings.is_empty(), "{:?}", right.warnings);
+    let text = with_load("E = 70.0");
+    let mut wrong = scenefile::load(&scene_dir("units-wrong", &text)).unwrap();
+    let (strain, body) = wrong.check_first_solve().expect("the linear solve");
+    assert!(strain > scenefile::STRAIN_WARNING, "{strain}");
+    assert_eq!(wrong.bodies[body].group, "punch");
+    let dry = wrong.describe();
+    assert!(
+        dry.contains("warning: step 1 solved linearly without contact: largest strain")
+            && dry.contains("\"punch\"")
+            && dry.contains("units?"),
+        "{dry}"
+    );
+    // through the dry run's entry point too
+    let path = scene_dir("units-wrong-dry", &text);
+    let dry = scenefile::dry_run(&path).unwrap();
+    assert!(dry.contains("step 1 solved linearly"), "{dry}");
+}
+
 #[test]
 fn mesh_errors_name_the_mesh_file_and_line() {
     let msh = std::fs::read_to_string(data("press.msh")).unwrap();
@@ -517,8 +556,15 @@ fn example_scenes_run() {
         for f in std::fs::read_dir(&dir).unwrap() {
             let f = f.unwrap().path();
             if f.extension().is_some_and(|e| e == "toml") {
-                let scene = scenefile::load(&f).unwrap();
-                assert!(scene.describe().contains("verdict: ready to run"));
+                let mut scene = scenefile::load(&f).unwrap();
+                scene.check_first_solve();
+                let dry = scene.describe();
+                assert!(dry.contains("verdict: ready to run"), "{dry}");
+                assert!(
+                    !dry.contains("warning"),
+                    "{}: a warning on an example: {dry}",
+                    f.display()
+                );
                 let s = scenefile::run(&scene, &mut std::io::sink()).unwrap();
                 assert!(s.error.is_none(), "{}: {:?}", f.display(), s.error);
                 ran += 1;
