@@ -25,7 +25,7 @@ use std::time::Instant;
 )]
 struct Cli {
     /// Directory for written results [default: out for `elements`, out/contact for the contact
-    /// jobs].
+    /// jobs; for `run`, the scene's `[output] dir`, which this overrides].
     #[arg(long, global = true, value_name = "DIR")]
     out: Option<PathBuf>,
     #[command(subcommand)]
@@ -148,8 +148,9 @@ enum Command {
     Run {
         /// The scene file.
         scene: PathBuf,
-        /// Read and check everything without solving: print the bodies, supports, loads,
-        /// contact pairs (lengths, initial gaps, facing), steps and a verdict.
+        /// Read and check everything without solving for contact: print the bodies, supports,
+        /// loads, contact pairs (lengths, initial gaps, facing), steps and a verdict (step 1 is
+        /// solved once, linearly without contact, to warn of strains beyond 0.05: units?).
         #[arg(long)]
         dry_run: bool,
     },
@@ -502,7 +503,7 @@ pub fn main() -> ExitCode {
             plane_strain,
         } => beam(element.into(), load, nx, ny, distortion, nu, plane_strain),
         Command::Bench { what } => bench(what, out.as_deref()),
-        Command::Run { scene, dry_run } => run_scene(&scene, dry_run),
+        Command::Run { scene, dry_run } => run_scene(&scene, dry_run, out.as_deref()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -517,9 +518,14 @@ type AnyResult<T = ()> = Result<T, Box<dyn std::error::Error>>;
 
 /// `hycon run [--dry-run] SCENE`: the dry run's description, or the run's table and files; a
 /// step that does not converge fails the command after the files of the converged steps.
-fn run_scene(path: &Path, dry_run: bool) -> AnyResult {
-    let scene = hycon_lab::scenefile::load(path)?;
+/// `--out DIR` (relative to the working directory) replaces the scene's `[output] dir`.
+fn run_scene(path: &Path, dry_run: bool, out: Option<&Path>) -> AnyResult {
+    let mut scene = hycon_lab::scenefile::load(path)?;
+    if let Some(dir) = out {
+        scene.spec.output.dir = Some(std::path::absolute(dir)?);
+    }
     if dry_run {
+        scene.check_first_solve();
         print!("{}", scene.describe());
         return Ok(());
     }

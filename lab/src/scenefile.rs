@@ -14,7 +14,7 @@ use hycon::contact::iteration::{
 use hycon::element::Formulation;
 use hycon::material::{Analysis, Material};
 use hycon::mesh::Mesh;
-use hycon::model::Model;
+use hycon::model::{LinearSystem, Model};
 use hycon::solver::Backend;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -303,6 +303,10 @@ pub struct Plate {
     /// The curve (index into [`Scene::curves`]).
     pub curve: usize,
 }
+
+/// The largest element strain of the dry run's linear first step beyond which it warns of a
+/// likely unit mistake.
+pub const STRAIN_WARNING: f64 = 0.05;
 
 /// A loaded, checked scene, ready to run.
 #[derive(Debug, Clone)]
@@ -1221,6 +1225,78 @@ impl Scene {
         s
     }
 
+    /// The dry run's unit check: step 1 solved linearly without contact (every body is held on
+    /// its own, checked at load; a rigid plate's nodes move with its prescribed displacement and
+    /// are held where it is force controlled) and, when the largest element strain (the largest
+    /// principal strain in magnitude at an element's centre, the hoop strain included in
+    /// axisymmetry) exceeds [`STRAIN_WARNING`], a warning added to [`Scene::warnings`] naming
+    /// the body. Returns the largest strain and its body, if the solve succeeded (a failure is a
+    /// warning too: the run would fail the same way).
+    pub fn check_first_solve(&mut self) -> Option<(f64, usize)> {
+        match self.first_solve_strain() {
+            Ok(Some((strain, b))) => {
+                if strain > STRAIN_WARNING {
+                    self.warnings.push(format!(
+                        "step 1 solved linearly without contact: largest strain {strain:.3e} in \
+                         body {:?} (E = {}), far beyond small strain (units? e.g. E in MPa with \
+                         loads in N and lengths in m)",
+                        self.bodies[b].name, self.bodies[b].material.youngs
+                    ));
+                }
+                Some((strain, b))
+            }
+            Ok(None) => None,
+            Err(e) => {
+                self.warnings.push(format!(
+                    "step 1 solved linearly without contact failed: {e}"
+                ));
+                None
+            }
+        }
+    }
+
+    fn first_solve_strain(&self) -> hycon::Result<Option<(f64, usize)>> {
+        if self.steps.is_empty() {
+            return Ok(None);
+        }
+        let (f, mut qp) = self.step_loads(0);
+        if let Some(p) = &self.plate {
+            let s = self.steps[0][p.curve];
+            for d in 0..2 {
+                if !p.force[d] {
+                    for &n in &p.nodes {
+                        qp[2 * n + d] = s * p.value[d];
+                    }
+                }
+            }
+        }
+        let model = &self.model;
+        let mut system = LinearSystem::with_trailing_on(model, &[], self.options.backend)?;
+        let solution = system.solve_for(model, &f, &qp)?;
+        let mut worst: Option<(f64, usize)> = None;
+        for e in 0..model.mesh.n_elements() {
+            let b = model.mesh.element_material[e];
+            let m = &model.materials[b];
+            let [sx, sy, txy, s4] = solution.stress_field(model, e)?.at_centre_full();
+            let (ex, ey, gxy, eth) = if m.analysis == Analysis::Axisymmetric {
+                let c = m.compliance_axisymmetric();
+                let v =
+                    |i: usize| c[(i, 0)] * sx + c[(i, 1)] * sy + c[(i, 2)] * txy + c[(i, 3)] * s4;
+                (v(0), v(1), v(2), v(3))
+            } else {
+                let c = m.compliance();
+                let v = |i: usize| c[(i, 0)] * sx + c[(i, 1)] * sy + c[(i, 2)] * txy;
+                (v(0), v(1), v(2), 0.0)
+            };
+            let strain = ((ex + ey) / 2.0).abs() + ((ex - ey) / 2.0).hypot(gxy / 2.0);
+            let strain = strain.max(eth.abs());
+            if strain.is_finite() && worst.is_none_or(|(w, _)| strain > w) {
+                worst = Some((strain, b));
+            }
+        }
+        Ok(worst)
+    }
+
     /// The external forces and prescribed values of step `k` (totals).
     pub fn step_loads(&self, k: usize) -> (Vec<f64>, Vec<f64>) {
         let n = 2 * self.model.mesh.n_nodes();
@@ -1570,10 +1646,13 @@ fn plot_pair(
     Ok(svg)
 }
 
-/// Load `path` and return the dry run's text (or the error).
+/// Load `path`, solve step 1 linearly for the unit check ([`Scene::check_first_solve`]) and
+/// return the dry run's text (or the error).
 ///
 /// # Errors
 /// The first set-up mistake.
 pub fn dry_run(path: &Path) -> Result<String> {
-    load(path).map(|s| s.describe())
+    let mut scene = load(path)?;
+    scene.check_first_solve();
+    Ok(scene.describe())
 }

@@ -556,6 +556,16 @@ fn run_scene_dry_run_run_and_a_mistake() {
         "{text}"
     );
     assert!(scratch.path().join("out/press-summary.json").exists());
+    // the global --out replaces the scene's [output] dir
+    let elsewhere = scratch.path().join("elsewhere");
+    let run = hycon(&["run", scene_arg, "--out", elsewhere.to_str().unwrap()]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(elsewhere.join("press-summary.json").exists());
+    assert!(elsewhere.join("press-contact.csv").exists());
     let bad = std::fs::read_to_string(&scene).unwrap().replacen(
         "group = \"punch\"",
         "group = \"punsh\"",

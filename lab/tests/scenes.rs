@@ -485,6 +485,45 @@ fn likely_unit_mistake_is_a_warning_in_the_dry_run() {
     );
 }
 
+/// The dry run solves step 1 linearly without contact: E in the wrong units (70 where the
+/// pressure of 100 is in the units of E = 70e3) strains the punch far beyond small strain and
+/// the warning names it; the right E gives no such warning.
+#[test]
+fn first_linear_solve_names_a_unit_mistake() {
+    let with_load = |e: &str| {
+        press_text()
+            .replacen(
+                "[[contact]]",
+                "[[load]]\ngroup = \"punch_left\"\npressure = 100.0\ncurve = \"press\"\n\n[[contact]]",
+                1,
+            )
+            .replacen("E = 70e3", e, 1)
+    };
+    let text = with_load("E = 70e3");
+    assert!(text.contains("pressure = 100.0"));
+    let mut right = scenefile::load(&scene_dir("units-right", &text)).unwrap();
+    let (strain, body) = right.check_first_solve().expect("the linear solve");
+    assert!(strain > 1e-4 && strain < 0.05, "{strain}");
+    assert_eq!(right.bodies[body].group, "punch");
+    assert!(right.warnings.is_empty(), "{:?}", right.warnings);
+    let text = with_load("E = 70.0");
+    let mut wrong = scenefile::load(&scene_dir("units-wrong", &text)).unwrap();
+    let (strain, body) = wrong.check_first_solve().expect("the linear solve");
+    assert!(strain > scenefile::STRAIN_WARNING, "{strain}");
+    assert_eq!(wrong.bodies[body].group, "punch");
+    let dry = wrong.describe();
+    assert!(
+        dry.contains("warning: step 1 solved linearly without contact: largest strain")
+            && dry.contains("\"punch\"")
+            && dry.contains("units?"),
+        "{dry}"
+    );
+    // through the dry run's entry point too
+    let path = scene_dir("units-wrong-dry", &text);
+    let dry = scenefile::dry_run(&path).unwrap();
+    assert!(dry.contains("step 1 solved linearly"), "{dry}");
+}
+
 #[test]
 fn mesh_errors_name_the_mesh_file_and_line() {
     let msh = std::fs::read_to_string(data("press.msh")).unwrap();
@@ -517,8 +556,15 @@ fn example_scenes_run() {
         for f in std::fs::read_dir(&dir).unwrap() {
             let f = f.unwrap().path();
             if f.extension().is_some_and(|e| e == "toml") {
-                let scene = scenefile::load(&f).unwrap();
-                assert!(scene.describe().contains("verdict: ready to run"));
+                let mut scene = scenefile::load(&f).unwrap();
+                scene.check_first_solve();
+                let dry = scene.describe();
+                assert!(dry.contains("verdict: ready to run"), "{dry}");
+                assert!(
+                    !dry.contains("warning"),
+                    "{}: a warning on an example: {dry}",
+                    f.display()
+                );
                 let s = scenefile::run(&scene, &mut std::io::sink()).unwrap();
                 assert!(s.error.is_none(), "{}: {:?}", f.display(), s.error);
                 ran += 1;
@@ -774,5 +820,115 @@ fn mistake_body_piece_not_held() {
             "2 separate pieces",
             "translation in x",
         ],
+    );
+}
+
+/// The paper's frictional sliding example as a scene (examples/scenes/disk_slide): the lab's
+/// disk-on-block mesh (4-node quadrilaterals, 8 elements per target half-width a, the block
+/// long enough for the travel) written as MSH by `gmsh::write`; the disk's top pressed down
+/// (curve `press`), then moved 2 a sideways (curve `slide`) with mu = 0.3 under finite
+/// kinematics. The shipped files are current, the scene runs, and once the disk slides every
+/// contact node slips and the tangential force is mu times the normal force, less the tilt of
+/// the deformed interface.
+#[test]
+fn disk_slide_scene_is_the_papers_sliding_example() {
+    use hycon::mesh::generate::Transition;
+    use hycon_lab::gmsh::WriteGroup;
+    use hycon_lab::scene::DiskOnBlock;
+    let lab = DiskOnBlock {
+        transition: Transition::Quads,
+        elements_per_half_width: 8,
+        radius_over_half_width: 16,
+        band_layers: 8,
+        friction: 0.3,
+        travel: 2.5,
+        ..DiskOnBlock::default()
+    }
+    .build()
+    .unwrap();
+    let m = &lab.model.mesh;
+    let msh = hycon_lab::gmsh::write(
+        m,
+        &[
+            WriteGroup::Surface("block".into(), 0),
+            WriteGroup::Surface("disk".into(), 1),
+            WriteGroup::Curve("block_top".into(), lab.pair.a.clone()),
+            WriteGroup::Curve("disk_arc".into(), lab.pair.b.clone()),
+            WriteGroup::Points("block_bottom".into(), m.node_sets["block.bottom"].clone()),
+            WriteGroup::Points("disk_top".into(), lab.top.clone()),
+        ],
+    )
+    .unwrap();
+    let approach = 3.1 * lab.half_width.powi(2) / lab.radius;
+    let travel = 2.0 * lab.half_width;
+    let text = format!(
+        "# The paper's frictional sliding example: a half disk (R = 1) pressed onto a block (both\n\
+         # E = 1, nu = 0.3, plane strain) to a contact half-width a of about R / 16, then its top\n\
+         # moved 2 a sideways with mu = 0.3 (finite kinematics: the disk slides over many\n\
+         # elements). The mesh is the lab's disk-on-block scene (4-node quads, 8 elements per a)\n\
+         # written by lab/tests/scenes.rs (HYCON_WRITE_EXAMPLES=1 rewrites it; see README.md).\n\
+         mesh = \"disk_slide.msh\"\n\n\
+         [[body]]\ngroup = \"block\"\nmaterial = {{ E = 1.0, nu = 0.3 }}\n\n\
+         [[body]]\ngroup = \"disk\"\nmaterial = {{ E = 1.0, nu = 0.3 }}\n\n\
+         [[support]]\ngroup = \"block_bottom\"\nx = 0.0\ny = 0.0\n\n\
+         # the disk's top: pressed down on `press`, moved sideways on `slide`\n\
+         [[support]]\ngroup = \"disk_top\"\ny = {:e}\ncurve = \"press\"\n\n\
+         [[support]]\ngroup = \"disk_top\"\nx = {travel:e}\ncurve = \"slide\"\n\n\
+         [[contact]]\na = \"block_top\"\nb = \"disk_arc\"\nfriction = 0.3\n\n\
+         [[step]]\npress = 1.0\nslide = 0.0\n\n\
+         [[step]]\npress = 1.0\nslide = 0.25\n\n\
+         [[step]]\npress = 1.0\nslide = 0.5\n\n\
+         [[step]]\npress = 1.0\nslide = 0.75\n\n\
+         [[step]]\npress = 1.0\nslide = 1.0\n\n\
+         [options]\nkinematics = \"finite\"\n\n\
+         [output]\ndir = \"out\"\n",
+        -approach
+    );
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/scenes/disk_slide");
+    if std::env::var_os("HYCON_WRITE_EXAMPLES").is_some() {
+        std::fs::create_dir_all(&shipped).unwrap();
+        std::fs::write(shipped.join("disk_slide.msh"), &msh).unwrap();
+        std::fs::write(shipped.join("disk_slide.toml"), &text).unwrap();
+    }
+    assert!(
+        std::fs::read_to_string(shipped.join("disk_slide.msh")).unwrap() == msh
+            && std::fs::read_to_string(shipped.join("disk_slide.toml")).unwrap() == text,
+        "examples/scenes/disk_slide is stale: rerun with HYCON_WRITE_EXAMPLES=1"
+    );
+    let dir = std::env::temp_dir().join(format!("hycon-scenes-{}-disk-slide", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("disk_slide.msh"), &msh).unwrap();
+    std::fs::write(
+        dir.join("disk_slide.toml"),
+        text.replace(
+            "[output]\ndir = \"out\"\n",
+            "[output]\nvtu = false\nsvg = false\n",
+        ),
+    )
+    .unwrap();
+    let scene = scenefile::load(&dir.join("disk_slide.toml")).unwrap();
+    let r = scenefile::run(&scene, &mut std::io::sink()).unwrap();
+    assert!(r.error.is_none(), "{:?}", r.error);
+    for s in &r.steps {
+        let p = &s.pairs[0];
+        eprintln!(
+            "step {}: active {} slip {} Q/P {}",
+            s.step,
+            p.active,
+            p.slip,
+            p.total_force[0].abs() / p.total_force[1].abs()
+        );
+    }
+    // gross sliding: every active node slips and Q / P is mu less the interface tilt of
+    // finite kinematics (lab/tests/contact_sliding.rs: mu - Q/P = (1 - 2 nu)(1 + nu) / E mu
+    // 8 p0 / (3 pi), about 2e-3 here; measured 2.8e-3)
+    let last = &r.steps.last().unwrap().pairs[0];
+    assert!(last.active > 0 && last.slip == last.active, "{last:?}");
+    let [fx, fy] = last.total_force;
+    let deficit = 0.3 - fx.abs() / fy.abs();
+    assert!(
+        deficit > 0.0 && deficit < 0.01,
+        "Q / P = {} at the end of the slide",
+        fx.abs() / fy.abs()
     );
 }
