@@ -442,7 +442,10 @@ impl ContactAnalysis {
                     continue;
                 }
                 found(per_traction(tn), "a closed node is in tension");
-                found(gap.abs() / motion_scale, "a closed node's gap is not closed");
+                found(
+                    gap.abs() / motion_scale,
+                    "a closed node's gap is not closed",
+                );
                 match states[p][k] {
                     NodeState::Stick => {
                         found(
