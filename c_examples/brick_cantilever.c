@@ -10,6 +10,11 @@
  * It does so for the hybrid brick and the displacement brick: the H8 locks in bending.
  * The tip face tractions recovered by hycon_brick_face_traction must carry the load.
  *
+ * Built with HYCON_EXAMPLE_CHOLMOD defined (the target brick_cantilever_cholmod, where SuiteSparse
+ * is present), the host factors the same CSR matrix with CHOLMOD instead (a symmetric
+ * cholmod_sparse over the CSR arrays, cholmod_analyze, cholmod_factorize, cholmod_solve) and checks
+ * the direct solution against its conjugate gradients to 1e-8.
+ *
  * Usage: brick_cantilever [n]   (bricks along the beam; default 10: within 3% of Timoshenko;
  * coarser meshes within 10%). Prints OK on success.
  */
@@ -19,6 +24,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#ifdef HYCON_EXAMPLE_CHOLMOD
+#include <cholmod.h>
+#endif
 
 static void report_failure(const char *call, HyconStatus status, const char *file, int line) {
     char message[512];
@@ -202,6 +211,46 @@ static void solve_cg(const Csr *a, const double *b, double *x) {
     free(dinv);
 }
 
+#ifdef HYCON_EXAMPLE_CHOLMOD
+/* The same system factored by CHOLMOD: the CSR arrays (both triangles) are those of the
+ * compressed columns of the symmetric matrix, and stype = 1 reads the upper triangle. */
+static void solve_cholmod(const Csr *a, const double *b, double *x) {
+    cholmod_common common;
+    cholmod_sparse *k;
+    cholmod_factor *factor;
+    cholmod_dense *rhs, *sol;
+    size_t i, nnz = a->row_ptr[a->n];
+    int ok = 1;
+    cholmod_start(&common);
+    k = cholmod_allocate_sparse(a->n, a->n, nnz, 1, 1, 1, CHOLMOD_REAL, &common);
+    rhs = cholmod_allocate_dense(a->n, 1, a->n, CHOLMOD_REAL, &common);
+    if (!k || !rhs) {
+        printf("FAILED: CHOLMOD allocation (status %d)\n", common.status);
+        exit(EXIT_FAILURE);
+    }
+    for (i = 0; i <= a->n; ++i) ((int *)k->p)[i] = (int)a->row_ptr[i];
+    for (i = 0; i < nnz; ++i) {
+        ((int *)k->i)[i] = (int)a->col[i];
+        ((double *)k->x)[i] = a->val[i];
+    }
+    memcpy(rhs->x, b, a->n * sizeof *b);
+    factor = cholmod_analyze(k, &common);
+    if (!factor || !cholmod_factorize(k, factor, &common) || common.status != CHOLMOD_OK)
+        ok = 0;
+    sol = ok ? cholmod_solve(CHOLMOD_A, factor, rhs, &common) : NULL;
+    if (!sol) {
+        printf("FAILED: CHOLMOD factorization or solve (status %d)\n", common.status);
+        exit(EXIT_FAILURE);
+    }
+    memcpy(x, sol->x, a->n * sizeof *x);
+    cholmod_free_dense(&sol, &common);
+    cholmod_free_dense(&rhs, &common);
+    cholmod_free_factor(&factor, &common);
+    cholmod_free_sparse(&k, &common);
+    cholmod_finish(&common);
+}
+#endif
+
 /* Solve the cantilever with one brick kind; returns the mean tip deflection v and writes the
  * total tip-face traction force (y) recovered from the element stresses. */
 static double cantilever(const Mesh *m, HyconBrickKind kind, double *tip_force) {
@@ -239,7 +288,25 @@ static double cantilever(const Mesh *m, HyconBrickKind kind, double *tip_force) 
         if (e % m->n != m->n - 1) continue;
         for (c = 0; c < 4; ++c) f[equation[3 * m->bricks[8 * e + face1[c]] + 1]] += 0.25 / 4.0;
     }
+#ifdef HYCON_EXAMPLE_CHOLMOD
+    {
+        double *u_cg = calloc(n_free, sizeof *u_cg), diff = 0.0, size = 0.0;
+        if (!u_cg) exit(EXIT_FAILURE);
+        solve_cholmod(&a, f, u);
+        solve_cg(&a, f, u_cg);
+        for (d = 0; d < n_free; ++d) {
+            diff = fmax(diff, fabs(u[d] - u_cg[d]));
+            size = fmax(size, fabs(u[d]));
+        }
+        free(u_cg);
+        if (!(diff <= 1e-8 * size)) {
+            printf("wrong value: CHOLMOD and CG differ by %g (of %g)\n", diff, size);
+            exit(EXIT_FAILURE);
+        }
+    }
+#else
     solve_cg(&a, f, u);
+#endif
     for (d = 0; d < 3 * m->n_nodes; ++d) full[d] = equation[d] < 0 ? 0.0 : u[equation[d]];
     for (d = 0; d < m->n_nodes; ++d)
         if (m->xyz[3 * d] == LENGTH) {
@@ -289,6 +356,9 @@ int main(int argc, char **argv) {
     m = make_mesh(n);
     hybrid = cantilever(&m, HYCON_BRICK_HYBRID18, &force_h);
     h8 = cantilever(&m, HYCON_BRICK_H8, &force_8);
+#ifdef HYCON_EXAMPLE_CHOLMOD
+    printf("CHOLMOD: ");
+#endif
     printf("%zu x %d x %d bricks: tip deflection / Timoshenko: hybrid18 %.4f, h8 %.4f; "
            "tip traction force (of 1): hybrid18 %.4f, h8 %.4f\n",
            n, NY, NZ, hybrid / timoshenko, h8 / timoshenko, force_h, force_8);

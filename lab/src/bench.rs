@@ -1322,3 +1322,176 @@ pub fn edge_sweep(n: usize, positions: usize) -> Result<Vec<EdgeRun>> {
         })
         .collect()
 }
+
+/// One point of the brick convergence study (`hycon bench brick`).
+#[derive(Debug, Clone)]
+pub struct BrickRun {
+    /// `"hybrid18"` or `"h8"`.
+    pub element: &'static str,
+    /// Whether the interior nodes were moved at random (by up to 20% of their shortest edge).
+    pub distorted: bool,
+    /// Bricks across the section (`4k x k x k` bricks).
+    pub k: usize,
+    /// Free dofs.
+    pub dofs: usize,
+    /// Largest nodal displacement error over the largest exact displacement.
+    pub error: f64,
+}
+
+/// Saint-Venant's end-loaded cantilever with `nu = 0` (the field of `tests/solid_validation.rs`):
+/// `[0, 10] x [-0.5, 0.5]^2`, E = 1000, end shear 1 at `x = 0`; exact displacements and the
+/// stresses `(sx, sy, sz, txy, tyz, tzx)`.
+fn saint_venant(p: [f64; 3]) -> ([f64; 3], [f64; 6]) {
+    let (l, c, b, e): (f64, f64, f64, f64) = (10.0, 0.5, 1.0, 1000.0);
+    let g = e / 2.0;
+    let i = b * (2.0 * c).powi(3) / 12.0;
+    let [x, y, _] = p;
+    let u = -x * x * y / (2.0 * e * i)
+        + y.powi(3) / (6.0 * i * g)
+        + (l * l / (2.0 * e * i) - c * c / (2.0 * i * g)) * y;
+    let v = x.powi(3) / (6.0 * e * i) - l * l * x / (2.0 * e * i) + l.powi(3) / (3.0 * e * i);
+    let s = [-x * y / i, 0.0, 0.0, -(c * c - y * y) / (2.0 * i), 0.0, 0.0];
+    ([u, v, 0.0], s)
+}
+
+/// The error of one brick on Saint-Venant's beam meshed with `4k x k x k` bricks: exact
+/// displacements held on the root `x = 10`, exact tractions on the free end `x = 0`.
+pub fn brick_run(k: usize, distorted: bool, hybrid: bool) -> Result<BrickRun> {
+    use hycon::solid::mesh::{SolidMesh, graded};
+    use hycon::solid::model::SolidModel;
+    use hycon::solid::{BrickFormulation, Isotropic};
+    let mut mesh = SolidMesh::block(
+        &graded(0.0, 10.0, 4 * k, 1.0),
+        &graded(-0.5, 0.5, k, 1.0),
+        &graded(-0.5, 0.5, k, 1.0),
+    );
+    if distorted {
+        mesh = mesh.distort(0.2, 11, |p| {
+            p[0] > 1e-9 && p[0] < 10.0 - 1e-9 && p[1].abs() < 0.5 - 1e-9 && p[2].abs() < 0.5 - 1e-9
+        });
+    }
+    let formulation = if hybrid {
+        BrickFormulation::Hybrid18
+    } else {
+        BrickFormulation::H8
+    };
+    let mut model = SolidModel::new(
+        mesh.clone(),
+        vec![Isotropic::new(1000.0, 0.0)?],
+        formulation,
+    )?;
+    for n in mesh.nodes_where(|p| (p[0] - 10.0).abs() < 1e-12) {
+        for (d, ud) in saint_venant(mesh.nodes[n]).0.into_iter().enumerate() {
+            model.fix(n, d, ud);
+        }
+    }
+    let free_end = mesh.faces_where(|p| p[0].abs() < 1e-12);
+    model.load_faces(&free_end, |x, n| {
+        let s = saint_venant(x).1;
+        [
+            s[0] * n[0] + s[3] * n[1] + s[5] * n[2],
+            s[3] * n[0] + s[1] * n[1] + s[4] * n[2],
+            s[5] * n[0] + s[4] * n[1] + s[2] * n[2],
+        ]
+    });
+    let sol = model.solve()?;
+    let (mut err, mut max): (f64, f64) = (0.0, 0.0);
+    for (n, &p) in mesh.nodes.iter().enumerate() {
+        for (got, want) in sol.at(n).into_iter().zip(saint_venant(p).0) {
+            err = err.max((got - want).abs());
+            max = max.max(want.abs());
+        }
+    }
+    Ok(BrickRun {
+        element: if hybrid { "hybrid18" } else { "h8" },
+        distorted,
+        k,
+        dofs: sol.n_free,
+        error: err / max,
+    })
+}
+
+/// The convergence study: both bricks on regular and distorted meshes, `k` in `ks`.
+pub fn brick_convergence(ks: &[usize]) -> Result<Vec<BrickRun>> {
+    let mut runs = Vec::new();
+    for hybrid in [true, false] {
+        for distorted in [false, true] {
+            for &k in ks {
+                runs.push(brick_run(k, distorted, hybrid)?);
+            }
+        }
+    }
+    Ok(runs)
+}
+
+/// SVG: error against free dofs (log-log), a line per brick and mesh, `k` beside each dot.
+pub fn brick_convergence_svg(runs: &[BrickRun]) -> Plot<String> {
+    use plotters::prelude::*;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 640)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let xr = log_range(runs.iter().map(|r| r.dofs as f64), 1.3);
+        let yr = log_range(runs.iter().map(|r| r.error), 1.5);
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "Saint-Venant's cantilever, nu = 0: error against dofs (dots: k, 4k x k x k bricks)",
+                (FONT, 14),
+            )
+            .margin(10)
+            .x_label_area_size(36)
+            .y_label_area_size(60)
+            .build_cartesian_2d(xr.log_scale(), yr.log_scale())?;
+        chart
+            .configure_mesh()
+            .x_desc("free dofs")
+            .y_desc("max nodal displacement error / max displacement")
+            .x_label_formatter(&|v| short_number(*v))
+            .y_label_formatter(&|v| short_number(*v))
+            .light_line_style(BLACK.mix(0.03))
+            .label_style((FONT, 12))
+            .draw()?;
+        for (element, hue) in [("hybrid18", 0.6), ("h8", 0.0)] {
+            for distorted in [false, true] {
+                let s: Vec<&BrickRun> = runs
+                    .iter()
+                    .filter(|r| r.element == element && r.distorted == distorted)
+                    .collect();
+                if s.is_empty() {
+                    continue;
+                }
+                let c = HSLColor(hue, 0.8, if distorted { 0.6 } else { 0.35 });
+                let pts: Vec<(f64, f64)> = s.iter().map(|r| (r.dofs as f64, r.error)).collect();
+                let name = format!(
+                    "{element}, {} meshes",
+                    if distorted { "distorted" } else { "regular" }
+                );
+                let style = c.stroke_width(2);
+                if distorted {
+                    chart
+                        .draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style))?
+                        .label(name)
+                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], style));
+                } else {
+                    chart
+                        .draw_series(LineSeries::new(pts.clone(), style))?
+                        .label(name)
+                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], style));
+                }
+                chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled())))?;
+                chart.draw_series(s.iter().zip(&pts).map(|(r, &p)| {
+                    Text::new(format!("{}", r.k), p, (FONT, 10).into_font().color(&c))
+                }))?;
+            }
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.4))
+            .label_font((FONT, 11))
+            .draw()?;
+        root.present()?;
+    }
+    Ok(svg)
+}

@@ -580,3 +580,41 @@ fn run_scene_dry_run_run_and_a_mistake() {
         "{err}"
     );
 }
+
+/// `hycon bench brick` prints the convergence table (the hybrid brick ahead of the H8 on every
+/// mesh, its regular-mesh error falling by about 4 per halving) and writes the SVG plot.
+#[test]
+fn bench_brick_prints_the_table_and_writes_the_plot() {
+    let dir = Scratch::new("brick");
+    let out = hycon(&["bench", "brick", "--k", "1,2", "--out", dir.arg()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .filter(|l| l.starts_with("| regular") || l.starts_with("| distorted"))
+        .map(|l| {
+            l.split('|')
+                .map(str::trim)
+                .skip(2)
+                .take(3)
+                .map(|c| c.parse().unwrap_or_else(|_| panic!("{l}")))
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), 4, "{text}");
+    for r in &rows {
+        assert!(r[1] > 0.0 && r[1] < r[2], "hybrid ahead of the H8: {text}");
+    }
+    assert!(
+        rows[0][1] / rows[1][1] > 3.5,
+        "h^2 on regular meshes: {text}"
+    );
+    let svg = std::fs::read_to_string(dir.path().join("brick_convergence.svg")).expect("the SVG");
+    assert!(svg.starts_with("<svg") && svg.contains("hybrid18, distorted meshes"));
+    let bad = hycon(&["bench", "brick", "--k", "0"]);
+    assert!(!bad.status.success());
+}

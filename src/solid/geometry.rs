@@ -61,15 +61,17 @@ pub const GAUSS2: [(f64, f64); 2] = [
     (0.577_350_269_189_625_8, 1.0),
 ];
 
-/// The 8 points `(xi, weight)` of the 2x2x2 Gauss rule (exact for degree 3 in each variable).
+/// The 8 points `(xi, weight)` of the 2x2x2 Gauss rule (exact for degree 3 in each variable),
+/// `x` fastest. An array rather than nested `flat_map`s: the optimised flatten adapter branches
+/// on its uninitialised inner state, which valgrind reports in every kernel (the C examples run
+/// under valgrind).
 pub fn gauss_points() -> impl Iterator<Item = ([f64; 3], f64)> {
-    GAUSS2.into_iter().flat_map(|(z, wz)| {
-        GAUSS2.into_iter().flat_map(move |(y, wy)| {
-            GAUSS2
-                .into_iter()
-                .map(move |(x, wx)| ([x, y, z], wx * wy * wz))
-        })
-    })
+    let mut points = [([0.0; 3], 0.0); 8];
+    for (i, point) in points.iter_mut().enumerate() {
+        let ((x, wx), (y, wy), (z, wz)) = (GAUSS2[i & 1], GAUSS2[(i >> 1) & 1], GAUSS2[i >> 2]);
+        *point = ([x, y, z], wx * wy * wz);
+    }
+    points.into_iter()
 }
 
 /// Relative size below which an edge, a volume or a Jacobian counts as zero.
