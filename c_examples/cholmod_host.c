@@ -373,6 +373,12 @@ int main(int argc, char **argv) {
     /* path 1: the solve callback (CHOLMOD) */
     CHECK(hycon_host_new(&host_cb, n_eq));
     CHECK(hycon_host_add_pair(host_cb, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0, NULL));
+    { /* a point inside body A (the block [-2R, 2R] x [-2R, 0]): where the disk touches the
+       * block over the whole stretch hycon judges, the polylines alone cannot tell facing
+       * surfaces from back-to-back ones (path 2 gives its elements, which tell it instead) */
+        const double inside[2] = {0.0, -radius};
+        CHECK(hycon_host_set_pair_inside(host_cb, 0, inside));
+    }
     CHECK(hycon_host_set_solver(host_cb, cholmod_solve_cb, chol));
     CHECK(hycon_contact_new_host(&c_cb, host_cb, &options));
     hycon_host_free(host_cb); /* the analysis is independent of the description */

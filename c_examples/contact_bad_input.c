@@ -1584,7 +1584,8 @@ static bool test_host_back_to_back(void) {
     }
     EXPECT(hycon_host_new(&d, host.n) == HYCON_OK);
     ok = ok && STATUS(hycon_host_add_pair(d, HOST_NODES(ra, ra_xy, ra_eq, NA),
-                                          HOST_NODES(rb, rb_xy, rb_eq, NB), 0.0, NULL),
+                                          HOST_NODES(rb, rb_xy, rb_eq, NB), 0.0,
+                                          HYCON_PLANE_STRAIN, 1.0, NULL),
                       HYCON_OK, NULL);
     ok = ok && STATUS(hycon_host_set_solver(d, host_solve, &host), HYCON_OK, NULL);
     ok = ok && STATUS_FN(hycon_contact_new_host, (&c, d, NULL), HYCON_ERROR_INVALID_ARGUMENT,

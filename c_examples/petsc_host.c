@@ -97,13 +97,15 @@ static HyconContactOptions hc_options(HyconKinematics kinematics) {
     return options;
 }
 
-/* A host description with one contact pair. */
+/* A host description with one contact pair; `inside` is a point inside body A (the block):
+ * where the disk touches the block over the whole stretch hycon judges, the polylines alone
+ * cannot tell facing surfaces from back-to-back ones. */
 static HyconHost *hc_host(size_t n_equations, const HyconHostNodes *a,
-                          const HyconHostNodes *b,
-                          double friction) {
+                          const HyconHostNodes *b, double friction, const double inside[2]) {
     HyconHost *host = NULL;
     HC(hycon_host_new(&host, n_equations));
     HC(hycon_host_add_pair(host, a, b, friction, HYCON_PLANE_STRAIN, 1.0, NULL));
+    HC(hycon_host_set_pair_inside(host, 0, inside));
     return host;
 }
 
@@ -385,12 +387,13 @@ static int run_analysis(const char *name, const Problem *p, Solver *s, double fr
     Counts c0;
     size_t step, k;
     int failures = 0;
+    const double inside[2] = {0.0, -p->radius}; /* the block is [-2R, 2R] x [-2R, 0] */
 
     printf("%s: friction %.2f, %s kinematics\n", name, friction,
            kinematics == HYCON_KINEMATICS_FINITE ? "finite" : "small");
     memset(t_cb, 0, sizeof *t_cb);
     memset(t_csr, 0, sizeof *t_csr);
-    host = hc_host(n, &p->a, &p->b, friction);
+    host = hc_host(n, &p->a, &p->b, friction, inside);
     hc_host_solver(host, petsc_solve_cb, s);
     c0 = counts_now(s);
     t0 = MPI_Wtime();
@@ -398,7 +401,7 @@ static int run_analysis(const char *name, const Problem *p, Solver *s, double fr
     t_cb->setup = MPI_Wtime() - t0;
     t_cb->setup_solves = counts_since(s, c0);
 
-    host = hc_host(n, &p->a, &p->b, friction);
+    host = hc_host(n, &p->a, &p->b, friction, inside);
     hc_host_csr(host, p->row_ptr, p->columns, p->values);
     t0 = MPI_Wtime();
     c_csr = hc_start(host, &options);
