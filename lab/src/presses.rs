@@ -333,7 +333,7 @@ pub struct Outcomes {
 }
 
 /// The largest condition violation at convergence (the last record of each increment).
-fn converged_violation(analysis: &ContactAnalysis) -> f64 {
+pub fn converged_violation(analysis: &ContactAnalysis) -> f64 {
     let records = analysis.records();
     records
         .iter()

@@ -7,8 +7,8 @@
 //! law (stick inside the cone, slip on it with the friction opposing the slip) with open nodes
 //! carrying nothing.
 
-use hycon::contact::iteration::{CONDITION_LIMIT, ContactAnalysis, ContactOptions, NodeState};
-use hycon_lab::presses::{Press, Ranges};
+use hycon::contact::iteration::{CONDITION_LIMIT, ContactOptions, NodeState};
+use hycon_lab::presses::{Press, Ranges, converged_violation};
 
 /// Presses of `hycon bench presses --ranges narrow --seed 1` (the first 2,000) that fail with
 /// the paper's rules alone: 44 slip reversals, 12 nodes locked open that penetrate.
@@ -27,21 +27,6 @@ const WIDE_SEED_1: [usize; 39] = [
     1255, 1394, 1399, 1418, 1426, 1431, 1433, 1489, 1515, 1541, 1617, 1638, 1690, 1695, 1766, 1849,
     1874, 1901, 1965, 1989,
 ];
-
-/// The largest worst-violation over the converged iterations (each increment's last record).
-fn converged_violation(analysis: &ContactAnalysis) -> f64 {
-    let records = analysis.records();
-    records
-        .iter()
-        .enumerate()
-        .filter(|(i, r)| {
-            records
-                .get(i + 1)
-                .is_none_or(|n| n.increment != r.increment)
-        })
-        .map(|(_, r)| r.violation)
-        .fold(0.0, f64::max)
-}
 
 fn settles(ranges: Ranges, indices: &[usize]) {
     let presses = Press::draw_from(ranges, 2000, 1);
