@@ -358,9 +358,10 @@ impl ContactAnalysis {
 }
 
 /// A converged state may violate the discrete contact conditions by at most this, relative to
-/// the problem's scale (see [`ContactAnalysis::violation`]): the hair that a node locked open
-/// or in slip is allowed ([`EDGE_PENETRATION`], [`SLIP_REVERSAL`]); the rules themselves hold
-/// the other nodes to their tolerances (`1e-9` and `1e-6` by default).
+/// the problem's scale (see [`IterationRecord::violation`](super::IterationRecord::violation)):
+/// the hair that a node locked open or in slip is allowed (`1e-4` of the gap or motion scale,
+/// the limits the cycle locks are held to); the rules themselves hold the other nodes to their
+/// tolerances (`1e-9` and `1e-6` by default).
 pub const CONDITION_LIMIT: f64 = EDGE_PENETRATION;
 
 /// The worst violation of the discrete contact conditions in a state.
