@@ -803,8 +803,10 @@ impl ContactAnalysis {
         Ok(analysis)
     }
 
-    /// The common part of the constructors: slots, `F`, node data. `a_inside`: a host's points
-    /// inside body A per pair (`None` for a model, whose element edges tell the sides).
+    /// The common part of the constructors: slots, `F`, node data. `measures`: one per pair,
+    /// checked by the constructors (a model's come from its validated materials, a host's are
+    /// checked before its stiffness is factored). `a_inside`: a host's points inside body A per
+    /// pair (`None` for a model, whose element edges tell the sides).
     fn setup(
         mut bodies: Bodies,
         pairs: Vec<ContactPair>,
@@ -813,7 +815,6 @@ impl ContactAnalysis {
         options: ContactOptions,
         a_inside: Option<Vec<Option<[f64; 2]>>>,
     ) -> Result<Self> {
-        check_measures(&measures, pairs.len())?;
         let mut slot = vec![None; 2 * bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
