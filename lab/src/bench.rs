@@ -136,6 +136,44 @@ pub fn scale_run(n: usize) -> Result<ScaleRun> {
     Ok(run)
 }
 
+/// The 3D counterpart of [`scale_run`]: a cube of `n x n x n` hybrid bricks clamped on `x = 0`
+/// with a uniform load in `y`. The symbolic analysis alone gives `nnz(L)` (the factor's memory,
+/// 8 bytes per entry) at any size; the numeric phases run only when `factor` is set, so the
+/// largest cube that fits in memory is found without factoring it.
+pub fn brick_scale_run(n: usize, factor: bool) -> Result<ScaleRun> {
+    use hycon::solid::mesh::SolidMesh;
+    use hycon::solid::model::{NodalDofs, SolidSystem};
+    use hycon::solid::{BrickFormulation, Isotropic};
+    let mut run = ScaleRun::default();
+    let t = Instant::now();
+    let mesh = SolidMesh::uniform([1.0, 1.0, 1.0], [n, n, n]);
+    run.mesh = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let fixed = mesh
+        .nodes_where(|p| p[0] == 0.0)
+        .into_iter()
+        .flat_map(|k| [3 * k, 3 * k + 1, 3 * k + 2]);
+    let dofs = NodalDofs::new(mesh.n_nodes(), 3, fixed)?;
+    let mut system = SolidSystem::new(&mesh, dofs, Backend::Faer)?;
+    run.analysis = t.elapsed().as_secs_f64();
+    run.dofs = system.dofs().n_free();
+    run.nnz_k = system.nnz();
+    run.nnz_l = system.cholesky().nnz_l();
+    run.tip_ratio = f64::NAN;
+    if factor {
+        let material = Isotropic::new(1000.0, 0.3)?;
+        let t = Instant::now();
+        system.assemble_and_factor(&mesh, &[material], BrickFormulation::Hybrid18, &[])?;
+        run.factorization = t.elapsed().as_secs_f64();
+        let mut rhs = Mat::<f64>::from_fn(run.dofs, 1, |i, _| if i % 3 == 1 { 1e-3 } else { 0.0 });
+        let t = Instant::now();
+        system.solve_in_place(&mut rhs)?;
+        run.solve = t.elapsed().as_secs_f64();
+    }
+    run.peak_memory = peak_memory();
+    Ok(run)
+}
+
 /// Peak resident set size of this process (Linux `/proc/self/status`, `VmHWM`), in bytes.
 pub fn peak_memory() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;

@@ -201,6 +201,20 @@ enum Bench {
         #[arg(long, default_value_t = 354)]
         n: usize,
     },
+    /// Size of 3D solves: a clamped cube of n x n x n hybrid bricks per n. The symbolic
+    /// analysis gives nnz(L) (the factor's memory) at every size; cubes up to --factor-max
+    /// free dofs are also assembled, factored and solved, and their times fitted against dofs.
+    BrickScale {
+        /// Bricks per side, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [10, 20, 30, 40, 50, 60, 70])]
+        n: Vec<usize>,
+        /// Factor only cubes with at most this many free dofs.
+        #[arg(long, default_value_t = 30_000)]
+        factor_max: usize,
+        /// Memory available to the factor, GB (decimal), for the largest cube that fits.
+        #[arg(long, default_value_t = 24.0)]
+        memory_gb: f64,
+    },
     /// The Hertz scene (a = R/64, calibration + 3 increments; frictionless, then mu = 0.3) at
     /// each refinement: whole contact analysis against one assembly + factorization + solve of K.
     Contact {
@@ -616,6 +630,55 @@ fn beam(
 }
 
 /// `bench brick`: the table (as in the README) and the plot.
+/// `hycon bench brick-scale`: the table of sizes, the largest cube whose factor fits in
+/// `memory_gb`, and its factorization time from the fit `t = c N^p` over the factored cubes.
+fn brick_scale(ns: &[usize], factor_max: usize, memory_gb: f64) -> AnyResult {
+    println!(
+        "| n | free dofs | nnz(K) | nnz(L) | factor GB | analysis s | factorization s | solve s | peak RSS GB |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let mut factored = Vec::new();
+    let mut largest = None;
+    for &n in ns {
+        let dofs = 3 * n * (n + 1) * (n + 1);
+        let r = hycon_lab::bench::brick_scale_run(n, dofs <= factor_max)?;
+        let gb = r.nnz_l as f64 * 8e-9;
+        let timed = r.factorization > 0.0;
+        let cell = |t: f64| if timed { format!("{t:.2}") } else { "-".into() };
+        println!(
+            "| {n} | {} | {} | {} | {gb:.2} | {:.2} | {} | {} | {} |",
+            r.dofs,
+            r.nnz_k,
+            r.nnz_l,
+            r.analysis,
+            cell(r.factorization),
+            cell(r.solve),
+            r.peak_memory
+                .map_or("n/a".into(), |b| format!("{:.2}", b as f64 * 1e-9))
+        );
+        if timed {
+            factored.push((r.dofs as f64, r.factorization));
+        }
+        if gb <= memory_gb {
+            largest = Some((n, r.dofs, gb));
+        }
+    }
+    if let Some((n, dofs, gb)) = largest {
+        print!(
+            "largest cube whose factor fits in {memory_gb} GB: n = {n}, {dofs} free dofs, factor {gb:.2} GB"
+        );
+        if let Some((p, c, _)) = hycon_lab::bench::fit_power(&factored) {
+            println!(
+                "; factorization time fitted as {c:.3e} N^{p:.2} over the factored sizes: about {:.0} s",
+                c * (dofs as f64).powf(p)
+            );
+        } else {
+            println!();
+        }
+    }
+    Ok(())
+}
+
 fn brick(ks: &[usize], out: &Path) -> AnyResult {
     if ks.iter().any(|&k| k == 0 || k > 16) {
         return Err("--k: bricks across the section must be 1..=16".into());
@@ -692,6 +755,11 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
     let out = out.unwrap_or(Path::new("docs/bench"));
     match what {
         Bench::Brick { k } => brick(&k, out)?,
+        Bench::BrickScale {
+            n,
+            factor_max,
+            memory_gb,
+        } => brick_scale(&n, factor_max, memory_gb)?,
         Bench::Sweep {
             min,
             max,

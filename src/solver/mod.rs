@@ -265,7 +265,7 @@ impl SparseCholesky {
     /// Number of stored entries of `L` (for supernodal factors, the dense supernode blocks).
     pub fn nnz_l(&self) -> usize {
         match &self.engine {
-            Engine::Faer(f) => f.l_values.len(),
+            Engine::Faer(f) => f.nnz_l(),
             #[cfg(feature = "suitesparse")]
             Engine::Cholmod(c) => c.nnz_l(),
         }
@@ -942,10 +942,16 @@ impl FaerLlt {
             symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()),
             symbolic.solve_in_place_scratch::<f64>(RHS_BATCH, par),
         ]);
+        let workspace = MemBuffer::try_new(req).map_err(|_| {
+            Error::Solver(format!(
+                "out of memory: the factorization workspace of {} equations could not be allocated",
+                symbolic.nrows()
+            ))
+        })?;
         Ok(FaerLlt {
-            l_values: vec![0.0; symbolic.len_val()],
+            l_values: Vec::new(),
             symbolic,
-            workspace: MemBuffer::new(req),
+            workspace,
         })
     }
 
@@ -953,7 +959,31 @@ impl FaerLlt {
         self.symbolic.nrows()
     }
 
+    /// Stored entries of `L`, known from the symbolic analysis alone.
+    fn nnz_l(&self) -> usize {
+        self.symbolic.len_val()
+    }
+
+    /// Allocate `L`'s values on the first factorization (the analysis alone sizes a problem
+    /// without holding its factor). Fallible: a factor larger than the machine's memory is an
+    /// error the host can report, not an abort.
+    fn allocate_factor(&mut self) -> Result<()> {
+        let len = self.nnz_l();
+        if self.l_values.len() == len {
+            return Ok(());
+        }
+        self.l_values.try_reserve_exact(len).map_err(|_| {
+            Error::Solver(format!(
+                "out of memory: the factor L needs {len} entries ({:.1} GB)",
+                len as f64 * 8e-9
+            ))
+        })?;
+        self.l_values.resize(len, 0.0);
+        Ok(())
+    }
+
     fn factorize(&mut self, a: SparseColMatRef<'_, usize, f64>) -> Result<()> {
+        self.allocate_factor()?;
         let result = self.symbolic.factorize_numeric_llt::<f64>(
             &mut self.l_values,
             a,
