@@ -22,7 +22,10 @@
 // - in the two elements beside the interface (one per tube): u_r of their interface node
 //   against Lame's to 1e-9 (nodally exact) and sigma_theta at their centre
 //   (hycon::element_stress) against Lame's there within 0.5 / n^2 (the stress is linear in an
-//   element, its error falls as h^2: measured 2.7e-3 and 2.2e-4 at n = 8);
+//   element, its error falls as h^2: measured 2.7e-3 and 2.2e-4 at n = 8); their stress
+//   parameters (hycon::element_stress_params: 7) and the traction on their interface edge
+//   (hycon::element_edge_traction) against Lame's {-sigma_r, 0} within 2 / n in t_r (first
+//   order: measured -15% and -2.2% at n = 8, where the multipliers are exact) and 1e-9 p in t_z;
 // - the same mesh through the model API (hycon::Model: hycon assembles and factors): the
 //   same contact states, tractions and displacements to 1e-9 of their largest values.
 // Prints OK on success; FAILED or "wrong value" and exit code 1 otherwise.
@@ -260,6 +263,23 @@ bool run_host(const Mesh &m, const HostSystem &s, Outcome &out) {
                     out.u[2 * node] / ur - 1.0);
         expect(std::fabs(out.u[2 * node] / ur - 1.0) < 1e-9, "u_r / Lame - 1 on the interface",
                out.u[2 * node] / ur - 1.0);
+        // the stress parameters (7 for the axisymmetric hybrid element) and the traction on
+        // the interface edge (the outer tube's edge 3 at r = b, the inner's edge 1 at r = d),
+        // against Lame's {-sigma_r, 0} there (outward normal -r and +r)
+        auto beta = hycon::element_stress_params(HYCON_ELEMENT_HYBRID, exy, kSteel, q);
+        TRY(beta, "element_stress_params");
+        expect(beta->size() == 7, "stress parameters of the axisymmetric hybrid element",
+               double(beta->size()));
+        auto t = hycon::element_edge_traction(HYCON_ELEMENT_HYBRID, exy, kSteel, q,
+                                              e == top ? 3 : 1, 0.5);
+        TRY(t, "element_edge_traction");
+        const double t_exact = e == top ? p : -p * kB / d;
+        std::printf("  edge traction {t_r, t_z} = {%.10e, %.1e}, Lame {%.10e, 0} (%+.1e)\n",
+                    (*t)[0], (*t)[1], t_exact, (*t)[0] / t_exact - 1.0);
+        // first order in h (the element's stress is linear, Lame's sigma_r is not)
+        expect(std::fabs((*t)[0] / t_exact - 1.0) < 2.0 / double(m.nr), "edge t_r / Lame - 1",
+               (*t)[0] / t_exact - 1.0);
+        expect(std::fabs((*t)[1]) < 1e-9 * p, "edge t_z (in p)", (*t)[1] / p);
     }
     return true;
 }
