@@ -194,14 +194,7 @@ fn analysis_with(
         renumbered.push_element(&map(mesh.element(e)), mesh.element_material[e]);
     }
     let materials = (0..2)
-        .map(|i| {
-            Material::new(
-                p.moduli[i] * v.modulus_scale,
-                p.poisson[i],
-                1.0,
-                p.analysis,
-            )
-        })
+        .map(|i| Material::new(p.moduli[i] * v.modulus_scale, p.poisson[i], 1.0, p.analysis))
         .collect::<hycon::Result<Vec<_>>>()
         .map_err(|e| error_kind(&e))?;
     let mut model = Model::new(renumbered, materials, Formulation::Hybrid);
