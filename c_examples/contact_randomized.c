@@ -108,9 +108,10 @@ static Problem draw_problem(void) {
      * or off it, the upper block beside it or, on a block touching the axis, on the axis too
      * (a contact zone centred on the axis, as a sphere on a flat). That last case is drawn
      * pressed only, frictionless and under small kinematics: with friction the contact system
-     * is singular there (the axis nodes' u_r = 0 leaves their stick rows empty), and under
-     * finite kinematics an active node at the axis is reported uncovered by 1e-9 to 1e-8 of
-     * its support (open in 0.7.0). */
+     * is singular there (HYCON_ERROR_SINGULAR when A's node on the axis has its u_r held, as
+     * the header asks; with it left free the same problems pass), and under finite kinematics
+     * an active node at the axis is reported uncovered by 1e-9 to 1e-8 of its support (open
+     * in 0.7.0). */
     p.analysis = below(3) == 0 ? HYCON_AXISYMMETRIC : HYCON_PLANE_STRAIN;
     p.axis = 0.0;
     if (p.analysis == HYCON_AXISYMMETRIC) {

@@ -314,9 +314,9 @@ fn problem() -> impl Strategy<Value = Problem> {
 /// The problems of [`problem`] in axisymmetry: the lower block off the axis (inner radius in
 /// `[0.05, 1)`) or touching it, and on one touching it the upper block beside it or on the
 /// axis too. That last case is pressed only, frictionless and under small kinematics (as
-/// `contact_randomized.c`: with friction the contact system is singular there, the axis
-/// nodes' stick rows being empty once their `u_r` is held, and under finite kinematics an
-/// active axis node is found uncovered by round-off; open in 0.7.0).
+/// `contact_randomized.c`: with friction the contact system is singular there when A's node
+/// on the axis has its `u_r` held, as the header asks, and under finite kinematics an active
+/// axis node is found uncovered by round-off; open in 0.7.0).
 fn axisymmetric_problem() -> impl Strategy<Value = Problem> {
     (
         problem(),
