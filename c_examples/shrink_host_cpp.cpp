@@ -185,10 +185,56 @@ void expect(bool ok, const char *what, double value) {
         return false;                                                                          \
     }
 
-// The host path: CSR assembled from hycon's element routines, hycon factors it.
-bool run_host(const Mesh &m, const HostSystem &s, Outcome &out) {
-    auto host = hycon::Host::create(s.n_eq);
-    TRY(host, "Host::create");
+// Lame's solution in the outer tube (b <= r <= c, pressure p in its bore) or in the inner one
+// (a <= r <= d = b + delta, pressure p b / d on its outside) at radius r.
+Lame tube(bool outer, double p, double r) {
+    const double d = kB + kDelta;
+    return outer ? lame(kB, kC, p, 0.0, r) : lame(kA, d, 0.0, p * kB / d, r);
+}
+
+// The element of one tube beside the interface (its interface edge: 3 in the outer tube,
+// 1 in the inner one) against Lame: u_r at its interface node, sigma_theta at its centre, its
+// stress parameters and the traction on its interface edge.
+bool check_beside_interface(const Mesh &m, const std::vector<double> &u, std::size_t e,
+                            bool outer, double p) {
+    const std::array<double, 8> xy = element_coords(m, e);
+    std::array<double, 8> q{};
+    for (std::size_t k = 0; k < 8; ++k) q[k] = u[2 * m.nodes[4 * e + k / 2] + k % 2];
+    const std::size_t node = m.nodes[4 * e + (outer ? 0 : 1)];
+    const double r = m.coords[2 * node], ur = tube(outer, p, r).ur;
+    std::printf("  u_r at r = %.4f: %.10e, Lame %.10e (%+.1e)\n", r, u[2 * node], ur,
+                u[2 * node] / ur - 1.0);
+    expect(std::fabs(u[2 * node] / ur - 1.0) < 1e-9, "u_r / Lame - 1 on the interface",
+           u[2 * node] / ur - 1.0);
+    const double rc = 0.25 * (xy[0] + xy[2] + xy[4] + xy[6]);
+    const double zc = 0.25 * (xy[1] + xy[3] + xy[5] + xy[7]);
+    auto sigma = hycon::element_stress(HYCON_ELEMENT_HYBRID, xy, kSteel, q, rc, zc);
+    TRY(sigma, "element_stress");
+    const double hoop = tube(outer, p, rc).st, err = (*sigma)[3] / hoop - 1.0;
+    std::printf("  sigma_theta at r = %.4f: %.10e, Lame %.10e (%+.1e)\n", rc, (*sigma)[3],
+                hoop, err);
+    // linear in the element: its error at the centre falls as h^2
+    expect(std::fabs(err) < 0.5 / double(m.nr * m.nr), "sigma_theta / Lame - 1", err);
+    auto beta = hycon::element_stress_params(HYCON_ELEMENT_HYBRID, xy, kSteel, q);
+    TRY(beta, "element_stress_params");
+    expect(beta->size() == 7, "stress parameters of the axisymmetric hybrid element",
+           double(beta->size()));
+    // Lame's {-sigma_r, 0} with the outward normal -r (outer) or +r (inner)
+    auto t = hycon::element_edge_traction(HYCON_ELEMENT_HYBRID, xy, kSteel, q, outer ? 3 : 1, 0.5);
+    TRY(t, "element_edge_traction");
+    const double t_exact = outer ? p : -p * kB / (kB + kDelta);
+    std::printf("  edge traction {t_r, t_z} = {%.10e, %.1e}, Lame {%.10e, 0} (%+.1e)\n",
+                (*t)[0], (*t)[1], t_exact, (*t)[0] / t_exact - 1.0);
+    // first order in h (the element's stress is linear, Lame's sigma_r is not)
+    expect(std::fabs((*t)[0] / t_exact - 1.0) < 2.0 / double(m.nr), "edge t_r / Lame - 1",
+           (*t)[0] / t_exact - 1.0);
+    expect(std::fabs((*t)[1]) < 1e-9 * p, "edge t_z (in p)", (*t)[1] / p);
+    return true;
+}
+
+// The pair in the host's numbering: node ids, reference coordinates (the overlap drawn in
+// them) and equation numbers per polyline; A's side from a point inside the outer tube.
+hycon::Result<std::size_t> describe_pair(hycon::Host &host, const Mesh &m, const HostSystem &s) {
     auto polyline = [&m, &s](const std::vector<std::size_t> &ids, std::vector<double> &xy,
                              std::vector<std::int64_t> &eqs) {
         for (const std::size_t node : ids)
@@ -201,15 +247,23 @@ bool run_host(const Mesh &m, const HostSystem &s, Outcome &out) {
     std::vector<std::int64_t> a_eq, b_eq;
     polyline(m.a, a_xy, a_eq);
     polyline(m.b, b_xy, b_eq);
-    auto pair = host->add_pair(m.a, a_xy, a_eq, m.b, b_xy, b_eq, 0.0, HYCON_AXISYMMETRIC, 1.0);
-    TRY(pair, "Host::add_pair");
+    auto pair = host.add_pair(m.a, a_xy, a_eq, m.b, b_xy, b_eq, 0.0, HYCON_AXISYMMETRIC, 1.0);
+    if (!pair) return pair;
     // the centroid of the outer tube's element at the top of the bore (A's first segment)
-    const std::size_t top = (kLayersOuter - 1) * m.nr;
-    const std::array<double, 8> xy = element_coords(m, top);
+    const std::array<double, 8> xy = element_coords(m, (kLayersOuter - 1) * m.nr);
     const hycon::Status inside =
-        host->set_pair_inside(*pair, {0.25 * (xy[0] + xy[2] + xy[4] + xy[6]),
-                                      0.25 * (xy[1] + xy[3] + xy[5] + xy[7])});
-    TRY(inside, "Host::set_pair_inside");
+        host.set_pair_inside(*pair, {0.25 * (xy[0] + xy[2] + xy[4] + xy[6]),
+                                     0.25 * (xy[1] + xy[3] + xy[5] + xy[7])});
+    if (!inside) return inside;
+    return pair;
+}
+
+// The host path: CSR assembled from hycon's element routines, hycon factors it.
+bool run_host(const Mesh &m, const HostSystem &s, Outcome &out) {
+    auto host = hycon::Host::create(s.n_eq);
+    TRY(host, "Host::create");
+    auto pair = describe_pair(*host, m, s);
+    TRY(pair, "the pair (Host::add_pair, Host::set_pair_inside)");
     const hycon::Status csr = host->set_csr(s.row_ptr, s.columns, s.values, HYCON_CSR_LOWER);
     TRY(csr, "Host::set_csr");
     auto contact = hycon::Contact::create(*host);
@@ -227,61 +281,20 @@ bool run_host(const Mesh &m, const HostSystem &s, Outcome &out) {
     out.u.assign(2 * m.n_nodes(), 0.0);
     for (std::size_t k = 0; k < out.u.size(); ++k)
         if (s.eq[k] != HYCON_FIXED) out.u[k] = (*field)[std::size_t(s.eq[k])];
-    // the A nodes' radial contact forces from the field of contact forces
-    double fr = 0.0;
+    // the full circle: A's weights and radial contact forces over the bore's area 2 pi b L
+    double fr = 0.0, weights = 0.0;
     for (const std::size_t node : m.a) fr += (*forces)[std::size_t(s.eq[2 * node])];
+    for (const HyconNodeResult &r : out.a) weights += r.weight;
     const double p = lame_pressure(), area = 2.0 * kPi * kB * kLength;
     std::printf("host: %zu equations, %zu stored entries, %zu iterations, %zu active\n", s.n_eq,
                 s.values.size(), info->iterations, info->active);
-    double weights = 0.0;
-    for (const HyconNodeResult &r : out.a) weights += r.weight;
     std::printf("  sum of A weights %.10e = 2 pi b L %+.1e\n", weights, weights / area - 1.0);
     std::printf("  radial contact force on A %.10e = p 2 pi b L %+.1e\n", fr,
                 fr / (p * area) - 1.0);
     expect(std::fabs(weights / area - 1.0) < 1e-9, "sum of A weights / 2 pi b L", weights);
     expect(std::fabs(fr / (p * area) - 1.0) < 1e-9, "radial force on A / p 2 pi b L", fr);
-    // the hoop stress beside the interface, from the host's displacements
-    const double d = kB + kDelta;
-    for (const std::size_t e : {top, m.first_inner_element + m.nr - 1}) {
-        const std::array<double, 8> exy = element_coords(m, e);
-        std::array<double, 8> q{};
-        for (std::size_t k = 0; k < 8; ++k) q[k] = out.u[2 * m.nodes[4 * e + k / 2] + k % 2];
-        const double rc = 0.25 * (exy[0] + exy[2] + exy[4] + exy[6]);
-        const double zc = 0.25 * (exy[1] + exy[3] + exy[5] + exy[7]);
-        auto sigma = hycon::element_stress(HYCON_ELEMENT_HYBRID, exy, kSteel, q, rc, zc);
-        TRY(sigma, "element_stress");
-        const Lame exact = e == top ? lame(kB, kC, p, 0.0, rc) : lame(kA, d, 0.0, p * kB / d, rc);
-        const double err = (*sigma)[3] / exact.st - 1.0;
-        std::printf("  sigma_theta at r = %.4f: %.10e, Lame %.10e (%+.1e)\n", rc, (*sigma)[3],
-                    exact.st, err);
-        // linear in the element: its error at the centre falls as h^2
-        expect(std::fabs(err) < 0.5 / double(m.nr * m.nr), "sigma_theta / Lame - 1", err);
-        const std::size_t node = m.nodes[4 * e + (e == top ? 0 : 1)];  // on the interface
-        const double r = m.coords[2 * node];
-        const double ur = e == top ? lame(kB, kC, p, 0.0, r).ur : lame(kA, d, 0.0, p * kB / d, r).ur;
-        std::printf("  u_r at r = %.4f: %.10e, Lame %.10e (%+.1e)\n", r, out.u[2 * node], ur,
-                    out.u[2 * node] / ur - 1.0);
-        expect(std::fabs(out.u[2 * node] / ur - 1.0) < 1e-9, "u_r / Lame - 1 on the interface",
-               out.u[2 * node] / ur - 1.0);
-        // the stress parameters (7 for the axisymmetric hybrid element) and the traction on
-        // the interface edge (the outer tube's edge 3 at r = b, the inner's edge 1 at r = d),
-        // against Lame's {-sigma_r, 0} there (outward normal -r and +r)
-        auto beta = hycon::element_stress_params(HYCON_ELEMENT_HYBRID, exy, kSteel, q);
-        TRY(beta, "element_stress_params");
-        expect(beta->size() == 7, "stress parameters of the axisymmetric hybrid element",
-               double(beta->size()));
-        auto t = hycon::element_edge_traction(HYCON_ELEMENT_HYBRID, exy, kSteel, q,
-                                              e == top ? 3 : 1, 0.5);
-        TRY(t, "element_edge_traction");
-        const double t_exact = e == top ? p : -p * kB / d;
-        std::printf("  edge traction {t_r, t_z} = {%.10e, %.1e}, Lame {%.10e, 0} (%+.1e)\n",
-                    (*t)[0], (*t)[1], t_exact, (*t)[0] / t_exact - 1.0);
-        // first order in h (the element's stress is linear, Lame's sigma_r is not)
-        expect(std::fabs((*t)[0] / t_exact - 1.0) < 2.0 / double(m.nr), "edge t_r / Lame - 1",
-               (*t)[0] / t_exact - 1.0);
-        expect(std::fabs((*t)[1]) < 1e-9 * p, "edge t_z (in p)", (*t)[1] / p);
-    }
-    return true;
+    return check_beside_interface(m, out.u, (kLayersOuter - 1) * m.nr, true, p) &&
+           check_beside_interface(m, out.u, m.first_inner_element + m.nr - 1, false, p);
 }
 
 // The model API on the same mesh: hycon assembles and factors.
