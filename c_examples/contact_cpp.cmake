@@ -26,3 +26,11 @@ if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   hycon_test(header_hpp17_noexcept header_hpp17_noexcept)
   hycon_valgrind_test(valgrind_header_hpp17_noexcept header_hpp17_noexcept)
 endif()
+
+# shrink_host_cpp: the axisymmetric shrink fit of shrink_fit.c through the host-assembly API
+# (CSR from hycon::element_stiffness in axisymmetric mode), against Lame and the model API.
+# The argument is the number of elements through each wall (default 8).
+hycon_example(shrink_host_cpp shrink_host_cpp.cpp CXX hycon::hycon)
+hycon_test(shrink_host_cpp shrink_host_cpp)
+hycon_valgrind_test(valgrind_shrink_host_cpp shrink_host_cpp 4)
+hycon_asan_test(shrink_host_cpp shrink_host_cpp.cpp CXX)

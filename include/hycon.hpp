@@ -230,6 +230,42 @@ inline Result<std::vector<double>> element_stress(HyconElementKind kind, View<do
     return out;
 }
 
+// Stress parameters beta of a hybrid element from its nodal displacements `q` (2n values): 7
+// for the 4- and 5-node hybrid element (and the axisymmetric one), 12 with 6 nodes, 5 for
+// Pian-Sumihara, none for Q4.
+inline Result<std::vector<double>> element_stress_params(HyconElementKind kind,
+                                                         View<double> coords,
+                                                         const HyconMaterial &material,
+                                                         View<double> q) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    if (q.size() != coords.size()) return detail::invalid("q must hold 2 values per node");
+    std::vector<double> beta(HYCON_MAX_BETA);
+    std::size_t needed = 0;
+    const Status s = Status::from(hycon_element_stress_params(kind, coords.size() / 2,
+                                                              coords.data(), &material, q.data(),
+                                                              beta.data(), beta.size(), &needed));
+    if (!s.ok()) return s;
+    beta.resize(needed);
+    return beta;
+}
+
+// Traction {tx, ty} = sigma n (outward n) at parameter s in [0, 1] along edge `edge` (local
+// node edge to edge + 1, cyclically) from the nodal displacements `q`; in axisymmetry the
+// meridian traction {t_r, t_z}, a pressure.
+inline Result<std::array<double, 2>> element_edge_traction(HyconElementKind kind,
+                                                           View<double> coords,
+                                                           const HyconMaterial &material,
+                                                           View<double> q, std::size_t edge,
+                                                           double s) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    if (q.size() != coords.size()) return detail::invalid("q must hold 2 values per node");
+    std::array<double, 2> out{};
+    const Status st = Status::from(hycon_element_edge_traction(
+        kind, coords.size() / 2, coords.data(), &material, q.data(), edge, s, out.data()));
+    if (!st.ok()) return st;
+    return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // 3D element routines: 8-node bricks (numbering at HyconBrickKind in hycon.h)
 

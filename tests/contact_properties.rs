@@ -20,6 +20,12 @@
 //! * every problem converges (0.7.0; 0.6.2 failed about 2.6% of them alike in every variant),
 //!   and an error in a variant would have to be the same error in every variant (its kind),
 //!   never a panic.
+//!
+//! The same problems in axisymmetry (`x = r`, `y = z`, 256 cases): the lower block off the
+//! axis or touching it, and on one touching it the upper block beside it or on the axis too
+//! (`u_r = 0` held on the axis). Their rigid motions are the translations along the axis: the
+//! properties are the zero increment, an axial translation, unit scaling and renumbering, to
+//! the same tolerances.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
@@ -43,6 +49,11 @@ struct Problem {
     poisson: [f64; 2],
     friction: f64,
     kinematics: Kinematics,
+    /// `PlaneStrain`, or `Axisymmetric` (`x = r`, `y = z`).
+    analysis: Analysis,
+    /// The lower block's left side: its inner radius in axisymmetry (0 in plane problems);
+    /// `left` is the upper block's.
+    axis: f64,
 }
 
 /// A variant of a problem: coordinates `s_l (X + t)` after renumbering by `perm`
@@ -141,7 +152,7 @@ fn analysis_with(
     options: ContactOptions,
 ) -> std::result::Result<(ContactAnalysis, Vec<usize>), String> {
     let mut mesh = Mesh::new();
-    let lower = block(&mut mesh, 0.0, 0.0, 2.0, 1.0, p.lower, 0);
+    let lower = block(&mut mesh, p.axis, 0.0, 2.0, 1.0, p.lower, 0);
     let upper = block(&mut mesh, p.left, 1.0 + p.gap, p.width, 1.0, p.upper, 1);
     let row =
         |ids: &[usize], n: [usize; 2], j: usize| ids[j * (n[0] + 1)..(j + 1) * (n[0] + 1)].to_vec();
@@ -150,6 +161,17 @@ fn analysis_with(
     b.reverse();
     let bottom = row(&lower, p.lower, 0);
     let top = row(&upper, p.upper, p.upper[1]);
+    // the nodes on the axis, u_r = 0 (but the held bottom and top rows)
+    let column = |ids: &[usize], n: [usize; 2], rows: std::ops::Range<usize>| -> Vec<usize> {
+        rows.map(|j| ids[j * (n[0] + 1)]).collect()
+    };
+    let mut on_axis = Vec::new();
+    if p.analysis == Analysis::Axisymmetric && p.axis == 0.0 {
+        on_axis.extend(column(&lower, p.lower, 1..p.lower[1] + 1));
+    }
+    if p.analysis == Analysis::Axisymmetric && p.left == 0.0 {
+        on_axis.extend(column(&upper, p.upper, 0..p.upper[1]));
+    }
     // the variant: transform the coordinates, renumber every id
     for x in &mut mesh.nodes {
         *x = rotate(
@@ -172,20 +194,18 @@ fn analysis_with(
         renumbered.push_element(&map(mesh.element(e)), mesh.element_material[e]);
     }
     let materials = (0..2)
-        .map(|i| {
-            Material::new(
-                p.moduli[i] * v.modulus_scale,
-                p.poisson[i],
-                1.0,
-                Analysis::PlaneStrain,
-            )
-        })
+        .map(|i| Material::new(p.moduli[i] * v.modulus_scale, p.poisson[i], 1.0, p.analysis))
         .collect::<hycon::Result<Vec<_>>>()
         .map_err(|e| error_kind(&e))?;
     let mut model = Model::new(renumbered, materials, Formulation::Hybrid);
     let (bottom, top) = (map(&bottom), map(&top));
     model.fix(&bottom, [0.0, 0.0]).map_err(|e| error_kind(&e))?;
     model.fix(&top, [0.0, 0.0]).map_err(|e| error_kind(&e))?;
+    if !on_axis.is_empty() {
+        model
+            .fix_dir(&map(&on_axis), 0, 0.0)
+            .map_err(|e| error_kind(&e))?;
+    }
     let pair = ContactPair {
         a: map(&a),
         b: map(&b),
@@ -284,9 +304,112 @@ fn problem() -> impl Strategy<Value = Problem> {
                     } else {
                         Kinematics::Finite
                     },
+                    analysis: Analysis::PlaneStrain,
+                    axis: 0.0,
                 }
             },
         )
+}
+
+/// The problems of [`problem`] in axisymmetry: the lower block off the axis (inner radius in
+/// `[0.05, 1)`) or touching it, and on one touching it the upper block beside it or on the
+/// axis too. That last case is pressed only, frictionless and under small kinematics (as
+/// `contact_randomized.c`: with friction the contact system is singular there when A's node
+/// on the axis has its `u_r` held, as the header asks, and under finite kinematics an active
+/// axis node is found uncovered by round-off; open in 0.7.0).
+fn axisymmetric_problem() -> impl Strategy<Value = Problem> {
+    (
+        problem(),
+        prop_oneof![Just(None), (0.05f64..1.0).prop_map(Some)],
+        any::<bool>(),
+    )
+        .prop_map(|(p, off_axis, both_on_axis)| {
+            let analysis = Analysis::Axisymmetric;
+            match off_axis {
+                Some(axis) => Problem {
+                    analysis,
+                    axis,
+                    left: axis + p.left,
+                    ..p
+                },
+                None if both_on_axis => Problem {
+                    analysis,
+                    left: 0.0,
+                    slide: 0.0,
+                    friction: 0.0,
+                    kinematics: Kinematics::Small,
+                    ..p
+                },
+                None => Problem { analysis, ..p },
+            }
+        })
+}
+
+/// The tolerance of the variants: round-off under small kinematics (given the contact set the
+/// problem is linear); under finite ones the iteration's tolerance (1e-6 of the increment's
+/// motion): the fixed point of the nonlinear geometry is found to that, and a variant's
+/// round-off may stop it one iteration earlier or later.
+fn tolerance(p: &Problem) -> f64 {
+    match p.kinematics {
+        Kinematics::Small => 1e-8,
+        Kinematics::Finite => 1e-5,
+    }
+}
+
+/// A permutation of `0..n` from `seed` (Fisher-Yates with a small LCG).
+fn permutation(n: usize, seed: u64) -> Vec<usize> {
+    let mut perm: Vec<usize> = (0..n).collect();
+    let mut state = seed | 1;
+    for i in (1..n).rev() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        perm.swap(i, (state >> 33) as usize % (i + 1));
+    }
+    perm
+}
+
+/// The problem's node count.
+fn n_nodes(p: &Problem) -> usize {
+    (p.lower[0] + 1) * (p.lower[1] + 1) + (p.upper[0] + 1) * (p.upper[1] + 1)
+}
+
+/// The properties of one problem: it converges, its zero increment converges at once to the
+/// same tractions, and every `(name, variant, factor, tolerance)` gives the tractions times
+/// `factor` to that tolerance of the peak.
+fn variants_agree_with(
+    p: &Problem,
+    variants: Vec<(&str, Variant, f64, f64)>,
+) -> std::result::Result<(), TestCaseError> {
+    let base = run(p, &Variant::identity());
+    // 0.7.0: every problem of this distribution settles (0.6.2 failed about 2.6% of the plane
+    // ones alike in every variant: `hycon bench presses --ranges narrow`), so no problem fails
+    // alike
+    prop_assert!(base.is_ok(), "the problem fails: {base:?}");
+    // the zero increment: at once, to the same tractions
+    let at_once = 3;
+    if let Ok((t, zero_iterations)) = &base {
+        prop_assert!(
+            *zero_iterations <= at_once,
+            "zero increment took {zero_iterations} iterations"
+        );
+        prop_assert!(
+            same(&t[1..2], &t[2..3], 1.0, tolerance(p)),
+            "zero increment moved: {t:?}"
+        );
+    }
+    for (name, variant, factor, within) in variants {
+        let other = run(p, &variant);
+        match (&base, &other) {
+            (Ok((want, _)), Ok((got, _))) => prop_assert!(
+                same(want, got, factor, within),
+                "{name}: tractions differ\n{want:?}\n{got:?}"
+            ),
+            (Err(want), Err(got)) => prop_assert_eq!(want, got, "{}: different errors", name),
+            _ => prop_assert!(false, "{name}: {base:?} against {other:?}"),
+        }
+    }
+    Ok(())
 }
 
 proptest! {
@@ -305,59 +428,48 @@ proptest! {
         scales in (-3i32..=3, -3i32..=3),
         seed in any::<u64>(),
     ) {
-        let base = run(&p, &Variant::identity());
-        // 0.7.0: every problem of this distribution settles (0.6.2 failed about 2.6% of them
-        // alike in every variant: `hycon bench presses --ranges narrow`), so no problem fails
-        // alike
-        prop_assert!(base.is_ok(), "the problem fails: {base:?}");
-        // to round-off under small kinematics (given the contact set the problem is linear);
-        // under finite ones to the iteration's tolerance (1e-6 of the increment's motion): the
-        // fixed point of the nonlinear geometry is found to that, and a variant's round-off may
-        // stop it one iteration earlier or later
-        let within = match p.kinematics {
-            Kinematics::Small => 1e-8,
-            Kinematics::Finite => 1e-5,
-        };
-        // the zero increment: at once, to the same tractions
-        let at_once = 3;
-        if let Ok((t, zero_iterations)) = &base {
-            prop_assert!(
-                *zero_iterations <= at_once,
-                "zero increment took {zero_iterations} iterations"
-            );
-            prop_assert!(same(&t[1..2], &t[2..3], 1.0, within), "zero increment moved: {t:?}");
-        }
-        let n = (p.lower[0] + 1) * (p.lower[1] + 1) + (p.upper[0] + 1) * (p.upper[1] + 1);
-        // a permutation from the seed (Fisher-Yates with a small LCG)
-        let mut perm: Vec<usize> = (0..n).collect();
-        let mut state = seed | 1;
-        for i in (1..n).rev() {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            perm.swap(i, (state >> 33) as usize % (i + 1));
-        }
+        let within = tolerance(&p);
         let s_e = 10f64.powi(scales.1);
         // rotated, the flat surfaces carry the coordinates' round-off eps |X| across them:
         // relative to the approach, amplified by the contact system's condition (1e4 here)
         let rigid = within.max(
             1e4 * f64::EPSILON * (translation.0.hypot(translation.1) + 3.0) / (p.depth - p.gap),
         );
-        let variants = [
+        let perm = permutation(n_nodes(&p), seed);
+        variants_agree_with(&p, vec![
             ("translation", Variant { translation: [translation.0, translation.1], ..Variant::identity() }, 1.0, within),
             ("rigid motion", Variant { translation: [translation.0, translation.1], angle, ..Variant::identity() }, 1.0, rigid),
             ("unit scaling", Variant { length_scale: 10f64.powi(scales.0), modulus_scale: s_e, ..Variant::identity() }, s_e, within),
             ("renumbering", Variant { perm: Some(perm), ..Variant::identity() }, 1.0, within),
-        ];
-        for (name, variant, factor, within) in variants {
-            let other = run(&p, &variant);
-            match (&base, &other) {
-                (Ok((want, _)), Ok((got, _))) => prop_assert!(
-                    same(want, got, factor, within),
-                    "{name}: tractions differ\n{want:?}\n{got:?}"
-                ),
-                (Err(want), Err(got)) => prop_assert_eq!(want, got, "{}: different errors", name),
-                _ => prop_assert!(false, "{name}: {base:?} against {other:?}"),
-            }
-        }
+        ])?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 256,
+        rng_seed: RngSeed::Fixed(0x0068_7963_6f70),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    /// Axisymmetry: the rigid motions are the translations along the axis (a rotation or a
+    /// radial translation changes the problem).
+    #[test]
+    fn axisymmetric_variants_agree(
+        p in axisymmetric_problem(),
+        dz in -1e3f64..1e3,
+        scales in (-3i32..=3, -3i32..=3),
+        seed in any::<u64>(),
+    ) {
+        let within = tolerance(&p);
+        let s_e = 10f64.powi(scales.1);
+        let perm = permutation(n_nodes(&p), seed);
+        variants_agree_with(&p, vec![
+            ("axial translation", Variant { translation: [0.0, dz], ..Variant::identity() }, 1.0, within),
+            ("unit scaling", Variant { length_scale: 10f64.powi(scales.0), modulus_scale: s_e, ..Variant::identity() }, s_e, within),
+            ("renumbering", Variant { perm: Some(perm), ..Variant::identity() }, 1.0, within),
+        ])?;
     }
 }
 
@@ -410,6 +522,8 @@ fn a_press_whose_corner_alternates_between_stick_and_slip_settles() {
         poisson: [0.3053780252713488, 0.31289662183799355],
         friction: 0.43148467224425613,
         kinematics: Kinematics::Small,
+        analysis: Analysis::PlaneStrain,
+        axis: 0.0,
     };
     let v = Variant::identity();
     let (mut analysis, top) = analysis(&p, &v).unwrap();
