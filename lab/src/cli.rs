@@ -6,7 +6,9 @@ use hycon::contact::iteration::Kinematics;
 use hycon::element::Formulation;
 use hycon::material::Analysis;
 use hycon_lab::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
-use hycon_lab::examples::{self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase};
+use hycon_lab::examples::{
+    self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase, SphereCase,
+};
 use hycon_lab::report;
 use serde::Serialize;
 use std::io::Write;
@@ -35,8 +37,9 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// The main job (also the default): the four contact examples on the disk-on-block scene
-    /// (Hertz for three modulus ratios, frictionless and frictional sliding, Cattaneo-Mindlin),
-    /// tables against the closed forms, the time split, SVG plots, VTU fields and summary.json.
+    /// (Hertz for three modulus ratios, frictionless and frictional sliding, Cattaneo-Mindlin)
+    /// and the axisymmetric one (Hertz's sphere), tables against the closed forms, the time
+    /// split, SVG plots, VTU fields and summary.json.
     Contact {
         /// Elements per contact half-width (a power of two).
         #[arg(long, default_value_t = 32)]
@@ -83,6 +86,21 @@ enum Command {
         /// only for slides much shorter than an element).
         #[arg(long, value_enum, default_value_t = KinematicsChoice::Finite)]
         kinematics: KinematicsChoice,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Hertz's sphere on a half-space, axisymmetric (R/a = 32, frictionless, small
+    /// kinematics): increments of the approach up to a^2/R of the target contact radius a.
+    Sphere {
+        /// Elements per contact radius (a power of two).
+        #[arg(long, default_value_t = 32)]
+        n: usize,
+        /// E_sphere / E_block, one run each (comma-separated or repeated).
+        #[arg(long, value_delimiter = ',', num_args = 1.., default_values_t = [1.0])]
+        modulus_ratio: Vec<f64>,
+        /// Displacement increments up to a^2/R.
+        #[arg(long, default_value_t = 3)]
+        increments: usize,
         #[command(flatten)]
         output: Output,
     },
@@ -234,6 +252,19 @@ enum Bench {
         /// Elements per half-width, comma separated (powers of two).
         #[arg(long, value_delimiter = ',', default_values_t = [16, 32, 64, 128])]
         n: Vec<usize>,
+        /// Edge positions per element.
+        #[arg(long, default_value_t = 8)]
+        positions: usize,
+    },
+    /// The same for Hertz's sphere (axisymmetric, frictionless, small kinematics, equal
+    /// moduli): the L2 error over r dr against where the contact edge falls, per R/a.
+    SphereEdge {
+        /// Elements per target contact radius, comma separated (powers of two).
+        #[arg(long, value_delimiter = ',', default_values_t = [16, 32, 64])]
+        n: Vec<usize>,
+        /// R / a, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [32, 64])]
+        r_over_a: Vec<usize>,
         /// Edge positions per element.
         #[arg(long, default_value_t = 8)]
         positions: usize,
@@ -496,6 +527,22 @@ pub fn main() -> ExitCode {
                 progress,
             )
         }),
+        Command::Sphere {
+            n,
+            modulus_ratio,
+            increments,
+            output,
+        } => single(output, &contact_dir(), |progress| {
+            examples::sphere(
+                &SphereCase {
+                    n,
+                    modulus_ratios: modulus_ratio,
+                    increments,
+                    fields: output.fields(),
+                },
+                progress,
+            )
+        }),
         Command::Elements { max_n } => {
             elements_table(max_n, out.as_deref().unwrap_or(Path::new("out")))
         }
@@ -688,6 +735,51 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
     Ok(())
 }
 
+/// `bench sphere-edge`: a row per run, a summary per n and R/a, the rate over n per R/a.
+fn sphere_edge(ns: &[usize], r_over_a: &[usize], positions: usize) -> AnyResult {
+    println!(
+        "{:>4} {:>4} {:>8} {:>5} {:>8} {:>8} {:>8} {:>8}",
+        "R/a", "n", "a_H/h", "edge", "L2 %", "a %", "p0 %", "p(0) %"
+    );
+    for &ratio in r_over_a {
+        let mut means = Vec::new();
+        for &n in ns {
+            let runs = hycon_lab::axisymmetric::SphereOnBlock {
+                elements_per_radius: n,
+                radius_over_contact: ratio as f64,
+                modulus_ratio: 1.0,
+            }
+            .edge_sweep(positions)?;
+            for r in &runs {
+                let c = &r.comparison;
+                println!(
+                    "{ratio:>4} {n:>4} {:>8.3} {:>5.2} {:>8.4} {:>+8.4} {:>+8.4} {:>+8.4}",
+                    r.radius_over_h,
+                    r.edge_position(),
+                    100.0 * c.l2_error,
+                    100.0 * (c.radius / c.hertz.radius - 1.0),
+                    100.0 * (c.peak_from_moments / c.hertz.peak - 1.0),
+                    100.0 * (c.peak / c.hertz.peak - 1.0),
+                );
+            }
+            let l2: Vec<f64> = runs.iter().map(|r| 100.0 * r.comparison.l2_error).collect();
+            let mean = l2.iter().sum::<f64>() / l2.len() as f64;
+            let (lo, hi) = l2
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(l, h), x| (l.min(*x), h.max(*x)));
+            println!("R/a = {ratio}, n = {n}: L2 mean {mean:.3}% (min {lo:.3}, max {hi:.3})");
+            means.push((n as f64, mean));
+        }
+        if let Some((rate, _, _)) = hycon_lab::bench::fit_power(&means) {
+            println!(
+                "R/a = {ratio}: rate of the mean over n (least squares) {:.2}",
+                -rate
+            );
+        }
+    }
+    Ok(())
+}
+
 fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
     let out = out.unwrap_or(Path::new("docs/bench"));
     match what {
@@ -772,6 +864,11 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,
         Bench::Edge { n, positions } => edge(&n, positions)?,
+        Bench::SphereEdge {
+            n,
+            r_over_a,
+            positions,
+        } => sphere_edge(&n, &r_over_a, positions)?,
         Bench::Presses {
             count,
             seed,
@@ -920,6 +1017,14 @@ fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
             },
             Some(&mut progress),
         )?,
+        examples::sphere(
+            &SphereCase {
+                n,
+                fields: output.fields(),
+                ..Default::default()
+            },
+            Some(&mut progress),
+        )?,
     ];
     let seconds = start.elapsed().as_secs_f64();
     let mut files = Vec::new();
@@ -1042,10 +1147,16 @@ fn print_run(run: &Run) {
         s.poisson,
         s.friction
     );
-    println!(
-        "   calibration: trial approach {:.4e} ({} iterations) -> approach {:.4e} (Hertz load for a)",
-        run.calibration.trial_approach, run.calibration.iterations, run.calibration.approach
-    );
+    match &run.calibration {
+        Some(c) => println!(
+            "   calibration: trial approach {:.4e} ({} iterations) -> approach {:.4e} (Hertz load for a)",
+            c.trial_approach, c.iterations, c.approach
+        ),
+        None => println!(
+            "   approach a^2/R = {:.4e} (Hertz's for the target a; no calibration)",
+            a * a / s.radius
+        ),
+    }
     let mut head = format!(
         "   {:>3} {:>5} {:>9} {:>7} | {:>3} {:>4} {:>4} | {:>10} {:>8} {:>8} {:>8} {:>8} | {:>7}",
         "inc",
