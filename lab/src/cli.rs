@@ -89,8 +89,8 @@ enum Command {
         #[command(flatten)]
         output: Output,
     },
-    /// Hertz's sphere on a half-space, axisymmetric (R/a = 32, frictionless, small
-    /// kinematics): increments of the approach up to a^2/R of the target contact radius a.
+    /// Hertz's sphere on a half-space, axisymmetric (frictionless, small kinematics):
+    /// increments of the approach up to a^2/R of the target contact radius a.
     Sphere {
         /// Elements per contact radius (a power of two).
         #[arg(long, default_value_t = 32)]
@@ -101,6 +101,9 @@ enum Command {
         /// Displacement increments up to a^2/R.
         #[arg(long, default_value_t = 3)]
         increments: usize,
+        /// R / a of the target contact radius.
+        #[arg(long, default_value_t = 32)]
+        r_over_a: usize,
         #[command(flatten)]
         output: Output,
     },
@@ -281,8 +284,9 @@ enum Bench {
     },
     /// Run time against error: the reference Hertz scene (frictionless, a = R/64, calibration
     /// increment + final increment + full-field recovery) for each element / mesh variant /
-    /// backend and n = min, 2 min, ..., max elements per half-width, each run in a fresh child
-    /// process (its own peak memory). Writes sweep.csv, sweep_error_time.svg,
+    /// backend and n = min, 2 min, ..., max elements per half-width, and Hertz's sphere beside
+    /// it (axisymmetric, a = R/32, one increment at a^2/R + recovery), each run in a fresh
+    /// child process (its own peak memory). Writes sweep.csv, sweep_error_time.svg,
     /// sweep_time_dofs.svg and sweep_summary.md to --out [default: docs/bench].
     Sweep {
         /// Smallest elements per half-width (a power of two).
@@ -318,6 +322,11 @@ enum Bench {
         /// Growth exponents are fitted over the runs with at least this n.
         #[arg(long, default_value_t = 16)]
         fit_min_n: usize,
+        /// Hertz's sphere (axisymmetric, R/a = 32, quadrilaterals) beside the disk: its
+        /// element/mesh configurations (hybrid/quads, q4/quads; empty: none), same n and
+        /// backends.
+        #[arg(long, value_delimiter = ',', default_values = ["hybrid/quads"])]
+        sphere_configs: Vec<String>,
         /// Do not run anything: re-read this sweep CSV and rewrite the plots and the summary.
         #[arg(long, value_name = "CSV")]
         from_csv: Option<PathBuf>,
@@ -341,6 +350,8 @@ enum Bench {
         r_over_a: usize,
         #[arg(long, value_enum, default_value_t = KinematicsChoice::Small)]
         kinematics: KinematicsChoice,
+        #[arg(long, default_value = "disk")]
+        scene: String,
         /// Also print the CSV header.
         #[arg(long)]
         header: bool,
@@ -531,12 +542,14 @@ pub fn main() -> ExitCode {
             n,
             modulus_ratio,
             increments,
+            r_over_a,
             output,
         } => single(output, &contact_dir(), |progress| {
             examples::sphere(
                 &SphereCase {
                     n,
                     modulus_ratios: modulus_ratio,
+                    r_over_a,
                     increments,
                     fields: output.fields(),
                 },
@@ -794,12 +807,14 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             kinematics,
             repeats,
             fit_min_n,
+            sphere_configs,
             from_csv,
         } => {
             let plan = SweepPlan {
                 min,
                 max,
                 configs,
+                sphere_configs,
                 backend,
                 refactor_n,
                 r_over_a,
@@ -817,9 +832,12 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             max_element_size,
             r_over_a,
             kinematics,
+            scene,
             header,
         } => {
             let case = hycon_lab::bench::SweepCase {
+                scene: hycon_lab::bench::SweepScene::parse(&scene)
+                    .ok_or_else(|| format!("unknown scene {scene:?} (disk, sphere)"))?,
                 formulation: element.into(),
                 transition: mesh.into(),
                 n,
@@ -1351,6 +1369,7 @@ struct SweepPlan {
     min: usize,
     max: usize,
     configs: Vec<String>,
+    sphere_configs: Vec<String>,
     backend: BackendChoice,
     refactor_n: Vec<usize>,
     r_over_a: usize,
@@ -1406,20 +1425,36 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon_lab::bench::SweepCase>> 
         n *= 2;
     }
     let mut cases = Vec::new();
+    let sphere = hycon_lab::bench::SweepScene::Sphere;
+    let scenes = [
+        (
+            hycon_lab::bench::SweepScene::Disk,
+            &plan.configs,
+            plan.r_over_a,
+        ),
+        (
+            sphere,
+            &plan.sphere_configs,
+            hycon_lab::bench::SPHERE_R_OVER_A,
+        ),
+    ];
     for &n in &ns {
-        for config in &plan.configs {
-            for &backend in &usable {
-                cases.push(hycon_lab::bench::SweepCase {
-                    backend,
-                    radius_over_half_width: plan.r_over_a,
-                    kinematics: plan.kinematics,
-                    ..parse_config(config, n)?
-                });
+        for (scene, configs, r_over_a) in scenes {
+            for config in configs.iter().filter(|c| !c.is_empty()) {
+                for &backend in &usable {
+                    cases.push(hycon_lab::bench::SweepCase {
+                        scene,
+                        backend,
+                        radius_over_half_width: r_over_a,
+                        kinematics: plan.kinematics,
+                        ..parse_config(config, n)?
+                    });
+                }
             }
         }
     }
     for &n in plan.refactor_n.iter().filter(|&&n| n > 0) {
-        for config in &plan.configs {
+        for config in plan.configs.iter().filter(|c| !c.is_empty()) {
             for &backend in &usable {
                 cases.push(hycon_lab::bench::SweepCase {
                     refactor: true,

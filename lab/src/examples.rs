@@ -957,14 +957,16 @@ pub fn cattaneo_mindlin(case: &CattaneoCase, mut progress: Progress<'_>) -> Resu
     })
 }
 
-/// The axisymmetric example: Hertz's sphere on a half-space ([`SphereOnBlock`], `R / a = 32`,
-/// frictionless, small kinematics).
+/// The axisymmetric example: Hertz's sphere on a half-space ([`SphereOnBlock`], frictionless,
+/// small kinematics).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SphereCase {
     /// Elements per target contact radius (a power of two).
     pub n: usize,
     /// Modulus ratios `E_sphere / E_block`, one run each.
     pub modulus_ratios: Vec<f64>,
+    /// `R / a` of the target contact radius (32 in the main job).
+    pub r_over_a: usize,
     /// Equal increments up to Hertz's approach `a^2 / R` of the target contact radius.
     pub increments: usize,
     /// Displacement fields kept.
@@ -976,14 +978,12 @@ impl Default for SphereCase {
         SphereCase {
             n: 32,
             modulus_ratios: vec![1.0],
+            r_over_a: 32,
             increments: 3,
             fields: Fields::Every,
         }
     }
 }
-
-/// `R / a` of the sphere example.
-const SPHERE_R_OVER_A: f64 = 32.0;
 
 /// The axisymmetric example: the sphere pressed onto the half-space in `increments` equal
 /// steps of the approach up to `a^2 / R` (no calibration: the contact radius at that approach
@@ -997,12 +997,18 @@ pub fn sphere(case: &SphereCase, mut progress: Progress<'_>) -> Result<Example> 
     check_n(case.n)?;
     check_increments(case.increments)?;
     check_ratios(&case.modulus_ratios)?;
+    if case.r_over_a < 2 {
+        return Err(Error::InvalidInput(format!(
+            "R / a must be at least 2, got {}",
+            case.r_over_a
+        )));
+    }
     let mut runs = Vec::new();
     for &ratio in &case.modulus_ratios {
         let label = format!("E_sphere/E_block = {ratio:.0e}");
         let scene = SphereOnBlock {
             elements_per_radius: case.n,
-            radius_over_contact: SPHERE_R_OVER_A,
+            radius_over_contact: case.r_over_a as f64,
             modulus_ratio: ratio,
         }
         .build()?;
@@ -1096,9 +1102,9 @@ pub fn sphere(case: &SphereCase, mut progress: Progress<'_>) -> Result<Example> 
         name: "sphere".into(),
         title: format!(
             "Hertz sphere on a half-space, axisymmetric (x = r), frictionless, {} increments to \
-             a = R/{SPHERE_R_OVER_A}, n = {}, small kinematics; a from the moments of p on r dr, \
-             p0 at the axis node",
-            case.increments, case.n
+             a = R/{}, n = {}, small kinematics; a from the moments of p on r dr, p0 at the \
+             axis node",
+            case.increments, case.r_over_a, case.n
         ),
         kinematics: Kinematics::Small.name(),
         runs,
