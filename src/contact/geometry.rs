@@ -327,12 +327,11 @@ impl Hats {
         let mut out = SegmentMoments::default();
         for &(xi, gw) in self.rule() {
             let wt = gw * h * (m[0] + xi * (m[1] - m[0]));
-            let hats = self.at(xi);
             let lin = [1.0 - xi, xi];
-            for i in 0..2 {
-                out.weight[i] += wt * hats[i];
-                for j in 0..2 {
-                    out.mass[i][j] += wt * hats[i] * lin[j];
+            for (i, m) in self.at(xi).into_iter().enumerate() {
+                out.weight[i] += wt * m;
+                for (j, l) in lin.into_iter().enumerate() {
+                    out.mass[i][j] += wt * m * l;
                 }
             }
         }
