@@ -203,7 +203,7 @@ fn push_out_at_gross_slip() {
 ///   `hycon::contact::geometry`, "Nodes on the axis"): within 0.45% at n = 64 (measured
 ///   -0.39%, -0.43%, -0.44% for the three ratios; the linear hats gave -0.52%, -0.54%,
 ///   -0.54%) and falling with n. It still lags its neighbours (within 0.1%): the axis node's
-///   nodal force, Q4 and hybrid alike, is low by O(h) against theirs;
+///   equivalent nodal force, Q4 and hybrid alike, is low by O(h) against theirs;
 /// * the L2 error over `r dr` falls with n (16 -> 32 -> 64) and is below 1.5% at n = 64.
 #[test]
 fn sphere_hertz() {
