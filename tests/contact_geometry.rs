@@ -767,23 +767,15 @@ fn plane_thickness_scales_every_integral() {
     }
 }
 
-/// `integral_0^1 f` by Simpson's rule on `pieces` equal pieces (exact for cubics on each).
-fn simpson(f: &dyn Fn(f64) -> f64, pieces: usize) -> f64 {
-    (0..pieces)
-        .map(|i| {
-            let (u, v) = (i as f64 / pieces as f64, (i + 1) as f64 / pieces as f64);
-            (v - u) / 6.0 * (f(u) + 4.0 * f(0.5 * (u + v)) + f(v))
-        })
-        .sum()
-}
-
 /// Axisymmetric: `dS = 2 pi r ds`. A flat meridian `z = 0` from the axis to `r = R` (A below,
 /// `n = +z`, random spacing, its first node in r on the axis) against a non-matching, tilted
 /// B above (`z = g0 + slope r`, B's nodes at random r):
 /// * the weights sum to the disk's area `pi R^2`; a node on the axis has the weight
-///   `integral_0^h (1 - r/h) 2 pi r dr = pi h^2 / 3 > 0` and its segment's normal;
-/// * every `F^A`, `F^B` and `R_C` entry equals its integral (`M_k`, `L^B_j`, `g` linear in r,
-///   times `2 pi r`: cubics, integrated here by Simpson's rule split at B's nodes, exact);
+///   `integral_0^h (1 - (r/h)^2) 2 pi r dr = pi h^2 / 2 > 0` (the zero-slope shapes of the
+///   segment ending on the axis, `1 - (r/h)^2` and `(r/h)^2`) and its segment's normal;
+/// * every `F^A`, `F^B` and `R_C` entry equals its integral (`M_k` linear in r, quadratic on
+///   the axis segment, `L^B_j`, `g` linear, times `2 pi r`: at most quintics, integrated here
+///   by 3-point Gauss split at A's and B's nodes, exact);
 /// * row sums: `sum_j F^A_kj = weight_k`, `sum_j F^B_kj = covered weight_k`;
 /// * a constant gap is reproduced: `normal_gap = mean_distance = g0`.
 #[test]
@@ -807,7 +799,7 @@ fn axisymmetric_integrals_are_exact() {
         let axis = s.nodes.last().unwrap();
         let h = xa[1];
         assert_eq!(x[axis.node][0], 0.0);
-        assert!(close(axis.weight, PI * h * h / 3.0, EXACT * area));
+        assert!(close(axis.weight, PI * h * h / 2.0, EXACT * area));
         assert_eq!(axis.normal, [0.0, 1.0]);
         let g = |r: f64| g0 + slope * r;
         let hat = |nodes: &[f64], j: usize, r: f64| -> f64 {
@@ -821,6 +813,14 @@ fn axisymmetric_integrals_are_exact() {
                 0.0
             }
         };
+        // the multiplier's shapes: the hats, quadratic on the axis segment [0, h]
+        let shape = |k: usize, r: f64| -> f64 {
+            match k {
+                0 if r <= h => 1.0 - (r / h).powi(2),
+                1 if r <= h => (r / h).powi(2),
+                _ => hat(&xa, k, r),
+            }
+        };
         // integral over [0, R] of f(r) 2 pi r dr, split at A's and B's nodes
         let mut cuts: Vec<f64> = xa
             .iter()
@@ -830,24 +830,25 @@ fn axisymmetric_integrals_are_exact() {
             .collect();
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
+        let gauss3 = [
+            (0.5 - 0.5 * 0.6f64.sqrt(), 5.0 / 18.0),
+            (0.5, 8.0 / 18.0),
+            (0.5 + 0.5 * 0.6f64.sqrt(), 5.0 / 18.0),
+        ];
         let integral = |f: &dyn Fn(f64) -> f64| -> f64 {
             cuts.windows(2)
-                .map(|w| {
-                    let len = w[1] - w[0];
-                    len * simpson(
-                        &|u| {
-                            let r = w[0] + u * len;
-                            f(r) * 2.0 * PI * r
-                        },
-                        1,
-                    )
+                .flat_map(|w| {
+                    gauss3.map(|(u, wt)| {
+                        let r = w[0] + u * (w[1] - w[0]);
+                        wt * (w[1] - w[0]) * f(r) * 2.0 * PI * r
+                    })
                 })
                 .sum()
         };
         for node in &s.nodes {
             // A's node index in xa (ascending r)
             let ka = xa.iter().position(|&r| r == x[node.node][0]).unwrap();
-            let mk = |r: f64| hat(&xa, ka, r);
+            let mk = |r: f64| shape(ka, r);
             let scale = area;
             assert!(close(node.weight, integral(&mk), EXACT * scale));
             assert!(node.is_covered());

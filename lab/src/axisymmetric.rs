@@ -13,7 +13,7 @@
 //! solution to compare with is Lamé's for the radii actually modelled ([`ShrinkFitExact`]);
 //! for `delta / b -> 0` it tends to the textbook formula ([`shrink_fit_pressure`]).
 
-use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair};
+use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, NodeResult};
 use hycon::element::Formulation;
 use hycon::error::Result;
 use hycon::material::{Analysis, Material};
@@ -531,6 +531,9 @@ pub struct SphereComparison {
     /// `||p_h - p_H|| / ||p_H||` in L2 over `r dr` (the surface measure), `p_h` linear
     /// between the A nodes.
     pub l2_error: f64,
+    /// The same with the pressures from the equivalent nodal forces, `p_k = -n_k . f_k /
+    /// weight_k`.
+    pub l2_error_forces: f64,
     /// Nodes in contact.
     pub active: usize,
 }
@@ -573,42 +576,113 @@ impl SphereScene {
             .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
             .sum();
         let hertz = HertzSphere::new(load, 1.0, self.e_star);
-        let mut points: Vec<[f64; 2]> = nodes
-            .iter()
-            .map(|n| [self.model.mesh.nodes[n.node][0], -n.tn])
-            .collect();
-        points.sort_by(|u, v| u[0].total_cmp(&v[0]));
-        let peak = points[0][1];
-        // moments and the L2 error on r dr, exact for the piecewise-linear p_h (5-point Gauss,
-        // degree 9) and split at r = a for Hertz's square-root edge
-        let (mut m1, mut m3, mut num, mut den) = (0.0, 0.0, 0.0, 0.0);
-        for w in points.windows(2) {
-            let ([ra, pa], [rb, pb]) = (w[0], w[1]);
-            let mut cuts = vec![ra];
-            if ra < hertz.radius && hertz.radius < rb {
-                cuts.push(hertz.radius);
-            }
-            cuts.push(rb);
-            for c in cuts.windows(2) {
-                for (g, wt) in GAUSS5 {
-                    let r = c[0] + g * (c[1] - c[0]);
-                    let ph = pa + (r - ra) / (rb - ra) * (pb - pa);
-                    let d = wt * (c[1] - c[0]) * r;
-                    m1 += d * ph;
-                    m3 += d * ph * r * r;
-                    num += d * (ph - hertz.pressure(r)).powi(2);
-                    den += d * hertz.pressure(r).powi(2);
-                }
-            }
-        }
+        let sorted = |pressure: &dyn Fn(&NodeResult) -> f64| -> Vec<[f64; 2]> {
+            let mut points: Vec<[f64; 2]> = nodes
+                .iter()
+                .map(|n| [self.model.mesh.nodes[n.node][0], pressure(n)])
+                .collect();
+            points.sort_by(|u, v| u[0].total_cmp(&v[0]));
+            points
+        };
+        let points = sorted(&|n| -n.tn);
+        let from_forces =
+            sorted(&|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight);
+        let m = moments(&points, &hertz);
         Ok(SphereComparison {
             load,
             hertz,
-            peak,
-            peak_from_moments: 1.2 * m1 * m1 / m3,
-            radius: (2.5 * m3 / m1).sqrt(),
-            l2_error: (num / den).sqrt(),
+            peak: points[0][1],
+            peak_from_moments: 1.2 * m.m1 * m.m1 / m.m3,
+            radius: (2.5 * m.m3 / m.m1).sqrt(),
+            l2_error: m.l2_error,
+            l2_error_forces: moments(&from_forces, &hertz).l2_error,
             active: nodes.iter().filter(|n| n.tn < 0.0).count(),
         })
+    }
+}
+
+/// One run of [`SphereOnBlock::edge_sweep`]: the sphere pressed so that Hertz's contact
+/// radius falls at a chosen place between two A nodes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereEdgeRun {
+    /// Hertz's contact radius at the computed load, in element sizes `h = a_target / n`.
+    pub radius_over_h: f64,
+    /// The comparison with Hertz.
+    pub comparison: SphereComparison,
+}
+
+impl SphereEdgeRun {
+    /// Where the edge falls between the last node inside and the first outside, in `[0, 1)`.
+    pub fn edge_position(&self) -> f64 {
+        self.radius_over_h - self.radius_over_h.floor()
+    }
+}
+
+impl SphereOnBlock {
+    /// The comparison with Hertz against where the contact edge falls between two nodes (as
+    /// `hycon bench edge` does for the plane scene): one analysis, pressed first by Hertz's
+    /// approach `a^2 / R`, then so that Hertz's radius lies at `positions` evenly spaced
+    /// places of one element, `a_H / h = k + (j + 1/2) / positions` (the approach scaled by
+    /// `(a_H / a_1)^2`: the approach is `a^2 / R`).
+    pub fn edge_sweep(&self, positions: usize) -> Result<Vec<SphereEdgeRun>> {
+        let scene = self.build()?;
+        let mut analysis = scene.analysis(ContactOptions::default())?;
+        let f = vec![0.0; scene.model.external_forces().len()];
+        let h = scene.target / self.elements_per_radius as f64;
+        let mut press = |approach: f64| -> Result<SphereEdgeRun> {
+            analysis.increment(&f, &scene.prescribed(approach))?;
+            let comparison = scene.compare(&analysis)?;
+            Ok(SphereEdgeRun {
+                radius_over_h: comparison.hertz.radius / h,
+                comparison,
+            })
+        };
+        let approach = scene.hertz_approach();
+        let first = press(approach)?;
+        let k = first.radius_over_h.floor();
+        (0..positions)
+            .map(|j| {
+                let target = k + (j as f64 + 0.5) / positions as f64;
+                press(approach * (target / first.radius_over_h).powi(2))
+            })
+            .collect()
+    }
+}
+
+/// The moments `M1 = integral p r dr`, `M3 = integral p r^3 dr` of a pressure linear between
+/// `points` (`[r, p]`, sorted by `r`) and its relative L2 error against `hertz` on `r dr`.
+struct Moments {
+    m1: f64,
+    m3: f64,
+    l2_error: f64,
+}
+
+/// [`Moments`] of `points`: exact for the piecewise-linear pressure (5-point Gauss, degree 9),
+/// split at `r = a` for Hertz's square-root edge.
+fn moments(points: &[[f64; 2]], hertz: &HertzSphere) -> Moments {
+    let (mut m1, mut m3, mut num, mut den) = (0.0, 0.0, 0.0, 0.0);
+    for w in points.windows(2) {
+        let ([ra, pa], [rb, pb]) = (w[0], w[1]);
+        let mut cuts = vec![ra];
+        if ra < hertz.radius && hertz.radius < rb {
+            cuts.push(hertz.radius);
+        }
+        cuts.push(rb);
+        for c in cuts.windows(2) {
+            for (g, wt) in GAUSS5 {
+                let r = c[0] + g * (c[1] - c[0]);
+                let ph = pa + (r - ra) / (rb - ra) * (pb - pa);
+                let d = wt * (c[1] - c[0]) * r;
+                m1 += d * ph;
+                m3 += d * ph * r * r;
+                num += d * (ph - hertz.pressure(r)).powi(2);
+                den += d * hertz.pressure(r).powi(2);
+            }
+        }
+    }
+    Moments {
+        m1,
+        m3,
+        l2_error: (num / den).sqrt(),
     }
 }

@@ -345,9 +345,12 @@ pub fn parse_formulation(name: &str) -> Option<Formulation> {
 }
 
 /// One run of the sweep: the reference Hertz scene (frictionless, `a = R/64`, `E_disk =
-/// E_block`) with one element, mesh variant, refinement and backend.
+/// E_block`) with one element, mesh variant, refinement and backend; or Hertz's sphere beside
+/// it ([`SweepScene::Sphere`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SweepCase {
+    /// The scene.
+    pub scene: SweepScene,
     /// Element formulation.
     pub formulation: Formulation,
     /// Mesh variant.
@@ -371,10 +374,44 @@ pub struct SweepCase {
     pub kinematics: hycon::contact::iteration::Kinematics,
 }
 
+/// The scene of a sweep case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum SweepScene {
+    /// The plane disk on a block ([`crate::scene::DiskOnBlock`]): calibration increment, final
+    /// increment at the calibrated approach.
+    Disk,
+    /// Hertz's sphere on a half-space, axisymmetric ([`crate::axisymmetric::SphereOnBlock`],
+    /// `R / a` = [`SPHERE_R_OVER_A`], quadrilaterals only, equal moduli): one increment at
+    /// Hertz's approach `a^2 / R`. Its errors are over `r dr`: the half-width error is the
+    /// contact radius' from the moments, the peak error the axis node's multiplier's.
+    Sphere,
+}
+
+/// `R / a` of the sphere in the sweep (the CSV's `r_over_a` column for its rows).
+pub const SPHERE_R_OVER_A: usize = 32;
+
+impl SweepScene {
+    /// `"disk"` or `"sphere"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SweepScene::Disk => "disk",
+            SweepScene::Sphere => "sphere",
+        }
+    }
+
+    /// The scene named `name` ([`name`](Self::name)).
+    pub fn parse(name: &str) -> Option<Self> {
+        [SweepScene::Disk, SweepScene::Sphere]
+            .into_iter()
+            .find(|s| s.name() == name)
+    }
+}
+
 impl SweepCase {
     /// The case on the reference scene: hybrid elements, transition mesh, faer, factor once.
     pub fn reference(n: usize) -> Self {
         SweepCase {
+            scene: SweepScene::Disk,
             formulation: Formulation::Hybrid,
             transition: Transition::Elements,
             n,
@@ -414,6 +451,7 @@ impl SweepCase {
         }
         args.extend(["--r-over-a".into(), self.radius_over_half_width.to_string()]);
         args.extend(["--kinematics".into(), self.kinematics.name().into()]);
+        args.extend(["--scene".into(), self.scene.name().into()]);
         args
     }
 }
@@ -461,7 +499,7 @@ pub struct SweepRun {
 pub const SWEEP_CSV_HEADER: &str = "element,mesh,backend,refactor,n,max_element_size,dofs,\
 elements,contact_dofs,active_nodes,iterations,factorizations,mesh_s,assembly_s,\
 factorization_s,flexibility_s,load_solves_s,iterations_s,recovery_s,total_s,peak_rss_mib,\
-start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error,r_over_a,kinematics";
+start_rss_mib,l2_error,l2_error_forces,half_width_error,peak_error,r_over_a,kinematics,scene";
 
 impl SweepRun {
     /// Memory of the run itself: peak minus the process' memory before it started, MiB.
@@ -483,7 +521,7 @@ impl SweepRun {
             .collect();
         format!(
             "{},{},{},{},{},{cap},{},{},{},{},{},{},{:.6},{phases}\
-             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e},{},{}",
+             {:.6},{:.1},{:.1},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{}",
             c.formulation.name(),
             mesh_name(c.transition),
             c.backend.name(),
@@ -505,22 +543,28 @@ impl SweepRun {
             self.peak_error,
             c.radius_over_half_width,
             c.kinematics.name(),
+            c.scene.name(),
         )
     }
 
-    /// Parse a line written by [`SweepRun::csv_row`] (also without the last column,
-    /// `kinematics`, which is then finite, as in the files written before it existed, nor the
-    /// one before it, `r_over_a`, which is then 64).
+    /// Parse a line written by [`SweepRun::csv_row`] (also without the last column, `scene`,
+    /// which is then the disk, nor the one before it, `kinematics`, which is then finite, as in
+    /// the files written before they existed, nor the one before that, `r_over_a`, which is
+    /// then 64).
     pub fn from_csv_row(line: &str) -> Result<SweepRun> {
         let bad = |what: &str| Error::InvalidInput(format!("sweep CSV row {line:?}: {what}"));
         let f: Vec<&str> = line.trim().split(',').collect();
         let columns = SWEEP_CSV_HEADER.split(',').count();
-        if !(columns - 2..=columns).contains(&f.len()) {
+        if !(columns - 3..=columns).contains(&f.len()) {
             return Err(bad("wrong number of columns"));
         }
         let num = |i: usize| -> Result<f64> { f[i].parse().map_err(|_| bad(f[i])) };
         let int = |i: usize| -> Result<usize> { f[i].parse().map_err(|_| bad(f[i])) };
         let case = SweepCase {
+            scene: match f.get(28) {
+                Some(s) => SweepScene::parse(s).ok_or_else(|| bad(s))?,
+                None => SweepScene::Disk,
+            },
             formulation: parse_formulation(f[0]).ok_or_else(|| bad(f[0]))?,
             transition: parse_mesh(f[1]).ok_or_else(|| bad(f[1]))?,
             backend: parse_backend(f[2]).ok_or_else(|| bad(f[2]))?,
@@ -584,6 +628,9 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
             case.backend.name()
         )));
     }
+    if case.scene == SweepScene::Sphere {
+        return sphere_sweep_run(case);
+    }
     let mib = |b: Option<u64>| b.map_or(f64::NAN, |b| b as f64 / 1048576.0);
     let start_rss = mib(current_memory());
     let clock = Instant::now();
@@ -638,6 +685,74 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
     })
 }
 
+/// [`sweep_run`] of the sphere ([`SweepScene::Sphere`]): build the scene (timed as `mesh`),
+/// factor and condense, one increment at Hertz's approach `a^2 / R` (no calibration: the
+/// contact radius there is within 0.5% of the target), the full displacement field.
+fn sphere_sweep_run(case: &SweepCase) -> Result<SweepRun> {
+    use crate::axisymmetric::SphereOnBlock;
+    use hycon::contact::iteration::ContactOptions;
+    if case.transition != Transition::Quads
+        || case.formulation == Formulation::PianSumihara
+        || case.max_element_size.is_some()
+    {
+        return Err(Error::InvalidInput(format!(
+            "the sphere runs on quadrilaterals with the hybrid or Q4 element, no size cap (got \
+             {})",
+            case.config()
+        )));
+    }
+    let mib = |b: Option<u64>| b.map_or(f64::NAN, |b| b as f64 / 1048576.0);
+    let start_rss = mib(current_memory());
+    let clock = Instant::now();
+    let mut scene = SphereOnBlock {
+        elements_per_radius: case.n,
+        radius_over_contact: SPHERE_R_OVER_A as f64,
+        modulus_ratio: 1.0,
+    }
+    .build()?;
+    scene.model.formulation = case.formulation;
+    let mesh = clock.elapsed().as_secs_f64();
+    let model = &scene.model;
+    let prescribed: std::collections::HashSet<(usize, usize)> =
+        model.prescribed.iter().map(|p| (p.node, p.dir)).collect();
+    let dofs = 2 * model.mesh.n_nodes() - prescribed.len();
+    let mut contact_nodes: Vec<usize> = scene.pair.a.iter().chain(&scene.pair.b).copied().collect();
+    contact_nodes.sort_unstable();
+    contact_nodes.dedup();
+    let mut analysis = scene.analysis(ContactOptions {
+        backend: case.backend,
+        kinematics: case.kinematics,
+        ..Default::default()
+    })?;
+    analysis.set_refactor_each_iteration(case.refactor);
+    let f = vec![0.0; 2 * model.mesh.n_nodes()];
+    analysis.increment(&f, &scene.prescribed(scene.hertz_approach()))?;
+    analysis.displacement()?;
+    let total = clock.elapsed().as_secs_f64();
+    let c = scene.compare(&analysis)?;
+    Ok(SweepRun {
+        case: SweepCase {
+            radius_over_half_width: SPHERE_R_OVER_A,
+            ..*case
+        },
+        dofs,
+        elements: model.mesh.n_elements(),
+        contact_dofs: 2 * contact_nodes.len(),
+        active: c.active,
+        iterations: analysis.records().len(),
+        factorizations: analysis.factorizations(),
+        mesh,
+        timings: analysis.timings(),
+        total,
+        peak_rss: mib(peak_memory()),
+        start_rss,
+        l2_error: c.l2_error,
+        l2_error_forces: c.l2_error_forces,
+        half_width_error: c.radius / c.hertz.radius - 1.0,
+        peak_error: c.peak / c.hertz.peak - 1.0,
+    })
+}
+
 /// Run `case` in a fresh child process of the executable `exe` (the hidden subcommand `bench
 /// sweep-one`, which prints one CSV row), so that the peak memory is the case's own.
 pub fn sweep_run_in_child(exe: &std::path::Path, case: &SweepCase) -> Result<SweepRun> {
@@ -676,11 +791,12 @@ pub fn sweep_csv(runs: &[SweepRun]) -> String {
 /// Parse a CSV written by [`sweep_csv`].
 pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    // files written before the last columns existed (kinematics, then r_over_a)
-    let older = SWEEP_CSV_HEADER.trim_end_matches(",kinematics");
+    // files written before the last columns existed (scene, kinematics, then r_over_a)
+    let old = SWEEP_CSV_HEADER.trim_end_matches(",scene");
+    let older = old.trim_end_matches(",kinematics");
     let oldest = older.trim_end_matches(",r_over_a");
     match lines.next() {
-        Some(h) if [SWEEP_CSV_HEADER, older, oldest].contains(&h.trim()) => {}
+        Some(h) if [SWEEP_CSV_HEADER, old, older, oldest].contains(&h.trim()) => {}
         _ => {
             return Err(Error::InvalidInput(
                 "not a sweep CSV (header differs)".into(),
@@ -690,8 +806,9 @@ pub fn parse_sweep_csv(text: &str) -> Result<Vec<SweepRun>> {
     lines.map(SweepRun::from_csv_row).collect()
 }
 
-/// Series key: kinematics, `R / a`, element, mesh, backend, refactor (one line in the plots).
-fn series_key(c: &SweepCase) -> (&'static str, usize, usize, u8, usize, bool) {
+/// Series key: scene, kinematics, `R / a`, element, mesh, backend, refactor (one line in the
+/// plots).
+fn series_key(c: &SweepCase) -> (SweepScene, &'static str, usize, usize, u8, usize, bool) {
     let f = Formulation::ALL
         .iter()
         .position(|&g| g == c.formulation)
@@ -702,6 +819,7 @@ fn series_key(c: &SweepCase) -> (&'static str, usize, usize, u8, usize, bool) {
     };
     let b = BACKENDS.iter().position(|&g| g == c.backend).unwrap_or(0);
     (
+        c.scene,
         c.kinematics.name(),
         c.radius_over_half_width,
         f,
@@ -711,14 +829,18 @@ fn series_key(c: &SweepCase) -> (&'static str, usize, usize, u8, usize, bool) {
     )
 }
 
-/// Name of a series: `element/mesh backend` (and `, finite kinematics`, `, R/a = ...` when not
-/// 64, `, refactor each iteration`).
+/// Name of a series: `element/mesh backend` (`sphere element/mesh backend` for the sphere;
+/// and `, finite kinematics`, `, R/a = ...` when not 64 on the disk, `, refactor each
+/// iteration`).
 pub fn series_name(c: &SweepCase) -> String {
     let mut s = format!("{} {}", c.config(), c.backend.name());
+    if c.scene == SweepScene::Sphere {
+        s = format!("sphere {s}, R/a = {}", c.radius_over_half_width);
+    }
     if c.kinematics == hycon::contact::iteration::Kinematics::Finite {
         s += ", finite kinematics";
     }
-    if c.radius_over_half_width != 64 {
+    if c.radius_over_half_width != 64 && c.scene == SweepScene::Disk {
         s += &format!(", R/a = {}", c.radius_over_half_width);
     }
     if c.refactor {
@@ -872,7 +994,8 @@ pub fn sweep_summary(runs: &[SweepRun], fit_min_n: usize) -> String {
                     .iter()
                     .find(|p| {
                         let c = &p[0].case;
-                        c.formulation == r.case.formulation
+                        c.scene == r.case.scene
+                            && c.formulation == r.case.formulation
                             && c.transition == r.case.transition
                             && c.backend == r.case.backend
                             && c.radius_over_half_width == r.case.radius_over_half_width
@@ -912,6 +1035,10 @@ const FONT: &str = "sans-serif";
 fn series_colour(c: &SweepCase) -> plotters::style::RGBColor {
     use plotters::style::RGBColor;
     let base = match (c.formulation, c.transition) {
+        _ if c.scene == SweepScene::Sphere => match c.formulation {
+            Formulation::Q4 => RGBColor(230, 140, 20),
+            _ => RGBColor(140, 60, 170),
+        },
         (Formulation::Hybrid, Transition::Elements) => RGBColor(31, 90, 200),
         (Formulation::Hybrid, Transition::Quads) => RGBColor(0, 160, 190),
         (Formulation::PianSumihara, _) => RGBColor(40, 150, 40),
@@ -1043,7 +1170,7 @@ pub fn sweep_error_time_svg(runs: &[SweepRun]) -> Plot<String> {
         root.fill(&WHITE)?;
         log_panel(
             &root,
-            "Hertz scene: L2 pressure error against total run time (dots labelled n = a/h)",
+            "Hertz scenes (disk; sphere, L2 on r dr): L2 pressure error against total run time (n = a/h)",
             (
                 "total time per analysis, s",
                 "L2 error of the contact pressure, %",

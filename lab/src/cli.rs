@@ -6,7 +6,9 @@ use hycon::contact::iteration::Kinematics;
 use hycon::element::Formulation;
 use hycon::material::Analysis;
 use hycon_lab::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
-use hycon_lab::examples::{self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase};
+use hycon_lab::examples::{
+    self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase, SphereCase,
+};
 use hycon_lab::report;
 use serde::Serialize;
 use std::io::Write;
@@ -35,8 +37,9 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// The main job (also the default): the four contact examples on the disk-on-block scene
-    /// (Hertz for three modulus ratios, frictionless and frictional sliding, Cattaneo-Mindlin),
-    /// tables against the closed forms, the time split, SVG plots, VTU fields and summary.json.
+    /// (Hertz for three modulus ratios, frictionless and frictional sliding, Cattaneo-Mindlin)
+    /// and the axisymmetric one (Hertz's sphere), tables against the closed forms, the time
+    /// split, SVG plots, VTU fields and summary.json.
     Contact {
         /// Elements per contact half-width (a power of two).
         #[arg(long, default_value_t = 32)]
@@ -83,6 +86,24 @@ enum Command {
         /// only for slides much shorter than an element).
         #[arg(long, value_enum, default_value_t = KinematicsChoice::Finite)]
         kinematics: KinematicsChoice,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Hertz's sphere on a half-space, axisymmetric (frictionless, small kinematics):
+    /// increments of the approach up to a^2/R of the target contact radius a.
+    Sphere {
+        /// Elements per contact radius (a power of two).
+        #[arg(long, default_value_t = 32)]
+        n: usize,
+        /// E_sphere / E_block, one run each (comma-separated or repeated).
+        #[arg(long, value_delimiter = ',', num_args = 1.., default_values_t = [1.0])]
+        modulus_ratio: Vec<f64>,
+        /// Displacement increments up to a^2/R.
+        #[arg(long, default_value_t = 3)]
+        increments: usize,
+        /// R / a of the target contact radius.
+        #[arg(long, default_value_t = 32)]
+        r_over_a: usize,
         #[command(flatten)]
         output: Output,
     },
@@ -252,6 +273,19 @@ enum Bench {
         #[arg(long, default_value_t = 8)]
         positions: usize,
     },
+    /// The same for Hertz's sphere (axisymmetric, frictionless, small kinematics, equal
+    /// moduli): the L2 error over r dr against where the contact edge falls, per R/a.
+    SphereEdge {
+        /// Elements per target contact radius, comma separated (powers of two).
+        #[arg(long, value_delimiter = ',', default_values_t = [16, 32, 64])]
+        n: Vec<usize>,
+        /// R / a, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [32, 64])]
+        r_over_a: Vec<usize>,
+        /// Edge positions per element.
+        #[arg(long, default_value_t = 8)]
+        positions: usize,
+    },
     /// What skipping unneeded work saves, on the reference Hertz scene (frictionless, a = R/64,
     /// calibration + 3 increments): each figure the fastest of --repeats runs.
     Skip {
@@ -264,8 +298,9 @@ enum Bench {
     },
     /// Run time against error: the reference Hertz scene (frictionless, a = R/64, calibration
     /// increment + final increment + full-field recovery) for each element / mesh variant /
-    /// backend and n = min, 2 min, ..., max elements per half-width, each run in a fresh child
-    /// process (its own peak memory). Writes sweep.csv, sweep_error_time.svg,
+    /// backend and n = min, 2 min, ..., max elements per half-width, and Hertz's sphere beside
+    /// it (axisymmetric, a = R/32, one increment at a^2/R + recovery), each run in a fresh
+    /// child process (its own peak memory). Writes sweep.csv, sweep_error_time.svg,
     /// sweep_time_dofs.svg and sweep_summary.md to --out [default: docs/bench].
     Sweep {
         /// Smallest elements per half-width (a power of two).
@@ -301,6 +336,11 @@ enum Bench {
         /// Growth exponents are fitted over the runs with at least this n.
         #[arg(long, default_value_t = 16)]
         fit_min_n: usize,
+        /// Hertz's sphere (axisymmetric, R/a = 32, quadrilaterals) beside the disk: its
+        /// element/mesh configurations (hybrid/quads, q4/quads; empty: none), same n and
+        /// backends.
+        #[arg(long, value_delimiter = ',', default_values = ["hybrid/quads"])]
+        sphere_configs: Vec<String>,
         /// Do not run anything: re-read this sweep CSV and rewrite the plots and the summary.
         #[arg(long, value_name = "CSV")]
         from_csv: Option<PathBuf>,
@@ -324,6 +364,8 @@ enum Bench {
         r_over_a: usize,
         #[arg(long, value_enum, default_value_t = KinematicsChoice::Small)]
         kinematics: KinematicsChoice,
+        #[arg(long, default_value = "disk")]
+        scene: String,
         /// Also print the CSV header.
         #[arg(long)]
         header: bool,
@@ -506,6 +548,24 @@ pub fn main() -> ExitCode {
                     kinematics: kinematics.into(),
                     fields: output.fields(),
                     ..Default::default()
+                },
+                progress,
+            )
+        }),
+        Command::Sphere {
+            n,
+            modulus_ratio,
+            increments,
+            r_over_a,
+            output,
+        } => single(output, &contact_dir(), |progress| {
+            examples::sphere(
+                &SphereCase {
+                    n,
+                    modulus_ratios: modulus_ratio,
+                    r_over_a,
+                    increments,
+                    fields: output.fields(),
                 },
                 progress,
             )
@@ -751,6 +811,51 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
     Ok(())
 }
 
+/// `bench sphere-edge`: a row per run, a summary per n and R/a, the rate over n per R/a.
+fn sphere_edge(ns: &[usize], r_over_a: &[usize], positions: usize) -> AnyResult {
+    println!(
+        "{:>4} {:>4} {:>8} {:>5} {:>8} {:>8} {:>8} {:>8}",
+        "R/a", "n", "a_H/h", "edge", "L2 %", "a %", "p0 %", "p(0) %"
+    );
+    for &ratio in r_over_a {
+        let mut means = Vec::new();
+        for &n in ns {
+            let runs = hycon_lab::axisymmetric::SphereOnBlock {
+                elements_per_radius: n,
+                radius_over_contact: ratio as f64,
+                modulus_ratio: 1.0,
+            }
+            .edge_sweep(positions)?;
+            for r in &runs {
+                let c = &r.comparison;
+                println!(
+                    "{ratio:>4} {n:>4} {:>8.3} {:>5.2} {:>8.4} {:>+8.4} {:>+8.4} {:>+8.4}",
+                    r.radius_over_h,
+                    r.edge_position(),
+                    100.0 * c.l2_error,
+                    100.0 * (c.radius / c.hertz.radius - 1.0),
+                    100.0 * (c.peak_from_moments / c.hertz.peak - 1.0),
+                    100.0 * (c.peak / c.hertz.peak - 1.0),
+                );
+            }
+            let l2: Vec<f64> = runs.iter().map(|r| 100.0 * r.comparison.l2_error).collect();
+            let mean = l2.iter().sum::<f64>() / l2.len() as f64;
+            let (lo, hi) = l2
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(l, h), x| (l.min(*x), h.max(*x)));
+            println!("R/a = {ratio}, n = {n}: L2 mean {mean:.3}% (min {lo:.3}, max {hi:.3})");
+            means.push((n as f64, mean));
+        }
+        if let Some((rate, _, _)) = hycon_lab::bench::fit_power(&means) {
+            println!(
+                "R/a = {ratio}: rate of the mean over n (least squares) {:.2}",
+                -rate
+            );
+        }
+    }
+    Ok(())
+}
+
 fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
     let out = out.unwrap_or(Path::new("docs/bench"));
     match what {
@@ -770,12 +875,14 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             kinematics,
             repeats,
             fit_min_n,
+            sphere_configs,
             from_csv,
         } => {
             let plan = SweepPlan {
                 min,
                 max,
                 configs,
+                sphere_configs,
                 backend,
                 refactor_n,
                 r_over_a,
@@ -793,9 +900,12 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             max_element_size,
             r_over_a,
             kinematics,
+            scene,
             header,
         } => {
             let case = hycon_lab::bench::SweepCase {
+                scene: hycon_lab::bench::SweepScene::parse(&scene)
+                    .ok_or_else(|| format!("unknown scene {scene:?} (disk, sphere)"))?,
                 formulation: element.into(),
                 transition: mesh.into(),
                 n,
@@ -840,6 +950,11 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,
         Bench::Edge { n, positions } => edge(&n, positions)?,
+        Bench::SphereEdge {
+            n,
+            r_over_a,
+            positions,
+        } => sphere_edge(&n, &r_over_a, positions)?,
         Bench::Presses {
             count,
             seed,
@@ -988,6 +1103,14 @@ fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
             },
             Some(&mut progress),
         )?,
+        examples::sphere(
+            &SphereCase {
+                n,
+                fields: output.fields(),
+                ..Default::default()
+            },
+            Some(&mut progress),
+        )?,
     ];
     let seconds = start.elapsed().as_secs_f64();
     let mut files = Vec::new();
@@ -1110,10 +1233,16 @@ fn print_run(run: &Run) {
         s.poisson,
         s.friction
     );
-    println!(
-        "   calibration: trial approach {:.4e} ({} iterations) -> approach {:.4e} (Hertz load for a)",
-        run.calibration.trial_approach, run.calibration.iterations, run.calibration.approach
-    );
+    match &run.calibration {
+        Some(c) => println!(
+            "   calibration: trial approach {:.4e} ({} iterations) -> approach {:.4e} (Hertz load for a)",
+            c.trial_approach, c.iterations, c.approach
+        ),
+        None => println!(
+            "   approach a^2/R = {:.4e} (Hertz's for the target a; no calibration)",
+            a * a / s.radius
+        ),
+    }
     let mut head = format!(
         "   {:>3} {:>5} {:>9} {:>7} | {:>3} {:>4} {:>4} | {:>10} {:>8} {:>8} {:>8} {:>8} | {:>7}",
         "inc",
@@ -1308,6 +1437,7 @@ struct SweepPlan {
     min: usize,
     max: usize,
     configs: Vec<String>,
+    sphere_configs: Vec<String>,
     backend: BackendChoice,
     refactor_n: Vec<usize>,
     r_over_a: usize,
@@ -1363,20 +1493,36 @@ fn sweep_cases(plan: &SweepPlan) -> AnyResult<Vec<hycon_lab::bench::SweepCase>> 
         n *= 2;
     }
     let mut cases = Vec::new();
+    let sphere = hycon_lab::bench::SweepScene::Sphere;
+    let scenes = [
+        (
+            hycon_lab::bench::SweepScene::Disk,
+            &plan.configs,
+            plan.r_over_a,
+        ),
+        (
+            sphere,
+            &plan.sphere_configs,
+            hycon_lab::bench::SPHERE_R_OVER_A,
+        ),
+    ];
     for &n in &ns {
-        for config in &plan.configs {
-            for &backend in &usable {
-                cases.push(hycon_lab::bench::SweepCase {
-                    backend,
-                    radius_over_half_width: plan.r_over_a,
-                    kinematics: plan.kinematics,
-                    ..parse_config(config, n)?
-                });
+        for (scene, configs, r_over_a) in scenes {
+            for config in configs.iter().filter(|c| !c.is_empty()) {
+                for &backend in &usable {
+                    cases.push(hycon_lab::bench::SweepCase {
+                        scene,
+                        backend,
+                        radius_over_half_width: r_over_a,
+                        kinematics: plan.kinematics,
+                        ..parse_config(config, n)?
+                    });
+                }
             }
         }
     }
     for &n in plan.refactor_n.iter().filter(|&&n| n > 0) {
-        for config in &plan.configs {
+        for config in plan.configs.iter().filter(|c| !c.is_empty()) {
             for &backend in &usable {
                 cases.push(hycon_lab::bench::SweepCase {
                     refactor: true,

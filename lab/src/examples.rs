@@ -10,13 +10,16 @@
 //! * [`cattaneo_mindlin`]: identical materials, pressed, then the disk top moved tangentially in
 //!   small increments (step sizes chosen from the measured tangential stiffness) until
 //!   `Q / (mu P)` passes a target; the stick zone is compared with `c = a sqrt(1 - Q/(mu P))`.
+//! * [`sphere`]: the axisymmetric one, Hertz's sphere on a half-space
+//!   ([`crate::axisymmetric::SphereOnBlock`]), pressed in `m` increments.
 //!
-//! Every example starts with the scene's calibration: one trial increment at the approach
+//! Every plane example starts with the scene's calibration: one trial increment at the approach
 //! `a^2 / R`, taken on the same analysis (so its time is in the timings, and the first
 //! increment listed continues from it). Each increment keeps the Hertz comparison, the nodal
 //! pressure and shear along the contact with the closed forms at the same `x`, the iteration and
 //! node counts, `Q/P`, and its time; each run keeps the time split of the analysis.
 
+use crate::axisymmetric::SphereOnBlock;
 use crate::scene::{DiskOnBlock, HertzComparison, Scene};
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState, Timings,
@@ -163,8 +166,8 @@ pub struct Run {
     pub tag: String,
     /// The scene, with every number.
     pub setup: Setup,
-    /// The calibration trial increment.
-    pub calibration: Calibration,
+    /// The calibration trial increment (`None` for the sphere, pressed by Hertz's approach).
+    pub calibration: Option<Calibration>,
     /// The increments of the loading path, in order.
     pub increments: Vec<Increment>,
     /// Where the time went (whole analysis, calibration included).
@@ -572,7 +575,7 @@ impl Path {
             info.iterations,
             seconds,
             &results,
-            &comparison,
+            (comparison.load, (&comparison).into()),
             self.setup.friction,
             displacement,
         );
@@ -603,7 +606,7 @@ impl Path {
             label: self.label,
             tag: self.tag,
             setup: self.setup,
-            calibration: self.calibration,
+            calibration: Some(self.calibration),
             increments: self.increments,
             timings,
             model: self.analysis.model()?.clone(),
@@ -621,20 +624,19 @@ fn evaluate(
     iterations: usize,
     seconds: f64,
     results: &[NodeResult],
-    comparison: &HertzComparison,
+    (load, errors): (f64, HertzErrors),
     friction: f64,
     displacement: Vec<f64>,
 ) -> Increment {
-    let load = comparison.load;
     let tangential_load: f64 = results.iter().map(|n| n.force[0]).sum();
     let ratio = (friction > 0.0).then(|| {
         let r = tangential_load / (friction * load);
         if r.abs() < 1e-9 { 0.0 } else { r }
     });
-    let hertz = comparison.hertz;
+    let hertz = errors;
     let c = ratio.map_or(0.0, |r| hertz.half_width * (1.0 - r.abs().min(1.0)).sqrt());
     let closed_form = ClosedForm {
-        centre: comparison.centre,
+        centre: errors.centre,
         half_width: hertz.half_width,
         peak: hertz.peak,
         friction,
@@ -712,7 +714,7 @@ fn evaluate(
         tangential_load,
         q_over_p: tangential_load / load,
         q_over_mu_p: ratio,
-        hertz: comparison.into(),
+        hertz: errors,
         closed_form,
         shear_l2_error,
         stick_zone,
@@ -746,6 +748,18 @@ fn check_increments(m: usize) -> Result<()> {
     Ok(())
 }
 
+fn check_ratios(ratios: &[f64]) -> Result<()> {
+    if ratios.is_empty() {
+        return Err(Error::InvalidInput("no modulus ratio given".into()));
+    }
+    match ratios.iter().find(|r| !(r.is_finite() && **r > 0.0)) {
+        Some(ratio) => Err(Error::InvalidInput(format!(
+            "modulus ratio must be finite and > 0, got {ratio}"
+        ))),
+        None => Ok(()),
+    }
+}
+
 fn check_friction(mu: f64) -> Result<()> {
     if !(mu.is_finite() && mu >= 0.0) {
         return Err(Error::InvalidInput(format!(
@@ -760,16 +774,9 @@ fn check_friction(mu: f64) -> Result<()> {
 pub fn hertz(case: &HertzCase, mut progress: Progress<'_>) -> Result<Example> {
     check_n(case.n)?;
     check_increments(case.increments)?;
-    if case.modulus_ratios.is_empty() {
-        return Err(Error::InvalidInput("no modulus ratio given".into()));
-    }
+    check_ratios(&case.modulus_ratios)?;
     let mut runs = Vec::new();
     for &ratio in &case.modulus_ratios {
-        if !(ratio.is_finite() && ratio > 0.0) {
-            return Err(Error::InvalidInput(format!(
-                "modulus ratio must be finite and > 0, got {ratio}"
-            )));
-        }
         let def = DiskOnBlock {
             elements_per_half_width: case.n,
             modulus_ratio: ratio,
@@ -947,5 +954,159 @@ pub fn cattaneo_mindlin(case: &CattaneoCase, mut progress: Progress<'_>) -> Resu
         ),
         kinematics: case.kinematics.name(),
         runs: vec![path.finish()?],
+    })
+}
+
+/// The axisymmetric example: Hertz's sphere on a half-space ([`SphereOnBlock`], frictionless,
+/// small kinematics).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SphereCase {
+    /// Elements per target contact radius (a power of two).
+    pub n: usize,
+    /// Modulus ratios `E_sphere / E_block`, one run each.
+    pub modulus_ratios: Vec<f64>,
+    /// `R / a` of the target contact radius (32 in the main job).
+    pub r_over_a: usize,
+    /// Equal increments up to Hertz's approach `a^2 / R` of the target contact radius.
+    pub increments: usize,
+    /// Displacement fields kept.
+    pub fields: Fields,
+}
+
+impl Default for SphereCase {
+    fn default() -> Self {
+        SphereCase {
+            n: 32,
+            modulus_ratios: vec![1.0],
+            r_over_a: 32,
+            increments: 3,
+            fields: Fields::Every,
+        }
+    }
+}
+
+/// The axisymmetric example: the sphere pressed onto the half-space in `increments` equal
+/// steps of the approach up to `a^2 / R` (no calibration: the contact radius at that approach
+/// is within 0.5% of the target), one run per modulus ratio. Each increment is compared with
+/// Hertz at its computed load (full circle): the half-width columns hold the contact radius
+/// from the pressure's moments on `r dr` ([`SphereComparison::radius`]), the peak columns the
+/// multiplier of the node on the axis, the L2 errors are over `r dr`.
+///
+/// [`SphereComparison::radius`]: crate::axisymmetric::SphereComparison::radius
+pub fn sphere(case: &SphereCase, mut progress: Progress<'_>) -> Result<Example> {
+    check_n(case.n)?;
+    check_increments(case.increments)?;
+    check_ratios(&case.modulus_ratios)?;
+    if case.r_over_a < 2 {
+        return Err(Error::InvalidInput(format!(
+            "R / a must be at least 2, got {}",
+            case.r_over_a
+        )));
+    }
+    let mut runs = Vec::new();
+    for &ratio in &case.modulus_ratios {
+        let label = format!("E_sphere/E_block = {ratio:.0e}");
+        let scene = SphereOnBlock {
+            elements_per_radius: case.n,
+            radius_over_contact: case.r_over_a as f64,
+            modulus_ratio: ratio,
+        }
+        .build()?;
+        let mesh = &scene.model.mesh;
+        let setup = Setup {
+            radius: 1.0,
+            target_half_width: scene.target,
+            elements_per_half_width: case.n,
+            element_size: scene.target / case.n as f64,
+            modulus_ratio: ratio,
+            block_modulus: scene.model.materials[0].youngs,
+            poisson: scene.model.materials[0].poisson,
+            friction: 0.0,
+            e_star: scene.e_star,
+            nodes: mesh.n_nodes(),
+            elements: mesh.n_elements(),
+            dofs: 2 * mesh.n_nodes(),
+            contact_nodes: [scene.pair.a.len(), scene.pair.b.len()],
+        };
+        say(&mut progress, || {
+            format!(
+                "{label}: {} nodes, {} elements; factoring K",
+                setup.nodes, setup.elements
+            )
+        });
+        let mut analysis = scene.analysis(ContactOptions::default())?;
+        let f = vec![0.0; setup.dofs];
+        let mut increments = Vec::new();
+        for k in 1..=case.increments {
+            let approach = scene.hertz_approach() * k as f64 / case.increments as f64;
+            let clock = Instant::now();
+            let info = analysis.increment(&f, &scene.prescribed(approach))?;
+            let seconds = clock.elapsed().as_secs_f64();
+            let results = analysis.node_results(0)?;
+            let c = scene.compare(&analysis)?;
+            let tn: f64 = results.iter().map(|n| n.tn.abs()).sum();
+            let errors = HertzErrors {
+                half_width: c.hertz.radius,
+                peak: c.hertz.peak,
+                centre: 0.0,
+                measured_half_width: c.radius,
+                measured_peak: c.peak,
+                half_width_error: c.radius / c.hertz.radius - 1.0,
+                peak_error: c.peak / c.hertz.peak - 1.0,
+                l2_error: c.l2_error,
+                l2_error_forces: c.l2_error_forces,
+                tangential_ratio: results.iter().map(|n| n.ts.abs()).sum::<f64>() / tn,
+            };
+            let displacement = match case.fields {
+                Fields::Every => analysis.displacement()?.to_vec(),
+                Fields::Final | Fields::None => Vec::new(),
+            };
+            let increment = evaluate(
+                k,
+                Phase::Press,
+                approach,
+                0.0,
+                info.iterations,
+                seconds,
+                &results,
+                (c.load, errors),
+                0.0,
+                displacement,
+            );
+            say(&mut progress, || {
+                format!(
+                    "{label}: increment {k} converged in {} iterations, {} active, {seconds:.3} s",
+                    increment.iterations, increment.active
+                )
+            });
+            increments.push(increment);
+        }
+        if case.fields == Fields::Final
+            && let Some(last) = increments.last_mut()
+        {
+            last.displacement = analysis.displacement()?.to_vec();
+        }
+        let qp = scene.prescribed(scene.hertz_approach());
+        let timings = time_split(&mut analysis, case.increments, &f, &qp)?;
+        runs.push(Run {
+            label,
+            tag: format!("ratio-{ratio:.0e}"),
+            setup,
+            calibration: None,
+            increments,
+            timings,
+            model: analysis.model()?.clone(),
+        });
+    }
+    Ok(Example {
+        name: "sphere".into(),
+        title: format!(
+            "Hertz sphere on a half-space, axisymmetric (x = r), frictionless, {} increments to \
+             a = R/{}, n = {}, small kinematics; a from the moments of p on r dr, p0 at the \
+             axis node",
+            case.increments, case.r_over_a, case.n
+        ),
+        kinematics: Kinematics::Small.name(),
+        runs,
     })
 }

@@ -2,6 +2,7 @@
 //! output, and error handling.
 
 use hycon::contact::iteration::Kinematics;
+use hycon_lab::bench::SweepScene;
 use hycon_lab::scene::DiskOnBlock;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -264,6 +265,67 @@ fn slide_writes_an_svg_and_a_vtu_that_parses_back() {
     assert!(array("displacement")[3 * top + 1] < 0.0);
 }
 
+/// `hycon sphere` (the main job's axisymmetric example) prints its table and writes the
+/// pressure plot and the meridian section: every node and element of the sphere scene, the
+/// hoop stress as `sz` in the von Mises stress, the sphere's top moved down.
+#[test]
+fn sphere_writes_an_svg_and_a_vtu_of_the_meridian_section() {
+    let dir = Scratch::new("sphere");
+    let out = hycon(&[
+        "sphere",
+        "--n",
+        "4",
+        "--increments",
+        "2",
+        "--out",
+        dir.arg(),
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains("== sphere") && stdout.contains("no calibration"),
+        "{stdout}"
+    );
+    let svg = std::fs::read_to_string(dir.path().join("sphere.svg")).expect("svg");
+    assert!(
+        svg.contains("x / a") && svg.contains("p / p0"),
+        "axes labelled"
+    );
+    let scene = hycon_lab::axisymmetric::SphereOnBlock {
+        elements_per_radius: 4,
+        radius_over_contact: 32.0,
+        modulus_ratio: 1.0,
+    }
+    .build()
+    .unwrap();
+    let mesh = &scene.model.mesh;
+    let text = std::fs::read_to_string(dir.path().join("sphere-ratio-1e0.vtu")).expect("vtu");
+    let xml = parse_xml(&text);
+    let piece = xml.elements.iter().find(|e| e.0 == "Piece").expect("Piece");
+    assert_eq!(attr(&piece.1, "NumberOfPoints"), mesh.n_nodes().to_string());
+    assert_eq!(
+        attr(&piece.1, "NumberOfCells"),
+        mesh.n_elements().to_string()
+    );
+    let array = |name: &str| {
+        xml.arrays
+            .iter()
+            .find(|(a, _)| attr(a, "Name") == name)
+            .map(|(_, v)| v)
+            .unwrap_or_else(|| panic!("no DataArray {name}"))
+    };
+    assert!(
+        array("von_mises")
+            .iter()
+            .all(|v| v.is_finite() && *v >= 0.0)
+    );
+    assert!(array("displacement")[3 * scene.top[0] + 1] < 0.0);
+}
+
 #[test]
 fn no_files_writes_nothing() {
     let dir = Scratch::new("nofiles");
@@ -323,7 +385,19 @@ fn bench_sweep_runs_at_tiny_sizes_and_writes_the_csv_and_plots() {
     let csv = std::fs::read_to_string(dir.path().join("sweep.csv")).expect("sweep.csv");
     let runs = hycon_lab::bench::parse_sweep_csv(&csv).expect("the CSV parses back");
     let plain: Vec<_> = runs.iter().filter(|r| !r.case.refactor).collect();
-    assert_eq!(plain.len(), 4, "2 configurations x n = 2, 4:\n{csv}");
+    let sphere = |r: &hycon_lab::bench::SweepRun| r.case.scene == SweepScene::Sphere;
+    assert_eq!(
+        plain.len(),
+        6,
+        "(2 configurations + the sphere) x n = 2, 4:\n{csv}"
+    );
+    assert_eq!(plain.iter().filter(|r| sphere(r)).count(), 2, "{csv}");
+    assert!(
+        runs.iter()
+            .filter(|r| sphere(r))
+            .all(|r| r.case.radius_over_half_width == 32 && !r.case.refactor),
+        "{csv}"
+    );
     for r in &runs {
         assert!(
             r.dofs > 0 && r.contact_dofs > 0 && r.iterations > 0,
@@ -471,7 +545,8 @@ fn bench_skip_prints_the_table() {
 }
 
 /// The committed sweeps parse back with their kinematics: the 0.3 sweep's `kinematics` column
-/// says small, and the 0.2 files, written before the column existed, read as finite.
+/// says small, and the 0.2 files, written before the column existed, read as finite; the
+/// current one holds the sphere's rows (0.7.0), the 0.2 files only the disk's.
 #[test]
 fn committed_sweeps_parse_with_their_kinematics() {
     let read = |path: &str| {
@@ -488,6 +563,9 @@ fn committed_sweeps_parse_with_their_kinematics() {
             .all(|r| r.case.kinematics == Kinematics::Small)
     );
     assert!(old.iter().all(|r| r.case.kinematics == Kinematics::Finite));
+    assert!(current.iter().any(|r| r.case.scene == SweepScene::Sphere));
+    assert!(current.iter().any(|r| r.case.scene == SweepScene::Disk));
+    assert!(old.iter().all(|r| r.case.scene == SweepScene::Disk));
 }
 
 /// `bench presses` accounts for every press (converged or failed by kind and class), only

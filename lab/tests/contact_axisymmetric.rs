@@ -199,8 +199,11 @@ fn push_out_at_gross_slip() {
 /// * `a` from the pressure's moments on `r dr` (`a^2 = 5 M3 / (2 M1)`) and `p0` from them
 ///   (`p0 = 6 M1^2 / (5 M3) = 3 P / (2 pi a^2)`): within 0.1% at n = 64 for modulus ratios 1,
 ///   1e-2, 1e-4;
-/// * `p(0)`, the multiplier of the node on the axis: within 1% at n = 64 and falling with n
-///   (it lags its neighbours, which are within 0.1%: see the report);
+/// * `p(0)`, the multiplier of the node on the axis (zero-slope shapes on the axis segment:
+///   `hycon::contact::geometry`, "Nodes on the axis"): within 0.45% at n = 64 (measured
+///   -0.39%, -0.43%, -0.44% for the three ratios; the linear hats gave -0.52%, -0.54%,
+///   -0.54%) and falling with n. It still lags its neighbours (within 0.1%): the axis node's
+///   equivalent nodal force, Q4 and hybrid alike, is low by O(h) against theirs;
 /// * the L2 error over `r dr` falls with n (16 -> 32 -> 64) and is below 1.5% at n = 64.
 #[test]
 fn sphere_hertz() {
@@ -239,11 +242,55 @@ fn sphere_hertz() {
             if n == 64 {
                 assert!(rel(c.radius, c.hertz.radius).abs() < 1e-3, "{c:?}");
                 assert!(rel(c.peak_from_moments, c.hertz.peak).abs() < 1e-3, "{c:?}");
-                assert!(axis[2] < 1e-2, "{c:?}");
+                assert!(axis[2] < 4.5e-3, "{c:?}");
                 assert!(c.l2_error < 0.015, "{c:?}");
             }
         }
         assert!(l2[1] < l2[0] && l2[2] < l2[1], "{l2:?}");
         assert!(axis[1] < axis[0] && axis[2] < axis[1], "{axis:?}");
     }
+}
+
+/// Hertz's sphere, the L2 error over `r dr` averaged over where the contact edge falls
+/// between two nodes (`SphereOnBlock::edge_sweep`, 4 places per element, equal moduli; as
+/// `hycon bench edge` does for the plane scene; `hycon bench sphere-edge` prints 8 places):
+/// the mean falls with n = 16, 32, 64 at a least-squares rate of at least 0.9 (measured 0.98
+/// with 8 places), and R/a = 32 and 64 are within 0.05 points of L2 of each other at n = 64
+/// (measured 0.001 with 8 places; a single edge position differs by up to 0.05 points).
+#[test]
+fn sphere_l2_over_edge_positions() {
+    use hycon_lab::axisymmetric::SphereOnBlock;
+    let mut at_64 = Vec::new();
+    for r_over_a in [32.0, 64.0] {
+        let mut means = Vec::new();
+        for n in [16, 32, 64] {
+            let runs = SphereOnBlock {
+                elements_per_radius: n,
+                radius_over_contact: r_over_a,
+                modulus_ratio: 1.0,
+            }
+            .edge_sweep(4)
+            .unwrap();
+            let l2: Vec<f64> = runs.iter().map(|r| r.comparison.l2_error).collect();
+            let edges: Vec<f64> = runs.iter().map(|r| r.edge_position()).collect();
+            // the places asked for: (j + 1/2) / 4, to the load's round-off
+            for (j, e) in edges.iter().enumerate() {
+                assert!((e - (j as f64 + 0.5) / 4.0).abs() < 0.02, "{edges:?}");
+            }
+            let mean = l2.iter().sum::<f64>() / l2.len() as f64;
+            println!(
+                "R/a {r_over_a}, n {n}: L2 {l2:.5?}, mean {:.3}%",
+                100.0 * mean
+            );
+            means.push((n as f64, mean));
+        }
+        let (rate, _, _) = hycon_lab::bench::fit_power(&means).unwrap();
+        println!("R/a {r_over_a}: rate {:.3}", -rate);
+        assert!(-rate >= 0.9, "R/a {r_over_a}: rate {}", -rate);
+        at_64.push(means[2].1);
+    }
+    assert!(
+        (at_64[0] - at_64[1]).abs() < 5e-4,
+        "R/a 32 and 64 at n = 64: {at_64:?}"
+    );
 }

@@ -13,8 +13,9 @@
 //!   own orientation; a B segment **faces** an A segment when `n_B . n < 0`, i.e.
 //!   `(q1 - q0) . t < 0`.
 //! * The contact traction `t` is the traction acting **on A**, linear on every A segment between
-//!   nodal values (`M_k` = the hat function of A node `k` along A's polyline); `tn < 0` is
-//!   compression. The traction on B is `-t`.
+//!   nodal values (`M_k` = the hat function of A node `k` along A's polyline; quadratic on a
+//!   segment ending on the axis, see "Nodes on the axis" below); `tn < 0` is compression. The
+//!   traction on B is `-t`.
 //! * Every point `x^A(xi) = p0 + xi d`, `xi in [0, 1]`, of an A segment is projected **along
 //!   that segment's constant normal `n`** onto B: the hit point `x^B` solves
 //!   `(x^B - x^A(xi)) . t = 0` on a facing B segment. Its **signed distance**
@@ -44,7 +45,7 @@
 //! # What is computed per A node `k` ([`ContactNode`])
 //! With `ds = h dxi` on each of the one or two A segments adjacent to `k` (its *support*):
 //! * `weight_k = integral M_k dS` (the tributary measure: `t (h_left + h_right) / 2` in plane,
-//!   `sum_e 2 pi h_e (2 r_k + r_other) / 6` in axisymmetry);
+//!   `sum_e 2 pi h_e (2 r_k + r_other) / 6` in axisymmetry with linear hats);
 //! * `F^A_kj = integral M_k L^A_j dS` over the whole support (plane: `t h/3` on the diagonal,
 //!   `t h/6` off it, summed over the two segments; with `m` linear on a segment from `m_k` to
 //!   `m_j`: `h (3 m_k + m_j) / 12` on the diagonal and `h (m_k + m_j) / 12` off it);
@@ -75,10 +76,21 @@
 //! forces into pressures.
 //!
 //! # Nodes on the axis
-//! In axisymmetry a node at `r = 0` (the end of a meridian on the axis) has `m = 0` there but
-//! a positive weight (`integral M_k 2 pi r ds = 2 pi h r_other / 6 > 0` over its segment), a
-//! normal that is its one segment's normal, and a normal row like any other node's; its
-//! radial displacement is the model's business (prescribed `u_r = 0`).
+//! In axisymmetry an end node of A at `r = 0` (a meridian ending on the axis, within `1e-10`
+//! of its segment's length) carries the pressure at the centre of a contact zone. The
+//! traction of a solid of revolution is even in `r`, so `dt/dr = 0` there; on the segment
+//! from the axis node to its neighbour the shapes are quadratic in the distance `s = r / h`
+//! from the axis, `M_axis = 1 - s^2`, `M_next = s^2` (zero slope at `r = 0`, a partition of
+//! unity, exact for `t = t0 + c r^2`). With linear hats the axis node's `F^A` column is
+//! `2 pi h^2 (1/12, 1/12)` (its own and its neighbour's multiplier): its force `f_0` fixes only
+//! `t_0 + t_1`, and a relative error of `f_0` (the one nodal force of an axisymmetric
+//! discretisation that has no neighbour beyond the axis) reaches `t_0` amplified 2.3 times
+//! (one of `f_1`, -1.9 times; uniform segments); with the quadratic shapes the column is
+//! `2 pi h^2 (7/60, 3/60)` and the factors 1.6 and -0.8. The
+//! axis node has a positive weight (`2 pi h^2 / 4` for a segment along `r`), a normal that is
+//! its one segment's normal, and a normal row like any other node's; its radial
+//! displacement is the model's business (prescribed `u_r = 0`). The quadratic integrands
+//! (degree at most 4 with the measure) are integrated by a 3-point Gauss rule per piece.
 //!
 //! # Candidate search
 //! B's segments are binned once per call in a uniform grid (cell size: the largest of the mean
@@ -88,7 +100,7 @@
 //! piece, and every candidate is tested exactly. The cost is near-linear in the number of
 //! segments.
 
-use crate::element::geometry::{GAUSS2_UNIT, edge_normal};
+use crate::element::geometry::{GAUSS2_UNIT, GAUSS3, edge_normal};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material, SCALE_RANGE};
 
@@ -188,17 +200,17 @@ impl SurfaceMeasure {
     /// `h/3`, the rotated chord), bit for bit those of unit thickness when `t = 1`.
     fn node_integrals(
         &self,
-        left: Option<[f64; 2]>,
+        left: Option<([f64; 2], Hats)>,
         xk: [f64; 2],
-        right: Option<[f64; 2]>,
+        right: Option<([f64; 2], Hats)>,
     ) -> NodeIntegrals {
-        let segment = |p: [f64; 2], q: [f64; 2]| edge_normal(p, q);
-        let (nl, hl) = left.map_or(([0.0; 2], 0.0), |p| segment(p, xk));
-        let (nr, hr) = right.map_or(([0.0; 2], 0.0), |q| segment(xk, q));
+        let (nl, hl) = left.map_or(([0.0; 2], 0.0), |(p, _)| edge_normal(p, xk));
+        let (nr, hr) = right.map_or(([0.0; 2], 0.0), |(q, _)| edge_normal(xk, q));
         match *self {
             SurfaceMeasure::Plane { thickness: t } => {
                 // sum_e h_e n_e = (x_{k+1} - x_{k-1}) rotated clockwise
-                let (n, len) = edge_normal(left.unwrap_or(xk), right.unwrap_or(xk));
+                let (n, len) =
+                    edge_normal(left.map_or(xk, |(p, _)| p), right.map_or(xk, |(q, _)| q));
                 NodeIntegrals {
                     weight: 0.5 * (hl + hr) * t,
                     mass: [hl / 6.0 * t, (hl + hr) / 3.0 * t, hr / 6.0 * t],
@@ -210,9 +222,12 @@ impl SurfaceMeasure {
             SurfaceMeasure::Axisymmetric => {
                 let m = |x: [f64; 2]| self.at(x);
                 let mk = m(xk);
-                let (ml, mr) = (left.map_or(0.0, m), right.map_or(0.0, m));
-                // integral_e M_k dS and the mass entries for m linear along each segment
-                let (wl, wr) = (hl * (2.0 * mk + ml) / 6.0, hr * (2.0 * mk + mr) / 6.0);
+                // integral_e M_k dS and the mass entries of each segment (node k second on the
+                // left one, first on the right one)
+                let none = SegmentMoments::default();
+                let l = left.map_or(none, |(p, hats)| hats.moments(hl, [m(p), mk]));
+                let r = right.map_or(none, |(q, hats)| hats.moments(hr, [mk, m(q)]));
+                let (wl, wr) = (l.weight[1], r.weight[0]);
                 if wl + wr <= 0.0 {
                     // a support lying on the axis: no measure, the chord's normal
                     let none = SurfaceMeasure::Plane { thickness: 0.0 };
@@ -222,17 +237,105 @@ impl SurfaceMeasure {
                 let len = v[0].hypot(v[1]);
                 NodeIntegrals {
                     weight: wl + wr,
-                    mass: [
-                        hl * (ml + mk) / 12.0,
-                        hl * (ml + 3.0 * mk) / 12.0 + hr * (3.0 * mk + mr) / 12.0,
-                        hr * (mk + mr) / 12.0,
-                    ],
+                    mass: [l.mass[1][0], l.mass[1][1] + r.mass[0][0], r.mass[0][1]],
                     normal: [v[0] / len, v[1] / len],
                     normal_length: len,
                     normal_scale: wl + wr,
                 }
             }
         }
+    }
+}
+
+/// The multiplier's shape functions `[M_first, M_second]` on one A segment, `xi in [0, 1]` from
+/// its first node to its second (see the [module docs](self), "Nodes on the axis").
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+enum Hats {
+    /// `[1 - xi, xi]`: the traction linear between the nodal values.
+    #[default]
+    Linear,
+    /// The first node on the axis: `[1 - xi^2, xi^2]`, quadratic in `r`, zero slope at `r = 0`.
+    AxisFirst,
+    /// The second node on the axis: `[(1 - xi)^2, 1 - (1 - xi)^2]`.
+    AxisSecond,
+}
+
+/// A segment's `integral M_i dS` and `F^A_ij = integral M_i L_j dS` (`i, j` = its first and
+/// second node, `L` the displacement's linear hats).
+#[derive(Debug, Clone, Copy, Default)]
+struct SegmentMoments {
+    weight: [f64; 2],
+    mass: [[f64; 2]; 2],
+}
+
+/// Three-point Gauss rule on `[0, 1]`: `(abscissa, weight)`; exact for quintics.
+const GAUSS3_UNIT: [(f64, f64); 3] = [
+    (0.5 + 0.5 * GAUSS3[0].0, 0.5 * GAUSS3[0].1),
+    (0.5 + 0.5 * GAUSS3[1].0, 0.5 * GAUSS3[1].1),
+    (0.5 + 0.5 * GAUSS3[2].0, 0.5 * GAUSS3[2].1),
+];
+
+impl Hats {
+    /// The shapes on an axisymmetric segment from node `first` to node `last` (`first + 1`) of
+    /// a polyline of `count` nodes: quadratic when an end node of the polyline lies on the
+    /// axis (`r <= 1e-10 h`, round-off of the segment's length `h`) and the other node does
+    /// not, linear otherwise (and always in plane).
+    fn of_segment(
+        measure: SurfaceMeasure,
+        r: [f64; 2],
+        h: f64,
+        first: usize,
+        count: usize,
+    ) -> Self {
+        let on_axis = |r: f64| r <= AXIS_SNAP * h;
+        if measure != SurfaceMeasure::Axisymmetric || on_axis(r[0]) == on_axis(r[1]) {
+            Hats::Linear
+        } else if first == 0 && on_axis(r[0]) {
+            Hats::AxisFirst
+        } else if first + 2 == count && on_axis(r[1]) {
+            Hats::AxisSecond
+        } else {
+            Hats::Linear
+        }
+    }
+
+    /// `[M_first(xi), M_second(xi)]`.
+    #[inline]
+    fn at(self, xi: f64) -> [f64; 2] {
+        match self {
+            Hats::Linear => [1.0 - xi, xi],
+            Hats::AxisFirst => [1.0 - xi * xi, xi * xi],
+            Hats::AxisSecond => {
+                let u = 1.0 - xi;
+                [u * u, 1.0 - u * u]
+            }
+        }
+    }
+
+    /// A Gauss rule on `[0, 1]` exact for `M_i L m g` (`L`, `m`, `g` affine in `xi`): degree 3
+    /// for linear shapes, 5 for quadratic ones.
+    fn rule(self) -> &'static [(f64, f64)] {
+        match self {
+            Hats::Linear => &GAUSS2_UNIT,
+            Hats::AxisFirst | Hats::AxisSecond => &GAUSS3_UNIT,
+        }
+    }
+
+    /// The segment's moments for a measure affine along it, `m` at its two nodes, length `h`
+    /// (the rule is exact: `M_i L_j m` has degree at most 4).
+    fn moments(self, h: f64, m: [f64; 2]) -> SegmentMoments {
+        let mut out = SegmentMoments::default();
+        for &(xi, gw) in self.rule() {
+            let wt = gw * h * (m[0] + xi * (m[1] - m[0]));
+            let lin = [1.0 - xi, xi];
+            for (i, m) in self.at(xi).into_iter().enumerate() {
+                out.weight[i] += wt * m;
+                for (j, l) in lin.into_iter().enumerate() {
+                    out.mass[i][j] += wt * m * l;
+                }
+            }
+        }
+        out
     }
 }
 
@@ -244,6 +347,9 @@ struct NodeIntegrals {
     normal_length: f64,
     normal_scale: f64,
 }
+
+/// An end node of A within this fraction of its segment's length of `r = 0` is on the axis.
+const AXIS_SNAP: f64 = 1e-10;
 
 /// B nodes projecting within this fraction of an A segment's length of its end project onto it.
 const END_SNAP: f64 = 1e-10;
@@ -400,6 +506,8 @@ struct Workspace {
     /// Per A segment: length and unit outward normal.
     seg_len: Vec<f64>,
     seg_normal: Vec<[f64; 2]>,
+    /// Per A segment: the multiplier's shape functions.
+    seg_hats: Vec<Hats>,
     /// Per A node: the support's length, its uncovered length, `integral_covered M_k g dS`.
     support: Vec<f64>,
     uncovered: Vec<f64>,
@@ -668,17 +776,20 @@ fn evaluate_impl(
     // A segments: lengths and normals n = (d_y, -d_x) / h
     w.seg_len.clear();
     w.seg_normal.clear();
-    for s in a.windows(2) {
+    w.seg_hats.clear();
+    for (e, s) in a.windows(2).enumerate() {
         let (n, h) = edge_normal(x[s[0]], x[s[1]]);
         w.seg_len.push(h);
         w.seg_normal.push(n);
+        let r = [x[s[0]][0], x[s[1]][0]];
+        w.seg_hats.push(Hats::of_segment(measure, r, h, e, na));
     }
     // nodes: frame, weight, F^A
     out.nodes.resize_with(na, ContactNode::default);
     w.support.clear();
     for (k, node) in out.nodes.iter_mut().enumerate() {
-        let left = (k > 0).then(|| x[a[k - 1]]);
-        let right = (k + 1 < na).then(|| x[a[k + 1]]);
+        let left = (k > 0).then(|| (x[a[k - 1]], w.seg_hats[k - 1]));
+        let right = (k + 1 < na).then(|| (x[a[k + 1]], w.seg_hats[k]));
         let m = measure.node_integrals(left, x[a[k]], right);
         if m.normal_length <= 1e-12 * m.normal_scale {
             return Err(Error::InvalidInput(format!(
@@ -851,14 +962,16 @@ fn evaluate_impl(
                 w.uncovered[k1] += len;
                 continue;
             };
-            // exact 2-point Gauss on the piece: M, L^B, g and the measure all affine in xi
+            // exact Gauss on the piece: L^B, g and the measure affine in xi, M affine (or
+            // quadratic on an axis segment)
             let mut fb = [[0.0; 2]; 2];
             let mut mg = [0.0; 2];
             let mut mw = [0.0; 2];
-            for (gp, gw) in GAUSS2_UNIT {
+            let hats = w.seg_hats[e];
+            for &(gp, gw) in hats.rule() {
                 let xi = xa + (xb - xa) * gp;
                 let wt = gw * len * measure.at(lerp(p0, p1, xi));
-                let mk = [1.0 - xi, xi];
+                let mk = hats.at(xi);
                 let eta = c.eta(xi);
                 let lb = [1.0 - eta, eta];
                 let g = c.g0 + eta * (c.g1 - c.g0);
@@ -1044,6 +1157,65 @@ mod tests {
                 fast.nodes.iter().any(|n| n.covered_weight > 0.0),
                 "trial {trial}"
             );
+        }
+    }
+
+    /// A flat A along `r` ending on the axis (either end): the axis segment's quadratic
+    /// shapes give the closed forms of the module docs (`F^A` column of the axis node
+    /// `2 pi h^2 (7/60, 3/60)`, its weight `2 pi h^2 / 4`), the hats still sum to one (column
+    /// sums of `F^A` = `integral L_j dS`, weights summing to the disk's area `pi R^2`), and the
+    /// segments away from the axis keep the linear forms.
+    #[test]
+    fn axis_segment_has_zero_slope_shapes() {
+        use std::f64::consts::PI;
+        let (h, n) = (0.25, 4);
+        for axis_first in [false, true] {
+            let mut r: Vec<f64> = (0..=n).map(|i| i as f64 * h).collect();
+            if !axis_first {
+                r.reverse();
+            }
+            let (a, b, x) = flat(&r, &[-0.1, 1.1], 0.01);
+            let s = evaluate(&a, &b, &x, 1.0, SurfaceMeasure::Axisymmetric).unwrap();
+            let at = |k: usize| x[s.nodes[k].node][0];
+            let entry = |k: usize, j: usize| -> f64 {
+                let id = s.nodes[j].node;
+                s.nodes[k]
+                    .coupling
+                    .iter()
+                    .find(|e| e.0 == id)
+                    .map_or(0.0, |e| e.1)
+            };
+            let axis = (0..=n).find(|&k| at(k) == 0.0).unwrap();
+            let next = (0..=n).find(|&k| (at(k) - h).abs() < 1e-15).unwrap();
+            let unit = 2.0 * PI * h * h;
+            let close = |u: f64, v: f64| (u - v).abs() <= 1e-14 * unit;
+            assert!(close(entry(axis, axis), unit * 7.0 / 60.0));
+            assert!(close(entry(next, axis), unit * 3.0 / 60.0));
+            assert!(close(entry(axis, next), unit * 8.0 / 60.0));
+            assert!(close(s.nodes[axis].weight, unit / 4.0));
+            // away from the axis: linear forms, h (3 m_k + m_j) / 12 and h (m_k + m_j) / 12
+            let m = |r: f64| 2.0 * PI * r;
+            let (k, j) = (
+                next,
+                (0..=n).find(|&k| (at(k) - 2.0 * h).abs() < 1e-15).unwrap(),
+            );
+            assert!(close(entry(j, k), h * (m(2.0 * h) + m(h)) / 12.0));
+            let total: f64 = s.nodes.iter().map(|nd| nd.weight).sum();
+            assert!(close(total, PI * (n as f64 * h).powi(2)));
+            for j in 0..=n {
+                let column: f64 = (0..=n).map(|k| entry(k, j)).sum();
+                let left = if at(j) > 0.0 {
+                    h * (2.0 * m(at(j)) + m(at(j) - h)) / 6.0
+                } else {
+                    0.0
+                };
+                let right = if at(j) < n as f64 * h {
+                    h * (2.0 * m(at(j)) + m(at(j) + h)) / 6.0
+                } else {
+                    0.0
+                };
+                assert!(close(column, left + right), "{axis_first} {j}");
+            }
         }
     }
 

@@ -2,7 +2,8 @@
 //!
 //! # The equations (METHOD.md sections 3 and 4)
 //! `t` is the traction acting on body A (the multiplier side), interpolated linearly between the
-//! A nodes; at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
+//! A nodes (quadratically, with zero slope at `r = 0`, next to an axisymmetric node on the axis:
+//! `geometry.rs`); at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
 //! With `Gc` the coupling (its column for a normal multiplier is `+F^A n_k` at A's dofs and
 //! `-F^B n_k` at B's: the contact forces on both bodies, equal and opposite), equilibrium in the
 //! total form reads
