@@ -84,8 +84,9 @@
 //! the part of A's axis segment between A's axis node and the projection of B's (a sliver of
 //! the order of the gap times the segments' tilt under finite kinematics, where the surfaces
 //! meet their mirror images across the axis): B's end values are taken there, as for a B
-//! node within [`END_SNAP`] of an A segment's end. The iteration gives an A node on the axis
-//! no friction ([`on_axis`]): the shear traction vanishes there by symmetry.
+//! node within `END_SNAP` (1e-10 of the segment) of an A segment's end. The iteration gives
+//! an A node on the axis no friction (`on_axis`): the shear traction vanishes there by
+//! symmetry.
 //!
 //! # Candidate search
 //! B's segments are binned once per call in a uniform grid (cell size: the largest of the mean
