@@ -106,12 +106,11 @@ static Problem draw_problem(void) {
     p.kinematics = below(2) ? HYCON_KINEMATICS_SMALL : HYCON_KINEMATICS_FINITE;
     /* axisymmetric (x = r, y = z) in a third of the rounds: the lower block touching the axis
      * or off it, the upper block beside it or, on a block touching the axis, on the axis too
-     * (a contact zone centred on the axis, as a sphere on a flat). That last case is drawn
-     * pressed only, frictionless and under small kinematics: with friction the contact system
-     * is singular there (HYCON_ERROR_SINGULAR when A's node on the axis has its u_r held, as
-     * the header asks; with it left free the same problems pass), and under finite kinematics
-     * an active node at the axis is reported uncovered by 1e-9 to 1e-8 of its support (open
-     * in 0.7.0). */
+     * (a contact zone centred on the axis, as a sphere on a flat), pressed only: the upper
+     * block's top node on the axis is prescribed, and u_r = 0 there admits no slide. (0.7.0
+     * drew it frictionless and under small kinematics only: with friction the axis node's
+     * stick row made the contact system singular, and under finite kinematics the active
+     * axis node was found uncovered by round-off.) */
     p.analysis = below(3) == 0 ? HYCON_AXISYMMETRIC : HYCON_PLANE_STRAIN;
     p.axis = 0.0;
     if (p.analysis == HYCON_AXISYMMETRIC) {
@@ -119,8 +118,6 @@ static Problem draw_problem(void) {
         if (p.axis == 0.0 && below(2)) {
             p.left = 0.0;
             p.slide = 0.0;
-            p.friction = 0.0;
-            p.kinematics = HYCON_KINEMATICS_SMALL;
         }
         p.left += p.axis;
     }

@@ -991,6 +991,41 @@ fn measure_input_checks() {
     assert!(m.contains("r = -0.5 < 0"), "{m}");
 }
 
+/// Both surfaces ending on the axis, A's axis segment tilted by `±2e-4` (as a finite
+/// deformation leaves it): B's axis node projects a sliver of `gap * tilt / h` (4e-6 of the
+/// segment) away from A's, and B's end covers it, so every A node is fully covered (0.7.0
+/// left the sliver uncovered, and an active axis node failed the increment). A radius of
+/// round-off below zero (a free axis node's drift) is on the axis; one beyond round-off of
+/// the segments' length is rejected.
+#[test]
+fn surfaces_ending_on_the_axis_cover_each_other() {
+    for tilt in [-1e-4, 1e-4] {
+        for r0 in [0.0, -1.9e-20] {
+            // A below, right to left (n = +z), its last node on the axis; B above
+            let x = vec![[1.0, 0.0], [0.5, 0.0], [r0, tilt], [0.0, 0.01], [1.0, 0.01]];
+            let s = evaluate(&[0, 1, 2], &[3, 4], &x, 1.0, SurfaceMeasure::Axisymmetric).unwrap();
+            for node in &s.nodes {
+                assert!(node.is_covered(), "tilt {tilt}, r0 {r0}: {node:?}");
+            }
+        }
+    }
+    let x = vec![
+        [1.0, 0.0],
+        [0.5, 0.0],
+        [-1e-9, 0.0],
+        [0.0, 0.01],
+        [1.0, 0.01],
+    ];
+    let m = message(evaluate(
+        &[0, 1, 2],
+        &[3, 4],
+        &x,
+        1.0,
+        SurfaceMeasure::Axisymmetric,
+    ));
+    assert!(m.contains("node 2 has r = -0.000000001 < 0"), "{m}");
+}
+
 // ------------------------------------------------------------------------------------------------
 // Input checks
 // ------------------------------------------------------------------------------------------------

@@ -35,6 +35,10 @@ pub struct Coulomb {
 }
 
 impl Coulomb {
+    /// No friction (`mu = 0`): the law of an A node on the axis in axisymmetry, where the
+    /// shear traction vanishes by symmetry.
+    pub(crate) const NONE: Coulomb = Coulomb { mu: 0.0 };
+
     /// Coulomb friction with coefficient `mu` (0: frictionless).
     ///
     /// # Errors

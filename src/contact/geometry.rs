@@ -91,6 +91,14 @@
 //! its one segment's normal, and a normal row like any other node's; its radial
 //! displacement is the model's business (prescribed `u_r = 0`). The quadratic integrands
 //! (degree at most 4 with the measure) are integrated by a 3-point Gauss rule per piece.
+//! Its radius is checked for `r >= 0` to round-off of its segments' length (a free axis node
+//! drifts by round-off of its motion under finite kinematics). Where A and B both end on the
+//! axis, B's end covers the part of A's axis segment between A's axis node and the projection
+//! of B's (a sliver of the order of the gap times the segments' tilt under finite kinematics,
+//! where the surfaces meet their mirror images across the axis): B's end values are taken
+//! there, as for a B node within `END_SNAP` (1e-10 of the segment) of an A segment's end. The
+//! iteration gives an A node on the axis no friction (`on_axis`): the shear traction vanishes
+//! there by symmetry.
 //!
 //! # Candidate search
 //! B's segments are binned once per call in a uniform grid (cell size: the largest of the mean
@@ -676,6 +684,32 @@ fn snap(tau: f64) -> f64 {
     }
 }
 
+/// A radius within this fraction of the adjacent segments' length of zero is round-off of the
+/// axis (the element check's tolerance, relative to the element size).
+const AXIS_ROUND_OFF: f64 = 1e-10;
+
+/// How far from `r = 0` the radius of node `k` of polyline `ids` is round-off of the axis:
+/// [`AXIS_ROUND_OFF`] times the longer of its segments.
+fn axis_round_off(ids: &[usize], k: usize, x: &[[f64; 2]]) -> f64 {
+    let length = |i: usize, j: usize| {
+        let d = sub(x[ids[j]], x[ids[i]]);
+        d[0].hypot(d[1])
+    };
+    let left = if k > 0 { length(k - 1, k) } else { 0.0 };
+    let right = if k + 1 < ids.len() {
+        length(k, k + 1)
+    } else {
+        0.0
+    };
+    AXIS_ROUND_OFF * left.max(right)
+}
+
+/// Whether node `k` of contact polyline `ids` lies on the axis of an axisymmetric analysis
+/// (`|r|` within round-off of its segments' length, [`AXIS_ROUND_OFF`]).
+pub(crate) fn on_axis(ids: &[usize], k: usize, x: &[[f64; 2]]) -> bool {
+    x[ids[k]][0].abs() <= axis_round_off(ids, k, x)
+}
+
 /// Check one polyline: length, ids in range, finite coordinates, no consecutive repeat, no
 /// zero-length segment.
 fn check_polyline(name: &str, ids: &[usize], x: &[[f64; 2]]) -> Result<()> {
@@ -762,11 +796,12 @@ fn evaluate_impl(
     check_polyline("A", a, x)?;
     check_polyline("B", b, x)?;
     if measure == SurfaceMeasure::Axisymmetric
-        && let Some(&k) = a.iter().find(|&&k| x[k][0] < 0.0)
+        && let Some(k) = (0..a.len()).find(|&k| x[a[k]][0] < -axis_round_off(a, k, x))
     {
         return Err(Error::InvalidInput(format!(
-            "contact polyline A: node {k} has r = {} < 0 (axisymmetric: x is the radius)",
-            x[k][0]
+            "contact polyline A: node {} has r = {} < 0 beyond round-off of its segments' \
+             length (axisymmetric: x is the radius)",
+            a[k], x[a[k]][0]
         )));
     }
     let w = &mut out.work;
@@ -882,7 +917,17 @@ fn evaluate_impl(
             if tau1 >= tau0 {
                 continue;
             }
-            let (lo, hi) = (snap(tau1), snap(tau0));
+            let (mut lo, mut hi) = (snap(tau1), snap(tau0));
+            if measure == SurfaceMeasure::Axisymmetric {
+                // both surfaces end on the axis: B's end there covers A's (module docs)
+                let on_axis = |p: [f64; 2]| p[0].abs() <= AXIS_ROUND_OFF * h;
+                if on_axis(p0) && on_axis(x[b[j + 1]]) {
+                    lo = lo.min(0.0);
+                }
+                if on_axis(p1) && on_axis(x[b[j]]) {
+                    hi = hi.max(1.0);
+                }
+            }
             if hi <= 0.0 || lo >= 1.0 || lo >= hi {
                 continue;
             }

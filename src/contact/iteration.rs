@@ -1059,6 +1059,24 @@ impl ContactAnalysis {
 
     /// Mean A segment length of pair `p` in the geometry's configuration `xg` (the length
     /// scale of the gap tolerance and the search distance).
+    /// The friction law of A node `k` of pair `p`: the pair's, but none for a node on the axis
+    /// in axisymmetry (in the reference configuration, [`geometry::on_axis`]). There
+    /// `tau_rz = 0` by symmetry, and a tangential row would constrain the radial slip that
+    /// `u_r = 0` on both sides already holds: with B's segment over A's axis node spanning
+    /// as many of A's active nodes' radial dofs as it has rows, the field `u_r = c r` (which
+    /// both sides represent with `u_r(0) = 0`) slips nowhere, so the stick rows were dependent
+    /// and the small system singular. Such a node closes frictionless and keeps `ts = 0`.
+    fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
+        let a = &self.pairs[p].a;
+        if self.measures[p] == SurfaceMeasure::Axisymmetric
+            && geometry::on_axis(a, k, self.bodies.positions())
+        {
+            &Coulomb::NONE
+        } else {
+            &*self.laws[p]
+        }
+    }
+
     fn mean_segment(&self, p: usize, xg: &[[f64; 2]]) -> f64 {
         mean_segment(&self.pairs[p].a, xg)
     }

@@ -239,7 +239,7 @@ impl ContactAnalysis {
             .filter(|(_, _, n)| n.is_covered())
             .min_by(|a, b| a.2.normal_gap.total_cmp(&b.2.normal_gap));
         if let Some((p, k, _)) = nearest {
-            states[p][k] = rules::closed_at_rest(&*self.laws[p]);
+            states[p][k] = rules::closed_at_rest(self.node_law(p, k));
         }
     }
 

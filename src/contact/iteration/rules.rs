@@ -148,9 +148,9 @@ impl ContactAnalysis {
             let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
             // a node closing while the surfaces slide past each other slides with them; one
             // closing without relative motion sticks
-            let closed = |node: &geometry::ContactNode| {
+            let closed = |k: usize, node: &geometry::ContactNode| {
                 let slip = self.slip_since_start(node, uc, startc);
-                if law.is_frictionless() {
+                if self.node_law(p, k).is_frictionless() {
                     NodeState::Frictionless
                 } else if slip.abs() > slip_tolerance {
                     NodeState::Slip {
@@ -223,7 +223,7 @@ impl ContactAnalysis {
             // coverage is checked on the converged state only: an intermediate iterate may
             // move a node at the end of a surface a hair past the other's end
             for k in set.closing(p, &depth) {
-                new[p][k] = closed(&surface.nodes[k]);
+                new[p][k] = closed(k, &surface.nodes[k]);
             }
         }
         Ok(new)
@@ -275,7 +275,7 @@ impl ContactAnalysis {
     pub(super) fn fallback_states(&mut self, attempt: &Attempt<'_>) -> Result<Vec<Vec<NodeState>>> {
         let startc = &attempt.startc;
         let surfaces = self.surfaces.clone();
-        let closed_state = |p: usize| closed_at_rest(&*self.laws[p]);
+        let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
         // the candidates: closed at the start, or penetrating under the load alone, and
         // their covered neighbours
         let mut states: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
@@ -306,7 +306,7 @@ impl ContactAnalysis {
                 (0..nodes.len())
                     .map(|k| {
                         if candidate(k) {
-                            closed_state(p)
+                            closed_state(p, k)
                         } else {
                             NodeState::Open
                         }
