@@ -962,6 +962,7 @@ impl ContactAnalysis {
         if let Some((q, _)) = self.field.get() {
             return Ok(q);
         }
+        self.bodies.check_solver()?;
         let clock = std::time::Instant::now();
         let q = match &self.converged {
             Some(c) => {
@@ -1008,6 +1009,7 @@ impl ContactAnalysis {
         let Some(c) = &self.converged else {
             return Ok(vec![0.0; self.bodies.field_len()]);
         };
+        self.bodies.check_solver()?;
         let mut load = self.total_load(c);
         let mut prescribed = c.prescribed.clone();
         if let Some(p) = &self.previous {
