@@ -630,3 +630,97 @@ fn assert_same_to(
         }
     }
 }
+
+/// A host solver that keeps every right-hand side it was asked for (its exact bits).
+struct Recording {
+    inner: OwnSolver,
+    asked: std::sync::Arc<std::sync::Mutex<Vec<Vec<u64>>>>,
+}
+
+impl HostSolve for Recording {
+    fn solve(&mut self, nrhs: usize, rhs: &[f64], x: &mut [f64]) -> hycon::Result<()> {
+        let n = rhs.len() / nrhs;
+        let mut asked = self.asked.lock().unwrap();
+        for j in 0..nrhs {
+            asked.push(
+                rhs[j * n..(j + 1) * n]
+                    .iter()
+                    .map(|v| v.to_bits())
+                    .collect(),
+            );
+        }
+        drop(asked);
+        self.inner.solve(nrhs, rhs, x)
+    }
+}
+
+/// The callback path asks for no right-hand side twice in an analysis (the host's solves are
+/// what it costs): both kinematics, frictionless and mu = 0.3, a press deepened in steps (the
+/// small-kinematics pairing widens) and a slide; the counts are printed.
+#[test]
+fn callback_asks_no_column_twice() {
+    let base = scene();
+    let model = &base.model;
+    let host = HostSide::new(model);
+    let approach = base.half_width.powi(2) / base.radius;
+    let a = base.half_width;
+    for (kinematics, steps) in [
+        (
+            Kinematics::Small,
+            vec![
+                (0.25, 0.0),
+                (0.5, 0.0),
+                (1.0, 0.0),
+                (2.0, 0.0),
+                (2.0, 0.01 * a),
+            ],
+        ),
+        (
+            Kinematics::Finite,
+            vec![(1.0, 0.0), (1.0, 0.1 * a), (1.0, 0.3 * a), (1.0, 0.6 * a)],
+        ),
+    ] {
+        for friction in [0.0, 0.3] {
+            let pair = ContactPair {
+                friction,
+                ..base.pair.clone()
+            };
+            let mut factor =
+                SparseCholesky::analyze(host.pattern.symbolic(), hycon::solver::Backend::Faer, &[])
+                    .unwrap();
+            factor.factorize(host.pattern.matrix()).unwrap();
+            let asked = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+            let solver = Recording {
+                inner: OwnSolver {
+                    factor,
+                    columns: Default::default(),
+                },
+                asked: asked.clone(),
+            };
+            let options = ContactOptions {
+                kinematics,
+                ..ContactOptions::default()
+            };
+            let mut analysis = ContactAnalysis::host(
+                host.system(model, &pair, HostStiffness::Solver(Box::new(solver))),
+                vec![shifted(&pair)],
+                options,
+            )
+            .unwrap();
+            for &(depth, slide) in &steps {
+                let rhs = host.rhs(model, &base.prescribed(depth * approach, slide));
+                analysis.increment(&rhs, &[]).unwrap();
+            }
+            let asked = asked.lock().unwrap();
+            let distinct: std::collections::HashSet<&Vec<u64>> = asked.iter().collect();
+            eprintln!(
+                "{} kinematics, mu = {friction}: {} right-hand sides, {} distinct, {} increments",
+                kinematics.name(),
+                asked.len(),
+                distinct.len(),
+                steps.len()
+            );
+            assert_eq!(asked.len(), distinct.len(), "a right-hand side asked twice");
+        }
+    }
+}

@@ -1400,9 +1400,8 @@ pub unsafe extern "C" fn hycon_host_set_condensed(
         let equations = equations
             .iter()
             .map(|&e| {
-                usize::try_from(e).map_err(|_| {
-                    Fail::invalid(format!("candidate equation {e} is out of range"))
-                })
+                usize::try_from(e)
+                    .map_err(|_| Fail::invalid(format!("candidate equation {e} is out of range")))
             })
             .collect::<Result<Vec<_>, _>>()?;
         let condensed = Condensed {
