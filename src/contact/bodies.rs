@@ -206,7 +206,7 @@ const CONDENSED_SYMMETRY: f64 = 1e-6;
 
 impl Condensed {
     /// Check the hand-over for a host of `n_equations` equations: `m^2` finite values,
-    /// candidates in range and distinct, the matrix symmetric to [`CONDENSED_SYMMETRY`] of its
+    /// candidates in range and distinct, the matrix symmetric to `CONDENSED_SYMMETRY` (1e-6) of its
     /// largest entry.
     ///
     /// # Errors
