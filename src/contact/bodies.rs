@@ -859,35 +859,52 @@ impl Bodies {
         let len = reach.map_or(n, |r| r.len());
         let batch = CALLBACK_BATCH.min((4 << 20) / len.max(1)).max(1);
         let mut solver = solver;
+        // a callback's right-hand sides and solutions, column-major, reused over the batches:
+        // only the entries a batch set are zeroed again (a full-length copy per batch cost
+        // more than the contact iteration itself at 76k equations)
+        let (mut b, mut x) = match solver {
+            Solver::Callback(_) => (vec![0.0; len * batch], vec![0.0; len * batch]),
+            Solver::Factor(_) => (Vec::new(), Vec::new()),
+        };
         for start in (0..vectors.len()).step_by(batch) {
             let cols = batch.min(vectors.len() - start);
-            let mut rhs = Mat::<f64>::zeros(len, cols);
-            for c in 0..cols {
+            let set = |c: usize, add: &mut dyn FnMut(usize, f64)| {
                 for &(j, w) in &vectors[start + c] {
                     if let Some(e) = rows[j] {
-                        rhs[(row(e), c)] += w;
+                        add(row(e), w);
                     }
                 }
-            }
+            };
             match &mut solver {
-                Solver::Factor(f) => match reach {
-                    Some(r) => f.solve_within(r, rhs.as_mut())?,
-                    None => f.solve_in_place(rhs.as_mut())?,
-                },
-                Solver::Callback(s) => {
-                    let b: Vec<f64> = (0..cols)
-                        .flat_map(|c| (0..len).map(move |i| (i, c)))
-                        .map(|(i, c)| rhs[(i, c)])
-                        .collect();
-                    let mut x = vec![0.0; len * cols];
-                    checked_solve(&mut **s, cols, &b, &mut x)?;
-                    rhs = Mat::from_fn(len, cols, |i, c| x[c * len + i]);
+                Solver::Factor(f) => {
+                    let mut rhs = Mat::<f64>::zeros(len, cols);
+                    for c in 0..cols {
+                        set(c, &mut |r, w| rhs[(r, c)] += w);
+                    }
+                    match reach {
+                        Some(r) => f.solve_within(r, rhs.as_mut())?,
+                        None => f.solve_in_place(rhs.as_mut())?,
+                    }
+                    for c in 0..cols {
+                        for (i, e) in rows.iter().enumerate() {
+                            if let Some(e) = e {
+                                out[(i, start + c)] = rhs[(row(*e), c)];
+                            }
+                        }
+                    }
                 }
-            }
-            for c in 0..cols {
-                for (i, e) in rows.iter().enumerate() {
-                    if let Some(e) = e {
-                        out[(i, start + c)] = rhs[(row(*e), c)];
+                Solver::Callback(s) => {
+                    for c in 0..cols {
+                        set(c, &mut |r, w| b[c * len + r] += w);
+                    }
+                    checked_solve(&mut **s, cols, &b[..len * cols], &mut x[..len * cols])?;
+                    for c in 0..cols {
+                        set(c, &mut |r, _| b[c * len + r] = 0.0);
+                        for (i, e) in rows.iter().enumerate() {
+                            if let Some(e) = e {
+                                out[(i, start + c)] = x[c * len + row(*e)];
+                            }
+                        }
                     }
                 }
             }
