@@ -121,7 +121,7 @@
 typedef struct HyconContact HyconContact;
 
 // A host's contact description (host-assembly API): its contact polylines and its stiffness
-// (CSR) or solve callback. Create with `hycon_host_new`, free with `hycon_host_free`.
+// (CSR), solve callback or condensed operator. Create with `hycon_host_new`, free with `hycon_host_free`.
 // Thread safety: as `HyconModel`.
 typedef struct HyconHost HyconHost;
 

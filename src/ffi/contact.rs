@@ -5,8 +5,10 @@
 //!   the increments.
 //! * **Host-assembly API**: the host keeps its own mesh and stiffness and describes only its
 //!   contact polylines (node ids, reference coordinates and equation numbers in its numbering)
-//!   in a [`HyconHost`], plus either its stiffness in CSR (factored by hycon) or a solve callback
-//!   ([`HyconSolveFn`]) so that it factors `K` with its own solver (CHOLMOD, PETSc, ...).
+//!   in a [`HyconHost`], plus either its stiffness in CSR (factored by hycon), a solve callback
+//!   ([`HyconSolveFn`]) so that it factors `K` with its own solver (CHOLMOD, PETSc, ...), or
+//!   the condensed operator of its contact candidates ([`HyconCondensed`]) from its own solver,
+//!   with no solve inside an increment.
 //!
 //! Both give a [`HyconContact`]: the contact iteration with `K` factored once, increments with
 //! total loads, and the results (displacements, contact forces, tractions three ways, node
@@ -494,7 +496,7 @@ pub struct HyconModel {
 }
 
 /// A host's contact description (host-assembly API): its contact polylines and its stiffness
-/// (CSR) or solve callback. Create with `hycon_host_new`, free with `hycon_host_free`.
+/// (CSR), solve callback or condensed operator. Create with `hycon_host_new`, free with `hycon_host_free`.
 /// Thread safety: as `HyconModel`.
 pub struct HyconHost {
     equations: usize,
