@@ -15,8 +15,13 @@
  * Two increments: a trial approach a^2 / R, then the approach scaled to the Hertz load of the
  * target half-width (the load is nearly linear in the approach).
  *
- * The same increments are run two more ways and compared with the callback path:
+ * The same increments are run three more ways and compared:
  *   - CSR path: the same K given as CSR (hycon_host_set_csr), factored by hycon;
+ *   - condensed path: the flexibility block (K^-1)_cc over the contact equations from one
+ *     batched CHOLMOD solve (hycon_host_set_condensed); per increment the host solves for its
+ *     load and hands over the image at those equations, and after it recovers its
+ *     displacement itself from K u = rhs + hycon_contact_forces; checked against the CSR path
+ *     to 1e-8 (as is the callback path);
  *   - model API: the same mesh and prescribed values through hycon_model_new with
  *     HYCON_ELEMENT_Q4 (hycon assembles and factors).
  * Checked at every increment: the A nodes' states are identical and their tractions (tn, ts) and
@@ -98,41 +103,89 @@ typedef struct CholmodState {
     int fail_next;     /* test: fail the next call as a CHOLMOD failure would */
 } CholmodState;
 
+/* K x_j = rhs_j for nrhs column-major right-hand sides with the host's factor: 0, or 2 / 3
+ * for a CHOLMOD failure. */
+static int32_t chol_solve(CholmodState *s, size_t nrhs, const double *rhs, double *x) {
+    const size_t n = s->n;
+    cholmod_dense *b, *sol;
+    size_t j;
+    b = cholmod_allocate_dense(n, nrhs, n, CHOLMOD_REAL, &s->common);
+    if (b == NULL) return 2;
+    memcpy(b->x, rhs, n * nrhs * sizeof *rhs);
+    sol = cholmod_solve(CHOLMOD_A, s->factor, b, &s->common);
+    cholmod_free_dense(&b, &s->common);
+    if (sol == NULL || s->common.status != CHOLMOD_OK) {
+        cholmod_free_dense(&sol, &s->common);
+        return 3;
+    }
+    for (j = 0; j < nrhs; ++j)
+        memcpy(x + j * n, (const double *)sol->x + j * sol->d, n * sizeof *x);
+    cholmod_free_dense(&sol, &s->common);
+    return 0;
+}
+
 /* hycon's HyconSolveFn: K x_j = rhs_j for nrhs column-major right-hand sides. Never unwinds:
  * every CHOLMOD failure becomes a nonzero return (hycon then reports HYCON_ERROR_CALLBACK). */
 static int32_t cholmod_solve_cb(void *user_data, size_t n, size_t nrhs, const double *rhs,
                                 double *x) {
     CholmodState *s = user_data;
-    cholmod_dense *b, *sol;
     clock_t start = clock();
-    size_t j;
+    int32_t status;
     if (s == NULL || s->factor == NULL || n != s->n || rhs == NULL || x == NULL) return 1;
     if (nrhs == 0) return 0;
     if (s->fail_next) {
         s->fail_next = 0;
         return 4;
     }
-    b = cholmod_allocate_dense(n, nrhs, n, CHOLMOD_REAL, &s->common);
-    if (b == NULL) {
+    status = chol_solve(s, nrhs, rhs, x);
+    if (status != 0) {
         ++s->failures;
-        return 2;
+        return status;
     }
-    memcpy(b->x, rhs, n * nrhs * sizeof *rhs);
-    sol = cholmod_solve(CHOLMOD_A, s->factor, b, &s->common);
-    cholmod_free_dense(&b, &s->common);
-    if (sol == NULL || s->common.status != CHOLMOD_OK) {
-        cholmod_free_dense(&sol, &s->common);
-        ++s->failures;
-        return 3;
-    }
-    for (j = 0; j < nrhs; ++j)
-        memcpy(x + j * n, (const double *)sol->x + j * sol->d, n * sizeof *x);
-    cholmod_free_dense(&sol, &s->common);
     ++s->calls;
     s->columns += nrhs;
     if (nrhs > s->max_nrhs) s->max_nrhs = nrhs;
     s->seconds += (double)(clock() - start) / CLOCKS_PER_SEC;
     return 0;
+}
+
+/* ------------------------------------------------------------------------------------------ */
+/* The condensed hand-over: the flexibility block from one batched solve */
+
+/* The host's contact equations (hycon_host_contact_equations) as the candidates, and the
+ * flexibility block (K^-1)_cc over them from one CHOLMOD solve with the m unit columns E_c
+ * (column-major, m x m): handed over with hycon_host_set_condensed. Returns the seconds. */
+static double hand_over_flexibility(HyconHost *host, CholmodState *chol, int64_t **candidates,
+                                    size_t *m_out) {
+    const size_t n = chol->n;
+    clock_t start = clock();
+    size_t m = 0, i, j;
+    double *units, *x, *flexibility;
+    HyconCondensed condensed;
+    CHECK(hycon_host_contact_equations(host, NULL, 0, &m));
+    *candidates = xcalloc(m, sizeof **candidates);
+    CHECK(hycon_host_contact_equations(host, *candidates, m, NULL));
+    units = xcalloc(n * m, sizeof *units);
+    x = xcalloc(n * m, sizeof *x);
+    flexibility = xcalloc(m * m, sizeof *flexibility);
+    for (j = 0; j < m; ++j) units[j * n + (size_t)(*candidates)[j]] = 1.0;
+    if (chol_solve(chol, m, units, x) != 0) {
+        printf("FAILED: the batched CHOLMOD solve of the flexibility block\n");
+        exit(EXIT_FAILURE);
+    }
+    for (j = 0; j < m; ++j)
+        for (i = 0; i < m; ++i) flexibility[i + m * j] = x[j * n + (size_t)(*candidates)[i]];
+    condensed.size = sizeof condensed;
+    condensed.kind = HYCON_CONDENSED_FLEXIBILITY;
+    condensed.m = m;
+    condensed.equations = *candidates;
+    condensed.matrix = flexibility;
+    CHECK(hycon_host_set_condensed(host, &condensed));
+    free(units);
+    free(x);
+    free(flexibility);
+    *m_out = m;
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
 }
 
 /* ------------------------------------------------------------------------------------------ */
@@ -217,8 +270,12 @@ int main(int argc, char **argv) {
     cholmod_sparse *kff;
     HyconMaterial materials[2];
     HyconModel *model = NULL;
-    HyconHost *host_cb = NULL, *host_csr = NULL;
-    HyconContact *c_cb = NULL, *c_csr = NULL, *c_model = NULL;
+    HyconHost *host_cb = NULL, *host_csr = NULL, *host_cond = NULL;
+    HyconContact *c_cb = NULL, *c_csr = NULL, *c_model = NULL, *c_cond = NULL;
+    int64_t *candidates = NULL;
+    double *image = NULL, *u0 = NULL, hand_over_seconds, host_cond_seconds = 0.0;
+    size_t n_cand = 0;
+    Snapshot s_cond;
     HyconContactOptions options;
     HyconElementBlock q4_elements;
     HyconHostNodes a_nodes, b_nodes;
@@ -409,6 +466,23 @@ int main(int argc, char **argv) {
     free(row_ptr);
     free(columns);
 
+    /* path 4: the condensed hand-over: the flexibility block over the contact equations from
+     * one batched CHOLMOD solve; increments take the load image, the host recovers its
+     * displacement from the contact forces */
+    CHECK(hycon_host_new(&host_cond, n_eq));
+    CHECK(hycon_host_add_pair(host_cond, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0,
+                              NULL));
+    {
+        const double inside[2] = {0.0, -radius};
+        CHECK(hycon_host_set_pair_inside(host_cond, 0, inside));
+    }
+    hand_over_seconds = hand_over_flexibility(host_cond, chol, &candidates, &n_cand);
+    CHECK(hycon_contact_new_host(&c_cond, host_cond, &options));
+    hycon_host_free(host_cond);
+    printf("condensed: %lu candidate equations, flexibility block by one batched CHOLMOD solve "
+           "%.3f s\n",
+           (unsigned long)n_cand, hand_over_seconds);
+
     /* path 3: the model API, HYCON_ELEMENT_Q4 on the same mesh */
     CHECK(hycon_model_new(&model, m.coords, m.n_nodes, &q4_elements, materials, 2));
     CHECK(hycon_model_prescribe(model, m.bottom, m.n_bottom, HYCON_XY));
@@ -432,6 +506,10 @@ int main(int argc, char **argv) {
     s_cb.u = xcalloc(2 * m.n_nodes, sizeof *s_cb.u);
     s_csr.u = xcalloc(2 * m.n_nodes, sizeof *s_csr.u);
     s_model.u = xcalloc(2 * m.n_nodes, sizeof *s_model.u);
+    s_cond.nodes = xcalloc(m.n_a, sizeof *s_cond.nodes);
+    s_cond.u = xcalloc(2 * m.n_nodes, sizeof *s_cond.u);
+    image = xcalloc(n_cand, sizeof *image);
+    u0 = xcalloc(n_eq, sizeof *u0);
 
     deltas[0] = params.half_width * params.half_width / radius; /* trial approach */
     for (step = 0; step < 2; ++step) {
@@ -457,12 +535,47 @@ int main(int argc, char **argv) {
                (unsigned long)info_cb.iterations, (unsigned long)info_csr.iterations,
                (unsigned long)info_model.iterations, (unsigned long)info_cb.active,
                (unsigned long)info_csr.active, (unsigned long)info_model.active);
+        { /* the condensed path: the host solves for its load (the image at the candidates),
+           * hycon iterates without a solve, the host recovers u from K u = rhs + forces */
+            clock_t t0 = clock();
+            size_t f_len = 0;
+            double *forces;
+            if (chol_solve(chol, 1, rhs, u0) != 0) {
+                printf("FAILED: CHOLMOD load solve\n");
+                return EXIT_FAILURE;
+            }
+            for (k = 0; k < n_cand; ++k) image[k] = u0[candidates[k]];
+            host_cond_seconds += (double)(clock() - t0) / CLOCKS_PER_SEC;
+            CHECK(hycon_contact_increment(c_cond, image, n_cand, NULL, 0, NULL));
+            CHECK(hycon_contact_forces(c_cond, NULL, 0, &f_len));
+            forces = xcalloc(f_len, sizeof *forces);
+            CHECK(hycon_contact_forces(c_cond, forces, f_len, NULL));
+            t0 = clock();
+            for (k = 0; k < n_eq; ++k) forces[k] += rhs[k];
+            if (chol_solve(chol, 1, forces, field_host) != 0) {
+                printf("FAILED: CHOLMOD recovery solve\n");
+                return EXIT_FAILURE;
+            }
+            host_cond_seconds += (double)(clock() - t0) / CLOCKS_PER_SEC;
+            CHECK(hycon_contact_node_results(c_cond, 0, s_cond.nodes, m.n_a, NULL));
+            for (k = 0; k < 2 * m.n_nodes; ++k)
+                s_cond.u[k] = eq[k] >= 0 ? field_host[eq[k]] : qp_now[k];
+            free(forces);
+            if (hycon_contact_displacement(c_cond, field_host, n_eq, NULL) !=
+                HYCON_ERROR_INVALID_ARGUMENT) {
+                printf("wrong value: a condensed analysis has no solver for the displacement\n");
+                ++failures;
+            }
+        }
         snapshot(c_cb, &m, eq, qp_now, field_host, n_eq, &s_cb);
         snapshot(c_csr, &m, eq, qp_now, field_host, n_eq, &s_csr);
         snapshot(c_model, &m, NULL, qp_now, field_model, 2 * m.n_nodes, &s_model);
         printf("  differences from the model API:\n");
         failures += compare("callback (CHOLMOD)", &m, &s_cb, &s_model, tolerance);
         failures += compare("CSR (hycon factors)", &m, &s_csr, &s_model, tolerance);
+        printf("  differences from the CSR path:\n");
+        failures += compare("condensed (CHOLMOD F)", &m, &s_cond, &s_csr, 1e-8);
+        failures += compare("callback (CHOLMOD)", &m, &s_cb, &s_csr, 1e-8);
         { /* way (a), tractions from element stresses: the CSR host (its elements handed over)
            * against the model API */
             double *ta = xcalloc(2 * m.n_a, sizeof *ta), *tb = xcalloc(2 * m.n_a, sizeof *tb);
@@ -560,10 +673,20 @@ int main(int argc, char **argv) {
     print_timings("callback", c_cb, 0, &failures);
     print_timings("CSR", c_csr, 1, &failures);
     print_timings("model", c_model, 1, &failures);
+    print_timings("condensed", c_cond, 0, &failures);
+    printf("  condensed: the host's flexibility block %.3f s, its load and recovery solves "
+           "%.3f s\n",
+           hand_over_seconds, host_cond_seconds);
 
     hycon_contact_free(c_cb);
     hycon_contact_free(c_csr);
     hycon_contact_free(c_model);
+    hycon_contact_free(c_cond);
+    free(candidates);
+    free(image);
+    free(u0);
+    free(s_cond.nodes);
+    free(s_cond.u);
     cholmod_free_factor(&chol->factor, &chol->common);
     cholmod_free_sparse(&kff, &chol->common);
     cholmod_finish(&chol->common);

@@ -2190,6 +2190,98 @@ static bool test_host_add_pair_bad_friction(void) {
     return ok;
 }
 
+/* hycon_host_set_condensed, hycon_host_contact_equations and a condensed analysis: every bad
+ * hand-over refused with its own message, a good one runs, its increment takes the load image
+ * only, and it has no displacement of its own. */
+static bool test_host_set_condensed_bad_input(void) {
+    HyconHost *d = make_host(&host);
+    HyconContact *c = NULL;
+    HyconCondensed good, bad;
+    int64_t eq[NDOF], wrong_eq[NDOF];
+    double flex[NDOF * NDOF], wrong[NDOF * NDOF], unit[NDOF], x[NDOF], rhs[NDOF];
+    size_t m = 0, i, j, small = 1;
+    bool ok = true;
+    EXPECT(d != NULL);
+    ok = ok && STATUS_FN(hycon_host_contact_equations, (NULL, NULL, 0, &m),
+                         HYCON_ERROR_NULL_POINTER, "host is NULL");
+    EXPECT(hycon_host_contact_equations(d, NULL, 0, &m) == HYCON_OK && m > 1 && m <= NDOF);
+    ok = ok && STATUS_FN(hycon_host_contact_equations, (d, eq, 1, &small),
+                         HYCON_ERROR_BUFFER_TOO_SMALL, NULL);
+    ok = ok && small == m;
+    EXPECT(hycon_host_contact_equations(d, eq, m, NULL) == HYCON_OK);
+    /* the flexibility block (K^-1)_cc from the host's solves with unit columns */
+    for (j = 0; j < m; ++j) {
+        for (i = 0; i < host.n; ++i) unit[i] = (size_t)eq[j] == i ? 1.0 : 0.0;
+        EXPECT(host_solve(&host, host.n, 1, unit, x) == 0);
+        for (i = 0; i < m; ++i) flex[i + m * j] = x[eq[i]];
+    }
+    good.size = sizeof good;
+    good.kind = HYCON_CONDENSED_FLEXIBILITY;
+    good.m = m;
+    good.equations = eq;
+    good.matrix = flex;
+#define BAD_CONDENSED(status, part) \
+    ok = ok && STATUS_FN(hycon_host_set_condensed, (d, &bad), status, part)
+    ok = ok && STATUS_FN(hycon_host_set_condensed, (NULL, &good), HYCON_ERROR_NULL_POINTER,
+                         "host is NULL");
+    ok = ok && STATUS_FN(hycon_host_set_condensed, (d, NULL), HYCON_ERROR_NULL_POINTER,
+                         "condensed is NULL");
+    bad = good, bad.size = 0;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "condensed.size = 0");
+    bad = good, bad.kind = 0;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "condensed.kind = 0");
+    bad = good, bad.m = 0;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "needs m^2 > 0");
+    bad = good, bad.equations = NULL;
+    BAD_CONDENSED(HYCON_ERROR_NULL_POINTER, "condensed.equations is NULL");
+    bad = good, bad.matrix = NULL;
+    BAD_CONDENSED(HYCON_ERROR_NULL_POINTER, "condensed.matrix is NULL");
+    memcpy(wrong_eq, eq, m * sizeof *eq);
+    wrong_eq[1] = -2;
+    bad = good, bad.equations = wrong_eq;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "candidate equation -2 is out of range");
+    wrong_eq[1] = (int64_t)host.n;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "out of range (n = ");
+    wrong_eq[1] = wrong_eq[0];
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "or given twice");
+    memcpy(wrong, flex, m * m * sizeof *flex);
+    wrong[2 + m] = NAN;
+    bad = good, bad.matrix = wrong;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "entry (2, 1) = NaN is not finite");
+    wrong[2 + m] = 2.0 * flex[2 + m] + 1.0;
+    BAD_CONDENSED(HYCON_ERROR_INVALID_ARGUMENT, "not symmetric");
+#undef BAD_CONDENSED
+    /* a contact equation that is no candidate: refused when the analysis starts */
+    bad = good, bad.m = m - 1, bad.equations = eq + 1;
+    for (j = 0; j + 1 < m; ++j)
+        for (i = 0; i + 1 < m; ++i) wrong[i + (m - 1) * j] = flex[i + 1 + m * (j + 1)];
+    bad.matrix = wrong;
+    EXPECT(hycon_host_set_condensed(d, &bad) == HYCON_OK);
+    ok = ok && STATUS_FN(hycon_contact_new_host, (&c, d, NULL), HYCON_ERROR_INVALID_ARGUMENT,
+                         "is not among the condensed operator's candidates");
+    ok = ok && c == NULL;
+    /* a Schur complement that is not positive definite */
+    for (i = 0; i < m * m; ++i) wrong[i] = -flex[i];
+    bad = good, bad.kind = HYCON_CONDENSED_STIFFNESS, bad.matrix = wrong;
+    EXPECT(hycon_host_set_condensed(d, &bad) == HYCON_OK);
+    ok = ok && STATUS_FN(hycon_contact_new_host, (&c, d, NULL), HYCON_ERROR_SINGULAR,
+                         "not positive definite");
+    /* the good one: the increment takes the load image (m values), not the right-hand side */
+    EXPECT(hycon_host_set_condensed(d, &good) == HYCON_OK);
+    EXPECT(hycon_contact_new_host(&c, d, NULL) == HYCON_OK);
+    host_rhs(&host, rhs, PRESS, 0.0);
+    ok = ok && STATUS_FN(hycon_contact_increment, (c, rhs, host.n, NULL, 0, NULL),
+                         HYCON_ERROR_INVALID_ARGUMENT, "load image");
+    EXPECT(host_solve(&host, host.n, 1, rhs, x) == 0);
+    for (i = 0; i < m; ++i) unit[i] = x[eq[i]];
+    ok = ok && STATUS(hycon_contact_increment(c, unit, m, NULL, 0, NULL), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_contact_displacement, (c, x, host.n, NULL),
+                         HYCON_ERROR_INVALID_ARGUMENT, "recovers the displacement");
+    hycon_contact_free(c);
+    hycon_host_free(d);
+    return ok;
+}
+
 static bool test_host_set_csr_bad_input(void) {
     HyconHost *d = make_host(&host);
     size_t row_ptr[NDOF + 1], cols[4];
@@ -2570,6 +2662,7 @@ int main(void) {
         {"host_add_pair_unknown_ids", test_host_add_pair_unknown_ids},
         {"host_add_pair_bad_friction", test_host_add_pair_bad_friction},
         {"host_set_csr_bad_input", test_host_set_csr_bad_input},
+        {"host_set_condensed_bad_input", test_host_set_condensed_bad_input},
         {"host_set_elements_bad_input", test_host_set_elements_bad_input},
         {"host_set_solver_null", test_host_set_solver_null},
         {"contact_new_host_bad_input", test_contact_new_host_bad_input},

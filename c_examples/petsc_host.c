@@ -119,6 +119,23 @@ static void hc_host_csr(HyconHost *host, const size_t *row_ptr, const size_t *co
     HC(hycon_host_set_csr(host, row_ptr, columns, values, HYCON_CSR_LOWER));
 }
 
+/* The host's stiffness Schur complement over its candidate equations (m x m, column-major). */
+static void hc_host_condensed(HyconHost *host, const int64_t *equations, size_t m,
+                              const double *schur) {
+    HyconCondensed condensed;
+    condensed.size = sizeof condensed;
+    condensed.kind = HYCON_CONDENSED_STIFFNESS;
+    condensed.m = m;
+    condensed.equations = equations;
+    condensed.matrix = schur;
+    HC(hycon_host_set_condensed(host, &condensed));
+}
+
+/* The contact forces of the last increment over the host's equations. */
+static void hc_forces(const HyconContact *contact, double *out, size_t n) {
+    HC(hycon_contact_forces(contact, out, n, NULL));
+}
+
 /* Start the analysis and free the description (the analysis does not need it). */
 static HyconContact *hc_start(HyconHost *host, const HyconContactOptions *options) {
     HyconContact *contact = NULL;
@@ -362,7 +379,103 @@ typedef struct Problem {
     const size_t *row_ptr, *columns;        /* the gathered matrix, lower triangle */
     const double *values;
     double radius, e_star, e_star_wrong, half_width;
+    struct Schur *schur; /* the condensed path's factor */
 } Problem;
+
+/* Rank 0: the condensed path's host side. The Schur complement of K over the candidate
+ * equations (the contact nodes' equations) by MUMPS through MatFactorSetSchurIS +
+ * MatFactorCreateSchurComplement. PETSc 3.18 refuses it for a distributed matrix ("MUMPS
+ * distributed parallel Schur complements not yet supported from PETSc"), so the host factors
+ * the copy of K that rank 0 gathered (the CSR path's) on PETSC_COMM_SELF, at any rank count;
+ * that factor also gives the load and recovery solves (MatSolve). */
+typedef struct Schur {
+    Mat k, f;             /* the gathered K (SEQAIJ, both triangles) and its factor */
+    Vec b, x;             /* work vectors without arrays (VecPlaceArray) */
+    int64_t *equations;   /* the m candidates */
+    size_t m;
+    double *s;            /* m x m, column-major */
+    double seconds;       /* building K, factoring it, forming S */
+    double solve_seconds; /* load and recovery solves so far */
+} Schur;
+
+static PetscErrorCode schur_setup(Schur *c, const Problem *p) {
+    const size_t n = p->n_eq;
+    PetscInt *nnz = xcalloc(n, sizeof *nnz), *idx, i;
+    IS is;
+    Mat s_mat;
+    MatFactorInfo info;
+    const PetscScalar *values;
+    PetscInt lda;
+    size_t r, q, j;
+    double t0 = MPI_Wtime();
+
+    PetscFunctionBeginUser;
+    c->m = 2 * (p->a.n + p->b.n);
+    c->equations = xcalloc(c->m, sizeof *c->equations);
+    for (q = 0; q < 2 * p->a.n; ++q) c->equations[q] = p->a.equations[q];
+    for (q = 0; q < 2 * p->b.n; ++q) c->equations[2 * p->a.n + q] = p->b.equations[q];
+    for (r = 0; r < n; ++r)
+        for (q = p->row_ptr[r]; q < p->row_ptr[r + 1]; ++q) {
+            ++nnz[r];
+            if (p->columns[q] != r) ++nnz[p->columns[q]];
+        }
+    PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, (PetscInt)n, (PetscInt)n, 0, nnz, &c->k));
+    for (r = 0; r < n; ++r)
+        for (q = p->row_ptr[r]; q < p->row_ptr[r + 1]; ++q) {
+            PetscInt row = (PetscInt)r, col = (PetscInt)p->columns[q];
+            PetscCall(MatSetValue(c->k, row, col, p->values[q], INSERT_VALUES));
+            if (col != row) PetscCall(MatSetValue(c->k, col, row, p->values[q], INSERT_VALUES));
+        }
+    PetscCall(MatAssemblyBegin(c->k, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(c->k, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatSetOption(c->k, MAT_SPD, PETSC_TRUE));
+    idx = xcalloc(c->m, sizeof *idx);
+    for (q = 0; q < c->m; ++q) idx[q] = (PetscInt)c->equations[q];
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, (PetscInt)c->m, idx, PETSC_OWN_POINTER, &is));
+    PetscCall(MatGetFactor(c->k, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &c->f));
+    PetscCall(MatFactorSetSchurIS(c->f, is));
+    PetscCall(MatFactorInfoInitialize(&info));
+    PetscCall(MatCholeskyFactorSymbolic(c->f, c->k, NULL, &info));
+    PetscCall(MatCholeskyFactorNumeric(c->f, c->k, &info));
+    PetscCall(MatFactorCreateSchurComplement(c->f, &s_mat, NULL));
+    PetscCall(MatDenseGetLDA(s_mat, &lda));
+    PetscCall(MatDenseGetArrayRead(s_mat, &values));
+    c->s = xcalloc(c->m * c->m, sizeof *c->s);
+    for (j = 0; j < c->m; ++j)
+        for (i = 0; i < (PetscInt)c->m; ++i) c->s[(size_t)i + c->m * j] = values[i + lda * j];
+    PetscCall(MatDenseRestoreArrayRead(s_mat, &values));
+    PetscCall(MatDestroy(&s_mat));
+    PetscCall(ISDestroy(&is));
+    PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, (PetscInt)n, NULL, &c->b));
+    PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, (PetscInt)n, NULL, &c->x));
+    free(nnz);
+    c->seconds = MPI_Wtime() - t0;
+    PetscFunctionReturn(0);
+}
+
+/* x = K^-1 rhs with the Schur factor (n values each). */
+static PetscErrorCode schur_solve(Schur *c, const double *rhs, double *x) {
+    double t0 = MPI_Wtime();
+    PetscFunctionBeginUser;
+    PetscCall(VecPlaceArray(c->b, rhs));
+    PetscCall(VecPlaceArray(c->x, x));
+    PetscCall(MatSolve(c->f, c->b, c->x));
+    PetscCall(VecResetArray(c->b));
+    PetscCall(VecResetArray(c->x));
+    c->solve_seconds += MPI_Wtime() - t0;
+    PetscFunctionReturn(0);
+}
+
+static PetscErrorCode schur_free(Schur *c) {
+    PetscFunctionBeginUser;
+    PetscCall(MatDestroy(&c->f));
+    PetscCall(MatDestroy(&c->k));
+    PetscCall(VecDestroy(&c->b));
+    PetscCall(VecDestroy(&c->x));
+    free(c->equations);
+    free(c->s);
+    PetscFunctionReturn(0);
+}
 
 typedef struct Timing {
     double setup, increments, recovery;
@@ -377,13 +490,16 @@ typedef struct Timing {
 static int run_analysis(const char *name, const Problem *p, Solver *s, double friction,
                         HyconKinematics kinematics, double *approach, const double *slide,
                         size_t n_steps, double target_load, Timing *t_cb, Timing *t_csr,
-                        double *worst_t, double *worst_u, HyconNodeResult *last, double *u_last) {
+                        Timing *t_cond, double *worst_t, double *worst_u, HyconNodeResult *last,
+                        double *u_last) {
     const HyconContactOptions options = hc_options(kinematics);
     const size_t n_a = p->a.n, n = p->n_eq;
-    HyconContact *c_cb, *c_csr;
+    Schur *schur = p->schur;
+    HyconContact *c_cb, *c_csr, *c_cond;
     HyconHost *host;
-    Snapshot s_cb, s_csr;
+    Snapshot s_cb, s_csr, s_cond;
     double *rhs = xcalloc(n, sizeof *rhs), t0;
+    double *image = xcalloc(schur->m, sizeof *image), *work = xcalloc(n, sizeof *work);
     Counts c0;
     size_t step, k;
     int failures = 0;
@@ -393,6 +509,7 @@ static int run_analysis(const char *name, const Problem *p, Solver *s, double fr
            kinematics == HYCON_KINEMATICS_FINITE ? "finite" : "small");
     memset(t_cb, 0, sizeof *t_cb);
     memset(t_csr, 0, sizeof *t_csr);
+    memset(t_cond, 0, sizeof *t_cond);
     host = hc_host(n, &p->a, &p->b, friction, inside);
     hc_host_solver(host, petsc_solve_cb, s);
     c0 = counts_now(s);
@@ -406,6 +523,16 @@ static int run_analysis(const char *name, const Problem *p, Solver *s, double fr
     t0 = MPI_Wtime();
     c_csr = hc_start(host, &options);
     t_csr->setup = MPI_Wtime() - t0;
+
+    /* the condensed path: its setup counts the host's Schur factorization (done once for both
+     * analyses, counted in each) and hycon's dense factorization of S */
+    host = hc_host(n, &p->a, &p->b, friction, inside);
+    t0 = MPI_Wtime();
+    hc_host_condensed(host, schur->equations, schur->m, schur->s);
+    c_cond = hc_start(host, &options);
+    t_cond->setup = schur->seconds + MPI_Wtime() - t0;
+    s_cond.nodes = xcalloc(n_a, sizeof *s_cond.nodes);
+    s_cond.u = xcalloc(n, sizeof *s_cond.u);
 
     s_cb.nodes = xcalloc(n_a, sizeof *s_cb.nodes);
     s_csr.nodes = xcalloc(n_a, sizeof *s_csr.nodes);
@@ -449,6 +576,27 @@ static int run_analysis(const char *name, const Problem *p, Solver *s, double fr
         hc_node_results(c_cb, s_cb.nodes, n_a);
         hc_node_results(c_csr, s_csr.nodes, n_a);
 
+        { /* condensed: the host's load solve gives the image at the candidates, hycon
+           * iterates on S alone, the host recovers u from K u = rhs + forces */
+            double t_inc, t_rec, solves0 = schur->solve_seconds;
+            t0 = MPI_Wtime();
+            if (schur_solve(schur, rhs, work) != 0) hc_fail("MatSolve (load)", HYCON_ERROR_SOLVER);
+            for (k = 0; k < schur->m; ++k) image[k] = work[schur->equations[k]];
+            (void)hc_increment(c_cond, image, schur->m);
+            t_inc = MPI_Wtime() - t0;
+            t_cond->increment_solves_seconds += schur->solve_seconds - solves0;
+            t0 = MPI_Wtime();
+            hc_forces(c_cond, work, n);
+            for (k = 0; k < n; ++k) work[k] += rhs[k];
+            if (schur_solve(schur, work, s_cond.u) != 0)
+                hc_fail("MatSolve (recovery)", HYCON_ERROR_SOLVER);
+            t_rec = MPI_Wtime() - t0;
+            hc_node_results(c_cond, s_cond.nodes, n_a);
+            t_cond->increments += t_inc;
+            t_cond->recovery += t_rec;
+            ++t_cond->n_increments;
+        }
+
         printf("  increment %lu: approach %.4e, slide %.4e (%.2f a): iterations %lu / %lu, "
                "active %lu, slip %lu; %.3f / %.3f s (callback / CSR), %lu solve call(s), "
                "%lu rhs\n",
@@ -458,11 +606,17 @@ static int run_analysis(const char *name, const Problem *p, Solver *s, double fr
                (unsigned long)i_cb.slip, t_inc_cb, t_inc_csr, (unsigned long)c_inc.calls,
                (unsigned long)c_inc.columns);
         failures += compare("callback vs CSR", n_a, n, &s_cb, &s_csr, worst_t, worst_u);
+        failures += compare("condensed vs CSR", n_a, n, &s_cond, &s_csr, worst_t, worst_u);
     }
     memcpy(last, s_cb.nodes, n_a * sizeof *last);
     memcpy(u_last, s_cb.u, n * sizeof *u_last);
     hc_free(c_cb);
     hc_free(c_csr);
+    hc_free(c_cond);
+    free(s_cond.nodes);
+    free(s_cond.u);
+    free(image);
+    free(work);
     free(s_cb.nodes);
     free(s_csr.nodes);
     free(s_cb.u);
@@ -840,7 +994,8 @@ int main(int argc, char **argv) {
             double *u_last = xcalloc((size_t)n_eq, sizeof *u_last);
             double approach[6], slide[6], worst_t = 0.0, worst_u = 0.0, a_err = 0.0, p0_err = 0.0;
             double p_target;
-            Timing press_cb, press_csr, slide_cb, slide_csr;
+            Timing press_cb, press_csr, press_cond, slide_cb, slide_csr, slide_cond;
+            Schur schur;
             int failures = 0;
 
             for (q = 0; q < 2 * m.n_a; ++q) {
@@ -875,14 +1030,20 @@ int main(int argc, char **argv) {
 
             failures += check_assembly(&m, &material, (size_t)n_eq, row_ptr, columns, values,
                                        rhs_approach, rhs_slide);
+            memset(&schur, 0, sizeof schur);
+            if (schur_setup(&schur, &p) != 0) hc_fail("the MUMPS Schur complement", HYCON_ERROR_SOLVER);
+            p.schur = &schur;
+            printf("condensed path: MUMPS Schur complement over %lu candidate equations on rank "
+                   "0 (K gathered there), %.3f s\n",
+                   (unsigned long)schur.m, schur.seconds);
 
             /* press: a trial approach, then the approach of the target's Hertz load */
             approach[0] = params.half_width * params.half_width / radius;
             slide[0] = slide[1] = 0.0;
             p_target = DISK_PI * params.half_width * params.half_width * p.e_star / (4.0 * radius);
             failures += run_analysis("press", &p, &s, 0.0, HYCON_KINEMATICS_SMALL, approach, slide,
-                                     2, p_target, &press_cb, &press_csr, &worst_t, &worst_u, last,
-                                     u_last);
+                                     2, p_target, &press_cb, &press_csr, &press_cond, &worst_t,
+                                     &worst_u, last, u_last);
             failures += check_hertz(&p, last, &a_err, &p0_err);
 
             /* slide: press, then move the top sideways */
@@ -893,8 +1054,8 @@ int main(int argc, char **argv) {
             slide[3] = 0.2 * params.half_width;
             slide[4] = 0.4 * params.half_width;
             failures += run_analysis("slide", &p, &s, friction, HYCON_KINEMATICS_FINITE, approach,
-                                     slide, 5, 0.0, &slide_cb, &slide_csr, &worst_t, &worst_u, last,
-                                     u_last);
+                                     slide, 5, 0.0, &slide_cb, &slide_csr, &slide_cond, &worst_t,
+                                     &worst_u, last, u_last);
             failures += check_sliding(&p, last, friction);
 
             printf("\nsummary: %d rank(s), %ld equations, %lu A nodes; %s (PETSc %d.%d.%d)\n",
@@ -905,8 +1066,9 @@ int main(int argc, char **argv) {
                    "increments / recovery) |\n");
             {
                 const char *names[2] = {"press", "slide"};
-                Timing *cb[2], *csr[2];
+                Timing *cb[2], *csr[2], *cond[2];
                 cb[0] = &press_cb, cb[1] = &slide_cb, csr[0] = &press_csr, csr[1] = &slide_csr;
+                cond[0] = &press_cond, cond[1] = &slide_cond;
                 for (q = 0; q < 2; ++q) {
                     printf("| %s | callback | %.3f | %lu | %.4f | %.4f | %lu / %lu / %lu | %lu / "
                            "%lu / %lu |\n",
@@ -923,7 +1085,17 @@ int main(int argc, char **argv) {
                            csr[q]->setup,
                            (unsigned long)csr[q]->n_increments,
                            csr[q]->increments / (double)csr[q]->n_increments);
+                    printf("| %s | condensed | %.3f | %lu | %.4f | %.4f | - | - |\n", names[q],
+                           cond[q]->setup, (unsigned long)cond[q]->n_increments,
+                           cond[q]->increments / (double)cond[q]->n_increments,
+                           cond[q]->increment_solves_seconds / (double)cond[q]->n_increments);
                 }
+                for (q = 0; q < 2; ++q)
+                    printf("%s totals (setup + increments + recovery), s: callback %.3f, CSR "
+                           "%.3f, condensed %.3f\n",
+                           names[q], cb[q]->setup + cb[q]->increments + cb[q]->recovery,
+                           csr[q]->setup + csr[q]->increments + csr[q]->recovery,
+                           cond[q]->setup + cond[q]->increments + cond[q]->recovery);
             }
             printf("solve callback: %lu calls, %lu right-hand sides (at most %lu per call), "
                    "%.3f s in the collective solves, of which %.3f s in KSPMatSolve and %.3f s "
@@ -945,6 +1117,7 @@ int main(int argc, char **argv) {
                 printf("OK\n");
             fflush(stdout);
             send_command(CMD_DONE, exit_code);
+            if (schur_free(&schur) != 0) exit_code = 1;
             free(a_xy);
             free(b_xy);
             free(a_eq);

@@ -121,7 +121,7 @@
 typedef struct HyconContact HyconContact;
 
 // A host's contact description (host-assembly API): its contact polylines and its stiffness
-// (CSR) or solve callback. Create with `hycon_host_new`, free with `hycon_host_free`.
+// (CSR), solve callback or condensed operator. Create with `hycon_host_new`, free with `hycon_host_free`.
 // Thread safety: as `HyconModel`.
 typedef struct HyconHost HyconHost;
 
@@ -329,6 +329,31 @@ typedef int32_t HyconTriangle;
 // from theirs, so such an increment makes no call at all. Called on the thread that calls into the
 // `HyconContact`. Must not unwind through hycon.
 typedef int32_t (*HyconSolveFn)(void *user_data, size_t n, size_t nrhs, const double *rhs, double *x);
+
+// Which condensed operator a host hands over (`HyconCondensed::kind`), one of
+// `HYCON_CONDENSED_*`.
+typedef int32_t HyconCondensedKind;
+
+// A host's condensed operator over its contact candidate equations (host-assembly API,
+// `hycon_host_set_condensed`). The candidates hold every equation of the contact nodes (all
+// nodes of all pairs: under finite kinematics the polylines must cover the whole sliding
+// range) and may hold more. Versioned by `size` as `HyconContactOptions`: set
+// `size = sizeof(HyconCondensed)`.
+typedef struct HyconCondensed {
+    // `sizeof(HyconCondensed)` as the host was compiled.
+    size_t size;
+    // `HYCON_CONDENSED_STIFFNESS` or `HYCON_CONDENSED_FLEXIBILITY`.
+    HyconCondensedKind kind;
+    // Number of candidate equations `m`.
+    size_t m;
+    // The `m` candidate equations (host numbering, each once): the order of the matrix's rows
+    // and columns and of every increment's load image.
+    const int64_t *equations;
+    // `m * m` doubles, column-major: `matrix[i + m * j]` couples `equations[i]` and
+    // `equations[j]`; symmetric (to 1e-6 of its largest entry; both triangles are read and
+    // averaged).
+    const double *matrix;
+} HyconCondensed;
 
 // Summary of a converged increment.
 typedef struct HyconIncrementInfo {
@@ -626,6 +651,14 @@ typedef struct HyconSolidMaterial {
 // The value is the total force on the plate in that direction (its motion is solved for).
 #define HYCON_PLATE_FORCE 2
 
+// The stiffness Schur complement `S = K_cc - K_ci K_ii^-1 K_ic` over the candidate equations
+// `c` (what MUMPS gives through PETSc's `MatFactorSetSchurIS` +
+// `MatFactorCreateSchurComplement`); hycon factors it once (dense Cholesky).
+#define HYCON_CONDENSED_STIFFNESS 1
+
+// The flexibility block `(K^-1)_cc` (one batched solve `K X = E_c`, e.g. CHOLMOD's).
+#define HYCON_CONDENSED_FLEXIBILITY 2
+
 // The 18-beta assumed-stress hybrid brick of Pian and Tong (stress in natural coordinates,
 // carried to Cartesian components with the centre Jacobian): locking-free in bending and as
 // `nu -> 0.5`.
@@ -870,6 +903,40 @@ HyconStatus hycon_host_set_csr(struct HyconHost *host,
 // `host` must be a live handle; `solve` a valid function as documented.
 HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, void *user_data);
 
+// Hand over the host's condensed operator over its contact candidate equations (copied):
+// the stiffness Schur complement or the flexibility block (`HyconCondensed`), computed by the
+// host's own solver in one factorization. hycon runs every increment on it alone, with no
+// solve inside an increment: `hycon_contact_increment` then takes as `load` the **load
+// image**, `u0 = K^-1 rhs` at the `m` candidate equations in their order (`load_len = m`;
+// the host's solve of its total right-hand side), and after an increment the host recovers
+// its displacement with one solve of its own, `K u = rhs + forces` with
+// `hycon_contact_forces` (`hycon_contact_displacement` fails: hycon has no solver of `K`).
+// `hycon_host_contact_equations` lists the equations the candidates must hold. Replaces an
+// earlier matrix or solver. Checked here: `size`, the kind, `m > 0`, candidates in range and
+// distinct, finite values, symmetry; at `hycon_contact_new_host`: every contact equation
+// among the candidates, a Schur complement positive definite (`HYCON_ERROR_SINGULAR`).
+//
+// # Safety
+// `host` must be a live handle; `condensed` NULL or a readable `HyconCondensed` whose arrays
+// hold the stated counts.
+HyconStatus hycon_host_set_condensed(struct HyconHost *host,
+                                     const struct HyconCondensed *condensed);
+
+// The host's contact equations: every equation of a node of its pairs (not `HYCON_FIXED`),
+// in the order the nodes were first given (`u_x`, then `u_y`), each once: what the
+// candidates of `hycon_host_set_condensed` must hold (as an index set for a Schur
+// complement, or the columns of a batched solve).
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+//
+// # Safety
+// `host` must be a live handle; `out` NULL or `len` writable values; `needed` NULL or
+// writable.
+HyconStatus hycon_host_contact_equations(const struct HyconHost *host,
+                                         int64_t *out,
+                                         size_t len,
+                                         size_t *needed);
+
 // Optionally hand over the elements of body A along the A polylines (at least those owning an
 // A segment), so that `hycon_contact_stress_tractions` can recover the tractions from their
 // stresses (the paper's way (a)) from the host's displacements. The same order as
@@ -920,7 +987,10 @@ void hycon_contact_free(struct HyconContact *contact);
 //   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (the
 //   others are ignored, whatever they hold: NaN there is fine);
 // * host API: `load` = the host's right-hand side over its equations (including the effect of
-//   its prescribed displacements), `prescribed` = (NULL, 0).
+//   its prescribed displacements), `prescribed` = (NULL, 0);
+// * host API with a condensed operator (`hycon_host_set_condensed`): `load` = the load image
+//   `u0 = K^-1 rhs` at the candidate equations, in their order (`load_len = m`),
+//   `prescribed` = (NULL, 0).
 //
 // `load_len` is the field length, which the size query of the displacement gives:
 // `hycon_contact_displacement(contact, NULL, 0, &load_len)`.

@@ -565,6 +565,37 @@ class Host {
         return Status::from(hycon_host_set_solver(get(), solve, user_data));
     }
 
+    // The host's condensed operator over its candidate equations (copied): the stiffness
+    // Schur complement (HYCON_CONDENSED_STIFFNESS) or the flexibility block
+    // (HYCON_CONDENSED_FLEXIBILITY), m x m column-major in the order of `equations`. Increments
+    // then take the load image u0 = K^-1 rhs at the candidates; the host recovers its
+    // displacement with Contact::forces (see hycon_host_set_condensed).
+    Status set_condensed(HyconCondensedKind kind, View<std::int64_t> equations,
+                         View<double> matrix) {
+        if (matrix.size() != equations.size() * equations.size())
+            return detail::invalid("the condensed matrix must hold m * m values");
+        HyconCondensed c = {};
+        c.size = sizeof(HyconCondensed);
+        c.kind = kind;
+        c.m = equations.size();
+        c.equations = equations.data();
+        c.matrix = matrix.data();
+        return Status::from(hycon_host_set_condensed(get(), &c));
+    }
+
+    // The equations of the contact nodes, in the order they were first given (u_x, u_y):
+    // what the candidates of set_condensed must hold.
+    Result<std::vector<std::int64_t>> contact_equations() const {
+        std::size_t n = 0;
+        Status s = Status::from(hycon_host_contact_equations(get(), nullptr, 0, &n));
+        if (!s.ok()) return s;
+        std::vector<std::int64_t> out(n);
+        if (n == 0) return out;
+        s = Status::from(hycon_host_contact_equations(get(), out.data(), n, nullptr));
+        if (!s.ok()) return s;
+        return out;
+    }
+
     std::size_t equations() const noexcept { return equations_; }
     HyconHost *get() const noexcept { return handle_.get(); }
     explicit operator bool() const noexcept { return static_cast<bool>(handle_); }

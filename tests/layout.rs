@@ -201,6 +201,7 @@ rust_structs! {
     HyconElementBlock { offsets, nodes, n_elements, materials, kind },
     HyconPolyline { nodes, n },
     HyconHostNodes { ids, coords, equations, n },
+    HyconCondensed { size, kind, m, equations, matrix },
     HyconTimings { assembly, factorization, flexibility, load_solves, iterations, recovery },
 }
 
@@ -226,6 +227,7 @@ fn rust_aliases() -> BTreeMap<&'static str, String> {
         HyconSide,
         HyconTriangle,
         HyconPlateControl,
+        HyconCondensedKind,
         HyconMonitorFn,
         HyconSolveFn,
         HyconBrickKind,
@@ -293,6 +295,8 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_CSR_UPPER,
         HYCON_PLATE_DISPLACEMENT,
         HYCON_PLATE_FORCE,
+        HYCON_CONDENSED_STIFFNESS,
+        HYCON_CONDENSED_FLEXIBILITY,
     ]
     .into_iter()
     .collect()

@@ -11,7 +11,8 @@
 
 use hycon::assembly::{DofMap, SparsePattern, dof};
 use hycon::contact::bodies::{
-    Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
+    Condensed, CondensedKind, Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem,
+    Triangle,
 };
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult,
@@ -371,4 +372,355 @@ fn host_stress_tractions_match_the_model_path() {
     bare.increment(&host.rhs(model, &qp), &[]).unwrap();
     let err = bare.stress_tractions(0).unwrap_err();
     assert!(err.to_string().contains("elements of body A"), "{err}");
+}
+
+/// The host's condensed operator over its candidate equations `c` (sorted), computed as a
+/// host's solver would: the flexibility block `(K^-1)_cc` by one batched solve `K X = E_c`,
+/// or the Schur complement `S = K_cc - K_ci K_ii^-1 K_ic` from a factor of `K_ii` alone
+/// (never through `K^-1`, so the two hand-overs are independent).
+fn condensed(host: &HostSide, c: &[usize], kind: CondensedKind) -> Condensed {
+    use faer::sparse::{SparseColMat, Triplet};
+    let k = host.pattern.matrix();
+    let n = k.ncols();
+    let m = c.len();
+    let mut place = vec![None; n];
+    c.iter().enumerate().for_each(|(i, &e)| place[e] = Some(i));
+    let matrix = match kind {
+        CondensedKind::Flexibility => {
+            let mut factor =
+                SparseCholesky::analyze(k.symbolic(), hycon::solver::Backend::Faer, &[]).unwrap();
+            factor.factorize(k).unwrap();
+            let mut x = faer::Mat::<f64>::from_fn(n, m, |i, j| f64::from(i == c[j]));
+            factor.solve_in_place(x.as_mut()).unwrap();
+            (0..m * m).map(|a| x[(c[a % m], a / m)]).collect()
+        }
+        CondensedKind::Stiffness => {
+            let inner: Vec<usize> = (0..n).filter(|&e| place[e].is_none()).collect();
+            let mut at = vec![usize::MAX; n];
+            inner.iter().enumerate().for_each(|(i, &e)| at[e] = i);
+            let (mut kii, mut kic) = (Vec::new(), faer::Mat::<f64>::zeros(inner.len(), m));
+            let mut s = faer::Mat::<f64>::zeros(m, m);
+            for j in 0..n {
+                for (i, &v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+                    // the stored lower triangle: (i, j) with i >= j, and its mirror
+                    match (place[i], place[j]) {
+                        (Some(a), Some(b)) => {
+                            s[(a, b)] += v;
+                            if a != b {
+                                s[(b, a)] += v;
+                            }
+                        }
+                        (Some(a), None) => kic[(at[j], a)] += v,
+                        (None, Some(b)) => kic[(at[i], b)] += v,
+                        (None, None) => kii.push(Triplet::new(at[i], at[j], v)),
+                    }
+                }
+            }
+            let kii =
+                SparseColMat::<usize, f64>::try_new_from_triplets(inner.len(), inner.len(), &kii)
+                    .unwrap();
+            let mut factor =
+                SparseCholesky::analyze(kii.symbolic(), hycon::solver::Backend::Faer, &[]).unwrap();
+            factor.factorize(kii.as_ref()).unwrap();
+            let mut x = kic.clone();
+            factor.solve_in_place(x.as_mut()).unwrap();
+            let s = s - kic.transpose() * &x;
+            (0..m * m).map(|a| s[(a % m, a / m)]).collect()
+        }
+    };
+    Condensed {
+        kind,
+        equations: c.to_vec(),
+        matrix,
+    }
+}
+
+/// The condensed hand-over (both kinds, the candidates exactly the contact equations or more)
+/// gives the CSR path's states and tractions to 1e-8 of the peak, and the displacement the host
+/// recovers with the contact forces added (`K u = rhs + forces`, its own solve) the CSR path's
+/// to 1e-8 of the largest: both kinematics, frictionless and mu = 0.3.
+#[test]
+fn condensed_host_matches_the_csr_path() {
+    let base = scene();
+    let model = &base.model;
+    let host = HostSide::new(model);
+    let mut factor =
+        SparseCholesky::analyze(host.pattern.symbolic(), hycon::solver::Backend::Faer, &[])
+            .unwrap();
+    factor.factorize(host.pattern.matrix()).unwrap();
+    let mut solve = |b: &[f64]| {
+        let mut x = faer::Mat::<f64>::from_fn(b.len(), 1, |i, _| b[i]);
+        factor.solve_in_place(x.as_mut()).unwrap();
+        (0..b.len()).map(|i| x[(i, 0)]).collect::<Vec<f64>>()
+    };
+    let system = host.system(model, &base.pair, HostStiffness::Csr(host.csr()));
+    let mut contact: Vec<usize> = system
+        .nodes
+        .iter()
+        .flat_map(|n| n.equations.into_iter().flatten())
+        .collect();
+    contact.sort_unstable();
+    // the contact equations and, as a host may condense more, a few others
+    let wider: Vec<usize> = (0..host.dofs.n_free())
+        .filter(|e| contact.binary_search(e).is_ok() || e % 211 == 0)
+        .collect();
+    let hand_overs = [
+        condensed(&host, &contact, CondensedKind::Stiffness),
+        condensed(&host, &contact, CondensedKind::Flexibility),
+        condensed(&host, &wider, CondensedKind::Stiffness),
+    ];
+    let approach = base.half_width.powi(2) / base.radius;
+    let a = base.half_width;
+    for (kinematics, steps) in [
+        (
+            Kinematics::Small,
+            vec![(0.5, 0.0), (1.0, 0.0), (1.0, 0.01 * a)],
+        ),
+        (
+            Kinematics::Finite,
+            vec![(1.0, 0.0), (1.0, 0.3 * a), (1.0, 0.6 * a)],
+        ),
+    ] {
+        for friction in [0.0, 0.3] {
+            let pair = ContactPair {
+                friction,
+                ..base.pair.clone()
+            };
+            let options = ContactOptions {
+                tolerance: 1e-10,
+                kinematics,
+                ..ContactOptions::default()
+            };
+            let what = format!("{} kinematics, mu = {friction}", kinematics.name());
+            let mut csr = ContactAnalysis::host(
+                host.system(model, &pair, HostStiffness::Csr(host.csr())),
+                vec![shifted(&pair)],
+                options,
+            )
+            .unwrap();
+            let mut runs: Vec<(ContactAnalysis, Vec<usize>)> = hand_overs
+                .iter()
+                .cloned()
+                .map(|c| {
+                    let equations = c.equations.clone();
+                    let system = host.system(model, &pair, HostStiffness::Condensed(c));
+                    let analysis =
+                        ContactAnalysis::host(system, vec![shifted(&pair)], options).unwrap();
+                    (analysis, equations)
+                })
+                .collect();
+            for &(depth, slide) in &steps {
+                let rhs = host.rhs(model, &base.prescribed(depth * approach, slide));
+                let u0 = solve(&rhs);
+                let expected = csr.increment(&rhs, &[]).unwrap();
+                let reference = csr.node_results(0).unwrap();
+                let u = csr.displacement().unwrap().to_vec();
+                let scale = u.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+                for (analysis, equations) in &mut runs {
+                    let image: Vec<f64> = equations.iter().map(|&e| u0[e]).collect();
+                    let got = analysis.increment(&image, &[]).unwrap();
+                    assert_eq!(
+                        (expected.active, expected.slip),
+                        (got.active, got.slip),
+                        "{what}"
+                    );
+                    let results = analysis.node_results(0).unwrap();
+                    assert_same_to(&reference, &results, 1e-8, a, &what);
+                    // the host's recovery: one solve with the contact forces added
+                    let forces = analysis.contact_forces();
+                    let total: Vec<f64> = rhs.iter().zip(&forces).map(|(r, f)| r + f).collect();
+                    let recovered = solve(&total);
+                    for (i, (x, y)) in u.iter().zip(&recovered).enumerate() {
+                        assert!((x - y).abs() <= 1e-8 * scale, "{what}: equation {i}");
+                    }
+                    let err = analysis.displacement().unwrap_err();
+                    assert!(
+                        err.to_string().contains("recovers the displacement"),
+                        "{err}"
+                    );
+                }
+            }
+            if friction > 0.0 && kinematics == Kinematics::Finite {
+                assert!(
+                    csr.node_results(0).unwrap().iter().any(|r| matches!(
+                        r.state,
+                        hycon::contact::iteration::NodeState::Slip { .. }
+                    ))
+                );
+            }
+        }
+    }
+}
+
+/// A wrong hand-over is refused with a message that says what is wrong: a contact equation
+/// that is no candidate, a matrix of the wrong size, an entry that is not finite, an
+/// unsymmetric matrix, a Schur complement that is not positive definite, a load image of the
+/// field's length.
+#[test]
+fn condensed_errors_name_the_problem() {
+    let base = scene();
+    let model = &base.model;
+    let host = HostSide::new(model);
+    let system = host.system(model, &base.pair, HostStiffness::Csr(host.csr()));
+    let mut contact: Vec<usize> = system
+        .nodes
+        .iter()
+        .flat_map(|n| n.equations.into_iter().flatten())
+        .collect();
+    contact.sort_unstable();
+    let good = condensed(&host, &contact, CondensedKind::Stiffness);
+    let m = contact.len();
+    let start = |c: Condensed| {
+        ContactAnalysis::host(
+            host.system(model, &base.pair, HostStiffness::Condensed(c)),
+            vec![shifted(&base.pair)],
+            ContactOptions::default(),
+        )
+    };
+    let short = condensed(&host, &contact[1..], CondensedKind::Flexibility);
+    let err = start(short).unwrap_err();
+    assert!(err.to_string().contains("not among the condensed"), "{err}");
+    let mut sized = good.clone();
+    sized.matrix.pop();
+    let err = start(sized).unwrap_err();
+    assert!(err.to_string().contains("needs m^2"), "{err}");
+    let mut nan = good.clone();
+    nan.matrix[m + 2] = f64::NAN;
+    let err = start(nan).unwrap_err();
+    assert!(err.to_string().contains("(2, 1) = NaN"), "{err}");
+    let mut skew = good.clone();
+    skew.matrix[1] *= 2.0;
+    let err = start(skew).unwrap_err();
+    assert!(err.to_string().contains("not symmetric"), "{err}");
+    let mut negative = good.clone();
+    negative.matrix.iter_mut().for_each(|v| *v = -*v);
+    let err = start(negative).unwrap_err();
+    assert!(matches!(err, hycon::Error::Singular(_)), "{err}");
+    let mut analysis = start(good).unwrap();
+    let rhs = host.rhs(model, &base.prescribed(0.01 * base.half_width, 0.0));
+    let err = analysis.increment(&rhs, &[]).unwrap_err();
+    assert!(err.to_string().contains("load image"), "{err}");
+}
+
+/// As [`assert_same`], to a relative tolerance `tolerance`.
+fn assert_same_to(
+    reference: &[NodeResult],
+    other: &[NodeResult],
+    tolerance: f64,
+    scale: f64,
+    what: &str,
+) {
+    assert_eq!(reference.len(), other.len());
+    let peak = reference.iter().fold(0.0f64, |m, r| m.max(r.tn.abs()));
+    assert!(peak > 0.0, "{what}: no contact");
+    for (r, o) in reference.iter().zip(other) {
+        assert_eq!(r.node, o.node, "{what}: node ids");
+        assert_eq!(r.state, o.state, "{what}: state of node {}", r.node);
+        assert!(
+            (r.tn - o.tn).abs() <= tolerance * peak && (r.ts - o.ts).abs() <= tolerance * peak,
+            "{what}: node {}: ({}, {}) vs ({}, {})",
+            r.node,
+            r.tn,
+            r.ts,
+            o.tn,
+            o.ts
+        );
+        for d in 0..2 {
+            assert!((r.position[d] - o.position[d]).abs() <= tolerance * scale);
+        }
+    }
+}
+
+/// A host solver that keeps every right-hand side it was asked for (its exact bits).
+struct Recording {
+    inner: OwnSolver,
+    asked: std::sync::Arc<std::sync::Mutex<Vec<Vec<u64>>>>,
+}
+
+impl HostSolve for Recording {
+    fn solve(&mut self, nrhs: usize, rhs: &[f64], x: &mut [f64]) -> hycon::Result<()> {
+        let n = rhs.len() / nrhs;
+        let mut asked = self.asked.lock().unwrap();
+        for j in 0..nrhs {
+            asked.push(
+                rhs[j * n..(j + 1) * n]
+                    .iter()
+                    .map(|v| v.to_bits())
+                    .collect(),
+            );
+        }
+        drop(asked);
+        self.inner.solve(nrhs, rhs, x)
+    }
+}
+
+/// The callback path asks for no right-hand side twice in an analysis (the host's solves are
+/// what it costs): both kinematics, frictionless and mu = 0.3, a press deepened in steps (the
+/// small-kinematics pairing widens) and a slide; the counts are printed.
+#[test]
+fn callback_asks_no_column_twice() {
+    let base = scene();
+    let model = &base.model;
+    let host = HostSide::new(model);
+    let approach = base.half_width.powi(2) / base.radius;
+    let a = base.half_width;
+    for (kinematics, steps) in [
+        (
+            Kinematics::Small,
+            vec![
+                (0.25, 0.0),
+                (0.5, 0.0),
+                (1.0, 0.0),
+                (2.0, 0.0),
+                (2.0, 0.01 * a),
+            ],
+        ),
+        (
+            Kinematics::Finite,
+            vec![(1.0, 0.0), (1.0, 0.1 * a), (1.0, 0.3 * a), (1.0, 0.6 * a)],
+        ),
+    ] {
+        for friction in [0.0, 0.3] {
+            let pair = ContactPair {
+                friction,
+                ..base.pair.clone()
+            };
+            let mut factor =
+                SparseCholesky::analyze(host.pattern.symbolic(), hycon::solver::Backend::Faer, &[])
+                    .unwrap();
+            factor.factorize(host.pattern.matrix()).unwrap();
+            let asked = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+            let solver = Recording {
+                inner: OwnSolver {
+                    factor,
+                    columns: Default::default(),
+                },
+                asked: asked.clone(),
+            };
+            let options = ContactOptions {
+                kinematics,
+                ..ContactOptions::default()
+            };
+            let mut analysis = ContactAnalysis::host(
+                host.system(model, &pair, HostStiffness::Solver(Box::new(solver))),
+                vec![shifted(&pair)],
+                options,
+            )
+            .unwrap();
+            for &(depth, slide) in &steps {
+                let rhs = host.rhs(model, &base.prescribed(depth * approach, slide));
+                analysis.increment(&rhs, &[]).unwrap();
+            }
+            let asked = asked.lock().unwrap();
+            let distinct: std::collections::HashSet<&Vec<u64>> = asked.iter().collect();
+            eprintln!(
+                "{} kinematics, mu = {friction}: {} right-hand sides, {} distinct, {} increments",
+                kinematics.name(),
+                asked.len(),
+                distinct.len(),
+                steps.len()
+            );
+            assert_eq!(asked.len(), distinct.len(), "a right-hand side asked twice");
+        }
+    }
 }

@@ -4,8 +4,11 @@
 //! Two sources:
 //! * [`Bodies::model`]: hycon's own [`Model`], assembled and factored by hycon;
 //! * [`Bodies::host`]: a host FE code's system ([`HostSystem`]): its contact nodes (positions
-//!   and equation numbers in its numbering) and either its stiffness in CSR, factored here, or a
-//!   solve callback ([`HostSolve`]) so that the host factors `K` with its own solver.
+//!   and equation numbers in its numbering) and either its stiffness in CSR, factored here, a
+//!   solve callback ([`HostSolve`]) so that the host factors `K` with its own solver, or the
+//!   condensed operator of its contact candidates ([`Condensed`]), computed by its own solver
+//!   in one factorization: the iteration then runs on it alone, and the host recovers its
+//!   displacements from the contact forces.
 //!
 //! Either way the iteration needs three things, all linear in the loads:
 //! * the contact-boundary flexibility `F = E^T K^-1 E` (`E` picks the contact dofs),
@@ -162,6 +165,139 @@ pub enum HostStiffness {
     Csr(Csr),
     /// The host's own solver.
     Solver(Box<dyn HostSolve>),
+    /// The condensed operator over the host's contact candidates, from its own solver.
+    Condensed(Condensed),
+}
+
+/// Which operator a [`Condensed`] hand-over holds, over the candidate equations `c` (the
+/// others `i`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CondensedKind {
+    /// The stiffness Schur complement `S = K_cc - K_ci K_ii^-1 K_ic`, what a sparse direct
+    /// solver's Schur interface gives (MUMPS through PETSc's `MatFactorSetSchurIS` /
+    /// `MatFactorCreateSchurComplement`): hycon factors it by dense Cholesky and inverts the
+    /// factor, `(K^-1)_cc = S^-1`.
+    Stiffness,
+    /// The flexibility block `(K^-1)_cc` itself, what one batched solve `K X = E_c` gives.
+    Flexibility,
+}
+
+/// A host's condensed operator over its contact candidate equations: the iteration needs
+/// `K^-1` only between the contact dofs, and this gives it in one piece, so that no solve is
+/// asked for during an increment. The candidates hold every equation of the contact nodes
+/// (which under finite kinematics must cover the whole sliding range: the pairs' polylines
+/// do) and may hold more (a flexibility's extra rows are ignored, a Schur complement's extra
+/// unknowns are condensed out).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condensed {
+    /// Which operator `matrix` is.
+    pub kind: CondensedKind,
+    /// The candidate equations (host numbering), each once: the order of `matrix`'s rows and
+    /// columns and of the load image of an increment.
+    pub equations: Vec<usize>,
+    /// `m x m`, column-major (`matrix[i + m j]` couples `equations[i]` and `equations[j]`),
+    /// symmetric.
+    pub matrix: Vec<f64>,
+}
+
+/// Relative asymmetry a condensed operator may show (of its largest entry): a host solver's
+/// round-off, not a wrong layout.
+const CONDENSED_SYMMETRY: f64 = 1e-6;
+
+impl Condensed {
+    /// Check the hand-over for a host of `n_equations` equations: `m^2` finite values,
+    /// candidates in range and distinct, the matrix symmetric to `CONDENSED_SYMMETRY` (1e-6) of its
+    /// largest entry.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the entry or the equation.
+    pub fn check(&self, n_equations: usize) -> Result<()> {
+        let m = self.equations.len();
+        if m == 0 || m.checked_mul(m) != Some(self.matrix.len()) {
+            return Err(Error::InvalidInput(format!(
+                "the condensed operator has {} values for {m} candidate equations (needs m^2 > 0)",
+                self.matrix.len()
+            )));
+        }
+        let mut seen = vec![false; n_equations];
+        for &e in &self.equations {
+            if e >= n_equations || std::mem::replace(&mut seen[e], true) {
+                return Err(Error::InvalidInput(format!(
+                    "candidate equation {e} is out of range (n = {n_equations}) or given twice"
+                )));
+            }
+        }
+        if let Some(k) = self.matrix.iter().position(|v| !v.is_finite()) {
+            return Err(Error::InvalidInput(format!(
+                "the condensed operator's entry ({}, {}) = {} is not finite",
+                k % m,
+                k / m,
+                self.matrix[k]
+            )));
+        }
+        let largest = self.matrix.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        for j in 0..m {
+            for i in j + 1..m {
+                let d = self.matrix[i + m * j] - self.matrix[j + m * i];
+                if d.abs() > CONDENSED_SYMMETRY * largest {
+                    return Err(Error::InvalidInput(format!(
+                        "the condensed operator is not symmetric: entries ({i}, {j}) and \
+                         ({j}, {i}) differ by {d:e} (largest entry {largest:e}); is it \
+                         column-major over the candidates?"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `(K^-1)` between the contact equations `contact` (all among the candidates): read off a
+    /// flexibility block, or from `S^-1` by the dense Cholesky factor of a Schur complement
+    /// (the same inversion the CSR path applies to its factor's trailing block). Symmetric:
+    /// each pair of entries is averaged.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a contact equation that is no candidate,
+    /// [`Error::Singular`] for a Schur complement that is not positive definite.
+    fn flexibility(&self, contact: &[(usize, usize)]) -> Result<Mat<f64>> {
+        let m = self.equations.len();
+        let mut position = std::collections::HashMap::with_capacity(m);
+        for (i, &e) in self.equations.iter().enumerate() {
+            position.insert(e, i);
+        }
+        let rows: Vec<usize> = contact
+            .iter()
+            .map(|&(id, e)| {
+                position.get(&e).copied().ok_or_else(|| {
+                    Error::InvalidInput(format!(
+                        "contact node {id}: its equation {e} is not among the condensed \
+                         operator's candidates"
+                    ))
+                })
+            })
+            .collect::<Result<_>>()?;
+        let given = faer::MatRef::from_column_major_slice(&self.matrix, m, m);
+        let average = |a: &dyn Fn(usize, usize) -> f64| {
+            Mat::<f64>::from_fn(rows.len(), rows.len(), |i, j| {
+                0.5 * (a(rows[i], rows[j]) + a(rows[j], rows[i]))
+            })
+        };
+        match self.kind {
+            CondensedKind::Flexibility => Ok(average(&|i, j| given[(i, j)])),
+            CondensedKind::Stiffness => {
+                let s = Mat::<f64>::from_fn(m, m, |i, j| 0.5 * (given[(i, j)] + given[(j, i)]));
+                let llt = s.llt(faer::Side::Lower).map_err(|_| {
+                    Error::Singular(
+                        "the condensed stiffness (Schur complement) is not positive definite: \
+                         a body not held, or not a stiffness"
+                            .into(),
+                    )
+                })?;
+                let inverse = crate::solver::inverse_from_factor(llt.L());
+                Ok(average(&|i, j| inverse[(i, j)]))
+            }
+        }
+    }
 }
 
 impl std::fmt::Debug for HostStiffness {
@@ -169,6 +305,9 @@ impl std::fmt::Debug for HostStiffness {
         match self {
             HostStiffness::Csr(c) => write!(f, "Csr(n = {}, nnz = {})", c.n, c.values.len()),
             HostStiffness::Solver(_) => f.write_str("Solver(..)"),
+            HostStiffness::Condensed(c) => {
+                write!(f, "Condensed({:?}, m = {})", c.kind, c.equations.len())
+            }
         }
     }
 }
@@ -346,6 +485,14 @@ enum HostSolver {
         reach: Option<Box<Reach>>,
     },
     Callback(Box<dyn HostSolve>),
+    /// The host's condensed operator: `F` between the contact equations (in node order), and
+    /// for each contact dof the position of its equation among the candidates (the load
+    /// image's order).
+    Condensed {
+        flexibility: Mat<f64>,
+        candidate: Vec<Option<usize>>,
+        candidates: usize,
+    },
 }
 
 /// The bodies of a contact analysis (see the [module docs](self)).
@@ -512,6 +659,7 @@ impl Bodies {
                 }
             }
             HostStiffness::Solver(s) => HostSolver::Callback(s),
+            HostStiffness::Condensed(c) => condensed_solver(&c, &nodes, equations)?,
         };
         let positions = nodes.iter().map(|n| n.position).collect();
         Ok(Bodies(Kind::Host(Box::new(Host {
@@ -635,6 +783,7 @@ impl Bodies {
                         .collect();
                     callback_flexibility(s.as_mut(), h.equations, &eqs)?
                 }
+                HostSolver::Condensed { flexibility, .. } => flexibility.clone(),
             },
         };
         let mut flex = DMatrix::zeros(dofs.len(), dofs.len());
@@ -656,6 +805,7 @@ impl Bodies {
             Kind::Host(h) => match &*lock(&h.solver) {
                 HostSolver::Factor { reach, .. } => reach.is_some(),
                 HostSolver::Callback(_) => true,
+                HostSolver::Condensed { .. } => false,
             },
         }
     }
@@ -698,6 +848,7 @@ impl Bodies {
                     h.equations,
                 ),
                 HostSolver::Callback(s) => (Solver::Callback(s.as_mut()), None, h.equations),
+                HostSolver::Condensed { .. } => unreachable!("a condensed F is not lazy"),
             },
         };
         // the rows of a right-hand side: compact rows of the reach, or the equations
@@ -708,35 +859,52 @@ impl Bodies {
         let len = reach.map_or(n, |r| r.len());
         let batch = CALLBACK_BATCH.min((4 << 20) / len.max(1)).max(1);
         let mut solver = solver;
+        // a callback's right-hand sides and solutions, column-major, reused over the batches:
+        // only the entries a batch set are zeroed again (a full-length copy per batch cost
+        // more than the contact iteration itself at 76k equations)
+        let (mut b, mut x) = match solver {
+            Solver::Callback(_) => (vec![0.0; len * batch], vec![0.0; len * batch]),
+            Solver::Factor(_) => (Vec::new(), Vec::new()),
+        };
         for start in (0..vectors.len()).step_by(batch) {
             let cols = batch.min(vectors.len() - start);
-            let mut rhs = Mat::<f64>::zeros(len, cols);
-            for c in 0..cols {
+            let set = |c: usize, add: &mut dyn FnMut(usize, f64)| {
                 for &(j, w) in &vectors[start + c] {
                     if let Some(e) = rows[j] {
-                        rhs[(row(e), c)] += w;
+                        add(row(e), w);
                     }
                 }
-            }
+            };
             match &mut solver {
-                Solver::Factor(f) => match reach {
-                    Some(r) => f.solve_within(r, rhs.as_mut())?,
-                    None => f.solve_in_place(rhs.as_mut())?,
-                },
-                Solver::Callback(s) => {
-                    let b: Vec<f64> = (0..cols)
-                        .flat_map(|c| (0..len).map(move |i| (i, c)))
-                        .map(|(i, c)| rhs[(i, c)])
-                        .collect();
-                    let mut x = vec![0.0; len * cols];
-                    checked_solve(&mut **s, cols, &b, &mut x)?;
-                    rhs = Mat::from_fn(len, cols, |i, c| x[c * len + i]);
+                Solver::Factor(f) => {
+                    let mut rhs = Mat::<f64>::zeros(len, cols);
+                    for c in 0..cols {
+                        set(c, &mut |r, w| rhs[(r, c)] += w);
+                    }
+                    match reach {
+                        Some(r) => f.solve_within(r, rhs.as_mut())?,
+                        None => f.solve_in_place(rhs.as_mut())?,
+                    }
+                    for c in 0..cols {
+                        for (i, e) in rows.iter().enumerate() {
+                            if let Some(e) = e {
+                                out[(i, start + c)] = rhs[(row(*e), c)];
+                            }
+                        }
+                    }
                 }
-            }
-            for c in 0..cols {
-                for (i, e) in rows.iter().enumerate() {
-                    if let Some(e) = e {
-                        out[(i, start + c)] = rhs[(row(*e), c)];
+                Solver::Callback(s) => {
+                    for c in 0..cols {
+                        set(c, &mut |r, w| b[c * len + r] += w);
+                    }
+                    checked_solve(&mut **s, cols, &b[..len * cols], &mut x[..len * cols])?;
+                    for c in 0..cols {
+                        set(c, &mut |r, _| b[c * len + r] = 0.0);
+                        for (i, e) in rows.iter().enumerate() {
+                            if let Some(e) = e {
+                                out[(i, start + c)] = x[c * len + row(*e)];
+                            }
+                        }
                     }
                 }
             }
@@ -878,9 +1046,21 @@ impl Bodies {
                         }
                     }
                     HostSolver::Callback(s) => checked_solve(s.as_mut(), 1, f, &mut x)?,
+                    HostSolver::Condensed { .. } => return Err(no_solver()),
                 }
                 Ok(x)
             }
+        }
+    }
+
+    /// Whether hycon can solve with `K` ([`solve`](Self::solve)): an error saying how the
+    /// host recovers its displacement when it handed over its condensed operator instead.
+    pub fn check_solver(&self) -> Result<()> {
+        match &self.0 {
+            Kind::Host(h) if matches!(&*lock(&h.solver), HostSolver::Condensed { .. }) => {
+                Err(no_solver())
+            }
+            _ => Ok(()),
         }
     }
 
@@ -906,13 +1086,42 @@ impl Bodies {
         }
     }
 
+    /// The length of an increment's load: the field's, or for a host that handed over its
+    /// condensed operator the number of its candidates (the load image's).
+    pub fn load_len(&self) -> usize {
+        match &self.0 {
+            Kind::Host(h) => match &*lock(&h.solver) {
+                HostSolver::Condensed { candidates, .. } => *candidates,
+                _ => h.equations,
+            },
+            Kind::Model { .. } => self.field_len(),
+        }
+    }
+
+    /// For a host that handed over its condensed operator, `u0 = K^-1 f` at the dofs `dofs`
+    /// (iteration numbering) read off the load image `image` (`u0` over the candidates, the
+    /// host's own solve; zero at fixed dofs); `None` for bodies that solve themselves.
+    pub fn condensed_image(&self, image: &[f64], dofs: &[usize]) -> Option<Vec<f64>> {
+        let Kind::Host(h) = &self.0 else {
+            return None;
+        };
+        match &*lock(&h.solver) {
+            HostSolver::Condensed { candidate, .. } => Some(
+                dofs.iter()
+                    .map(|&d| candidate[d].map_or(0.0, |i| image[i]))
+                    .collect(),
+            ),
+            _ => None,
+        }
+    }
+
     /// Numeric factorizations of `K` done by hycon (0 for a host that solves itself).
     pub fn factorizations(&self) -> usize {
         match &self.0 {
             Kind::Model { system, .. } => lock(system).cholesky().factorizations(),
             Kind::Host(h) => match &*lock(&h.solver) {
                 HostSolver::Factor { factor, .. } => factor.factorizations(),
-                HostSolver::Callback(_) => 0,
+                HostSolver::Callback(_) | HostSolver::Condensed { .. } => 0,
             },
         }
     }
@@ -924,7 +1133,7 @@ impl Bodies {
             Kind::Model { model, system, .. } => unlocked(system).refactorize(model),
             Kind::Host(h) => match unlocked(&mut h.solver) {
                 HostSolver::Factor { factor, lower, .. } => factor.factorize(lower.as_ref()),
-                HostSolver::Callback(_) => Ok(()),
+                HostSolver::Callback(_) | HostSolver::Condensed { .. } => Ok(()),
             },
         }
     }
@@ -938,10 +1147,44 @@ impl Bodies {
     }
 }
 
+/// The iteration's view of a host's condensed operator `c` (checked here) for its contact
+/// `nodes`: `F` between their equations, in node order, and where each contact dof's equation
+/// sits among the candidates.
+fn condensed_solver(c: &Condensed, nodes: &[HostNode], n_equations: usize) -> Result<HostSolver> {
+    c.check(n_equations)?;
+    let contact: Vec<(usize, usize)> = nodes
+        .iter()
+        .flat_map(|n| n.equations.into_iter().flatten().map(move |e| (n.id, e)))
+        .collect();
+    let flexibility = c.flexibility(&contact)?;
+    let mut position = vec![None; n_equations];
+    for (i, &e) in c.equations.iter().enumerate() {
+        position[e] = Some(i);
+    }
+    let candidate = nodes
+        .iter()
+        .flat_map(|n| n.equations.map(|e| e.and_then(|e| position[e])))
+        .collect();
+    Ok(HostSolver::Condensed {
+        flexibility,
+        candidate,
+        candidates: c.equations.len(),
+    })
+}
+
 /// Who solves with `K` for [`Bodies::flexibility_times`].
 enum Solver<'a> {
     Factor(&'a mut SparseCholesky),
     Callback(&'a mut dyn HostSolve),
+}
+
+/// What a solve with the bodies of a condensed host gives: hycon holds no solver of theirs.
+fn no_solver() -> Error {
+    Error::InvalidInput(
+        "the host handed over its condensed operator, so hycon has no solver of its K: the host \
+         recovers the displacement itself, K u = load + contact forces"
+            .into(),
+    )
 }
 
 /// A host solve with its output checked for finiteness.

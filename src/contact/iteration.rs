@@ -72,7 +72,7 @@ use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
 use faer::Mat;
-use nalgebra::{DMatrix, DVector, Dyn, LU};
+use nalgebra::{DMatrix, DVector};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
 mod active_set;
@@ -80,6 +80,8 @@ mod boundary;
 mod checks;
 mod cutback;
 mod loads;
+#[cfg(feature = "oracles")]
+mod oracles;
 mod plate;
 mod results;
 mod rules;
@@ -646,13 +648,15 @@ pub struct ContactAnalysis {
     /// fresh `S` beyond glibc's 32 MiB mmap threshold (m > 2,048) had its pages faulted in
     /// and zeroed again in every iteration.
     small_matrix: Mat<f64>,
-    /// Iterate on the dense reference algebra (see
-    /// [`ContactAnalysis::set_reference_algebra`]).
+    /// Iterate on the dense reference algebra (see `ContactAnalysis::set_reference_algebra`,
+    /// feature `oracles`).
+    #[cfg(feature = "oracles")]
     reference_algebra: bool,
     /// Converged displacement of the contact dofs (`dofs` order).
     qc: Vec<f64>,
     /// Factor `K` again in every iteration (a benchmark's control, see
-    /// [`ContactAnalysis::set_refactor_each_iteration`]).
+    /// `ContactAnalysis::set_refactor_each_iteration`, feature `oracles`).
+    #[cfg(feature = "oracles")]
     refactor_each_iteration: bool,
     /// Start a failed increment again from the fallback's states (`rules.rs`; on unless a
     /// benchmark turns it off, see [`ContactAnalysis::set_fallback`]).
@@ -870,8 +874,10 @@ impl ContactAnalysis {
             qc: vec![0.0; dofs.len()],
             node_flexibility,
             small_matrix: Mat::new(),
+            #[cfg(feature = "oracles")]
             reference_algebra: false,
             settled: None,
+            #[cfg(feature = "oracles")]
             refactor_each_iteration: false,
             fallback: true,
             fallbacks: 0,
@@ -911,13 +917,6 @@ impl ContactAnalysis {
             analysis.timings.flexibility = before + clock.elapsed().as_secs_f64();
         }
         Ok(analysis)
-    }
-
-    /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
-    /// analysis. Never needed (`K` does not change): a benchmark's control, not an option, so
-    /// that `hycon bench skip` can show what factoring once saves.
-    pub fn set_refactor_each_iteration(&mut self, on: bool) {
-        self.refactor_each_iteration = on;
     }
 
     /// Whether an increment that the paper's rules do not settle starts again from the states
@@ -963,6 +962,7 @@ impl ContactAnalysis {
         if let Some((q, _)) = self.field.get() {
             return Ok(q);
         }
+        self.bodies.check_solver()?;
         let clock = std::time::Instant::now();
         let q = match &self.converged {
             Some(c) => {
@@ -1009,6 +1009,7 @@ impl ContactAnalysis {
         let Some(c) = &self.converged else {
             return Ok(vec![0.0; self.bodies.field_len()]);
         };
+        self.bodies.check_solver()?;
         let mut load = self.total_load(c);
         let mut prescribed = c.prescribed.clone();
         if let Some(p) = &self.previous {
@@ -1356,22 +1357,17 @@ impl ContactAnalysis {
         let mut surfaces = self.surfaces.clone();
         let mut set = ActiveSet::new(states, locks, self.options.lock_rounds);
         let first_record = records.len();
-        // time of the refactor-every-iteration variant, counted as factorization
+        // time of the refactor-every-iteration variant (feature `oracles`), counted as
+        // factorization
+        #[allow(unused_mut)]
         let mut refactoring = 0.0;
         let mut last: Option<(SmallSystem, boundary::Solution)> = None;
         for step in 1..=self.options.max_iterations {
             // iterations are counted over the increment's attempts
             let iteration = first_record + step;
+            #[cfg(feature = "oracles")]
             if self.refactor_each_iteration && step > 1 {
-                let clock = std::time::Instant::now();
-                self.bodies.refactorize()?;
-                self.flexibility = if self.bodies.lazy_flexibility() {
-                    Flexibility::lazy(self.dofs.len())
-                } else {
-                    Flexibility::full(self.bodies.flexibility(&self.dofs)?)
-                };
-                self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
-                refactoring += clock.elapsed().as_secs_f64();
+                refactoring += self.refactor()?;
             }
             let states = set.states();
             let system = self.build_system(&surfaces, states, &uc, startc)?;

@@ -5,8 +5,10 @@
 //!   the increments.
 //! * **Host-assembly API**: the host keeps its own mesh and stiffness and describes only its
 //!   contact polylines (node ids, reference coordinates and equation numbers in its numbering)
-//!   in a [`HyconHost`], plus either its stiffness in CSR (factored by hycon) or a solve callback
-//!   ([`HyconSolveFn`]) so that it factors `K` with its own solver (CHOLMOD, PETSc, ...).
+//!   in a [`HyconHost`], plus either its stiffness in CSR (factored by hycon), a solve callback
+//!   ([`HyconSolveFn`]) so that it factors `K` with its own solver (CHOLMOD, PETSc, ...), or
+//!   the condensed operator of its contact candidates ([`HyconCondensed`]) from its own solver,
+//!   with no solve inside an increment.
 //!
 //! Both give a [`HyconContact`]: the contact iteration with `K` factored once, increments with
 //! total loads, and the results (displacements, contact forces, tractions three ways, node
@@ -18,7 +20,8 @@
 
 use super::*;
 use crate::contact::bodies::{
-    Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
+    Condensed, CondensedKind, Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem,
+    Triangle,
 };
 use crate::contact::geometry::SurfaceMeasure;
 use crate::contact::iteration::{
@@ -103,6 +106,16 @@ pub const HYCON_PLATE_FORCE: HyconPlateControl = 2;
 
 /// Equation number of a contact dof that the host holds fixed at zero (host-assembly API).
 pub const HYCON_FIXED: i64 = -1;
+
+/// Which condensed operator a host hands over (`HyconCondensed::kind`), one of
+/// `HYCON_CONDENSED_*`.
+pub type HyconCondensedKind = i32;
+/// The stiffness Schur complement `S = K_cc - K_ci K_ii^-1 K_ic` over the candidate equations
+/// `c` (what MUMPS gives through PETSc's `MatFactorSetSchurIS` +
+/// `MatFactorCreateSchurComplement`); hycon factors it once (dense Cholesky).
+pub const HYCON_CONDENSED_STIFFNESS: HyconCondensedKind = 1;
+/// The flexibility block `(K^-1)_cc` (one batched solve `K X = E_c`, e.g. CHOLMOD's).
+pub const HYCON_CONDENSED_FLEXIBILITY: HyconCondensedKind = 2;
 
 // ------------------------------------------------------------------------------------------
 // Plain structs
@@ -427,6 +440,32 @@ pub struct HyconPolyline {
     pub n: usize,
 }
 
+/// A host's condensed operator over its contact candidate equations (host-assembly API,
+/// `hycon_host_set_condensed`). The candidates hold every equation of the contact nodes (all
+/// nodes of all pairs: under finite kinematics the polylines must cover the whole sliding
+/// range) and may hold more. Versioned by `size` as `HyconContactOptions`: set
+/// `size = sizeof(HyconCondensed)`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct HyconCondensed {
+    /// `sizeof(HyconCondensed)` as the host was compiled.
+    pub size: usize,
+    /// `HYCON_CONDENSED_STIFFNESS` or `HYCON_CONDENSED_FLEXIBILITY`.
+    pub kind: HyconCondensedKind,
+    /// Number of candidate equations `m`.
+    pub m: usize,
+    /// The `m` candidate equations (host numbering, each once): the order of the matrix's rows
+    /// and columns and of every increment's load image.
+    pub equations: *const i64,
+    /// `m * m` doubles, column-major: `matrix[i + m * j]` couples `equations[i]` and
+    /// `equations[j]`; symmetric (to 1e-6 of its largest entry; both triangles are read and
+    /// averaged).
+    pub matrix: *const f64,
+}
+
+/// The smallest `HyconCondensed::size` accepted: its first layout (0.8.0).
+const CONDENSED_FIRST_BLOCK: usize = std::mem::size_of::<HyconCondensed>();
+
 /// Nodes in a host's numbering (host-assembly API): ids, reference coordinates and equation
 /// numbers.
 #[repr(C)]
@@ -457,7 +496,7 @@ pub struct HyconModel {
 }
 
 /// A host's contact description (host-assembly API): its contact polylines and its stiffness
-/// (CSR) or solve callback. Create with `hycon_host_new`, free with `hycon_host_free`.
+/// (CSR), solve callback or condensed operator. Create with `hycon_host_new`, free with `hycon_host_free`.
 /// Thread safety: as `HyconModel`.
 pub struct HyconHost {
     equations: usize,
@@ -474,6 +513,7 @@ pub struct HyconHost {
 enum HostSource {
     Csr(Csr),
     Callback(CallbackSolve),
+    Condensed(Condensed),
 }
 
 /// A contact analysis: `K` factored once (or the host's solver), the converged state, the
@@ -1311,6 +1351,102 @@ pub unsafe extern "C" fn hycon_host_set_solver(
     })
 }
 
+/// Hand over the host's condensed operator over its contact candidate equations (copied):
+/// the stiffness Schur complement or the flexibility block (`HyconCondensed`), computed by the
+/// host's own solver in one factorization. hycon runs every increment on it alone, with no
+/// solve inside an increment: `hycon_contact_increment` then takes as `load` the **load
+/// image**, `u0 = K^-1 rhs` at the `m` candidate equations in their order (`load_len = m`;
+/// the host's solve of its total right-hand side), and after an increment the host recovers
+/// its displacement with one solve of its own, `K u = rhs + forces` with
+/// `hycon_contact_forces` (`hycon_contact_displacement` fails: hycon has no solver of `K`).
+/// `hycon_host_contact_equations` lists the equations the candidates must hold. Replaces an
+/// earlier matrix or solver. Checked here: `size`, the kind, `m > 0`, candidates in range and
+/// distinct, finite values, symmetry; at `hycon_contact_new_host`: every contact equation
+/// among the candidates, a Schur complement positive definite (`HYCON_ERROR_SINGULAR`).
+///
+/// # Safety
+/// `host` must be a live handle; `condensed` NULL or a readable `HyconCondensed` whose arrays
+/// hold the stated counts.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_host_set_condensed(
+    host: *mut HyconHost,
+    condensed: *const HyconCondensed,
+) -> HyconStatus {
+    boundary("hycon_host_set_condensed", || {
+        // SAFETY (all reads): the caller's contract.
+        let h = unsafe { handle_mut(host, "host")? };
+        check_pointer(condensed, "condensed")?;
+        // SAFETY: non-null and aligned (checked); the struct begins with its size
+        let size = unsafe { condensed.cast::<usize>().read() };
+        let known = std::mem::size_of::<HyconCondensed>();
+        if !(CONDENSED_FIRST_BLOCK..=known).contains(&size) {
+            return Err(Fail::invalid(format!(
+                "condensed.size = {size}: expected sizeof(HyconCondensed) = {known}"
+            )));
+        }
+        let c = unsafe { handle(condensed, "condensed")? };
+        let kind = match c.kind {
+            HYCON_CONDENSED_STIFFNESS => CondensedKind::Stiffness,
+            HYCON_CONDENSED_FLEXIBILITY => CondensedKind::Flexibility,
+            k => {
+                return Err(Fail::invalid(format!(
+                    "condensed.kind = {k} is unknown (HYCON_CONDENSED_STIFFNESS = 1, \
+                     HYCON_CONDENSED_FLEXIBILITY = 2)"
+                )));
+            }
+        };
+        let m = c.m;
+        let values = length(m, m, 0, "condensed.m")?;
+        let equations = unsafe { slice(c.equations, m, "condensed.equations")? };
+        let matrix = unsafe { slice(c.matrix, values, "condensed.matrix")? };
+        let equations = equations
+            .iter()
+            .map(|&e| {
+                usize::try_from(e)
+                    .map_err(|_| Fail::invalid(format!("candidate equation {e} is out of range")))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let condensed = Condensed {
+            kind,
+            equations,
+            matrix: matrix.to_vec(),
+        };
+        condensed.check(h.equations)?;
+        h.stiffness = Some(HostSource::Condensed(condensed));
+        Ok(())
+    })
+}
+
+/// The host's contact equations: every equation of a node of its pairs (not `HYCON_FIXED`),
+/// in the order the nodes were first given (`u_x`, then `u_y`), each once: what the
+/// candidates of `hycon_host_set_condensed` must hold (as an index set for a Schur
+/// complement, or the columns of a batched solve).
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+///
+/// # Safety
+/// `host` must be a live handle; `out` NULL or `len` writable values; `needed` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_host_contact_equations(
+    host: *const HyconHost,
+    out: *mut i64,
+    len: usize,
+    needed: *mut usize,
+) -> HyconStatus {
+    boundary("hycon_host_contact_equations", || {
+        // SAFETY (all): the caller's contract.
+        let h = unsafe { handle(host, "host")? };
+        let equations: Vec<i64> = h
+            .nodes
+            .iter()
+            .flat_map(|n| n.equations.into_iter().flatten())
+            .map(|e| e as i64)
+            .collect();
+        unsafe { fill(out, len, needed, "out", equations.len(), || Ok(equations)) }
+    })
+}
+
 /// Optionally hand over the elements of body A along the A polylines (at least those owning an
 /// A segment), so that `hycon_contact_stress_tractions` can recover the tractions from their
 /// stresses (the paper's way (a)) from the host's displacements. The same order as
@@ -1392,10 +1528,12 @@ pub unsafe extern "C" fn hycon_contact_new_host(
                 solve: c.solve,
                 user_data: c.user_data,
             })),
+            Some(HostSource::Condensed(c)) => HostStiffness::Condensed(c.clone()),
             None => {
                 return Err(Fail::invalid(
-                    "the host gave neither a stiffness (hycon_host_set_csr) nor a solver \
-                     (hycon_host_set_solver)",
+                    "the host gave neither a stiffness (hycon_host_set_csr), a solver \
+                     (hycon_host_set_solver) nor its condensed operator \
+                     (hycon_host_set_condensed)",
                 ));
             }
         };
@@ -1443,7 +1581,10 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
 ///   `prescribed` = values at the prescribed dofs over the same `2 * n_nodes` entries (the
 ///   others are ignored, whatever they hold: NaN there is fine);
 /// * host API: `load` = the host's right-hand side over its equations (including the effect of
-///   its prescribed displacements), `prescribed` = (NULL, 0).
+///   its prescribed displacements), `prescribed` = (NULL, 0);
+/// * host API with a condensed operator (`hycon_host_set_condensed`): `load` = the load image
+///   `u0 = K^-1 rhs` at the candidate equations, in their order (`load_len = m`),
+///   `prescribed` = (NULL, 0).
 ///
 /// `load_len` is the field length, which the size query of the displacement gives:
 /// `hycon_contact_displacement(contact, NULL, 0, &load_len)`.

@@ -1068,7 +1068,7 @@ impl FaerLlt {
 /// several bodies, whose condensed matrices do not couple), each group's block is inverted as a
 /// triangle (`m^3 / 3` flops) and multiplied as triangles (`m^3 / 3`), and the blocks between
 /// groups are zero. Two equal bodies cost a quarter of the whole.
-fn inverse_from_factor(l: faer::MatRef<'_, f64>) -> Mat<f64> {
+pub(crate) fn inverse_from_factor(l: faer::MatRef<'_, f64>) -> Mat<f64> {
     use faer::linalg::matmul::triangular::{BlockStructure, matmul};
     let m = l.nrows();
     let mut out = Mat::<f64>::zeros(m, m);

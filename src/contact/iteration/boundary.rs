@@ -10,8 +10,8 @@
 //! not stored (its one-norm from column sums kept with the rows, see [`RowSums`]).
 //!
 //! The dense reference of the same algebra (every column of `F` built up front, `F c` formed
-//! from `F` in every iteration, nalgebra's unblocked LU) is kept behind
-//! [`ContactAnalysis::set_reference_algebra`]; the tests compare the two.
+//! from `F` in every iteration, nalgebra's unblocked LU) is a test oracle behind the feature
+//! `oracles` (`oracles.rs`); the tests compare the two.
 
 use super::*;
 use crate::contact::bodies::Images;
@@ -1089,35 +1089,20 @@ impl ContactAnalysis {
         old
     }
 
-    /// The unknowns and the new contact displacement of one iteration: on the reference algebra
-    /// (`SmallSystem::solve` on the full `F`, `u = u0 + F f`) or on the lazy one
-    /// ([`solve_boundary`](Self::solve_boundary)).
+    /// The unknowns and the new contact displacement of one iteration: on the lazy, cached
+    /// algebra ([`solve_boundary`](Self::solve_boundary)), or with the feature `oracles` on the
+    /// dense reference when it is switched on (`oracles.rs`).
     pub(super) fn solve_iteration(
         &mut self,
         system: &SmallSystem,
         u0c: &[f64],
         border: Option<&Border>,
     ) -> Result<Solution> {
-        if !self.reference_algebra {
-            return self.solve_boundary(system, u0c, border);
+        #[cfg(feature = "oracles")]
+        if self.reference_algebra {
+            return self.solve_reference(system, u0c, border);
         }
-        let (tau, plate_motion, condition) = system.solve(u0c, &self.flexibility.matrix, border)?;
-        let forces = system.forces(&tau, self.dofs.len());
-        // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
-        let mut uc = u0c.to_vec();
-        for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
-            for (u, c) in uc.iter_mut().zip(self.flexibility.column(j)) {
-                *u += c * fj;
-            }
-        }
-        if let Some(b) = border {
-            for (&d, &m) in b.directions.iter().zip(&plate_motion) {
-                for (u, w) in uc.iter_mut().zip(&b.response[d]) {
-                    *u += m * w;
-                }
-            }
-        }
-        Ok((tau, plate_motion, condition, uc))
+        self.solve_boundary(system, u0c, border)
     }
 
     /// Solve the small system (METHOD.md section 3): `S tau = b - rows . u0` with
@@ -1320,7 +1305,7 @@ impl ContactAnalysis {
     pub(super) fn dense_matrix(&mut self, system: &SmallSystem) -> Result<DMatrix<f64>> {
         let m = system.rows.len();
         let mut s = DMatrix::zeros(m, m);
-        if self.options.kinematics == Kinematics::Small && !self.reference_algebra {
+        if self.options.kinematics == Kinematics::Small && !self.on_reference_algebra() {
             let (rows, cols) = self.node_directions(system)?;
             let n = &self.node_flexibility.n;
             for (j, parts) in cols.iter().enumerate() {
@@ -1380,21 +1365,13 @@ impl ContactAnalysis {
         }
     }
 
-    /// Run the iteration on the dense reference algebra (`true`) or on the lazy, cached one
-    /// (`false`, the default). The reference builds every column of `F` up front (a host's
-    /// callback then solves for every contact dof), forms `F col_j` and `F f` from `F` in every
-    /// iteration and factors the small system with nalgebra's unblocked LU: the algebra of
-    /// hycon 0.3, kept so that tests can show that both give the same contact states and
-    /// tractions.
-    ///
-    /// # Errors
-    /// A failed host solve while building the missing columns of `F`.
-    pub fn set_reference_algebra(&mut self, on: bool) -> Result<()> {
-        if on && !self.flexibility.is_full() {
-            self.ensure_columns(0..self.dofs.len())?;
-        }
-        self.reference_algebra = on;
-        Ok(())
+    /// Whether the iteration runs on the dense reference algebra (a test oracle, feature
+    /// `oracles`; never without it).
+    fn on_reference_algebra(&self) -> bool {
+        #[cfg(feature = "oracles")]
+        return self.reference_algebra;
+        #[cfg(not(feature = "oracles"))]
+        false
     }
 }
 

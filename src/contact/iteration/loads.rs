@@ -1,5 +1,6 @@
 //! Load solves `u0 = K^-1 (f - K_fp q_p)` at the contact dofs, reused when a load is a
-//! combination of recent ones (proportional loading, a slide on a fixed approach).
+//! combination of recent ones (proportional loading, a slide on a fixed approach); a host that
+//! handed over its condensed operator gives `u0` itself (its load image).
 
 use super::*;
 
@@ -67,16 +68,21 @@ impl ContactAnalysis {
     /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
     /// superposed on a fixed approach, costs one or two solves in all).
     pub(super) fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Solved> {
-        let n = self.bodies.field_len();
+        let n = self.bodies.load_len();
         let n_qp = if self.bodies.as_model().is_some() {
             n
         } else {
             0
         };
         if f.len() != n || qp.len() != n_qp {
+            let image = if n == self.bodies.field_len() {
+                ""
+            } else {
+                " (a condensed host's load image: u0 = K^-1 f at its candidate equations)"
+            };
             return Err(Error::InvalidInput(format!(
-                "the load vector needs {n} entries and the prescribed vector {n_qp}, got {} and \
-                 {}",
+                "the load vector needs {n} entries{image} and the prescribed vector {n_qp}, got \
+                 {} and {}",
                 f.len(),
                 qp.len()
             )));
@@ -102,6 +108,14 @@ impl ContactAnalysis {
             } else {
                 format!("{name}[{index}] = {value} is not finite")
             }));
+        }
+        if let Some(u0c) = self.bodies.condensed_image(f, &self.dofs) {
+            // the host solved for its load: the image is u0 itself
+            return Ok(Solved {
+                u0c,
+                plate_force: [0.0; 2],
+                load,
+            });
         }
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];

@@ -1,10 +1,14 @@
 //! The small dense system of one iteration (METHOD.md section 3): the rows and force columns
 //! of the active nodes over the contact dofs, `S tau = b - rows . u0` with `S = rows^T F cols`,
 //! bordered by the plate's force-controlled translations, solved by LU with a condition
-//! estimate.
+//! estimate (the reference algebra of the test oracles, feature `oracles`; the product's
+//! algebra is `boundary.rs`).
 
 use super::*;
+#[cfg(any(test, feature = "oracles"))]
+use nalgebra::{Dyn, LU};
 
+#[cfg(feature = "oracles")]
 /// `||A||_1`, the largest column sum.
 pub(super) fn norm1(a: &DMatrix<f64>) -> f64 {
     a.column_iter()
@@ -12,6 +16,7 @@ pub(super) fn norm1(a: &DMatrix<f64>) -> f64 {
         .fold(0.0, f64::max)
 }
 
+#[cfg(any(test, feature = "oracles"))]
 /// Solve `A^T y = b` with the LU factors of `A` (`P A = L U`, so `A^T = U^T L^T P`), `l` and
 /// `u` extracted once by the caller.
 pub(super) fn solve_transposed(
@@ -26,6 +31,7 @@ pub(super) fn solve_transposed(
     Some(w)
 }
 
+#[cfg(any(test, feature = "oracles"))]
 /// `||A||_1 ||A^-1||_1` (`a_norm = ||A||_1`) with `||A^-1||_1` estimated by Hager's method from
 /// the LU factors of `A` (a few solves with `A` and `A^T`, Higham's Algorithm 2.1); `None`
 /// when `A` is singular.
@@ -89,6 +95,7 @@ pub(super) fn dot(v: &Sparse, u: &[f64]) -> f64 {
 }
 
 impl SmallSystem {
+    #[cfg(feature = "oracles")]
     /// Solve `(rows^T F cols) tau = b - rows . u0` (LU with partial pivoting); with a border,
     /// also the plate translations `U` (contact rows gain `rows . w_e U_e`; each plate row
     /// reads `-sum_j tau_j w_d . col_j + sum_e D_de U_e = F_d - force0_d`).
