@@ -529,9 +529,10 @@ int main(int argc, char **argv) {
         return EXIT_FAILURE;
     }
     printf("CHOLMOD: %lu nonzeros in the upper triangle of K, analyze + factorize %.3f s "
-           "(%s, nnz(L) = %.0f)\n",
+           "(%s, nnz(L) = %.0f, %.3g flops)\n",
            (unsigned long)((int *)kff->p)[n_eq], seconds_since(start),
-           chol->factor->is_super ? "supernodal" : "simplicial", chol->common.lnz);
+           chol->factor->is_super ? "supernodal" : "simplicial", chol->common.lnz,
+           chol->common.fl);
 
     /* the contact pair in the host's numbering */
     a_xy = xcalloc(2 * m.n_a, sizeof *a_xy);
@@ -628,9 +629,10 @@ int main(int argc, char **argv) {
     cond_setup = seconds_since(start);
     hycon_host_free(host_cond);
     printf("condensed: %lu candidate equations last; CHOLMOD order %.3f s, analyze_p + "
-           "factorize %.3f s (nnz(L) = %.0f), L22 and S = L22 L22^T %.3f s\n",
+           "factorize %.3f s (simplicial, nnz(L) = %.0f, %.3g flops), L22 and S = L22 L22^T "
+           "%.3f s\n",
            (unsigned long)n_cand, schur_times.order, schur_times.factor, cond->common.lnz,
-           schur_times.block);
+           cond->common.fl, schur_times.block);
 
     /* path 3: the model API, HYCON_ELEMENT_Q4 on the same mesh */
     CHECK(hycon_model_new(&model, m.coords, m.n_nodes, &q4_elements, materials, 2));
