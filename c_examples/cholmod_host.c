@@ -19,8 +19,8 @@
  *   - CSR path: the same K given as CSR (hycon_host_set_csr), factored by hycon;
  *   - condensed path: the Schur complement S over the contact equations
  *     (hycon_host_set_condensed, HYCON_CONDENSED_STIFFNESS) from one CHOLMOD factorization of
- *     K with those equations eliminated last (CHOLMOD's own fill-reducing order of the rest,
- *     then cholmod_analyze_p with that order as given): S = L22 L22^T, L22 the factor's
+ *     K with those equations eliminated last (CHOLMOD's constrained minimum degree order,
+ *     CAMD, then cholmod_analyze_p with that order as given): S = L22 L22^T, L22 the factor's
  *     trailing block, no solve with unit columns. Per increment the host solves for its load
  *     with the same factor and hands over the image at those equations, and after it
  *     recovers its displacement itself from K u = rhs + hycon_contact_forces; checked against
@@ -172,27 +172,30 @@ typedef struct SchurTimes {
     double order, factor, block;
 } SchurTimes;
 
-/* CHOLMOD's own fill-reducing order of K (a first cholmod_analyze) with the m candidate
- * equations moved to the end, in their order: perm[k] is the equation eliminated k-th.
- * NULL if the analysis fails. */
-static int *order_candidates_last(cholmod_sparse *k, const int64_t *candidates, size_t m,
+/* A fill-reducing order of K with the m candidate equations last: CHOLMOD's constrained
+ * minimum degree (cholmod_camd: constraint set 0 for the other equations, 1 for the
+ * candidates, ordered after set 0), perm[k] the equation eliminated k-th. The candidates are
+ * rewritten in the order CAMD gives them (that of S's rows and columns). Measured against
+ * CHOLMOD's own unconstrained order with the candidates moved to the end: 9.4e8 against
+ * 1.3e9 flops at n = 32, 1.78e8 against 1.82e8 at n = 12. NULL on failure. */
+static int *order_candidates_last(cholmod_sparse *k, int64_t *candidates, size_t m,
                                   cholmod_common *common) {
     const size_t n = k->nrow;
-    cholmod_factor *first = cholmod_analyze(k, common);
-    char *last;
-    int *perm;
-    size_t i, next = 0;
-    if (first == NULL) return NULL;
-    last = xcalloc(n, sizeof *last);
-    perm = xcalloc(n, sizeof *perm);
-    for (i = 0; i < m; ++i) last[candidates[i]] = 1;
-    for (i = 0; i < n; ++i) {
-        int e = ((const int *)first->Perm)[i];
-        if (!last[e]) perm[next++] = e;
+    int *set = xcalloc(n, sizeof *set), *perm = xcalloc(n, sizeof *perm);
+    size_t i;
+    for (i = 0; i < m; ++i) set[candidates[i]] = 1;
+    if (!cholmod_camd(k, NULL, 0, set, perm, common)) {
+        free(set);
+        free(perm);
+        return NULL;
     }
-    for (i = 0; i < m; ++i) perm[next++] = (int)candidates[i];
-    cholmod_free_factor(&first, common);
-    free(last);
+    for (i = 0; i < n; ++i)
+        if (set[perm[i]] != (i >= n - m)) {
+            printf("FAILED: CAMD did not order the candidates last\n");
+            exit(EXIT_FAILURE);
+        }
+    for (i = 0; i < m; ++i) candidates[i] = perm[n - m + i];
+    free(set);
     return perm;
 }
 
@@ -628,7 +631,7 @@ int main(int argc, char **argv) {
     CHECK(hycon_contact_new_host(&c_cond, host_cond, &options));
     cond_setup = seconds_since(start);
     hycon_host_free(host_cond);
-    printf("condensed: %lu candidate equations last; CHOLMOD order %.3f s, analyze_p + "
+    printf("condensed: %lu candidate equations last; CAMD order %.3f s, analyze_p + "
            "factorize %.3f s (simplicial, nnz(L) = %.0f, %.3g flops), L22 and S = L22 L22^T "
            "%.3f s\n",
            (unsigned long)n_cand, schur_times.order, schur_times.factor, cond->common.lnz,
