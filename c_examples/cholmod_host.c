@@ -270,8 +270,9 @@ static SchurTimes hand_over_schur(HyconHost *host, cholmod_sparse *k, CholmodSta
     *candidates = xcalloc(m, sizeof **candidates);
     CHECK(hycon_host_contact_equations(host, *candidates, m, NULL));
     /* A simplicial LL' factor: with the reference BLAS Debian installs by default it factors
-     * this matrix faster than the supernodal method (measured at n = 12: 0.14-0.19 s against
-     * 0.22-0.29 s), and its trailing block is read straight from the columns of L. */
+     * this matrix no slower than the supernodal method (analyze_p + factorize, 3 runs each:
+     * 0.09-0.10 s against 0.14-0.16 s at n = 12, 0.50-0.62 s against 0.55-1.09 s at n = 32),
+     * and its trailing block is read straight from the columns of L. */
     cond->common.supernodal = CHOLMOD_SIMPLICIAL;
     cond->common.final_ll = 1;
     perm = order_candidates_last(k, *candidates, m, &cond->common);
