@@ -17,11 +17,14 @@
  *
  * The same increments are run three more ways and compared:
  *   - CSR path: the same K given as CSR (hycon_host_set_csr), factored by hycon;
- *   - condensed path: the flexibility block (K^-1)_cc over the contact equations from one
- *     batched CHOLMOD solve (hycon_host_set_condensed); per increment the host solves for its
- *     load and hands over the image at those equations, and after it recovers its
- *     displacement itself from K u = rhs + hycon_contact_forces; checked against the CSR path
- *     to 1e-8 (as is the callback path);
+ *   - condensed path: the Schur complement S over the contact equations
+ *     (hycon_host_set_condensed, HYCON_CONDENSED_STIFFNESS) from one CHOLMOD factorization of
+ *     K with those equations eliminated last (CHOLMOD's constrained minimum degree order,
+ *     CAMD, then cholmod_analyze_p with that order as given): S = L22 L22^T, L22 the factor's
+ *     trailing block, no solve with unit columns. Per increment the host solves for its load
+ *     with the same factor and hands over the image at those equations, and after it
+ *     recovers its displacement itself from K u = rhs + hycon_contact_forces; checked against
+ *     the CSR path to 1e-8 (as is the callback path);
  *   - model API: the same mesh and prescribed values through hycon_model_new with
  *     HYCON_ELEMENT_Q4 (hycon assembles and factors).
  * Checked at every increment: the A nodes' states are identical and their tractions (tn, ts) and
@@ -41,11 +44,23 @@
  * Usage: cholmod_host [n]   (elements per half-width, 4..32, default 12). Prints OK on success;
  * FAILED or "wrong value" and exit code 1 otherwise.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include "disk_mesh.h"
 
 #include <cholmod.h>
 #include <string.h>
 #include <time.h>
+
+/* A monotonic wall clock in seconds (hycon's own timings are wall-clock too). */
+static double now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static double seconds_since(double start) {
+    return now() - start;
+}
 
 /* ------------------------------------------------------------------------------------------ */
 /* The host's element: bilinear quadrilateral, 2x2 Gauss, plane strain, thickness t */
@@ -99,7 +114,7 @@ typedef struct CholmodState {
     cholmod_factor *factor;
     size_t n;
     size_t calls, columns, max_nrhs, failures;
-    double seconds;    /* CPU time in the solves */
+    double seconds;    /* wall-clock time in the solves */
     int fail_next;     /* test: fail the next call as a CHOLMOD failure would */
 } CholmodState;
 
@@ -129,7 +144,7 @@ static int32_t chol_solve(CholmodState *s, size_t nrhs, const double *rhs, doubl
 static int32_t cholmod_solve_cb(void *user_data, size_t n, size_t nrhs, const double *rhs,
                                 double *x) {
     CholmodState *s = user_data;
-    clock_t start = clock();
+    double start = now();
     int32_t status;
     if (s == NULL || s->factor == NULL || n != s->n || rhs == NULL || x == NULL) return 1;
     if (nrhs == 0) return 0;
@@ -145,47 +160,173 @@ static int32_t cholmod_solve_cb(void *user_data, size_t n, size_t nrhs, const do
     ++s->calls;
     s->columns += nrhs;
     if (nrhs > s->max_nrhs) s->max_nrhs = nrhs;
-    s->seconds += (double)(clock() - start) / CLOCKS_PER_SEC;
+    s->seconds += seconds_since(start);
     return 0;
 }
 
 /* ------------------------------------------------------------------------------------------ */
-/* The condensed hand-over: the flexibility block from one batched solve */
+/* The condensed hand-over: the Schur complement from a factor with the candidates last */
 
-/* The host's contact equations (hycon_host_contact_equations) as the candidates, and the
- * flexibility block (K^-1)_cc over them from one CHOLMOD solve with the m unit columns E_c
- * (column-major, m x m): handed over with hycon_host_set_condensed. Returns the seconds. */
-static double hand_over_flexibility(HyconHost *host, CholmodState *chol, int64_t **candidates,
-                                    size_t *m_out) {
-    const size_t n = chol->n;
-    clock_t start = clock();
-    size_t m = 0, i, j;
-    double *units, *x, *flexibility;
+/* The times of the hand-over's steps (wall-clock seconds). */
+typedef struct SchurTimes {
+    double order, factor, block;
+} SchurTimes;
+
+/* A fill-reducing order of K with the m candidate equations last: CHOLMOD's constrained
+ * minimum degree (cholmod_camd: constraint set 0 for the other equations, 1 for the
+ * candidates, ordered after set 0), perm[k] the equation eliminated k-th. The candidates are
+ * rewritten in the order CAMD gives them (that of S's rows and columns). Measured against
+ * CHOLMOD's own unconstrained order with the candidates moved to the end: 9.4e8 against
+ * 1.3e9 flops at n = 32, 1.78e8 against 1.82e8 at n = 12. NULL on failure. */
+static int *order_candidates_last(cholmod_sparse *k, int64_t *candidates, size_t m,
+                                  cholmod_common *common) {
+    const size_t n = k->nrow;
+    int *set = xcalloc(n, sizeof *set), *perm = xcalloc(n, sizeof *perm);
+    size_t i;
+    for (i = 0; i < m; ++i) set[candidates[i]] = 1;
+    if (!cholmod_camd(k, NULL, 0, set, perm, common)) {
+        free(set);
+        free(perm);
+        return NULL;
+    }
+    for (i = 0; i < n; ++i)
+        if (set[perm[i]] != (i >= n - m)) {
+            printf("FAILED: CAMD did not order the candidates last\n");
+            exit(EXIT_FAILURE);
+        }
+    for (i = 0; i < m; ++i) candidates[i] = perm[n - m + i];
+    free(set);
+    return perm;
+}
+
+/* The factor of P K P^T in the order `perm` exactly as given: one method, CHOLMOD_GIVEN, and
+ * no postorder (a postorder could move the trailing equations). NULL on failure, or if it is
+ * not the simplicial LL' factor that hand_over_schur asks for. */
+static cholmod_factor *factor_in_order(cholmod_sparse *k, int *perm, cholmod_common *common) {
+    const size_t n = k->nrow;
+    cholmod_factor *factor;
+    size_t i;
+    common->nmethods = 1;
+    common->method[0].ordering = CHOLMOD_GIVEN;
+    common->postorder = 0;
+    factor = cholmod_analyze_p(k, perm, NULL, 0, common);
+    if (factor == NULL) return NULL;
+    for (i = 0; i < n; ++i)
+        if (((const int *)factor->Perm)[i] != perm[i]) {
+            cholmod_free_factor(&factor, common);
+            return NULL;
+        }
+    if (!cholmod_factorize(k, factor, common) || common->status != CHOLMOD_OK ||
+        factor->minor != n || factor->is_super || !factor->is_ll)
+        cholmod_free_factor(&factor, common);
+    return factor;
+}
+
+/* The trailing m x m block L22 of a numeric simplicial LL' factor (dense, column-major, lower
+ * triangular): column j of L holds its nz[j] rows i[p[j]..] (all >= j) and values x[p[j]..]. */
+static double *trailing_block(const cholmod_factor *factor, size_t m) {
+    const size_t n = factor->n, first = n - m;
+    const int *p = factor->p, *nz = factor->nz, *rows = factor->i;
+    const double *x = factor->x;
+    double *l22 = xcalloc(m * m, sizeof *l22);
+    size_t j;
+    for (j = first; j < n; ++j) {
+        int q;
+        for (q = p[j]; q < p[j] + nz[j]; ++q)
+            l22[(size_t)rows[q] - first + m * (j - first)] = x[q];
+    }
+    return l22;
+}
+
+/* The Schur complement of the trailing equations, S = K22 - K21 K11^-1 K12 = L22 L22^T
+ * (P K P^T = L L^T: K22 = L21 L21^T + L22 L22^T and L21 L21^T = K21 K11^-1 K12), m x m,
+ * column-major, both triangles. */
+static double *schur_from_block(const double *l22, size_t m) {
+    double *s = xcalloc(m * m, sizeof *s);
+    size_t i, j, k;
+    for (j = 0; j < m; ++j)
+        for (i = j; i < m; ++i) {
+            double sum = 0.0;
+            for (k = 0; k <= j; ++k) sum += l22[i + m * k] * l22[j + m * k];
+            s[i + m * j] = s[j + m * i] = sum;
+        }
+    return s;
+}
+
+/* The condensed path's host solver: the host's contact equations
+ * (hycon_host_contact_equations) as the candidates, K factored once with them eliminated last
+ * (cond->factor, which then serves the load and recovery solves), and the Schur complement
+ * S = L22 L22^T handed over with hycon_host_set_condensed (HYCON_CONDENSED_STIFFNESS): no
+ * solve with unit columns. */
+static SchurTimes hand_over_schur(HyconHost *host, cholmod_sparse *k, CholmodState *cond,
+                                  int64_t **candidates, size_t *m_out) {
+    SchurTimes times;
+    double start = now();
+    size_t m = 0;
+    int *perm;
+    double *l22, *schur;
     HyconCondensed condensed;
     CHECK(hycon_host_contact_equations(host, NULL, 0, &m));
     *candidates = xcalloc(m, sizeof **candidates);
     CHECK(hycon_host_contact_equations(host, *candidates, m, NULL));
-    units = xcalloc(n * m, sizeof *units);
-    x = xcalloc(n * m, sizeof *x);
-    flexibility = xcalloc(m * m, sizeof *flexibility);
-    for (j = 0; j < m; ++j) units[j * n + (size_t)(*candidates)[j]] = 1.0;
-    if (chol_solve(chol, m, units, x) != 0) {
-        printf("FAILED: the batched CHOLMOD solve of the flexibility block\n");
+    /* A simplicial LL' factor: with the reference BLAS Debian installs by default it factors
+     * this matrix no slower than the supernodal method (analyze_p + factorize, 3 runs each:
+     * 0.09-0.10 s against 0.14-0.16 s at n = 12, 0.50-0.62 s against 0.55-1.09 s at n = 32),
+     * and its trailing block is read straight from the columns of L. */
+    cond->common.supernodal = CHOLMOD_SIMPLICIAL;
+    cond->common.final_ll = 1;
+    perm = order_candidates_last(k, *candidates, m, &cond->common);
+    times.order = seconds_since(start);
+    start = now();
+    cond->factor = perm == NULL ? NULL : factor_in_order(k, perm, &cond->common);
+    times.factor = seconds_since(start);
+    start = now();
+    if (cond->factor == NULL) {
+        printf("FAILED: CHOLMOD with the candidates last (status %d)\n", cond->common.status);
         exit(EXIT_FAILURE);
     }
-    for (j = 0; j < m; ++j)
-        for (i = 0; i < m; ++i) flexibility[i + m * j] = x[j * n + (size_t)(*candidates)[i]];
+    l22 = trailing_block(cond->factor, m);
+    schur = schur_from_block(l22, m);
     condensed.size = sizeof condensed;
-    condensed.kind = HYCON_CONDENSED_FLEXIBILITY;
+    condensed.kind = HYCON_CONDENSED_STIFFNESS;
     condensed.m = m;
     condensed.equations = *candidates;
-    condensed.matrix = flexibility;
+    condensed.matrix = schur;
     CHECK(hycon_host_set_condensed(host, &condensed));
-    free(units);
-    free(x);
-    free(flexibility);
+    times.block = seconds_since(start);
+    free(perm);
+    free(l22);
+    free(schur);
     *m_out = m;
-    return (double)(clock() - start) / CLOCKS_PER_SEC;
+    return times;
+}
+
+/* One increment of the condensed path: the host's load solve gives the load image
+ * u0 = K^-1 rhs at the candidates, hycon iterates on the Schur complement alone, and the host
+ * recovers its displacement u (n values) from K u = rhs + forces, both solves with its factor
+ * with the candidates last. Returns the wall-clock seconds of the whole. */
+static double condensed_increment(HyconContact *c, CholmodState *cond, const int64_t *candidates,
+                                  size_t m, const double *rhs, double *u) {
+    const size_t n = cond->n;
+    double start = now(), *u0 = xcalloc(n, sizeof *u0);
+    double *image = xcalloc(m, sizeof *image), *forces = xcalloc(n, sizeof *forces);
+    size_t k;
+    if (chol_solve(cond, 1, rhs, u0) != 0) {
+        printf("FAILED: CHOLMOD load solve\n");
+        exit(EXIT_FAILURE);
+    }
+    for (k = 0; k < m; ++k) image[k] = u0[candidates[k]];
+    CHECK(hycon_contact_increment(c, image, m, NULL, 0, NULL));
+    CHECK(hycon_contact_forces(c, forces, n, NULL));
+    for (k = 0; k < n; ++k) forces[k] += rhs[k];
+    if (chol_solve(cond, 1, forces, u) != 0) {
+        printf("FAILED: CHOLMOD recovery solve\n");
+        exit(EXIT_FAILURE);
+    }
+    free(u0);
+    free(image);
+    free(forces);
+    return seconds_since(start);
 }
 
 /* ------------------------------------------------------------------------------------------ */
@@ -265,7 +406,7 @@ int main(int argc, char **argv) {
     size_t n = argc > 1 ? (size_t)strtoul(argv[1], NULL, 10) : 12;
     DiskMeshParams params;
     DiskMesh m;
-    CholmodState *chol;
+    CholmodState *chol, *cond;
     cholmod_triplet *triplets;
     cholmod_sparse *kff;
     HyconMaterial materials[2];
@@ -273,7 +414,10 @@ int main(int argc, char **argv) {
     HyconHost *host_cb = NULL, *host_csr = NULL, *host_cond = NULL;
     HyconContact *c_cb = NULL, *c_csr = NULL, *c_model = NULL, *c_cond = NULL;
     int64_t *candidates = NULL;
-    double *image = NULL, *u0 = NULL, hand_over_seconds, host_cond_seconds = 0.0;
+    /* wall-clock seconds of each path: setup (hycon_contact_new_host, and for the condensed path
+     * the host's Schur complement before it), then the increments */
+    double csr_setup, cond_setup, csr_increments = 0.0, cond_increments = 0.0;
+    SchurTimes schur_times;
     size_t n_cand = 0;
     Snapshot s_cond;
     HyconContactOptions options;
@@ -288,7 +432,7 @@ int main(int argc, char **argv) {
     double deltas[2], k_max = 0.0, k_diff = 0.0;
     size_t n_eq = 0, k, e, i, j, step, n_model_field;
     int failures = 0;
-    clock_t start;
+    double start;
 
     if (n < 4 || n > 32) {
         fprintf(stderr, "usage: cholmod_host [n], 4 <= n <= 32\n");
@@ -333,7 +477,7 @@ int main(int argc, char **argv) {
         materials[k].thickness = 1.0;
         materials[k].analysis = HYCON_PLANE_STRAIN;
     }
-    start = clock();
+    start = now();
     for (e = 0; e < m.n_elements; ++e) {
         const size_t *en = &m.nodes[m.offsets[e]];
         double xy[8], ke[64], kh[64];
@@ -372,7 +516,7 @@ int main(int argc, char **argv) {
     cholmod_free_triplet(&triplets, &chol->common);
     printf("host assembly %.3f s; host Q4 vs hycon_element_stiffness(HYCON_ELEMENT_Q4): max "
            "difference %.2e of max entry %.3e\n",
-           (double)(clock() - start) / CLOCKS_PER_SEC, k_diff, k_max);
+           seconds_since(start), k_diff, k_max);
     if (!(k_diff <= 1e-12 * k_max)) {
         printf("wrong value: the host's Q4 differs from hycon's\n");
         ++failures;
@@ -381,7 +525,7 @@ int main(int argc, char **argv) {
         printf("FAILED: cholmod_triplet_to_sparse (status %d)\n", chol->common.status);
         return EXIT_FAILURE;
     }
-    start = clock();
+    start = now();
     chol->factor = cholmod_analyze(kff, &chol->common);
     if (chol->factor == NULL || !cholmod_factorize(kff, chol->factor, &chol->common) ||
         chol->common.status != CHOLMOD_OK || chol->factor->minor != n_eq) {
@@ -389,9 +533,10 @@ int main(int argc, char **argv) {
         return EXIT_FAILURE;
     }
     printf("CHOLMOD: %lu nonzeros in the upper triangle of K, analyze + factorize %.3f s "
-           "(%s, nnz(L) = %.0f)\n",
-           (unsigned long)((int *)kff->p)[n_eq], (double)(clock() - start) / CLOCKS_PER_SEC,
-           chol->factor->is_super ? "supernodal" : "simplicial", chol->common.lnz);
+           "(%s, nnz(L) = %.0f, %.3g flops)\n",
+           (unsigned long)((int *)kff->p)[n_eq], seconds_since(start),
+           chol->factor->is_super ? "supernodal" : "simplicial", chol->common.lnz,
+           chol->common.fl);
 
     /* the contact pair in the host's numbering */
     a_xy = xcalloc(2 * m.n_a, sizeof *a_xy);
@@ -461,14 +606,20 @@ int main(int argc, char **argv) {
         free(ids);
         free(node_eq);
     }
+    start = now();
     CHECK(hycon_contact_new_host(&c_csr, host_csr, &options));
+    csr_setup = seconds_since(start);
     hycon_host_free(host_csr);
     free(row_ptr);
     free(columns);
 
-    /* path 4: the condensed hand-over: the flexibility block over the contact equations from
-     * one batched CHOLMOD solve; increments take the load image, the host recovers its
-     * displacement from the contact forces */
+    /* path 4: the condensed hand-over: the host factors K once more with the contact equations
+     * eliminated last (its own CHOLMOD, its own common) and hands over the Schur complement
+     * from the factor's trailing block; increments take the load image, the host recovers its
+     * displacement from the contact forces, both with that factor */
+    cond = xcalloc(1, sizeof *cond);
+    cholmod_start(&cond->common);
+    cond->n = n_eq;
     CHECK(hycon_host_new(&host_cond, n_eq));
     CHECK(hycon_host_add_pair(host_cond, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0,
                               NULL));
@@ -476,12 +627,16 @@ int main(int argc, char **argv) {
         const double inside[2] = {0.0, -radius};
         CHECK(hycon_host_set_pair_inside(host_cond, 0, inside));
     }
-    hand_over_seconds = hand_over_flexibility(host_cond, chol, &candidates, &n_cand);
+    start = now();
+    schur_times = hand_over_schur(host_cond, kff, cond, &candidates, &n_cand);
     CHECK(hycon_contact_new_host(&c_cond, host_cond, &options));
+    cond_setup = seconds_since(start);
     hycon_host_free(host_cond);
-    printf("condensed: %lu candidate equations, flexibility block by one batched CHOLMOD solve "
+    printf("condensed: %lu candidate equations last; CAMD order %.3f s, analyze_p + "
+           "factorize %.3f s (simplicial, nnz(L) = %.0f, %.3g flops), L22 and S = L22 L22^T "
            "%.3f s\n",
-           (unsigned long)n_cand, hand_over_seconds);
+           (unsigned long)n_cand, schur_times.order, schur_times.factor, cond->common.lnz,
+           cond->common.fl, schur_times.block);
 
     /* path 3: the model API, HYCON_ELEMENT_Q4 on the same mesh */
     CHECK(hycon_model_new(&model, m.coords, m.n_nodes, &q4_elements, materials, 2));
@@ -508,8 +663,6 @@ int main(int argc, char **argv) {
     s_model.u = xcalloc(2 * m.n_nodes, sizeof *s_model.u);
     s_cond.nodes = xcalloc(m.n_a, sizeof *s_cond.nodes);
     s_cond.u = xcalloc(2 * m.n_nodes, sizeof *s_cond.u);
-    image = xcalloc(n_cand, sizeof *image);
-    u0 = xcalloc(n_eq, sizeof *u0);
 
     deltas[0] = params.half_width * params.half_width / radius; /* trial approach */
     for (step = 0; step < 2; ++step) {
@@ -527,7 +680,9 @@ int main(int argc, char **argv) {
         for (k = 0; k < 2 * m.n_nodes; ++k) qp_now[k] = delta * qp[k];
         printf("increment %lu: approach %.6e\n", (unsigned long)step + 1, delta);
         CHECK(hycon_contact_increment(c_cb, rhs, n_eq, NULL, 0, &info_cb));
+        start = now();
         CHECK(hycon_contact_increment(c_csr, rhs, n_eq, NULL, 0, &info_csr));
+        csr_increments += seconds_since(start);
         CHECK(hycon_contact_increment(c_model, zero, 2 * m.n_nodes, qp_now, 2 * m.n_nodes,
                                       &info_model));
         printf("  iterations %lu / %lu / %lu, active nodes %lu / %lu / %lu (callback / CSR / "
@@ -535,46 +690,25 @@ int main(int argc, char **argv) {
                (unsigned long)info_cb.iterations, (unsigned long)info_csr.iterations,
                (unsigned long)info_model.iterations, (unsigned long)info_cb.active,
                (unsigned long)info_csr.active, (unsigned long)info_model.active);
-        { /* the condensed path: the host solves for its load (the image at the candidates),
-           * hycon iterates without a solve, the host recovers u from K u = rhs + forces */
-            clock_t t0 = clock();
-            size_t f_len = 0;
-            double *forces;
-            if (chol_solve(chol, 1, rhs, u0) != 0) {
-                printf("FAILED: CHOLMOD load solve\n");
-                return EXIT_FAILURE;
-            }
-            for (k = 0; k < n_cand; ++k) image[k] = u0[candidates[k]];
-            host_cond_seconds += (double)(clock() - t0) / CLOCKS_PER_SEC;
-            CHECK(hycon_contact_increment(c_cond, image, n_cand, NULL, 0, NULL));
-            CHECK(hycon_contact_forces(c_cond, NULL, 0, &f_len));
-            forces = xcalloc(f_len, sizeof *forces);
-            CHECK(hycon_contact_forces(c_cond, forces, f_len, NULL));
-            t0 = clock();
-            for (k = 0; k < n_eq; ++k) forces[k] += rhs[k];
-            if (chol_solve(chol, 1, forces, field_host) != 0) {
-                printf("FAILED: CHOLMOD recovery solve\n");
-                return EXIT_FAILURE;
-            }
-            host_cond_seconds += (double)(clock() - t0) / CLOCKS_PER_SEC;
-            CHECK(hycon_contact_node_results(c_cond, 0, s_cond.nodes, m.n_a, NULL));
-            for (k = 0; k < 2 * m.n_nodes; ++k)
-                s_cond.u[k] = eq[k] >= 0 ? field_host[eq[k]] : qp_now[k];
-            free(forces);
-            if (hycon_contact_displacement(c_cond, field_host, n_eq, NULL) !=
-                HYCON_ERROR_INVALID_ARGUMENT) {
-                printf("wrong value: a condensed analysis has no solver for the displacement\n");
-                ++failures;
-            }
+        cond_increments += condensed_increment(c_cond, cond, candidates, n_cand, rhs, field_host);
+        CHECK(hycon_contact_node_results(c_cond, 0, s_cond.nodes, m.n_a, NULL));
+        for (k = 0; k < 2 * m.n_nodes; ++k)
+            s_cond.u[k] = eq[k] >= 0 ? field_host[eq[k]] : qp_now[k];
+        if (hycon_contact_displacement(c_cond, field_host, n_eq, NULL) !=
+            HYCON_ERROR_INVALID_ARGUMENT) {
+            printf("wrong value: a condensed analysis has no solver for the displacement\n");
+            ++failures;
         }
         snapshot(c_cb, &m, eq, qp_now, field_host, n_eq, &s_cb);
+        start = now(); /* the CSR path's displacement is recovered here, on request */
         snapshot(c_csr, &m, eq, qp_now, field_host, n_eq, &s_csr);
+        csr_increments += seconds_since(start);
         snapshot(c_model, &m, NULL, qp_now, field_model, 2 * m.n_nodes, &s_model);
         printf("  differences from the model API:\n");
         failures += compare("callback (CHOLMOD)", &m, &s_cb, &s_model, tolerance);
         failures += compare("CSR (hycon factors)", &m, &s_csr, &s_model, tolerance);
         printf("  differences from the CSR path:\n");
-        failures += compare("condensed (CHOLMOD F)", &m, &s_cond, &s_csr, 1e-8);
+        failures += compare("condensed (CHOLMOD S)", &m, &s_cond, &s_csr, 1e-8);
         failures += compare("callback (CHOLMOD)", &m, &s_cb, &s_csr, 1e-8);
         { /* way (a), tractions from element stresses: the CSR host (its elements handed over)
            * against the model API */
@@ -674,19 +808,27 @@ int main(int argc, char **argv) {
     print_timings("CSR", c_csr, 1, &failures);
     print_timings("model", c_model, 1, &failures);
     print_timings("condensed", c_cond, 0, &failures);
-    printf("  condensed: the host's flexibility block %.3f s, its load and recovery solves "
-           "%.3f s\n",
-           hand_over_seconds, host_cond_seconds);
+    printf("  condensed: the host's Schur complement %.3f s (order %.3f, factor %.3f, S %.3f)\n",
+           schur_times.order + schur_times.factor + schur_times.block, schur_times.order,
+           schur_times.factor, schur_times.block);
+    printf("wall clock: CSR path setup %.3f s (hycon's factorization) + 2 increments %.3f s "
+           "(with the displacement) = %.3f s; condensed path setup %.3f s (the host's Schur "
+           "complement) + 2 increments %.3f s (with the host's load and recovery solves) = "
+           "%.3f s: %.2fx the CSR path\n",
+           csr_setup, csr_increments, csr_setup + csr_increments, cond_setup, cond_increments,
+           cond_setup + cond_increments,
+           (cond_setup + cond_increments) / (csr_setup + csr_increments));
 
     hycon_contact_free(c_cb);
     hycon_contact_free(c_csr);
     hycon_contact_free(c_model);
     hycon_contact_free(c_cond);
     free(candidates);
-    free(image);
-    free(u0);
     free(s_cond.nodes);
     free(s_cond.u);
+    cholmod_free_factor(&cond->factor, &cond->common);
+    cholmod_finish(&cond->common);
+    free(cond);
     cholmod_free_factor(&chol->factor, &chol->common);
     cholmod_free_sparse(&kff, &chol->common);
     cholmod_finish(&chol->common);

@@ -5,7 +5,9 @@
 // At run time it exercises what the sliding example does not: the solve-callback adapter
 // (host-assembly API with a diagonal K solved by a C++ lambda), a monitor that stops the
 // increment (the state is kept), Status messages from the wrapper's own length checks and from
-// hycon, and, with exceptions enabled, a throwing callback that must not unwind into hycon.
+// hycon, the condensed hand-over (contact_equations, set_condensed: the same displacement
+// recovered from the contact forces), and, with exceptions enabled, a throwing callback that
+// must not unwind into hycon.
 //
 // The host problem: body A's top face (nodes 0, 1 at y = 0) and body B's bottom face (nodes
 // 2, 3 at y = g = 0.01) over x in [0, 1], every dof on a unit spring to the ground (K = I,
@@ -78,6 +80,45 @@ hycon::Result<hycon::Host> make_host() {
     const hycon::Status side = host->set_pair_inside(*pair, {0.5, -0.5});
     if (!side) return hycon::Result<hycon::Host>(side);
     return host;
+}
+
+// The condensed hand-over through the wrapper (Host::contact_equations, Host::set_condensed,
+// Contact::forces) on the same host problem: with K = I the Schur complement over the contact
+// equations (here all 8) is I, the load image u0 = K^-1 load is the load at them, and the host
+// recovers u = K^-1 (load + forces) = load + forces, which must be the callback path's `u`.
+void condensed_hand_over(const std::vector<double> &load, const std::vector<double> &u) {
+    auto host = make_host();
+    const auto equations = host ? host->contact_equations()
+                                : hycon::Result<std::vector<std::int64_t>>(host.status());
+    if (!equations || equations->size() != 8) {
+        expect(false, "contact_equations lists the 8 equations of the contact nodes");
+        return;
+    }
+    const std::size_t m = equations->size();
+    std::vector<double> schur(m * m, 0.0), image(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        schur[i * (m + 1)] = 1.0;
+        image[i] = load[static_cast<std::size_t>((*equations)[i])];
+    }
+    expect(host->set_condensed(HYCON_CONDENSED_STIFFNESS, *equations, image).code() ==
+               HYCON_ERROR_INVALID_ARGUMENT,
+           "set_condensed checks the matrix size");
+    expect(host->set_condensed(HYCON_CONDENSED_STIFFNESS, *equations, schur).ok(),
+           "set_condensed");
+    auto contact = hycon::Contact::create(*host);
+    const auto info = contact ? contact->increment(image)
+                              : hycon::Result<HyconIncrementInfo>(contact.status());
+    const auto forces =
+        info ? contact->forces() : hycon::Result<std::vector<double>>(info.status());
+    double difference = forces && forces->size() == u.size() ? 0.0 : 1.0;
+    for (std::size_t i = 0; difference < 1.0 && i < u.size(); ++i)
+        difference = std::fmax(difference, std::fabs(load[i] + (*forces)[i] - u[i]));
+    expect(info && info->active == 2 && difference < 1e-12,
+           "the condensed path recovers the callback path's displacement");
+    expect(contact && !contact->displacement(), "a condensed analysis has no displacement");
+    std::printf("condensed hand-over: %zu contact equations, recovered displacement within "
+                "%.1e of the callback path's\n",
+                m, difference);
 }
 
 }  // namespace
@@ -199,6 +240,8 @@ int main() {
                 "with %zu columns; %zu monitor calls\n",
                 u && u->size() == 8 ? (*u)[1] : 0.0, u && u->size() == 8 ? (*u)[5] : 0.0, -f,
                 -(kPush - f), solves, columns, records_seen);
+
+    if (u) condensed_hand_over(load, *u);
 
 #if defined(__cpp_exceptions)
     // a throwing solver must not unwind into hycon: the trampoline reports a failure
