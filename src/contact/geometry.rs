@@ -286,7 +286,7 @@ const GAUSS3_UNIT: [(f64, f64); 3] = [
 impl Hats {
     /// The shapes on an axisymmetric segment from node `first` to node `last` (`first + 1`) of
     /// a polyline of `count` nodes: quadratic when an end node of the polyline lies on the
-    /// axis (`r <= 1e-10 h`, round-off of the segment's length `h`) and the other node does
+    /// axis (`|r| <= 1e-10 h`, [`AXIS_ROUND_OFF`] of the segment's length `h`) and the other node does
     /// not, linear otherwise (and always in plane).
     fn of_segment(
         measure: SurfaceMeasure,
@@ -295,7 +295,7 @@ impl Hats {
         first: usize,
         count: usize,
     ) -> Self {
-        let on_axis = |r: f64| r <= AXIS_SNAP * h;
+        let on_axis = |r: f64| r.abs() <= AXIS_ROUND_OFF * h;
         if measure != SurfaceMeasure::Axisymmetric || on_axis(r[0]) == on_axis(r[1]) {
             Hats::Linear
         } else if first == 0 && on_axis(r[0]) {
@@ -355,9 +355,6 @@ struct NodeIntegrals {
     normal_length: f64,
     normal_scale: f64,
 }
-
-/// An end node of A within this fraction of its segment's length of `r = 0` is on the axis.
-const AXIS_SNAP: f64 = 1e-10;
 
 /// B nodes projecting within this fraction of an A segment's length of its end project onto it.
 const END_SNAP: f64 = 1e-10;
