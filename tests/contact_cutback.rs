@@ -339,6 +339,49 @@ fn a_plate_slide_is_cut_back_with_its_controls() {
     eprintln!("force-controlled slide: {info:?}");
 }
 
+/// Press 1599 of `hycon bench presses --count 2000 --seed 1` (wide ranges): body A (the upper
+/// block) 33 times stiffer than B, B's segments (0.22) longer than A's (0.088). A B node
+/// (x = 0.889) lies over A's segment 2 beside its node 2 (x = 0.885); closing node 2 puts it in
+/// tension, leaving it open lets the B node through.
+const STIFF_A: Press = Press {
+    lower: [9, 8],
+    upper: [5, 1],
+    left: 0.7088685647274104,
+    width: 0.44152234677896096,
+    gap: 0.00011799861604332307,
+    depth: 0.0015049624104232337,
+    upper_modulus: 33.324757153579384,
+    poisson: [0.4312771763132675, 0.22256492195716926],
+    friction: 0.5719566768598076,
+    kinematics: Kinematics::Small,
+};
+
+/// The stiff-A class has no state that satisfies the conditions, and its error says what to
+/// do: pressed in one increment, press `STIFF_A` fails with a B node through A's segment
+/// beside open A nodes (`1.4e-4` of the problem's scale); with B's segments quartered it
+/// settles in one increment.
+#[test]
+fn a_b_node_between_open_a_nodes_says_refine_b() {
+    let mut scene = Scene::new(STIFF_A, ContactOptions::default()).unwrap();
+    scene.analysis.set_fallback(true);
+    let e = scene.step(STIFF_A.depth, 0.0).unwrap_err();
+    match &e {
+        Error::Contact(ContactError::ConditionViolated { condition, .. }) => assert!(
+            condition.starts_with("a B node penetrates between two open A nodes"),
+            "{e}"
+        ),
+        _ => panic!("{e}"),
+    }
+    assert!(e.to_string().contains("refine the B surface"), "{e}");
+    let refined = Press {
+        lower: [36, 8],
+        ..STIFF_A
+    };
+    let mut scene = Scene::new(refined, ContactOptions::default()).unwrap();
+    scene.analysis.set_fallback(true);
+    scene.step(refined.depth, 0.0).unwrap();
+}
+
 /// With `cutback_depth = 0` the increment fails at once, as before 0.7.0: the monitor sees one
 /// try, and the state is the one before the call.
 #[test]
