@@ -339,6 +339,76 @@ fn a_plate_slide_is_cut_back_with_its_controls() {
     eprintln!("force-controlled slide: {info:?}");
 }
 
+/// Press 1599 of `hycon bench presses --count 2000 --seed 1` (wide ranges): body A (the upper
+/// block) 33 times stiffer than B, B's segments (0.22) longer than A's (0.088). A B node
+/// (x = 0.889) lies over A's segment 2 beside its node 2 (x = 0.885); closing node 2 puts it in
+/// tension, leaving it open lets the B node through.
+const STIFF_A: Press = Press {
+    lower: [9, 8],
+    upper: [5, 1],
+    left: 0.7088685647274104,
+    width: 0.44152234677896096,
+    gap: 0.00011799861604332307,
+    depth: 0.0015049624104232337,
+    upper_modulus: 33.324757153579384,
+    poisson: [0.4312771763132675, 0.22256492195716926],
+    friction: 0.5719566768598076,
+    kinematics: Kinematics::Small,
+};
+
+/// The stiff-A class has no state that satisfies the conditions, and its error says what to
+/// do: pressed in one increment, press `STIFF_A` fails with a B node through A's segment
+/// beside open A nodes (`1.4e-4` of the problem's scale); with B's segments quartered it
+/// settles in one increment.
+#[test]
+fn a_b_node_between_open_a_nodes_says_refine_b() {
+    let mut scene = Scene::new(STIFF_A, ContactOptions::default()).unwrap();
+    scene.analysis.set_fallback(true);
+    let e = scene.step(STIFF_A.depth, 0.0).unwrap_err();
+    match &e {
+        Error::Contact(ContactError::ConditionViolated { condition, .. }) => assert!(
+            condition.starts_with("a B node penetrates between two open A nodes"),
+            "{e}"
+        ),
+        _ => panic!("{e}"),
+    }
+    assert!(e.to_string().contains("refine the B surface"), "{e}");
+    let refined = Press {
+        lower: [36, 8],
+        ..STIFF_A
+    };
+    let mut scene = Scene::new(refined, ContactOptions::default()).unwrap();
+    scene.analysis.set_fallback(true);
+    scene.step(refined.depth, 0.0).unwrap();
+}
+
+/// Press 1076 of `hycon bench presses --count 2000 --seed 4` (wide ranges): body A 3,046 times
+/// stiffer than B, `mu = 0.40`. The paper's rules wander at the first touch, and the
+/// fallback's projected Gauss-Seidel needs 826,000 sweeps on its small system (`cond(S)` about
+/// `5e6`); 0.7.0 stopped it after 20,000, far from the solution, and every increment and
+/// sub-increment through the first touch failed (here: no convergence). The converged
+/// solution's states settle the press in one increment, without the cutback.
+#[test]
+fn a_stiff_a_press_settles_from_the_converged_fallback() {
+    let press = Press {
+        lower: [19, 8],
+        upper: [18, 4],
+        left: 0.4487646496524075,
+        width: 0.8125828665556429,
+        gap: 0.0003524483938569546,
+        depth: 0.008065305138413898,
+        upper_modulus: 3046.4420012998094,
+        poisson: [0.1076622284683112, 0.3604159420724465],
+        friction: 0.39849984348002143,
+        kinematics: Kinematics::Small,
+    };
+    let mut scene = Scene::new(press, off()).unwrap();
+    scene.analysis.set_fallback(true);
+    let info = scene.step(press.depth, 0.0).unwrap();
+    assert_eq!((info.sub_increments, info.cutbacks), (1, 0));
+    assert_eq!(scene.analysis.fallbacks(), 1);
+}
+
 /// With `cutback_depth = 0` the increment fails at once, as before 0.7.0: the monitor sees one
 /// try, and the state is the one before the call.
 #[test]
