@@ -382,6 +382,33 @@ fn a_b_node_between_open_a_nodes_says_refine_b() {
     scene.step(refined.depth, 0.0).unwrap();
 }
 
+/// Press 1076 of `hycon bench presses --count 2000 --seed 4` (wide ranges): body A 3,046 times
+/// stiffer than B, `mu = 0.40`. The paper's rules wander at the first touch, and the
+/// fallback's projected Gauss-Seidel needs 826,000 sweeps on its small system (`cond(S)` about
+/// `5e6`); 0.7.0 stopped it after 20,000, far from the solution, and every increment and
+/// sub-increment through the first touch failed (here: no convergence). The converged
+/// solution's states settle the press in one increment, without the cutback.
+#[test]
+fn a_stiff_a_press_settles_from_the_converged_fallback() {
+    let press = Press {
+        lower: [19, 8],
+        upper: [18, 4],
+        left: 0.4487646496524075,
+        width: 0.8125828665556429,
+        gap: 0.0003524483938569546,
+        depth: 0.008065305138413898,
+        upper_modulus: 3046.4420012998094,
+        poisson: [0.1076622284683112, 0.3604159420724465],
+        friction: 0.39849984348002143,
+        kinematics: Kinematics::Small,
+    };
+    let mut scene = Scene::new(press, off()).unwrap();
+    scene.analysis.set_fallback(true);
+    let info = scene.step(press.depth, 0.0).unwrap();
+    assert_eq!((info.sub_increments, info.cutbacks), (1, 0));
+    assert_eq!(scene.analysis.fallbacks(), 1);
+}
+
 /// With `cutback_depth = 0` the increment fails at once, as before 0.7.0: the monitor sees one
 /// try, and the state is the one before the call.
 #[test]
