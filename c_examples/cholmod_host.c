@@ -41,8 +41,9 @@
  * HYCON_ERROR_CALLBACK and leave the last converged state untouched; the same increment then
  * succeeds.
  *
- * Usage: cholmod_host [n]   (elements per half-width, 4..32, default 12). Prints OK on success;
- * FAILED or "wrong value" and exit code 1 otherwise.
+ * Usage: cholmod_host [n [small|finite mu]]   (elements per half-width, 4..32, default 12; the
+ * press's kinematics and friction coefficient, default small 0). Prints OK on success; FAILED
+ * or "wrong value" and exit code 1 otherwise.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include "disk_mesh.h"
@@ -404,6 +405,8 @@ int main(int argc, char **argv) {
     const double tolerance = 1e-7;
     const double e_star = youngs / (2.0 * (1.0 - poisson * poisson));
     size_t n = argc > 1 ? (size_t)strtoul(argv[1], NULL, 10) : 12;
+    HyconKinematics kinematics = HYCON_KINEMATICS_SMALL;
+    double friction = 0.0;
     DiskMeshParams params;
     DiskMesh m;
     CholmodState *chol, *cond;
@@ -416,7 +419,9 @@ int main(int argc, char **argv) {
     int64_t *candidates = NULL;
     /* wall-clock seconds of each path: setup (hycon_contact_new_host, and for the condensed path
      * the host's Schur complement before it), then the increments */
-    double csr_setup, cond_setup, csr_increments = 0.0, cond_increments = 0.0;
+    double cb_setup, csr_setup, cond_setup, cb_increments = 0.0, csr_increments = 0.0;
+    double cond_increments = 0.0;
+    size_t cb_columns[2]; /* the callback's right-hand sides: setup, the two increments */
     SchurTimes schur_times;
     size_t n_cand = 0;
     Snapshot s_cond;
@@ -434,8 +439,9 @@ int main(int argc, char **argv) {
     int failures = 0;
     double start;
 
-    if (n < 4 || n > 32) {
-        fprintf(stderr, "usage: cholmod_host [n], 4 <= n <= 32\n");
+    if (n < 4 || n > 32 || disk_case_args(argc, argv, &kinematics, &friction) < 0) {
+        fprintf(stderr,
+                "usage: cholmod_host [n [small|finite mu]], 4 <= n <= 32, 0 <= mu <= 1\n");
         return EXIT_FAILURE;
     }
     params.radius = radius;
@@ -452,9 +458,10 @@ int main(int argc, char **argv) {
     for (k = 0; k < m.n_top; ++k) eq[2 * m.top[k]] = eq[2 * m.top[k] + 1] = -1;
     for (k = 0; k < 2 * m.n_nodes; ++k) eq[k] = eq[k] < 0 ? -1 : (long)n_eq++;
     printf("Hertz disk on block, host with CHOLMOD: h = a/%lu, %lu nodes, %lu Q4 elements, %lu "
-           "equations, %lu A nodes, %lu B nodes\n",
+           "equations, %lu A nodes, %lu B nodes; %s kinematics, mu %.2f\n",
            (unsigned long)n, (unsigned long)m.n_nodes, (unsigned long)m.n_elements,
-           (unsigned long)n_eq, (unsigned long)m.n_a, (unsigned long)m.n_b);
+           (unsigned long)n_eq, (unsigned long)m.n_a, (unsigned long)m.n_b,
+           kinematics == HYCON_KINEMATICS_FINITE ? "finite" : "small", friction);
 
     /* prescribed values of a unit approach: top face v = -1 */
     qp = xcalloc(2 * m.n_nodes, sizeof *qp);
@@ -552,6 +559,7 @@ int main(int argc, char **argv) {
         b_eq[k] = eq[2 * m.b[k / 2] + k % 2] < 0 ? HYCON_FIXED : eq[2 * m.b[k / 2] + k % 2];
     }
     CHECK(hycon_contact_options_default(&options));
+    options.kinematics = kinematics;
 
     /* the views of the mesh and of the contact pair, shared by the three paths */
     q4_elements.offsets = m.offsets;
@@ -574,7 +582,8 @@ int main(int argc, char **argv) {
 
     /* path 1: the solve callback (CHOLMOD) */
     CHECK(hycon_host_new(&host_cb, n_eq));
-    CHECK(hycon_host_add_pair(host_cb, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0, NULL));
+    CHECK(hycon_host_add_pair(host_cb, &a_nodes, &b_nodes, friction, HYCON_PLANE_STRAIN, 1.0,
+                              NULL));
     { /* a point inside body A (the block [-2R, 2R] x [-2R, 0]): where the disk touches the
        * block over the whole stretch hycon judges, the polylines alone cannot tell facing
        * surfaces from back-to-back ones (path 2 gives its elements, which tell it instead) */
@@ -582,7 +591,10 @@ int main(int argc, char **argv) {
         CHECK(hycon_host_set_pair_inside(host_cb, 0, inside));
     }
     CHECK(hycon_host_set_solver(host_cb, cholmod_solve_cb, chol));
+    start = now();
     CHECK(hycon_contact_new_host(&c_cb, host_cb, &options));
+    cb_setup = seconds_since(start);
+    cb_columns[0] = chol->columns;
     hycon_host_free(host_cb); /* the analysis is independent of the description */
 
     /* path 2: the same K as CSR, factored by hycon. CHOLMOD's upper triangle by columns is the
@@ -592,7 +604,8 @@ int main(int argc, char **argv) {
     for (k = 0; k <= n_eq; ++k) row_ptr[k] = (size_t)((int *)kff->p)[k];
     for (k = 0; k < row_ptr[n_eq]; ++k) columns[k] = (size_t)((int *)kff->i)[k];
     CHECK(hycon_host_new(&host_csr, n_eq));
-    CHECK(hycon_host_add_pair(host_csr, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0, NULL));
+    CHECK(hycon_host_add_pair(host_csr, &a_nodes, &b_nodes, friction, HYCON_PLANE_STRAIN, 1.0,
+                              NULL));
     CHECK(hycon_host_set_csr(host_csr, row_ptr, columns, (const double *)kff->x,
                              HYCON_CSR_LOWER));
     { /* the host's elements (as hycon's Q4), so that hycon also gives the tractions from the
@@ -621,7 +634,7 @@ int main(int argc, char **argv) {
     cholmod_start(&cond->common);
     cond->n = n_eq;
     CHECK(hycon_host_new(&host_cond, n_eq));
-    CHECK(hycon_host_add_pair(host_cond, &a_nodes, &b_nodes, 0.0, HYCON_PLANE_STRAIN, 1.0,
+    CHECK(hycon_host_add_pair(host_cond, &a_nodes, &b_nodes, friction, HYCON_PLANE_STRAIN, 1.0,
                               NULL));
     {
         const double inside[2] = {0.0, -radius};
@@ -642,7 +655,7 @@ int main(int argc, char **argv) {
     CHECK(hycon_model_new(&model, m.coords, m.n_nodes, &q4_elements, materials, 2));
     CHECK(hycon_model_prescribe(model, m.bottom, m.n_bottom, HYCON_XY));
     CHECK(hycon_model_prescribe(model, m.top, m.n_top, HYCON_XY));
-    CHECK(hycon_model_add_pair(model, &a_line, &b_line, 0.0, NULL));
+    CHECK(hycon_model_add_pair(model, &a_line, &b_line, friction, NULL));
     CHECK(hycon_contact_new(&c_model, model, &options));
     hycon_model_free(model);
     CHECK(hycon_contact_displacement(c_model, NULL, 0, &n_model_field)); /* the size query */
@@ -679,7 +692,9 @@ int main(int argc, char **argv) {
         for (k = 0; k < n_eq; ++k) rhs[k] = delta * rhs_unit[k];
         for (k = 0; k < 2 * m.n_nodes; ++k) qp_now[k] = delta * qp[k];
         printf("increment %lu: approach %.6e\n", (unsigned long)step + 1, delta);
+        start = now();
         CHECK(hycon_contact_increment(c_cb, rhs, n_eq, NULL, 0, &info_cb));
+        cb_increments += seconds_since(start);
         start = now();
         CHECK(hycon_contact_increment(c_csr, rhs, n_eq, NULL, 0, &info_csr));
         csr_increments += seconds_since(start);
@@ -699,8 +714,10 @@ int main(int argc, char **argv) {
             printf("wrong value: a condensed analysis has no solver for the displacement\n");
             ++failures;
         }
+        start = now(); /* the displacement of the callback and CSR paths: recovered on request */
         snapshot(c_cb, &m, eq, qp_now, field_host, n_eq, &s_cb);
-        start = now(); /* the CSR path's displacement is recovered here, on request */
+        cb_increments += seconds_since(start);
+        start = now();
         snapshot(c_csr, &m, eq, qp_now, field_host, n_eq, &s_csr);
         csr_increments += seconds_since(start);
         snapshot(c_model, &m, NULL, qp_now, field_model, 2 * m.n_nodes, &s_model);
@@ -767,6 +784,8 @@ int main(int argc, char **argv) {
         free(qp_now);
     }
 
+    cb_columns[1] = chol->columns - cb_columns[0];
+
     /* a failing solve: the increment fails with HYCON_ERROR_CALLBACK, the state is kept */
     {
         HyconNodeResult *before = xcalloc(m.n_a, sizeof *before);
@@ -814,10 +833,14 @@ int main(int argc, char **argv) {
     printf("wall clock: CSR path setup %.3f s (hycon's factorization) + 2 increments %.3f s "
            "(with the displacement) = %.3f s; condensed path setup %.3f s (the host's Schur "
            "complement) + 2 increments %.3f s (with the host's load and recovery solves) = "
-           "%.3f s: %.2fx the CSR path\n",
+           "%.3f s: %.2fx the CSR path; callback path setup %.3f s (after the host's "
+           "factorization; %lu right-hand sides) + 2 increments %.3f s (with the displacement; "
+           "%lu right-hand sides) = %.3f s\n",
            csr_setup, csr_increments, csr_setup + csr_increments, cond_setup, cond_increments,
            cond_setup + cond_increments,
-           (cond_setup + cond_increments) / (csr_setup + csr_increments));
+           (cond_setup + cond_increments) / (csr_setup + csr_increments), cb_setup,
+           (unsigned long)cb_columns[0], cb_increments, (unsigned long)cb_columns[1],
+           cb_setup + cb_increments);
 
     hycon_contact_free(c_cb);
     hycon_contact_free(c_csr);

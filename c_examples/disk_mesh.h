@@ -38,6 +38,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define DISK_PI 3.14159265358979323846
 
@@ -68,6 +69,25 @@ static void *xcalloc(size_t count, size_t size) {
         exit(EXIT_FAILURE);
     }
     return p;
+}
+
+/* The optional arguments after n of the contact hosts (cholmod_host, petsc_host): the
+ * kinematics ("small" or "finite") and the friction coefficient mu in [0, 1] of their press.
+ * Returns 1 when it read them, 0 when they are absent (or a PETSc option, "-...", is in their
+ * place: the defaults passed in stay), -1 for arguments it cannot read. */
+static inline int disk_case_args(int argc, char **argv, HyconKinematics *kinematics,
+                                 double *friction) {
+    char *end;
+    if (argc < 3 || argv[2][0] == '-') return 0;
+    if (strcmp(argv[2], "small") == 0)
+        *kinematics = HYCON_KINEMATICS_SMALL;
+    else if (strcmp(argv[2], "finite") == 0)
+        *kinematics = HYCON_KINEMATICS_FINITE;
+    else
+        return -1;
+    if (argc < 4) return -1;
+    *friction = strtod(argv[3], &end);
+    return end != argv[3] && *end == '\0' && *friction >= 0.0 && *friction <= 1.0 ? 1 : -1;
 }
 
 typedef struct DiskMeshParams {

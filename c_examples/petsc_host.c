@@ -34,8 +34,9 @@
  *     gathers it with MatCreateSubMatrices and gives its lower triangle to hycon_host_set_csr):
  *     A-node states identical, tn and ts to 1e-8 of max |tn|, the gathered displacement field
  *     (all dofs) to 1e-8 of max |u|, at every increment of two analyses:
- *       press: frictionless, small kinematics, a trial approach a^2 / R, then the approach
- *              scaled to the Hertz load of the target half-width;
+ *       press: frictionless, small kinematics (or the kinematics and friction given on the
+ *              command line: then the press alone), a trial approach a^2 / R, then the
+ *              approach scaled to the Hertz load of the target half-width;
  *       slide: friction 0.3, finite kinematics, the same approach, then the disk's top moved
  *              sideways by 0.01 a, 0.05 a, 0.2 a, 0.4 a (partial slip, then gross sliding);
  *   - Hertz at the end of the press (multipliers): half-width (from the second moment of the
@@ -48,8 +49,9 @@
  * increments, displacement recovery), time per increment of the callback path against the
  * CSR path.
  *
- * Usage: mpiexec -n <ranks> petsc_host [n] [PETSc options]  (n: elements per contact
- * half-width, 4..32, default 8). Prints OK on success.
+ * Usage: mpiexec -n <ranks> petsc_host [n [small|finite mu]] [PETSc options]  (n: elements
+ * per contact half-width, 4..32, default 8; with the kinematics and the friction coefficient,
+ * the press alone under them). Prints OK on success.
  *
  * Every hycon call of this program is in the "hycon calls" section below, one small function
  * per hycon function, so that a change of the C API touches only that section.
@@ -832,7 +834,10 @@ static PetscErrorCode gather_vec(Vec v, PetscMPIInt rank, double *out) {
 int main(int argc, char **argv) {
     const double youngs = 1.0, poisson = 0.3, radius = 1.0, target = 1.0 / 32.0;
     const double friction = 0.3;
-    size_t n = 8;
+    HyconKinematics press_kinematics = HYCON_KINEMATICS_SMALL;
+    double press_friction = 0.0;
+    int press_only = 0;
+    size_t n = 8, n_analyses;
     DiskMeshParams params;
     DiskMesh m;
     HyconMaterial material;
@@ -852,8 +857,11 @@ int main(int argc, char **argv) {
     PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
     (void)report_failure; /* disk_mesh.h's CHECK: hycon calls go through hc_* here */
     if (argc > 1 && argv[1][0] != '-') n = (size_t)strtoul(argv[1], NULL, 10);
-    if (n < 4 || n > 32) {
-        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "usage: petsc_host [n], 4 <= n <= 32\n"));
+    press_only = disk_case_args(argc, argv, &press_kinematics, &press_friction);
+    n_analyses = press_only == 1 ? 1 : 2;
+    if (n < 4 || n > 32 || press_only < 0) {
+        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "usage: petsc_host [n [small|finite mu]], "
+                                                "4 <= n <= 32, 0 <= mu <= 1\n"));
         PetscCall(PetscFinalize());
         return EXIT_FAILURE;
     }
@@ -1041,26 +1049,29 @@ int main(int argc, char **argv) {
             approach[0] = params.half_width * params.half_width / radius;
             slide[0] = slide[1] = 0.0;
             p_target = DISK_PI * params.half_width * params.half_width * p.e_star / (4.0 * radius);
-            failures += run_analysis("press", &p, &s, 0.0, HYCON_KINEMATICS_SMALL, approach, slide,
-                                     2, p_target, &press_cb, &press_csr, &press_cond, &worst_t,
-                                     &worst_u, last, u_last);
+            failures += run_analysis("press", &p, &s, press_friction, press_kinematics, approach,
+                                     slide, 2, p_target, &press_cb, &press_csr, &press_cond,
+                                     &worst_t, &worst_u, last, u_last);
             failures += check_hertz(&p, last, &a_err, &p0_err);
+            if (n_analyses == 2) { /* slide: press, then move the top sideways */
+                for (q = 0; q < 5; ++q) approach[q] = approach[1];
+                slide[0] = 0.0;
+                slide[1] = 0.01 * params.half_width;
+                slide[2] = 0.05 * params.half_width;
+                slide[3] = 0.2 * params.half_width;
+                slide[4] = 0.4 * params.half_width;
+                failures += run_analysis("slide", &p, &s, friction, HYCON_KINEMATICS_FINITE,
+                                         approach, slide, 5, 0.0, &slide_cb, &slide_csr,
+                                         &slide_cond, &worst_t, &worst_u, last, u_last);
+                failures += check_sliding(&p, last, friction);
+            }
 
-            /* slide: press, then move the top sideways */
-            for (q = 0; q < 5; ++q) approach[q] = approach[1];
-            slide[0] = 0.0;
-            slide[1] = 0.01 * params.half_width;
-            slide[2] = 0.05 * params.half_width;
-            slide[3] = 0.2 * params.half_width;
-            slide[4] = 0.4 * params.half_width;
-            failures += run_analysis("slide", &p, &s, friction, HYCON_KINEMATICS_FINITE, approach,
-                                     slide, 5, 0.0, &slide_cb, &slide_csr, &slide_cond, &worst_t,
-                                     &worst_u, last, u_last);
-            failures += check_sliding(&p, last, friction);
-
-            printf("\nsummary: %d rank(s), %ld equations, %lu A nodes; %s (PETSc %d.%d.%d)\n",
+            printf("\nsummary: %d rank(s), %ld equations, %lu A nodes; %s (PETSc %d.%d.%d); "
+                   "press: %s kinematics, mu %.2f\n",
                    (int)size, (long)n_eq, (unsigned long)m.n_a, solver_name, PETSC_VERSION_MAJOR,
-                   PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR);
+                   PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR,
+                   press_kinematics == HYCON_KINEMATICS_FINITE ? "finite" : "small",
+                   press_friction);
             printf("| analysis | path | setup s | increments | s / increment | of which solves "
                    "| solve calls (setup / increments / recovery) | right-hand sides (setup / "
                    "increments / recovery) |\n");
@@ -1069,7 +1080,7 @@ int main(int argc, char **argv) {
                 Timing *cb[2], *csr[2], *cond[2];
                 cb[0] = &press_cb, cb[1] = &slide_cb, csr[0] = &press_csr, csr[1] = &slide_csr;
                 cond[0] = &press_cond, cond[1] = &slide_cond;
-                for (q = 0; q < 2; ++q) {
+                for (q = 0; q < n_analyses; ++q) {
                     printf("| %s | callback | %.3f | %lu | %.4f | %.4f | %lu / %lu / %lu | %lu / "
                            "%lu / %lu |\n",
                            names[q], cb[q]->setup, (unsigned long)cb[q]->n_increments,
@@ -1090,7 +1101,7 @@ int main(int argc, char **argv) {
                            cond[q]->increments / (double)cond[q]->n_increments,
                            cond[q]->increment_solves_seconds / (double)cond[q]->n_increments);
                 }
-                for (q = 0; q < 2; ++q)
+                for (q = 0; q < n_analyses; ++q)
                     printf("%s totals (setup + increments + recovery), s: callback %.3f, CSR "
                            "%.3f, condensed %.3f\n",
                            names[q], cb[q]->setup + cb[q]->increments + cb[q]->recovery,
