@@ -645,13 +645,6 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
     .build()?;
     let mesh = clock.elapsed().as_secs_f64();
     let model = &scene.model;
-    let prescribed: std::collections::HashSet<(usize, usize)> =
-        model.prescribed.iter().map(|p| (p.node, p.dir)).collect();
-    let dofs = 2 * model.mesh.n_nodes() - prescribed.len();
-    let elements = model.mesh.n_elements();
-    let mut contact_nodes: Vec<usize> = scene.pair.a.iter().chain(&scene.pair.b).copied().collect();
-    contact_nodes.sort_unstable();
-    contact_nodes.dedup();
     let options = ContactOptions {
         backend: case.backend,
         kinematics: case.kinematics,
@@ -665,24 +658,25 @@ pub fn sweep_run(case: &SweepCase) -> Result<SweepRun> {
     analysis.displacement()?;
     let total = clock.elapsed().as_secs_f64();
     let c = scene.compare(&analysis)?;
-    Ok(SweepRun {
-        case: *case,
-        dofs,
-        elements,
-        contact_dofs: 2 * contact_nodes.len(),
-        active: c.active,
-        iterations: analysis.records().len(),
-        factorizations: analysis.factorizations(),
+    let errors = [
+        c.l2_error,
+        c.l2_error_forces,
+        c.half_width / c.hertz.half_width - 1.0,
+        c.peak / c.hertz.peak - 1.0,
+    ];
+    let run = RunClock {
         mesh,
-        timings: analysis.timings(),
         total,
-        peak_rss: mib(peak_memory()),
         start_rss,
-        l2_error: c.l2_error,
-        l2_error_forces: c.l2_error_forces,
-        half_width_error: c.half_width / c.hertz.half_width - 1.0,
-        peak_error: c.peak / c.hertz.peak - 1.0,
-    })
+    };
+    Ok(sweep_record(
+        *case,
+        (model, &scene.pair),
+        &analysis,
+        c.active,
+        run,
+        errors,
+    ))
 }
 
 /// [`sweep_run`] of the sphere ([`SweepScene::Sphere`]): build the scene (timed as `mesh`),
@@ -713,12 +707,6 @@ fn sphere_sweep_run(case: &SweepCase) -> Result<SweepRun> {
     scene.model.formulation = case.formulation;
     let mesh = clock.elapsed().as_secs_f64();
     let model = &scene.model;
-    let prescribed: std::collections::HashSet<(usize, usize)> =
-        model.prescribed.iter().map(|p| (p.node, p.dir)).collect();
-    let dofs = 2 * model.mesh.n_nodes() - prescribed.len();
-    let mut contact_nodes: Vec<usize> = scene.pair.a.iter().chain(&scene.pair.b).copied().collect();
-    contact_nodes.sort_unstable();
-    contact_nodes.dedup();
     let mut analysis = scene.analysis(ContactOptions {
         backend: case.backend,
         kinematics: case.kinematics,
@@ -730,27 +718,79 @@ fn sphere_sweep_run(case: &SweepCase) -> Result<SweepRun> {
     analysis.displacement()?;
     let total = clock.elapsed().as_secs_f64();
     let c = scene.compare(&analysis)?;
-    Ok(SweepRun {
-        case: SweepCase {
-            radius_over_half_width: SPHERE_R_OVER_A,
-            ..*case
-        },
-        dofs,
+    let case = SweepCase {
+        radius_over_half_width: SPHERE_R_OVER_A,
+        ..*case
+    };
+    let errors = [
+        c.l2_error,
+        c.l2_error_forces,
+        c.radius / c.hertz.radius - 1.0,
+        c.peak / c.hertz.peak - 1.0,
+    ];
+    let run = RunClock {
+        mesh,
+        total,
+        start_rss,
+    };
+    Ok(sweep_record(
+        case,
+        (model, &scene.pair),
+        &analysis,
+        c.active,
+        run,
+        errors,
+    ))
+}
+
+/// A sweep run's clock and memory: the scene's build, the whole run (seconds) and the
+/// resident memory before it (MiB).
+struct RunClock {
+    mesh: f64,
+    total: f64,
+    start_rss: f64,
+}
+
+/// The record of a finished sweep run of `case` on `scene` (its model and pair): free dofs,
+/// elements and the dofs of both surfaces' nodes, the analysis' counts and timings, `run`'s
+/// clock, the peak memory now, and the errors against Hertz `[L2, L2 from the nodal forces,
+/// contact size, peak]`.
+fn sweep_record(
+    case: SweepCase,
+    scene: (
+        &hycon::model::Model,
+        &hycon::contact::iteration::ContactPair,
+    ),
+    analysis: &hycon::contact::iteration::ContactAnalysis,
+    active: usize,
+    run: RunClock,
+    errors: [f64; 4],
+) -> SweepRun {
+    let (model, pair) = scene;
+    let prescribed: std::collections::HashSet<(usize, usize)> =
+        model.prescribed.iter().map(|p| (p.node, p.dir)).collect();
+    let mut contact_nodes: Vec<usize> = pair.a.iter().chain(&pair.b).copied().collect();
+    contact_nodes.sort_unstable();
+    contact_nodes.dedup();
+    let [l2_error, l2_error_forces, half_width_error, peak_error] = errors;
+    SweepRun {
+        case,
+        dofs: 2 * model.mesh.n_nodes() - prescribed.len(),
         elements: model.mesh.n_elements(),
         contact_dofs: 2 * contact_nodes.len(),
-        active: c.active,
+        active,
         iterations: analysis.records().len(),
         factorizations: analysis.factorizations(),
-        mesh,
+        mesh: run.mesh,
         timings: analysis.timings(),
-        total,
-        peak_rss: mib(peak_memory()),
-        start_rss,
-        l2_error: c.l2_error,
-        l2_error_forces: c.l2_error_forces,
-        half_width_error: c.radius / c.hertz.radius - 1.0,
-        peak_error: c.peak / c.hertz.peak - 1.0,
-    })
+        total: run.total,
+        peak_rss: peak_memory().map_or(f64::NAN, |b| b as f64 / 1048576.0),
+        start_rss: run.start_rss,
+        l2_error,
+        l2_error_forces,
+        half_width_error,
+        peak_error,
+    }
 }
 
 /// Run `case` in a fresh child process of the executable `exe` (the hidden subcommand `bench
