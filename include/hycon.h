@@ -78,10 +78,10 @@
 #define HYCON_VERSION_MINOR 8
 
 // Patch version of the library this header belongs to.
-#define HYCON_VERSION_PATCH 0
+#define HYCON_VERSION_PATCH 1
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 800
+#define HYCON_VERSION 801
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6

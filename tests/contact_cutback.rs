@@ -15,6 +15,9 @@ use hycon::material::{Analysis, Material};
 use hycon::mesh::Mesh;
 use hycon::model::Model;
 
+mod common;
+use common::block;
+
 /// One two-block problem.
 #[derive(Debug, Clone, Copy)]
 struct Press {
@@ -28,35 +31,6 @@ struct Press {
     poisson: [f64; 2],
     friction: f64,
     kinematics: Kinematics,
-}
-
-/// A grid block from `origin` of `size` in `cells` quads into `mesh`; its node ids row by row.
-fn block(
-    mesh: &mut Mesh,
-    origin: [f64; 2],
-    size: [f64; 2],
-    cells: [usize; 2],
-    mat: usize,
-) -> Vec<usize> {
-    let mut ids = Vec::new();
-    for j in 0..=cells[1] {
-        for i in 0..=cells[0] {
-            ids.push(mesh.push_node([
-                origin[0] + size[0] * i as f64 / cells[0] as f64,
-                origin[1] + size[1] * j as f64 / cells[1] as f64,
-            ]));
-        }
-    }
-    let at = |i: usize, j: usize| ids[j * (cells[0] + 1) + i];
-    for j in 0..cells[1] {
-        for i in 0..cells[0] {
-            mesh.push_element(
-                &[at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)],
-                mat,
-            );
-        }
-    }
-    ids
 }
 
 /// The analysis of a press with `options`, and the upper block's top nodes. It runs the
@@ -407,6 +381,79 @@ fn a_stiff_a_press_settles_from_the_converged_fallback() {
     let info = scene.step(press.depth, 0.0).unwrap();
     assert_eq!((info.sub_increments, info.cutbacks), (1, 0));
     assert_eq!(scene.analysis.fallbacks(), 1);
+}
+
+/// Press 15241 of `hycon bench presses --count 20000 --seed 1` (wide ranges): A (the upper
+/// block) 23 times softer than B, `mu = 0.74`. The paper's rules cycle at the first touch and
+/// the fallback's projected Gauss-Seidel cycles too (the friction bounds follow `tn`), so
+/// 0.8.0 failed the press at every sub-increment with a slip reversal, while a reference run in
+/// 50 sub-increments per phase settles it. The semi-smooth Newton method solves the fallback's
+/// conditions exactly, and the press, the slide and the repeated totals converge.
+#[test]
+fn a_large_friction_press_settles_from_the_newton_fallback() {
+    let press = Press {
+        lower: [3, 8],
+        upper: [7, 1],
+        left: 0.7822626245848971,
+        width: 0.5787596818436164,
+        gap: 0.00030957028830917553,
+        depth: 0.004859937609864019,
+        upper_modulus: 0.04434548466332618,
+        poisson: [0.04661349026082093, 0.39657957455409115],
+        friction: 0.742198216879413,
+        kinematics: Kinematics::Small,
+    };
+    let slide = -5.601311985322515e-5;
+    let mut scene = Scene::new(press, ContactOptions::default()).unwrap();
+    scene.analysis.set_fallback(true);
+    for slide in [0.0, slide, slide] {
+        scene.step(press.depth, slide).unwrap();
+    }
+    assert!(scene.analysis.fallbacks() >= 1);
+    // the converged iterate of each increment (its last record) meets the conditions
+    let records = scene.analysis.records();
+    let converged = (records.iter().enumerate()).filter(|&(i, r)| {
+        records
+            .get(i + 1)
+            .is_none_or(|n| n.increment != r.increment)
+    });
+    for (_, r) in converged {
+        assert!(
+            r.violation <= hycon::contact::iteration::CONDITION_LIMIT,
+            "{r:?}"
+        );
+    }
+}
+
+/// Round 96488 of `contact_randomized 1000 1` (A 74 times stiffer than B, `mu = 0.09`): the
+/// press converges only in the fallback's last attempt, where B nodes are judged at
+/// convergence (one is `6.7e-5` of the scale through A's segment beside open A nodes). The
+/// same totals again then took 11 iterations (the C test allows 3): the rules, judging B nodes
+/// pointwise again, closed the nearer A node, cycled and needed the fallback once more. A
+/// repeated increment now resumes with the last one's locks and its way of judging B nodes,
+/// and settles at once on the same state.
+#[test]
+fn a_repeated_increment_settles_at_once_after_the_fallback() {
+    let press = Press {
+        lower: [6, 3],
+        upper: [6, 1],
+        left: 0.7734874600043844,
+        width: 0.6598804584303706,
+        gap: 0.0,
+        depth: 0.009528844230677902,
+        upper_modulus: 73.61722819860161,
+        poisson: [0.22359121202061955, 0.08649439256348629],
+        friction: 0.09326802011067681,
+        kinematics: Kinematics::Small,
+    };
+    let mut scene = Scene::new(press, ContactOptions::default()).unwrap();
+    scene.analysis.set_fallback(true);
+    scene.step(press.depth, 0.0).unwrap();
+    assert_eq!(scene.analysis.fallbacks(), 1);
+    let before = scene.analysis.node_results(0).unwrap();
+    let again = scene.step(press.depth, 0.0).unwrap();
+    assert_eq!((again.iterations, scene.analysis.fallbacks()), (1, 1));
+    assert_eq!(scene.analysis.node_results(0).unwrap(), before);
 }
 
 /// With `cutback_depth = 0` the increment fails at once, as before 0.7.0: the monitor sees one

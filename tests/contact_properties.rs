@@ -35,6 +35,9 @@ use hycon::{Analysis, Error, Material};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
+mod common;
+use common::block;
+
 /// One random problem.
 #[derive(Debug, Clone)]
 struct Problem {
@@ -80,37 +83,6 @@ impl Variant {
     }
 }
 
-/// A grid block `[x0, x0 + w] x [y0, y0 + h]` of `n[0] x n[1]` quads into `mesh`; returns its
-/// node ids row by row.
-fn block(
-    mesh: &mut Mesh,
-    x0: f64,
-    y0: f64,
-    w: f64,
-    h: f64,
-    n: [usize; 2],
-    mat: usize,
-) -> Vec<usize> {
-    let mut ids = Vec::new();
-    for j in 0..=n[1] {
-        for i in 0..=n[0] {
-            let x = x0 + w * i as f64 / n[0] as f64;
-            let y = y0 + h * j as f64 / n[1] as f64;
-            ids.push(mesh.push_node([x, y]));
-        }
-    }
-    let at = |i: usize, j: usize| ids[j * (n[0] + 1) + i];
-    for j in 0..n[1] {
-        for i in 0..n[0] {
-            mesh.push_element(
-                &[at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)],
-                mat,
-            );
-        }
-    }
-    ids
-}
-
 /// The outcome of a run: the tractions `(tn, ts)` per A node after each increment and the
 /// iterations of the zero increment, or the error's kind.
 type Outcome = std::result::Result<(Vec<Vec<(f64, f64)>>, usize), String>;
@@ -152,8 +124,8 @@ fn analysis_with(
     options: ContactOptions,
 ) -> std::result::Result<(ContactAnalysis, Vec<usize>), String> {
     let mut mesh = Mesh::new();
-    let lower = block(&mut mesh, p.axis, 0.0, 2.0, 1.0, p.lower, 0);
-    let upper = block(&mut mesh, p.left, 1.0 + p.gap, p.width, 1.0, p.upper, 1);
+    let lower = block(&mut mesh, [p.axis, 0.0], [2.0, 1.0], p.lower, 0);
+    let upper = block(&mut mesh, [p.left, 1.0 + p.gap], [p.width, 1.0], p.upper, 1);
     let row =
         |ids: &[usize], n: [usize; 2], j: usize| ids[j * (n[0] + 1)..(j + 1) * (n[0] + 1)].to_vec();
     let a = row(&upper, p.upper, 0);

@@ -248,8 +248,8 @@ enum Bench {
         threads: u32,
     },
     /// Random two-block presses (pressed, slid, the last totals repeated), counted by how the
-    /// contact iteration ends with 0.7.0's rules and with the paper's alone; each failure
-    /// classified against a reference run in 50 sub-increments per phase.
+    /// contact iteration ends with hycon's rules (fallback and cutback) and with the paper's
+    /// alone; each failure classified against a reference run in 50 sub-increments per phase.
     Presses {
         /// How many presses per seed.
         #[arg(long, default_value_t = 20_000)]
@@ -261,6 +261,10 @@ enum Bench {
         /// or `narrow` (0.6.2's, the distribution of tests/contact_properties.rs).
         #[arg(long, default_value = "wide")]
         ranges: hycon_lab::presses::Ranges,
+        /// Run only these presses of each seed's draw (indices from 0, comma separated, as
+        /// the report lists the ones the reference settles).
+        #[arg(long, value_delimiter = ',')]
+        press: Vec<usize>,
     },
     /// The L2 error of the contact pressure against where the Hertz edge falls between two
     /// nodes (frictionless reference scene, small kinematics): the method and the best
@@ -959,9 +963,14 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             count,
             seed,
             ranges,
+            press,
         } => {
             for seed in seed {
-                let presses = hycon_lab::presses::Press::draw_from(ranges, count, seed);
+                let presses: Vec<_> = hycon_lab::presses::Press::draw_from(ranges, count, seed)
+                    .into_iter()
+                    .enumerate()
+                    .filter(|(i, _)| press.is_empty() || press.contains(i))
+                    .collect();
                 presses_report(&hycon_lab::presses::outcomes(&presses), ranges, seed);
             }
         }
@@ -1785,6 +1794,16 @@ fn presses_report(o: &hycon_lab::presses::Outcomes, ranges: hycon_lab::presses::
     for (kind, n) in &o.failed {
         println!("  failed, {kind}: {n}");
     }
+    let failed = o.count - o.converged;
+    if failed > 0 {
+        println!(
+            "  failed presses: {:.2} s each on average (the cutback's tries included)",
+            o.failed_seconds / failed as f64
+        );
+    }
+    if !o.reference_settles.is_empty() {
+        println!("  presses the reference settles: {:?}", o.reference_settles);
+    }
     println!(
         "  converged through the fallback: {}; cut back: {}; largest condition violation at \
          convergence {:.1e} ({} over the limit)",
@@ -1799,11 +1818,13 @@ fn presses_report(o: &hycon_lab::presses::Outcomes, ranges: hycon_lab::presses::
     }
     let per = |x: f64, n: usize| if n == 0 { 0.0 } else { x / n as f64 };
     println!(
-        "  converged both ways: {} presses, iterations {} (0.7.0) / {} (paper), {:.2} s / {:.2} s",
+        "  converged both ways: {} presses, iterations {} (hycon) / {} (paper's rules), {:.2} s / \
+         {:.2} s",
         o.both, o.iterations[0], o.iterations[1], o.seconds[0], o.seconds[1]
     );
     println!(
-        "  converged only with 0.7.0: {} presses, {:.1} iterations and {:.2} ms each",
+        "  converged only with hycon's fallback and cutback: {} presses, {:.1} iterations and {:.2} ms \
+         each",
         o.rescued.0,
         per(o.rescued.1 as f64, o.rescued.0),
         1e3 * per(o.rescued.2, o.rescued.0)

@@ -4,9 +4,10 @@
 //! totals repeated; random moduli, Poisson's ratios, friction and kinematics, drawn from a
 //! seed. Two distributions ([`Ranges`]): the narrow one of `tests/contact_properties.rs`
 //! (0.6.2's bench) and the wide one of 0.7.0 (friction 0.05 to 1, modulus ratios 1e-4 to 1e4,
-//! meshes up to 32 elements a side). Every press runs with the rules of 0.7.0 and with the
-//! paper's alone (`ContactAnalysis::set_fallback(false)`), and each failure is classified
-//! against a reference run of the same problem in many small sub-increments.
+//! meshes up to 32 elements a side). Every press runs with hycon's rules (fallback and
+//! cutback) and with the paper's alone (`ContactAnalysis::set_fallback(false)`), and each
+//! failure is classified against a reference run of the same problem in many small
+//! sub-increments.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
@@ -294,8 +295,23 @@ fn block(
 /// Sub-increments per phase of the reference run that classifies a failure.
 pub const REFERENCE_STEPS: usize = 50;
 
-/// What happened to a set of presses with the rules of 0.7.0 (`new`) and with the paper's
-/// alone (`paper`).
+/// The options of the reference run: the defaults with the slip tolerance divided by
+/// [`REFERENCE_STEPS`]. A slide against friction is a path quantity: each of the reference's
+/// steps accepts one below the tolerance, and with the default tolerance in every step the
+/// reference would accept `REFERENCE_STEPS` times what one increment may slide against its
+/// friction. Seed 1's presses 1599 and 2474 (`--count 20000`, a stiff A with friction)
+/// "settled" in the reference only that way: with this tolerance they fail there too, as they
+/// do in one increment.
+pub fn reference_options() -> ContactOptions {
+    let defaults = ContactOptions::default();
+    ContactOptions {
+        slip_tolerance: defaults.slip_tolerance / REFERENCE_STEPS as f64,
+        ..defaults
+    }
+}
+
+/// What happened to a set of presses with hycon's rules (`new`: fallback and cutback) and
+/// with the paper's alone (`paper`).
 #[derive(Debug, Default)]
 pub struct Outcomes {
     /// Presses.
@@ -307,6 +323,8 @@ pub struct Outcomes {
     /// ("the reference settles": a failure the rules must not have) or fails too (with its
     /// error kind: a problem without an answer that the increments can reach).
     pub failed: BTreeMap<String, usize>,
+    /// The indices (from 0, in draw order) of the failed presses the reference settles.
+    pub reference_settles: Vec<usize>,
     /// The same with the paper's rules alone, without the fallback and the cutback, as in 0.6.2
     /// (no reference run).
     pub paper_failed: BTreeMap<String, usize>,
@@ -330,6 +348,8 @@ pub struct Outcomes {
     pub seconds: [f64; 2],
     /// Iterations and seconds of the presses converged only with the new rules.
     pub rescued: (usize, usize, f64),
+    /// Seconds of the failed presses with the new rules (the cutback's tries included).
+    pub failed_seconds: f64,
 }
 
 /// The largest condition violation at convergence (the last record of each increment).
@@ -347,9 +367,9 @@ pub fn converged_violation(analysis: &ContactAnalysis) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Run every press of `presses` both ways and count the outcomes; classify each failure of the
-/// new rules against the reference run.
-pub fn outcomes(presses: &[Press]) -> Outcomes {
+/// Run every press of `presses` (each with its index in its draw) both ways and count the
+/// outcomes; classify each failure of the new rules against the reference run.
+pub fn outcomes(presses: &[(usize, Press)]) -> Outcomes {
     let mut out = Outcomes {
         count: presses.len(),
         ..Outcomes::default()
@@ -361,8 +381,8 @@ pub fn outcomes(presses: &[Press]) -> Outcomes {
             "frictionless"
         }
     };
-    for press in presses {
-        // 0.7.0: the fallback and the automatic cutback on (the defaults); the paper's rules
+    for (index, press) in presses.iter().map(|(i, p)| (*i, p)) {
+        // hycon: the fallback and the automatic cutback on (the defaults); the paper's rules
         // alone: both off, as in 0.6.2
         let timed = |fallback: bool| {
             let options = ContactOptions {
@@ -412,8 +432,12 @@ pub fn outcomes(presses: &[Press]) -> Outcomes {
                 out.violating += usize::from(v > hycon::contact::iteration::CONDITION_LIMIT);
             }
             Err(e) => {
-                let class = match press.run_in(ContactOptions::default(), true, REFERENCE_STEPS) {
-                    Ok(_) => "the reference settles".to_string(),
+                out.failed_seconds += new_seconds;
+                let class = match press.run_in(reference_options(), true, REFERENCE_STEPS) {
+                    Ok(_) => {
+                        out.reference_settles.push(index);
+                        "the reference settles".to_string()
+                    }
                     Err(r) => format!("the reference fails too ({})", kind(&r)),
                 };
                 *out.failed

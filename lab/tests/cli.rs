@@ -570,7 +570,7 @@ fn committed_sweeps_parse_with_their_kinematics() {
 
 /// `bench presses` accounts for every press (converged or failed by kind and class), only
 /// presses with friction can fail with a node locked in slip, and no failure is one that the
-/// reference run in sub-increments settles.
+/// reference run in sub-increments settles; `--press` runs the chosen presses of the draw.
 #[test]
 fn bench_presses_accounts_for_every_press() {
     let out = hycon(&["bench", "presses", "--count", "200", "--seed", "7"]);
@@ -599,6 +599,12 @@ fn bench_presses_accounts_for_every_press() {
     assert!(!text.contains("SlipReversal, frictionless"), "{text}");
     assert!(!text.contains("the reference settles"), "{text}");
     assert!(text.contains("the paper's rules alone"), "{text}");
+    // chosen presses of the same draw
+    let out = hycon(&[
+        "bench", "presses", "--count", "200", "--seed", "7", "--press", "3,150",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.starts_with("2 random two-block presses"), "{text}");
 }
 
 /// `hycon run --dry-run` prints the verdict and solves nothing; `hycon run` prints the step

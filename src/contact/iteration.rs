@@ -79,6 +79,7 @@ mod active_set;
 mod boundary;
 mod checks;
 mod cutback;
+mod fallback;
 mod loads;
 #[cfg(feature = "oracles")]
 mod oracles;
@@ -600,6 +601,17 @@ pub enum PlateControl {
     Force(f64),
 }
 
+/// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
+/// prescribed dofs), the locks of its contact set, and whether its rules closed A nodes for B
+/// nodes penetrating their open segments (not in the fallback's last attempt, see
+/// `rules.rs`).
+#[derive(Clone)]
+struct Settled {
+    load: Vec<f64>,
+    locks: Locks,
+    pointwise_b: bool,
+}
+
 /// What the full field of a converged increment is recovered from.
 #[derive(Debug, Clone)]
 struct Converged {
@@ -658,17 +670,17 @@ pub struct ContactAnalysis {
     /// `ContactAnalysis::set_refactor_each_iteration`, feature `oracles`).
     #[cfg(feature = "oracles")]
     refactor_each_iteration: bool,
-    /// Start a failed increment again from the fallback's states (`rules.rs`; on unless a
+    /// Start a failed increment again from the fallback's states (`fallback.rs`; on unless a
     /// benchmark turns it off, see [`ContactAnalysis::set_fallback`]).
     fallback: bool,
     /// Increments that converged from the fallback's states.
     fallbacks: usize,
     /// The rules close an A node where a B node penetrates its open segments (off in the
-    /// fallback's attempt, whose condition check at convergence measures those penetrations).
+    /// fallback's last attempt, whose condition check at convergence measures those
+    /// penetrations, and in the first attempt of the same totals again after it).
     pointwise_b: bool,
-    /// The load (`f` and `q_p` at the prescribed dofs) of the last converged increment
-    /// without a plate, and the locks it settled with.
-    settled: Option<(Vec<f64>, Locks)>,
+    /// What the last converged increment without a plate settled with.
+    settled: Option<Settled>,
     /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
     /// scale to which the state is known (see [`ContactAnalysis::resolution`]).
     largest_motion: f64,
@@ -920,7 +932,7 @@ impl ContactAnalysis {
     }
 
     /// Whether an increment that the paper's rules do not settle starts again from the states
-    /// of the projected solution of its conditions (`rules.rs`; on by default). Off, the
+    /// of the solution of its linearized conditions (`fallback.rs`; on by default). Off, the
     /// iteration is the paper's alone, as before 0.7.0: a benchmark's control (`hycon bench
     /// presses` compares the two), not an option.
     pub fn set_fallback(&mut self, on: bool) {
@@ -1280,11 +1292,12 @@ impl ContactAnalysis {
             // a force-controlled body needs a support to start from: the nearest node
             self.close_nearest(&self.surfaces, &mut states);
         }
-        // the same totals again: resume with the last increment's locks, so that a contact
-        // set it settled by locking settles at once on the same state
-        let locks = match (&self.settled, control) {
-            (Some((last, locks)), None) if *last == load => locks.clone(),
-            _ => Locks::default(),
+        // the same totals again: resume with the last increment's locks and its way of
+        // judging B nodes, so that a contact set it settled by locking or in the fallback's
+        // last attempt settles at once on the same state
+        let (locks, pointwise_b) = match (&self.settled, control) {
+            (Some(last), None) if last.load == load => (last.locks.clone(), last.pointwise_b),
+            _ => (Locks::default(), true),
         };
         let attempt = Attempt {
             number,
@@ -1302,13 +1315,15 @@ impl ContactAnalysis {
             flexibility_before: self.timings.flexibility,
         };
         let mut records = Vec::new();
+        self.pointwise_b = pointwise_b;
         let first = self.iterate(&attempt, states, locks, &mut records);
+        self.pointwise_b = true;
         match first {
-            Err(e) if self.fallback && border.is_none() && rules::settles_by_fallback(&e) => {
+            Err(e) if self.fallback && border.is_none() && fallback::settles_by_fallback(&e) => {
                 // the paper's rules did not settle: start again from the states of the
-                // projected solution of the linearized conditions (rules.rs)
-                // first with the paper's rules from those states; then with B nodes checked
-                // pointwise only at convergence (rules.rs)
+                // solution of the linearized conditions (fallback.rs), first with the
+                // paper's rules from those states, then with B nodes checked pointwise only at
+                // convergence (rules.rs)
                 let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
                 let mut info =
                     self.iterate(&attempt, states.clone(), Locks::default(), &mut records);
@@ -1456,9 +1471,11 @@ impl ContactAnalysis {
                     prescribed,
                     contact: forces,
                 };
-                self.settled = control
-                    .is_none()
-                    .then(|| (load.to_vec(), set.locks().clone()));
+                self.settled = control.is_none().then(|| Settled {
+                    load: load.to_vec(),
+                    locks: set.locks().clone(),
+                    pointwise_b: self.pointwise_b,
+                });
                 return Ok(self.finish(
                     number,
                     iteration,

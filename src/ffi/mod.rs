@@ -88,9 +88,9 @@ pub const HYCON_VERSION_MAJOR: i32 = 0;
 /// Minor version of the library this header belongs to.
 pub const HYCON_VERSION_MINOR: i32 = 8;
 /// Patch version of the library this header belongs to.
-pub const HYCON_VERSION_PATCH: i32 = 0;
+pub const HYCON_VERSION_PATCH: i32 = 1;
 /// The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-pub const HYCON_VERSION: i32 = 800;
+pub const HYCON_VERSION: i32 = 801;
 
 // The literals above are what cbindgen can put into the header; `version_checks` (evaluated at
 // compile time in `hycon_version`) compares them with the single source, `version` in

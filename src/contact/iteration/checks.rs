@@ -405,7 +405,7 @@ impl ContactAnalysis {
     /// ```
     ///
     /// The last line is measured only when the rules do not check B nodes themselves (the
-    /// fallback's last attempt, see `rules.rs`): otherwise the rules close the nearer A node
+    /// fallback's last attempt, see `fallback.rs`): otherwise the rules close the nearer A node
     /// of a B node that penetrates by more than the gap tolerance (a node locked open
     /// excepted, as 0.6.2 did: beside one, a B node may end up through A's segment by about
     /// `1e-3` of the gap scale, as in the axisymmetric sphere of

@@ -64,7 +64,7 @@ struct Converging {
     nodes: Vec<Vec<NodeData>>,
     converged: Option<Converged>,
     previous: Option<Converged>,
-    settled: Option<(Vec<f64>, Locks)>,
+    settled: Option<Settled>,
     largest_motion: f64,
     largest_component_motion: f64,
     increment: usize,

@@ -20,53 +20,10 @@
 //! The locks of a cycling set ([`ActiveSet::commit`]) and the checks at convergence
 //! (`checks.rs`) complete the rules.
 //!
-//! # When the rules do not settle: the projected fallback
-//!
-//! The rules move one way only from a slip node that slides with its friction: it stays in
-//! slip. At the first all-stick iterate the stick shear of the linear multipliers alternates
-//! in sign from node to node (the oscillation that shows at the Hertz edge), many nodes
-//! exceed the cone at once and all of them turn to slip; a node whose violation was only that
-//! oscillation then slides consistently and never returns, while its neighbour alternates
-//! between stick (outside the cone) and slip (sliding against its friction). The cycle guard
-//! locks the neighbour in slip and the increment fails with a slip reversal (434 of the 513
-//! failures of `hycon bench presses` in 0.6.2); the same happens to the normal states at the
-//! edge of a zone (a node locked open that penetrates). In the traced press 247 of seed 1
-//! (`hycon bench presses --count 2000`) the state {stick, slip(-1)} satisfies every condition,
-//! but the rules go {stick, stick} -> {slip(+1), slip(-1)} and then cycle between
-//! {slip(+1), stick} and {slip(+1), slip(-1)}.
-//!
-//! When the rules fail for such a reason ([`settles_by_fallback`]), the increment starts
-//! again from the states of the solution of the same conditions, linearized at the start of
-//! the increment, over the candidate nodes (closed at the start, or penetrating under the
-//! load alone, and their neighbours): with every candidate's normal and tangent rows,
-//! `S t - r = rho` (`rho_n = n . R_C` the weighted gap with its sign reversed, `rho_t` the
-//! weighted slip), solve `tn <= 0`, `rho_n <= 0`, `tn rho_n = 0`, `|ts| <= mu |tn|`, `ts`
-//! opposing `rho_t` where it is on the cone and `rho_t = 0` inside, by projected block
-//! Gauss-Seidel over the nodes (for a fixed `|tn|` the problem is the minimum of a convex
-//! quadratic over boxes, so each sweep lowers it; the friction bound follows `tn`). Its
-//! states (closed where `tn < 0`, slip where `|ts|` is on the cone, with the sign of
-//! `-ts`) start the paper's iteration again, which then settles in a few iterations and
-//! checks every condition as usual. The paper's rules keep their results wherever they
-//! settle: the fallback runs only after they failed.
+//! When the rules do not settle, the increment starts again from the fallback's states
+//! (`fallback.rs`).
 
 use super::*;
-
-/// Whether an increment that failed with `e` is tried again from the fallback's states: a
-/// failure of the rules (a cycle, the iteration cap, a node locked in slip that slides
-/// against its friction, a node locked open that penetrates). Geometry, coverage, a singular
-/// system and a host's or monitor's failure are not the rules' to fix.
-pub(super) fn settles_by_fallback(e: &Error) -> bool {
-    matches!(
-        e,
-        Error::Contact(
-            ContactError::Cycling { .. }
-                | ContactError::NoConvergence { .. }
-                | ContactError::SlipReversal { .. }
-                | ContactError::EdgePenetration { .. }
-                | ContactError::ConditionViolated { .. }
-        )
-    )
-}
 
 /// A run of penetrating nodes away from the contact zone closes where its penetration is at
 /// least this fraction of its deepest ([`ActiveSet::closing`]).
@@ -112,27 +69,6 @@ pub(super) fn closed_at_rest(law: &dyn FrictionLaw) -> NodeState {
         NodeState::Stick
     }
 }
-
-/// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
-/// for `m` unknowns (a few seconds). Gauss-Seidel contracts by about `1 - 1/cond(S)` per
-/// sweep, and with one body 1,000 times stiffer than the other `cond(S)` reaches `5e6`: press
-/// 1076 of seed 4 of `hycon bench presses --count 2000` (`m = 38`) needs 826,000 sweeps.
-/// 0.7.0 stopped after 20,000, with the tractions still changing by `4e-6` of the largest per
-/// sweep, and the states of that point were ones the paper's iteration left again: every
-/// increment and sub-increment through the first touch failed, while the converged solution's
-/// states settle the whole press in one increment.
-const FALLBACK_WORK: f64 = 4e9;
-
-/// The sweeps stop early when the largest change has not fallen over this many sweeps: the
-/// projected iteration does not converge (with a large `mu` the friction bounds that follow
-/// `tn` can keep it cycling), and more sweeps would not help.
-const FALLBACK_WINDOW: usize = 20_000;
-
-/// The sweeps stop when no traction changes by more than this, relative to the largest.
-const FALLBACK_TOLERANCE: f64 = 1e-12;
-
-/// A node is in slip in the fallback's states when `|ts| >= (1 - FALLBACK_CONE) mu |tn|`.
-const FALLBACK_CONE: f64 = 1e-9;
 
 impl ContactAnalysis {
     /// The paper's rules, proposing the next states from the set's current ones: penetration
@@ -280,154 +216,6 @@ impl ContactAnalysis {
             }
         }
         out
-    }
-
-    /// The fallback's start states for `attempt` (module docs): the candidates' conditions
-    /// linearized at the start of the increment, solved by projected block Gauss-Seidel.
-    pub(super) fn fallback_states(&mut self, attempt: &Attempt<'_>) -> Result<Vec<Vec<NodeState>>> {
-        let startc = &attempt.startc;
-        let surfaces = self.surfaces.clone();
-        let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
-        // the candidates: closed at the start, or penetrating under the load alone, and
-        // their covered neighbours
-        let mut states: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
-        for (p, surface) in surfaces.iter().enumerate() {
-            let nodes = &surface.nodes;
-            let penetrates: Vec<bool> = nodes
-                .iter()
-                .enumerate()
-                .map(|(k, node)| {
-                    if self.nodes[p][k].state != NodeState::Open {
-                        return true;
-                    }
-                    if !node.is_covered() {
-                        return false;
-                    }
-                    let row = self.directed(&node.coupling, node.normal);
-                    let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
-                    rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
-                })
-                .collect();
-            let candidate = |k: usize| {
-                nodes[k].is_covered()
-                    && (penetrates[k]
-                        || (k > 0 && penetrates[k - 1])
-                        || (k + 1 < nodes.len() && penetrates[k + 1]))
-            };
-            states.push(
-                (0..nodes.len())
-                    .map(|k| {
-                        if candidate(k) {
-                            closed_state(p, k)
-                        } else {
-                            NodeState::Open
-                        }
-                    })
-                    .collect(),
-            );
-        }
-        let system = self.build_system(&surfaces, &states, startc, startc)?;
-        let s = self.dense_matrix(&system)?;
-        let r: Vec<f64> = system
-            .rows
-            .iter()
-            .zip(&system.b)
-            .map(|(row, b)| b - dot(row, attempt.u0c))
-            .collect();
-        let t = self.projected_solution(&system, &s, &r);
-        let tn_max = system
-            .unknowns
-            .iter()
-            .zip(&t)
-            .filter(|(u, _)| u.2 == small_system::Row::Normal)
-            .fold(0.0f64, |m, (_, v)| m.max(v.abs()));
-        let mut out: Vec<Vec<NodeState>> = states
-            .iter()
-            .map(|s| vec![NodeState::Open; s.len()])
-            .collect();
-        for (i, &(p, k, row)) in system.unknowns.iter().enumerate() {
-            if row != small_system::Row::Normal || t[i] >= -FALLBACK_TOLERANCE * tn_max {
-                continue;
-            }
-            let tangent = system
-                .unknowns
-                .get(i + 1)
-                .filter(|u| (u.0, u.1) == (p, k))
-                .map(|_| t[i + 1]);
-            out[p][k] = match tangent {
-                None => NodeState::Frictionless,
-                Some(ts) => {
-                    let limit = self.laws[p].stick_limit(t[i]);
-                    if ts.abs() >= (1.0 - FALLBACK_CONE) * limit {
-                        NodeState::Slip {
-                            sign: if ts > 0.0 { -1 } else { 1 },
-                        }
-                    } else {
-                        NodeState::Stick
-                    }
-                }
-            };
-        }
-        Ok(out)
-    }
-
-    /// Projected block Gauss-Seidel on `S t - r = rho` (module docs): per node, the normal
-    /// traction `tn <- min(0, tn - rho_n / S_nn)`, then the tangential one
-    /// `ts <- clamp(ts - rho_t / S_tt, -mu |tn|, mu |tn|)`, until no traction changes by more
-    /// than [`FALLBACK_TOLERANCE`] of the largest, within [`FALLBACK_WORK`], or until a
-    /// window of [`FALLBACK_WINDOW`] sweeps brings the change no lower. `S` is symmetric
-    /// positive definite here (every column is its row).
-    fn projected_solution(&self, system: &SmallSystem, s: &DMatrix<f64>, r: &[f64]) -> Vec<f64> {
-        let m = r.len();
-        let mut t = vec![0.0; m];
-        let mut rho: Vec<f64> = r.iter().map(|v| -v).collect();
-        let update = |t: &mut [f64], rho: &mut [f64], i: usize, value: f64| {
-            let change = value - t[i];
-            if change != 0.0 {
-                for (x, &c) in rho.iter_mut().zip(column(s, i)) {
-                    *x += c * change;
-                }
-                t[i] = value;
-            }
-            change.abs()
-        };
-        let sweeps = ((FALLBACK_WORK / (m * m).max(1) as f64) as usize).max(FALLBACK_WINDOW);
-        // the relative change at the last window's end
-        let mut last_window = f64::INFINITY;
-        for sweep in 1..=sweeps {
-            let mut largest_change = 0.0f64;
-            let mut i = 0;
-            while i < m {
-                let (p, k, _) = system.unknowns[i];
-                let tn = (t[i] - rho[i] / s[(i, i)]).min(0.0);
-                largest_change = largest_change.max(update(&mut t, &mut rho, i, tn));
-                let frictional = system
-                    .unknowns
-                    .get(i + 1)
-                    .is_some_and(|u| (u.0, u.1) == (p, k) && u.2 == small_system::Row::Tangent);
-                if frictional {
-                    let j = i + 1;
-                    let limit = self.laws[p].stick_limit(t[i]);
-                    let ts = (t[j] - rho[j] / s[(j, j)]).clamp(-limit, limit);
-                    largest_change = largest_change.max(update(&mut t, &mut rho, j, ts));
-                    i += 2;
-                } else {
-                    i += 1;
-                }
-            }
-            let largest = t.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-            let relative = largest_change / largest;
-            if largest_change <= FALLBACK_TOLERANCE * largest {
-                break;
-            }
-            if sweep % FALLBACK_WINDOW == 0 {
-                if relative >= last_window {
-                    break;
-                }
-                last_window = relative;
-            }
-        }
-        t
     }
 }
 

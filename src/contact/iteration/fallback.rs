@@ -1,0 +1,429 @@
+//! The fallback: when the paper's rules do not settle an increment, it starts again from the
+//! states of the solution of the linearized contact conditions.
+//!
+//! The rules move one way only from a slip node that slides with its friction: it stays in
+//! slip. At the first all-stick iterate the stick shear of the linear multipliers alternates
+//! in sign from node to node (the oscillation that shows at the Hertz edge), many nodes
+//! exceed the cone at once and all of them turn to slip; a node whose violation was only that
+//! oscillation then slides consistently and never returns, while its neighbour alternates
+//! between stick (outside the cone) and slip (sliding against its friction). The cycle guard
+//! locks the neighbour in slip and the increment fails with a slip reversal (434 of the 513
+//! failures of `hycon bench presses` in 0.6.2); the same happens to the normal states at the
+//! edge of a zone (a node locked open that penetrates). In the traced press 247 of seed 1
+//! (`hycon bench presses --count 2000`) the state {stick, slip(-1)} satisfies every condition,
+//! but the rules go {stick, stick} -> {slip(+1), slip(-1)} and then cycle between
+//! {slip(+1), stick} and {slip(+1), slip(-1)}.
+//!
+//! When the rules fail for such a reason ([`settles_by_fallback`]), the increment starts
+//! again from the states of the solution of the same conditions, linearized at the start of
+//! the increment, over the candidate nodes (closed at the start, or penetrating under the
+//! load alone, and their neighbours): with every candidate's normal and tangent rows,
+//! `S t - r = rho` (`rho_n = n . R_C` the weighted gap with its sign reversed, `rho_t` the
+//! weighted slip), solve `tn <= 0`, `rho_n <= 0`, `tn rho_n = 0`, `|ts| <= mu |tn|`, `ts`
+//! opposing `rho_t` where it is on the cone and `rho_t = 0` inside ([`Linearized`]): a
+//! thousand sweeps of projected block Gauss-Seidel over the nodes (for a fixed `|tn|` the
+//! problem is the minimum of a convex quadratic over boxes, so each sweep lowers it; the
+//! friction bound follows `tn`) give a start from which the semi-smooth Newton method
+//! (primal-dual active set) solves the conditions exactly in a few dense solves; where it
+//! does not settle, Gauss-Seidel goes on to convergence. Gauss-Seidel alone needs up to
+//! `cond(S)` sweeps (826,000 in a press with one body 1,000 times stiffer), and with a large
+//! `mu` may not converge at all. In `hycon bench presses --count 2000 --seed 1,2,3,4,5` the
+//! Newton method settled 1,232 of the 1,303 fallback solves (counted in a debug build); over
+//! `--count 20000` the presses the fallback rescues take 17-32 ms each instead of 0.8.0's
+//! 90-144 ms, and press 15241 of seed 1, where Gauss-Seidel cycles, now settles (test
+//! `a_large_friction_press_settles_from_the_newton_fallback`). Its states (closed where
+//! `tn < 0`, slip where `|ts|` is on the cone, with the sign of `-ts`) start the paper's iteration again, which then settles in a few iterations and
+//! checks every condition as usual. The paper's rules keep their results wherever they
+//! settle: the fallback runs only after they failed.
+
+use super::*;
+use plate::dot_dense;
+use rules::closed_at_rest;
+
+/// Whether an increment that failed with `e` is tried again from the fallback's states: a
+/// failure of the rules (a cycle, the iteration cap, a node locked in slip that slides
+/// against its friction, a node locked open that penetrates). Geometry, coverage, a singular
+/// system and a host's or monitor's failure are not the rules' to fix.
+pub(super) fn settles_by_fallback(e: &Error) -> bool {
+    matches!(
+        e,
+        Error::Contact(
+            ContactError::Cycling { .. }
+                | ContactError::NoConvergence { .. }
+                | ContactError::SlipReversal { .. }
+                | ContactError::EdgePenetration { .. }
+                | ContactError::ConditionViolated { .. }
+        )
+    )
+}
+
+/// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
+/// for `m` unknowns (a few seconds). Gauss-Seidel contracts by about `1 - 1/cond(S)` per
+/// sweep, and with one body 1,000 times stiffer than the other `cond(S)` reaches `5e6`: press
+/// 1076 of seed 4 of `hycon bench presses --count 2000` (`m = 38`) needs 826,000 sweeps.
+/// 0.7.0 stopped after 20,000, with the tractions still changing by `4e-6` of the largest per
+/// sweep, and the states of that point were ones the paper's iteration left again: every
+/// increment and sub-increment through the first touch failed, while the converged solution's
+/// states settle the whole press in one increment.
+const FALLBACK_WORK: f64 = 4e9;
+
+/// The sweeps stop early when the largest change has not fallen over this many sweeps: the
+/// projected iteration does not converge (with a large `mu` the friction bounds that follow
+/// `tn` can keep it cycling), and more sweeps would not help.
+const FALLBACK_WINDOW: usize = 20_000;
+
+/// Projected Gauss-Seidel sweeps before the semi-smooth Newton method starts from their
+/// tractions.
+const START_SWEEPS: usize = 1000;
+
+/// The sweeps stop when no traction changes by more than this, relative to the largest.
+const FALLBACK_TOLERANCE: f64 = 1e-12;
+
+/// A node is in slip in the fallback's states when `|ts| >= (1 - FALLBACK_CONE) mu |tn|`.
+const FALLBACK_CONE: f64 = 1e-9;
+
+impl ContactAnalysis {
+    /// The fallback's start states for `attempt` (module docs): the candidates' conditions
+    /// linearized at the start of the increment, solved ([`Linearized::solution`]).
+    pub(super) fn fallback_states(&mut self, attempt: &Attempt<'_>) -> Result<Vec<Vec<NodeState>>> {
+        let startc = &attempt.startc;
+        let surfaces = self.surfaces.clone();
+        let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
+        // the candidates: closed at the start, or penetrating under the load alone, and
+        // their covered neighbours
+        let mut states: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
+        for (p, surface) in surfaces.iter().enumerate() {
+            let nodes = &surface.nodes;
+            let penetrates: Vec<bool> = nodes
+                .iter()
+                .enumerate()
+                .map(|(k, node)| {
+                    if self.nodes[p][k].state != NodeState::Open {
+                        return true;
+                    }
+                    if !node.is_covered() {
+                        return false;
+                    }
+                    let row = self.directed(&node.coupling, node.normal);
+                    let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
+                    rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
+                })
+                .collect();
+            let candidate = |k: usize| {
+                nodes[k].is_covered()
+                    && (penetrates[k]
+                        || (k > 0 && penetrates[k - 1])
+                        || (k + 1 < nodes.len() && penetrates[k + 1]))
+            };
+            states.push(
+                (0..nodes.len())
+                    .map(|k| {
+                        if candidate(k) {
+                            closed_state(p, k)
+                        } else {
+                            NodeState::Open
+                        }
+                    })
+                    .collect(),
+            );
+        }
+        let system = self.build_system(&surfaces, &states, startc, startc)?;
+        let s = self.dense_matrix(&system)?;
+        let r: Vec<f64> = system
+            .rows
+            .iter()
+            .zip(&system.b)
+            .map(|(row, b)| b - dot(row, attempt.u0c))
+            .collect();
+        let laws: Vec<&dyn FrictionLaw> = (system.unknowns.iter())
+            .map(|&(p, k, _)| self.node_law(p, k))
+            .collect();
+        let t = Linearized::new(&system.unknowns, &laws, s, r).solution();
+        let tn_max = system
+            .unknowns
+            .iter()
+            .zip(&t)
+            .filter(|(u, _)| u.2 == small_system::Row::Normal)
+            .fold(0.0f64, |m, (_, v)| m.max(v.abs()));
+        let mut out: Vec<Vec<NodeState>> = states
+            .iter()
+            .map(|s| vec![NodeState::Open; s.len()])
+            .collect();
+        for (i, &(p, k, row)) in system.unknowns.iter().enumerate() {
+            if row != small_system::Row::Normal || t[i] >= -FALLBACK_TOLERANCE * tn_max {
+                continue;
+            }
+            let tangent = system
+                .unknowns
+                .get(i + 1)
+                .filter(|u| (u.0, u.1) == (p, k))
+                .map(|_| t[i + 1]);
+            out[p][k] = match tangent {
+                None => NodeState::Frictionless,
+                Some(ts) => {
+                    let limit = self.laws[p].stick_limit(t[i]);
+                    if ts.abs() >= (1.0 - FALLBACK_CONE) * limit {
+                        NodeState::Slip {
+                            sign: if ts > 0.0 { -1 } else { 1 },
+                        }
+                    } else {
+                        NodeState::Stick
+                    }
+                }
+            };
+        }
+        Ok(out)
+    }
+}
+
+/// The fallback's linearized conditions `S t - r = rho` (module docs), node by node.
+struct Linearized<'a> {
+    s: DMatrix<f64>,
+    r: Vec<f64>,
+    /// Per candidate node: the index of its normal unknown, of its tangential one (with
+    /// friction), and its friction law.
+    nodes: Vec<(usize, Option<usize>, &'a dyn FrictionLaw)>,
+}
+
+/// What a semi-smooth Newton step ([`Linearized::active_set`]) takes for an unknown: its own
+/// row of `S t = r` (`rho = 0`: a closed normal, a sticking tangent), zero (open), or the
+/// tangential traction on the cone (`ts = c tn`, `c` the law's slip coefficient).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Condition {
+    Row,
+    Zero,
+    Cone(f64),
+}
+
+/// The semi-smooth Newton steps of the fallback, at most.
+const ACTIVE_SET_STEPS: usize = 100;
+
+impl<'a> Linearized<'a> {
+    /// The conditions over `unknowns` (a node's tangential unknown follows its normal one),
+    /// `laws` per unknown.
+    fn new(
+        unknowns: &[(usize, usize, small_system::Row)],
+        laws: &[&'a dyn FrictionLaw],
+        s: DMatrix<f64>,
+        r: Vec<f64>,
+    ) -> Self {
+        let nodes = (0..unknowns.len())
+            .filter(|&i| unknowns[i].2 == small_system::Row::Normal)
+            .map(|i| {
+                let (p, k, _) = unknowns[i];
+                let tangent = unknowns
+                    .get(i + 1)
+                    .is_some_and(|u| (u.0, u.1) == (p, k) && u.2 == small_system::Row::Tangent);
+                (i, tangent.then_some(i + 1), laws[i])
+            })
+            .collect();
+        Self { s, r, nodes }
+    }
+
+    /// The solution: a rough start by projected Gauss-Seidel ([`START_SWEEPS`]), then exact
+    /// by the semi-smooth Newton method; where that does not settle, Gauss-Seidel on to
+    /// convergence (within [`FALLBACK_WORK`]).
+    fn solution(&self) -> Vec<f64> {
+        let m = self.r.len();
+        let start = self.projected(vec![0.0; m], START_SWEEPS);
+        self.active_set(start.clone()).unwrap_or_else(|| {
+            let sweeps = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
+            self.projected(start, sweeps.max(FALLBACK_WINDOW))
+        })
+    }
+
+    /// `rho = S t - r`.
+    fn residual(&self, t: &[f64]) -> Vec<f64> {
+        (0..self.r.len())
+            .map(|i| dot_dense(column(&self.s, i), t) - self.r[i])
+            .collect()
+    }
+
+    /// Projected block Gauss-Seidel from `t`: per node, the normal traction
+    /// `tn <- min(0, tn - rho_n / S_nn)`, then the tangential one
+    /// `ts <- clamp(ts - rho_t / S_tt, -mu |tn|, mu |tn|)`, until no traction changes by more
+    /// than [`FALLBACK_TOLERANCE`] of the largest, within `sweeps`, or until a window of
+    /// [`FALLBACK_WINDOW`] sweeps brings the change no lower. `S` is symmetric positive
+    /// definite here (every column is its row).
+    fn projected(&self, mut t: Vec<f64>, sweeps: usize) -> Vec<f64> {
+        let s = &self.s;
+        let mut rho = self.residual(&t);
+        let update = |t: &mut [f64], rho: &mut [f64], i: usize, value: f64| {
+            let change = value - t[i];
+            if change != 0.0 {
+                for (x, &c) in rho.iter_mut().zip(column(s, i)) {
+                    *x += c * change;
+                }
+                t[i] = value;
+            }
+            change.abs()
+        };
+        // the relative change at the last window's end
+        let mut last_window = f64::INFINITY;
+        for sweep in 1..=sweeps {
+            let mut largest_change = 0.0f64;
+            for &(i, tangent, law) in &self.nodes {
+                let tn = (t[i] - rho[i] / s[(i, i)]).min(0.0);
+                largest_change = largest_change.max(update(&mut t, &mut rho, i, tn));
+                if let Some(j) = tangent {
+                    let limit = law.stick_limit(t[i]);
+                    let ts = (t[j] - rho[j] / s[(j, j)]).clamp(-limit, limit);
+                    largest_change = largest_change.max(update(&mut t, &mut rho, j, ts));
+                }
+            }
+            let largest = t.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            let relative = largest_change / largest;
+            if largest_change <= FALLBACK_TOLERANCE * largest {
+                break;
+            }
+            if sweep % FALLBACK_WINDOW == 0 {
+                if relative >= last_window {
+                    break;
+                }
+                last_window = relative;
+            }
+        }
+        t
+    }
+
+    /// The semi-smooth Newton method (the primal-dual active set method of Hüeber, Stadler
+    /// and Wohlmuth, 2008) from `t`: per node, with `an = tn - rho_n / S_nn` and
+    /// `at = ts - rho_t / S_tt`, the node is closed where `an < 0` (then `rho_n = 0`, else
+    /// `tn = 0` and `ts = 0`), and a closed node sticks where `|at| < mu |an|` (then
+    /// `rho_t = 0`) and slips otherwise (`ts = mu |tn|` with the sign of `at`). Each step
+    /// solves those linear conditions; the method stops when a step's solution makes the
+    /// same choice again, which it then satisfies exactly. `None` when it does not settle
+    /// within [`ACTIVE_SET_STEPS`] or a step's matrix is singular.
+    fn active_set(&self, mut t: Vec<f64>) -> Option<Vec<f64>> {
+        let (s, m) = (&self.s, self.r.len());
+        let mut last: Vec<Condition> = Vec::new();
+        for _ in 0..ACTIVE_SET_STEPS {
+            let rho = self.residual(&t);
+            let mut conditions = vec![Condition::Zero; m];
+            for &(i, tangent, law) in &self.nodes {
+                let an = t[i] - rho[i] / s[(i, i)];
+                if an >= 0.0 {
+                    continue;
+                }
+                conditions[i] = Condition::Row;
+                if let Some(j) = tangent {
+                    let at = t[j] - rho[j] / s[(j, j)];
+                    conditions[j] = if at.abs() < law.stick_limit(an) {
+                        Condition::Row
+                    } else {
+                        Condition::Cone(law.slip_coefficient(if at > 0.0 { -1 } else { 1 }))
+                    };
+                }
+            }
+            if conditions == last {
+                return Some(t);
+            }
+            let mut a = DMatrix::zeros(m, m);
+            let mut g = DVector::zeros(m);
+            for (j, condition) in conditions.iter().enumerate() {
+                match *condition {
+                    Condition::Row => {
+                        // S is symmetric: row j is column j
+                        a.row_mut(j).copy_from(&s.column(j).transpose());
+                        g[j] = self.r[j];
+                    }
+                    Condition::Zero => a[(j, j)] = 1.0,
+                    // the tangential unknown follows its node's normal one
+                    Condition::Cone(c) => {
+                        a[(j, j)] = 1.0;
+                        a[(j, j - 1)] = -c;
+                    }
+                }
+            }
+            t = a.lu().solve(&g)?.iter().copied().collect();
+            last = conditions;
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use small_system::Row;
+
+    /// The unknowns, `S` and `r` of a test problem.
+    type Problem = (Vec<(usize, usize, Row)>, DMatrix<f64>, Vec<f64>);
+
+    /// Conditions over `nodes` nodes (every third frictionless), `S = B^T B + I / 10` from a
+    /// seeded `B`, `r` of either sign: closed, open, stick and slip nodes all occur.
+    fn problem(nodes: usize, seed: u64) -> Problem {
+        let mut x = seed;
+        let mut draw = || {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (x >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let unknowns: Vec<(usize, usize, Row)> = (0..nodes)
+            .flat_map(|k| {
+                let rows: &[Row] = if k % 3 == 2 {
+                    &[Row::Normal]
+                } else {
+                    &[Row::Normal, Row::Tangent]
+                };
+                rows.iter().map(move |&row| (0, k, row))
+            })
+            .collect();
+        let m = unknowns.len();
+        let b = DMatrix::from_fn(m, m, |_, _| draw());
+        let s = b.transpose() * b + DMatrix::identity(m, m) * 0.1;
+        let r = (0..m).map(|_| draw()).collect();
+        (unknowns, s, r)
+    }
+
+    /// The largest violation of the conditions at `t`, relative to the largest traction and
+    /// residual: `tn <= 0`, `rho_n <= 0`, `tn rho_n = 0`, `|ts| <= mu |tn|`, `rho_t = 0`
+    /// inside the cone and `ts` opposing `rho_t` on it.
+    fn violation(c: &Linearized<'_>, t: &[f64]) -> f64 {
+        let rho = c.residual(t);
+        let scale = t.iter().chain(&rho).fold(0.0f64, |a, v| a.max(v.abs()));
+        let mut worst = 0.0f64;
+        for &(i, tangent, law) in &c.nodes {
+            worst = worst
+                .max(t[i])
+                .max(rho[i])
+                .max((t[i] * rho[i]).abs() / scale);
+            if let Some(j) = tangent {
+                let limit = law.stick_limit(t[i]);
+                worst = worst.max(t[j].abs() - limit);
+                if t[j].abs() < limit * (1.0 - 1e-9) {
+                    worst = worst.max(rho[j].abs());
+                } else {
+                    worst = worst.max(t[j] * rho[j] / scale);
+                }
+            }
+        }
+        worst / scale
+    }
+
+    #[test]
+    fn the_semismooth_newton_method_solves_the_conditions_exactly() {
+        let law = Coulomb::new(0.3).unwrap();
+        for seed in 1..=20 {
+            let (unknowns, s, r) = problem(8, seed);
+            let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
+            let c = Linearized::new(&unknowns, &laws, s, r);
+            let m = c.r.len();
+            let exact = c.active_set(vec![0.0; m]).expect("settles");
+            assert!(violation(&c, &exact) < 1e-13, "seed {seed}");
+            // the same solution as projected Gauss-Seidel's to convergence (unique here)
+            let projected = c.projected(vec![0.0; m], 1_000_000);
+            let largest = exact.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            for (a, b) in exact.iter().zip(&projected) {
+                assert!(
+                    (a - b).abs() < 1e-9 * largest,
+                    "seed {seed}: {a} against {b}"
+                );
+            }
+            let states =
+                |t: &[f64]| (c.nodes.iter().map(|&(i, _, _)| t[i] < 0.0)).collect::<Vec<bool>>();
+            assert!(states(&exact).contains(&true) && states(&exact).contains(&false));
+        }
+    }
+}
