@@ -206,7 +206,7 @@ typedef struct HyconContactOptions {
     double friction_tolerance;
     // Slip tolerance (default 1e-6): a slip node returns to stick when its slip reverses by
     // more than this, and a closing node enters in slip when it has slid more than this,
-    // relative to the increment's motion (the largest motion of a contact dof in this
+    // relative to the increment's motion (the largest motion of a contact node in this
     // increment or a converged one), so it scales with the load.
     double slip_tolerance;
     // B segments farther than this from an A segment, relative to the mean A segment length,

@@ -593,3 +593,36 @@ fn finite_kinematics_on_a_zone_centred_on_the_axis_converges() {
         assert!(t[0][0].0 < 0.0, "mu {friction}: {t:?}");
     }
 }
+
+/// Round 83973 of `contact_randomized 1000 1` (`mu = 0.40`, a slide 3,000 times shorter than
+/// the approach): rotated by 0.6 rad its tractions changed by 1.8e-4 of their peak while the
+/// slip tolerance was judged against the largest motion of one displacement component, which
+/// a rotation changes; judged against the length of a node's motion, the rotated problem
+/// gives the same tractions to round-off.
+#[test]
+fn a_rotation_changes_no_threshold() {
+    let p = Problem {
+        lower: [3, 2],
+        upper: [3, 2],
+        left: 0.7035429082441973,
+        width: 0.5536196487150902,
+        gap: 0.0008817288070726428,
+        depth: 0.0010139359077763893,
+        slide: -3.6129923317446577e-7,
+        moduli: [1.0, 1.8293016733337304],
+        poisson: [0.15431988254100176, 0.34986998638479655],
+        friction: 0.40022083148886256,
+        kinematics: Kinematics::Small,
+        analysis: Analysis::PlaneStrain,
+        axis: 0.0,
+    };
+    let base = run(&p, &Variant::identity()).unwrap();
+    for angle in [-0.597264, 0.3, 1.5] {
+        let rotated = Variant {
+            angle,
+            ..Variant::identity()
+        };
+        let got = run(&p, &rotated).unwrap();
+        assert!(same(&base.0, &got.0, 1.0, 1e-10), "rotated by {angle} rad");
+    }
+}

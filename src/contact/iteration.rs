@@ -294,7 +294,7 @@ pub struct ContactOptions {
     pub friction_tolerance: f64,
     /// A slip node returns to stick when its slip has reversed by more than this, and a node
     /// closes in slip when it has slid more than this since the increment began, relative to
-    /// the increment's motion scale (the largest motion of a contact dof in this increment or
+    /// the increment's motion scale (the largest motion of a contact node in this increment or
     /// any converged one): scaling every load scales the threshold with the slips.
     pub slip_tolerance: f64,
     /// Distance within which B segments are paired with an A segment, relative to the mean A
@@ -684,9 +684,9 @@ pub struct ContactAnalysis {
     /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
     /// scale to which the state is known (see [`ContactAnalysis::resolution`]).
     largest_motion: f64,
-    /// The largest change of one component of `q_c` in a converged increment so far (see
-    /// `gap_scale`).
-    largest_component_motion: f64,
+    /// The largest motion of one contact node (the length of its displacement change) in a
+    /// converged increment so far (see `motion_scale`).
+    largest_node_motion: f64,
     /// Loads and contact forces of the last converged increment, for the full field.
     converged: Option<Converged>,
     /// The same for the increment before it (for displacement increments).
@@ -895,7 +895,7 @@ impl ContactAnalysis {
             fallbacks: 0,
             pointwise_b: true,
             largest_motion: 0.0,
-            largest_component_motion: 0.0,
+            largest_node_motion: 0.0,
             converged: None,
             previous: None,
             field: OnceLock::new(),
@@ -1095,16 +1095,12 @@ impl ContactAnalysis {
     }
 
     /// How far the pairing of pair `p` reaches during an increment: `search_distance` mean A
-    /// segment lengths, or twice the increment's largest motion of a contact dof
-    /// (`max |uc - startc|`) when that is more. Two surfaces approach each other by at most
-    /// twice that motion in an increment, so a pairing that held at its start still finds its
-    /// partner, however fine the mesh (a reach tied to the element size alone breaks exactly
-    /// when a user refines).
+    /// segment lengths, or twice the increment's largest motion of a contact node when that is
+    /// more. Two surfaces approach each other by at most twice that motion in an increment, so
+    /// a pairing that held at its start still finds its partner, however fine the mesh (a
+    /// reach tied to the element size alone breaks exactly when a user refines).
     fn search_reach(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
-        let motion = uc
-            .iter()
-            .zip(startc)
-            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        let motion = checks::largest_node_motion(uc, startc);
         (self.options.search_distance * self.mean_segment(p, xg)).max(2.0 * motion)
     }
 
@@ -1731,9 +1727,8 @@ impl ContactAnalysis {
     ) -> IncrementInfo {
         let motion: Vec<f64> = uc.iter().zip(&self.qc).map(|(a, b)| a - b).collect();
         self.largest_motion = self.largest_motion.max(checks::norm2(&motion));
-        self.largest_component_motion = motion
-            .iter()
-            .fold(self.largest_component_motion, |m, d| d.abs().max(m));
+        self.largest_node_motion =
+            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc));
         self.qc = uc;
         self.surfaces = surfaces;
         self.previous = self.converged.replace(converged);

@@ -211,7 +211,7 @@ pub struct HyconContactOptions {
     pub friction_tolerance: f64,
     /// Slip tolerance (default 1e-6): a slip node returns to stick when its slip reverses by
     /// more than this, and a closing node enters in slip when it has slid more than this,
-    /// relative to the increment's motion (the largest motion of a contact dof in this
+    /// relative to the increment's motion (the largest motion of a contact node in this
     /// increment or a converged one), so it scales with the load.
     pub slip_tolerance: f64,
     /// B segments farther than this from an A segment, relative to the mean A segment length,

@@ -66,7 +66,7 @@ struct Converging {
     previous: Option<Converged>,
     settled: Option<Settled>,
     largest_motion: f64,
-    largest_component_motion: f64,
+    largest_node_motion: f64,
     increment: usize,
     records: usize,
     plate: Option<Plate>,
@@ -124,7 +124,7 @@ impl ContactAnalysis {
             previous: self.previous.clone(),
             settled: self.settled.clone(),
             largest_motion: self.largest_motion,
-            largest_component_motion: self.largest_component_motion,
+            largest_node_motion: self.largest_node_motion,
             increment: self.increment,
             records: self.records.len(),
             plate: self.plate.clone(),
@@ -164,7 +164,7 @@ impl ContactAnalysis {
         self.previous = c.previous;
         self.settled = c.settled;
         self.largest_motion = c.largest_motion;
-        self.largest_component_motion = c.largest_component_motion;
+        self.largest_node_motion = c.largest_node_motion;
         self.increment = c.increment;
         self.records.truncate(c.records);
         self.plate = c.plate;

@@ -29,7 +29,7 @@
 //! `cond(S)` sweeps (826,000 in a press with one body 1,000 times stiffer), and with a large
 //! `mu` may not converge at all. In `hycon bench presses --count 2000 --seed 1,2,3,4,5` the
 //! Newton method settled 1,232 of the 1,303 fallback solves (counted in a debug build); over
-//! `--count 20000` the presses the fallback rescues take 17-32 ms each instead of 0.8.0's
+//! `--count 20000` the presses the fallback rescues take 23-33 ms each instead of 0.8.0's
 //! 90-144 ms, and press 15241 of seed 1, where Gauss-Seidel cycles, now settles (test
 //! `a_large_friction_press_settles_from_the_newton_fallback`). Its states (closed where
 //! `tn < 0`, slip where `|ts|` is on the cone, with the sign of `-ts`) start the paper's iteration again, which then settles in a few iterations and
