@@ -138,38 +138,26 @@ impl ContactAnalysis {
         let laws: Vec<&dyn FrictionLaw> = (system.unknowns.iter())
             .map(|&(p, k, _)| self.node_law(p, k))
             .collect();
-        let t = Linearized::new(&system.unknowns, &laws, s, r).solution();
-        let tn_max = system
-            .unknowns
-            .iter()
-            .zip(&t)
-            .filter(|(u, _)| u.2 == small_system::Row::Normal)
-            .fold(0.0f64, |m, (_, v)| m.max(v.abs()));
+        let linearized = Linearized::new(&system.unknowns, &laws, s, r);
+        let t = linearized.solution();
+        let tn_max = (linearized.nodes.iter()).fold(0.0f64, |m, &(i, _, _)| m.max(t[i].abs()));
         let mut out: Vec<Vec<NodeState>> = states
             .iter()
             .map(|s| vec![NodeState::Open; s.len()])
             .collect();
-        for (i, &(p, k, row)) in system.unknowns.iter().enumerate() {
-            if row != small_system::Row::Normal || t[i] >= -FALLBACK_TOLERANCE * tn_max {
+        for &(i, tangent, law) in &linearized.nodes {
+            if t[i] >= -FALLBACK_TOLERANCE * tn_max {
                 continue;
             }
-            let tangent = system
-                .unknowns
-                .get(i + 1)
-                .filter(|u| (u.0, u.1) == (p, k))
-                .map(|_| t[i + 1]);
-            out[p][k] = match tangent {
+            let (p, k, _) = system.unknowns[i];
+            out[p][k] = match tangent.map(|j| t[j]) {
                 None => NodeState::Frictionless,
-                Some(ts) => {
-                    let limit = self.laws[p].stick_limit(t[i]);
-                    if ts.abs() >= (1.0 - FALLBACK_CONE) * limit {
-                        NodeState::Slip {
-                            sign: if ts > 0.0 { -1 } else { 1 },
-                        }
-                    } else {
-                        NodeState::Stick
+                Some(ts) if ts.abs() >= (1.0 - FALLBACK_CONE) * law.stick_limit(t[i]) => {
+                    NodeState::Slip {
+                        sign: if ts > 0.0 { -1 } else { 1 },
                     }
                 }
+                Some(_) => NodeState::Stick,
             };
         }
         Ok(out)
