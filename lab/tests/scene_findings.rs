@@ -14,6 +14,11 @@ fn tag(i: usize) -> usize {
     1000 + 7 * i
 }
 
+/// Whether `n` is one of [`tag`]'s values.
+fn is_tag(n: usize) -> bool {
+    n >= 1000 && (n - 1000).is_multiple_of(7)
+}
+
 /// A body of the test mesh: its nodes and counter-clockwise quads.
 #[derive(Default)]
 struct Body {
@@ -521,14 +526,9 @@ fn unit_check_covers_force_controlled_plates() {
 #[test]
 fn errors_and_the_csv_name_the_mesh_node_tags() {
     let msh = half_disk_on_block(0.0, 2.0);
-    let path = scene_at(
-        "tags",
-        &plate_scene("block_top", "disk_arc", 1.0, 0.05).replace(
-            "vtu = false\nsvg = false\n",
-            "vtu = false\nsvg = false\ndir = \"out\"\n",
-        ),
-        &msh,
-    );
+    let text = support_scene("block_top", "disk_arc", -0.05)
+        .replace("svg = false\n", "svg = false\ndir = \"out\"\n");
+    let path = scene_at("tags", &text, &msh);
     let (scene, _) = run_ok(&path);
     let csv = std::fs::read_to_string(scene.output_dir().join("scene-contact.csv")).unwrap();
     let mut lines = csv.lines();
@@ -543,10 +543,7 @@ fn errors_and_the_csv_name_the_mesh_node_tags() {
     for l in lines {
         let v: Vec<&str> = l.split(',').collect();
         let n: usize = v[node].parse().unwrap();
-        assert!(
-            n >= 1000 && (n - 1000) % 7 == 0,
-            "node {n} is not a mesh tag: {l}"
-        );
+        assert!(is_tag(n), "node {n} is not a mesh tag: {l}");
         // A is the block's top, at y = 0 in the reference configuration
         let (ref_y, cur_y): (f64, f64) = (v[y0].parse().unwrap(), v[y].parse().unwrap());
         assert!(
@@ -559,8 +556,8 @@ fn errors_and_the_csv_name_the_mesh_node_tags() {
     }
     assert!(moved >= 3, "the pressed nodes move down: {csv}");
     // an error naming a node: the disk slid sideways under small kinematics
-    let text =
-        plate_scene("block_top", "disk_arc", 1.0, 0.05).replace("value = [0.0, ", "value = [0.6, ");
+    let text = support_scene("block_top", "disk_arc", -0.05)
+        .replace("x = 0.0\ny = -5e-2", "x = 0.6\ny = -5e-2");
     let scene = scenefile::load(&scene_at("tags-error", &text, &msh)).unwrap();
     let r = scenefile::run(&scene, &mut std::io::sink()).unwrap();
     let e = r.error.expect("the slide breaks small kinematics");
@@ -570,10 +567,7 @@ fn errors_and_the_csv_name_the_mesh_node_tags() {
         .and_then(|t| t.split(|c: char| !c.is_ascii_digit()).next())
         .and_then(|t| t.parse().ok())
         .unwrap_or_else(|| panic!("no node in {e}"));
-    assert!(
-        n >= 1000 && (n - 1000) % 7 == 0,
-        "node {n} is not a mesh tag: {e}"
-    );
+    assert!(is_tag(n), "node {n} is not a mesh tag: {e}");
 }
 
 /// Finding: a pair that never closes (a pull instead of a push) ended with exit code 0 and no
