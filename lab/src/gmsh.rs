@@ -113,11 +113,11 @@ pub fn read(path: &Path) -> Result<GmshMesh, GmshError> {
     };
     let bytes = std::fs::read(path).map_err(|e| {
         let how = if path.is_dir() {
-            "it is a folder: give the .msh file"
+            "It is a folder: give the .msh file"
         } else {
-            "check the path (a scene's mesh is relative to the scene file's folder)"
+            "Check the path: a scene's mesh is relative to the scene file's folder"
         };
-        fail(0, format!("cannot read the mesh: {e} ({how}; {EXPORT})"))
+        fail(0, format!("cannot read the mesh: {e}. {how}. {EXPORT}"))
     })?;
     match String::from_utf8(bytes) {
         Ok(text) => parse(&text, path),
@@ -138,9 +138,9 @@ pub fn read(path: &Path) -> Result<GmshMesh, GmshError> {
             Err(fail(
                 line,
                 if binary {
-                    format!("binary MSH: this reader takes ASCII ({EXPORT})")
+                    format!("binary MSH: this reader takes ASCII. {EXPORT}")
                 } else {
-                    format!("not a text file (a MSH 4.1 ASCII mesh is text; {EXPORT})")
+                    format!("not a text file (a MSH 4.1 ASCII mesh is text). {EXPORT}")
                 },
             ))
         }
@@ -148,9 +148,10 @@ pub fn read(path: &Path) -> Result<GmshMesh, GmshError> {
 }
 
 /// How to get a mesh this reader takes, for the errors.
-const EXPORT: &str = "in Gmsh: File > Export, format `Mesh - Gmsh MSH (*.msh)`, version 4.1 \
-                      ASCII; or `Mesh.MshFileVersion = 4.1; Mesh.Binary = 0;` in the .geo, or \
-                      `gmsh model.geo -2 -format msh41 -o model.msh` without -bin";
+const EXPORT: &str = "To write one in Gmsh: File > Export, format `Mesh - Gmsh MSH (*.msh)`, \
+                      version 4.1 ASCII; or `Mesh.MshFileVersion = 4.1; Mesh.Binary = 0;` in \
+                      the .geo; or `gmsh model.geo -2 -format msh41 -o model.msh` (without \
+                      -bin)";
 
 /// Parse MSH 4.1 ASCII text (`file` names it in errors).
 ///
@@ -300,7 +301,7 @@ impl<'a> Parser<'a> {
                     if binary != 0 {
                         return self.err(
                             t.line,
-                            format!("binary MSH: this reader takes ASCII ({EXPORT})"),
+                            format!("binary MSH: this reader takes ASCII. {EXPORT}"),
                         );
                     }
                     self.end("MeshFormat")?;

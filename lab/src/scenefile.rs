@@ -361,9 +361,18 @@ pub fn load(path: &Path) -> Result<Scene> {
         file: path.to_path_buf(),
         message: format!("cannot read the scene: {e}"),
     })?;
-    let spec: SceneSpec = toml::from_str(&text).map_err(|e| SceneError {
-        file: path.to_path_buf(),
-        message: e.to_string().trim_end().to_string(),
+    let spec: SceneSpec = toml::from_str(&text).map_err(|e| {
+        let mut message = e.to_string().trim_end().to_string();
+        if message.ends_with("missing field `mesh`") {
+            message.push_str(
+                ": add mesh = \"model.msh\" at the top (the Gmsh MSH 4.1 ASCII mesh, relative to \
+                 the scene file's folder)",
+            );
+        }
+        SceneError {
+            file: path.to_path_buf(),
+            message,
+        }
     })?;
     // the lines of the items, for the messages (the spec parsed, this cannot fail)
     let lines: ItemLines = toml::from_str(&text).unwrap_or_default();
@@ -390,10 +399,10 @@ pub fn load(path: &Path) -> Result<Scene> {
         let mut e = SceneError::from(e);
         if !mesh_line.is_empty() && e.message.starts_with("cannot read") {
             e.message = format!(
-                "{} (mesh = {:?} in {}{mesh_line})",
-                e.message,
+                "mesh = {:?} in {}{mesh_line}: {}",
                 spec.mesh.display().to_string(),
-                path.display()
+                path.display(),
+                e.message
             );
         }
         e
@@ -1392,10 +1401,10 @@ impl Scene {
         let _ = writeln!(
             s,
             "verdict: ready to run{}",
-            if self.warnings.is_empty() {
-                String::new()
-            } else {
-                format!(" ({} warnings above)", self.warnings.len())
+            match self.warnings.len() {
+                0 => String::new(),
+                1 => " (1 warning above)".into(),
+                n => format!(" ({n} warnings above)"),
             }
         );
         s

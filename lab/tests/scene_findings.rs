@@ -463,6 +463,15 @@ fn binary_missing_and_empty_mesh_paths_say_what_and_where() {
             && !e.contains("line  "),
         "{e}"
     );
+    // no mesh key
+    let none = text.replace("mesh = \"disk.msh\"", "");
+    let path = scene_at("no-mesh", &none, "");
+    let e = error_text(scenefile::load(&path));
+    assert!(
+        e.starts_with(&path.display().to_string())
+            && e.contains("missing field `mesh`: add mesh = \"model.msh\" at the top"),
+        "{e}"
+    );
     // an empty path
     let empty = text.replace("mesh = \"disk.msh\"", "mesh = \"\"");
     let path = scene_at("empty", &empty, "");
