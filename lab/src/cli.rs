@@ -174,6 +174,10 @@ enum Command {
         /// solved once, linearly without contact, to warn of strains beyond 0.05: units?).
         #[arg(long)]
         dry_run: bool,
+        /// Fail (exit code 1) on any warning: of the scene (units, a pair out of reach) or of
+        /// the run (a pair that never closed, a contact zone narrower than two elements).
+        #[arg(long)]
+        strict: bool,
     },
     /// Performance measurements (printed, never asserted).
     Bench {
@@ -592,7 +596,11 @@ pub fn main() -> ExitCode {
             plane_strain,
         } => beam(element.into(), load, nx, ny, distortion, nu, plane_strain),
         Command::Bench { what } => bench(what, out.as_deref()),
-        Command::Run { scene, dry_run } => run_scene(&scene, dry_run, out.as_deref()),
+        Command::Run {
+            scene,
+            dry_run,
+            strict,
+        } => run_scene(&scene, dry_run, strict, out.as_deref()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -605,18 +613,29 @@ pub fn main() -> ExitCode {
 
 type AnyResult<T = ()> = Result<T, Box<dyn std::error::Error>>;
 
-/// `hycon run [--dry-run] SCENE`: the dry run's description, or the run's table and files; a
-/// step that does not converge fails the command after the files of the converged steps.
-/// `--out DIR` (relative to the working directory) replaces the scene's `[output] dir`.
-fn run_scene(path: &Path, dry_run: bool, out: Option<&Path>) -> AnyResult {
+/// `hycon run [--dry-run] [--strict] SCENE`: the dry run's description, or the run's table and
+/// files; a step that does not converge fails the command after the files of the converged
+/// steps, and under `--strict` so does any warning. `--out DIR` (relative to the working
+/// directory) replaces the scene's `[output] dir`.
+fn run_scene(path: &Path, dry_run: bool, strict: bool, out: Option<&Path>) -> AnyResult {
     let mut scene = hycon_lab::scenefile::load(path)?;
     if let Some(dir) = out {
         scene.spec.output.dir = Some(std::path::absolute(dir)?);
     }
+    let strict_failure = |n: usize| -> AnyResult {
+        match (strict, n) {
+            (true, 1) => Err("--strict: 1 warning above".into()),
+            (true, n) if n > 1 => Err(format!("--strict: {n} warnings above").into()),
+            _ => Ok(()),
+        }
+    };
     if dry_run {
         scene.check_first_solve();
         print!("{}", scene.describe());
-        return Ok(());
+        return strict_failure(scene.warnings.len());
+    }
+    for n in &scene.notes {
+        println!("note: {n}");
     }
     for w in &scene.warnings {
         println!("warning: {w}");
@@ -624,7 +643,7 @@ fn run_scene(path: &Path, dry_run: bool, out: Option<&Path>) -> AnyResult {
     let summary = hycon_lab::scenefile::run(&scene, &mut std::io::stdout())?;
     match summary.error {
         Some(e) => Err(e.into()),
-        None => Ok(()),
+        None => strict_failure(scene.warnings.len() + summary.warnings.len()),
     }
 }
 

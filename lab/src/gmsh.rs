@@ -106,13 +106,52 @@ pub struct GmshMesh {
 /// # Errors
 /// [`GmshError`] naming the file and line.
 pub fn read(path: &Path) -> Result<GmshMesh, GmshError> {
-    let text = std::fs::read_to_string(path).map_err(|e| GmshError {
+    let fail = |line: usize, message: String| GmshError {
         file: path.to_path_buf(),
-        line: 0,
-        message: format!("cannot read the mesh: {e}"),
+        line,
+        message,
+    };
+    let bytes = std::fs::read(path).map_err(|e| {
+        let how = if path.is_dir() {
+            "It is a folder: give the .msh file"
+        } else {
+            "Check the path: a scene's mesh is relative to the scene file's folder"
+        };
+        fail(0, format!("cannot read the mesh: {e}. {how}. {EXPORT}"))
     })?;
-    parse(&text, path)
+    match String::from_utf8(bytes) {
+        Ok(text) => parse(&text, path),
+        Err(e) => {
+            let bytes = e.as_bytes();
+            // the line of the first byte that is not text
+            let line = 1 + bytes[..e.utf8_error().valid_up_to()]
+                .iter()
+                .filter(|&&b| b == b'\n')
+                .count();
+            let binary = bytes.starts_with(b"$MeshFormat") && {
+                let second = bytes.split(|&b| b == b'\n').nth(1).unwrap_or_default();
+                String::from_utf8_lossy(second)
+                    .split_whitespace()
+                    .nth(1)
+                    .is_some_and(|t| t != "0")
+            };
+            Err(fail(
+                line,
+                if binary {
+                    format!("binary MSH: this reader takes ASCII. {EXPORT}")
+                } else {
+                    format!("not a text file (a MSH 4.1 ASCII mesh is text). {EXPORT}")
+                },
+            ))
+        }
+    }
 }
+
+/// How to get a mesh this reader takes, for the errors.
+const EXPORT: &str = "To write one in Gmsh: File > Export, format `Mesh - Gmsh MSH (*.msh)`, \
+                      version 4.1 ASCII; or `Mesh.MshFileVersion = 4.1; Mesh.Binary = 0;` in \
+                      the .geo; or `gmsh model.geo -2 -format msh41 -o model.msh` (without \
+                      -bin)";
 
 /// Parse MSH 4.1 ASCII text (`file` names it in errors).
 ///
@@ -262,7 +301,7 @@ impl<'a> Parser<'a> {
                     if binary != 0 {
                         return self.err(
                             t.line,
-                            "binary MSH: this reader takes ASCII (in Gmsh: `Mesh.Binary = 0;`)",
+                            format!("binary MSH: this reader takes ASCII. {EXPORT}"),
                         );
                     }
                     self.end("MeshFormat")?;

@@ -40,13 +40,13 @@ impl std::error::Error for SceneError {}
 
 impl From<gmsh::GmshError> for SceneError {
     fn from(e: gmsh::GmshError) -> Self {
-        let message = e.to_string();
-        let file = e.file;
         SceneError {
-            message: message
-                .strip_prefix(&format!("{}:", file.display()))
-                .map_or(message.clone(), |m| format!("line {m}")),
-            file,
+            message: if e.line == 0 {
+                e.message
+            } else {
+                format!("line {}: {}", e.line, e.message)
+            },
+            file: e.file,
         }
     }
 }
@@ -294,6 +294,8 @@ pub struct Pair {
 /// A rigid plate as built.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plate {
+    /// Its group.
+    pub group: String,
     /// Its nodes (model ids).
     pub nodes: Vec<usize>,
     /// Force control (else displacement) per direction.
@@ -307,6 +309,10 @@ pub struct Plate {
 /// The largest element strain of the dry run's linear first step beyond which it warns of a
 /// likely unit mistake.
 pub const STRAIN_WARNING: f64 = 0.05;
+
+/// The nominal strain under a force-controlled plate below which the dry run warns that the
+/// load is likely too small for its units (a contact of a node or two).
+pub const TINY_STRAIN: f64 = 1e-9;
 
 /// A loaded, checked scene, ready to run.
 #[derive(Debug, Clone)]
@@ -339,6 +345,11 @@ pub struct Scene {
     pub options: ContactOptions,
     /// Likely mistakes that do not stop the run (units, a pair out of reach).
     pub warnings: Vec<String>,
+    /// What the scene changed on the way and why (a contact side's end nodes left to the
+    /// plate).
+    pub notes: Vec<String>,
+    /// The mesh's node tag of every model node (messages and outputs name nodes by these).
+    pub tags: Vec<u64>,
 }
 
 /// Read and check a scene file and its mesh.
@@ -350,14 +361,52 @@ pub fn load(path: &Path) -> Result<Scene> {
         file: path.to_path_buf(),
         message: format!("cannot read the scene: {e}"),
     })?;
-    let spec: SceneSpec = toml::from_str(&text).map_err(|e| SceneError {
-        file: path.to_path_buf(),
-        message: e.to_string().trim_end().to_string(),
+    let spec: SceneSpec = toml::from_str(&text).map_err(|e| {
+        let mut message = e.to_string().trim_end().to_string();
+        if message.ends_with("missing field `mesh`") {
+            message.push_str(
+                ": add mesh = \"model.msh\" at the top (the Gmsh MSH 4.1 ASCII mesh, relative to \
+                 the scene file's folder)",
+            );
+        }
+        SceneError {
+            file: path.to_path_buf(),
+            message,
+        }
     })?;
-    let mesh_path = path.parent().unwrap_or(Path::new(".")).join(&spec.mesh);
-    let gmsh = gmsh::read(&mesh_path)?;
     // the lines of the items, for the messages (the spec parsed, this cannot fail)
     let lines: ItemLines = toml::from_str(&text).unwrap_or_default();
+    let mesh_line = lines.mesh.as_ref().map_or(String::new(), |m| {
+        format!(
+            " (line {})",
+            1 + text[..m.span().start].matches('\n').count()
+        )
+    });
+    if spec.mesh.as_os_str().is_empty() {
+        return fail(
+            path,
+            format!(
+                "mesh = \"\"{mesh_line}: give the Gmsh mesh, e.g. mesh = \"model.msh\" (relative \
+                 to the scene file's folder)"
+            ),
+        );
+    }
+    let folder = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let gmsh = gmsh::read(&folder.join(&spec.mesh)).map_err(|e| {
+        let mut e = SceneError::from(e);
+        if !mesh_line.is_empty() && e.message.starts_with("cannot read") {
+            e.message = format!(
+                "mesh = {:?} in {}{mesh_line}: {}",
+                spec.mesh.display().to_string(),
+                path.display(),
+                e.message
+            );
+        }
+        e
+    })?;
     let line_of = |items: &[ItemLine]| -> Vec<usize> {
         items
             .iter()
@@ -386,6 +435,7 @@ pub fn load(path: &Path) -> Result<Scene> {
 /// Where each item's `group` (or a pair's `a`) is written, read in a second pass.
 #[derive(Debug, Default, Deserialize)]
 struct ItemLines {
+    mesh: Option<toml::Spanned<toml::Value>>,
     #[serde(default)]
     body: Vec<ItemLine>,
     #[serde(default)]
@@ -416,6 +466,59 @@ fn fail<T>(file: &Path, message: impl Into<String>) -> Result<T> {
         file: file.to_path_buf(),
         message: message.into(),
     })
+}
+
+/// The unit check of a force-controlled plate, which the dry run's linear solve cannot make
+/// (the plate's force reaches the body only through contact): the mean stress
+/// `sigma = |F| / A` under the plate's lines (their area `A = t L`, `A = sum 2 pi r ds` in
+/// axisymmetry) against the least Young's modulus `E` of the bodies they bound. A warning
+/// when the nominal strain `sigma / E` exceeds [`STRAIN_WARNING`] (far beyond small strain)
+/// or lies below [`TINY_STRAIN`] (a contact of a node or two): a likely unit mistake.
+fn plate_strain(
+    what: &str,
+    p: &PlateSpec,
+    model: &Model,
+    edges: &HashMap<(usize, usize), (usize, usize)>,
+    lines: impl Iterator<Item = [usize; 2]>,
+) -> Option<String> {
+    let x = &model.mesh.nodes;
+    let (mut length, mut area, mut youngs) = (0.0, 0.0, f64::INFINITY);
+    for [u, v] in lines {
+        let el = edges.get(&(u, v)).or_else(|| edges.get(&(v, u)))?.0;
+        let m = &model.materials[model.mesh.element_material[el]];
+        let ds = (x[v][0] - x[u][0]).hypot(x[v][1] - x[u][1]);
+        length += ds;
+        area += ds
+            * if m.analysis == Analysis::Axisymmetric {
+                std::f64::consts::PI * (x[u][0] + x[v][0])
+            } else {
+                m.thickness
+            };
+        youngs = youngs.min(m.youngs);
+    }
+    let force = (0..2)
+        .filter(|&d| p.x == "force" && d == 0 || p.y == "force" && d == 1)
+        .map(|d| p.value[d].abs())
+        .fold(0.0, f64::max);
+    if force == 0.0 || area == 0.0 {
+        return None;
+    }
+    let strain = force / (youngs * area);
+    let (size, effect) = if strain > STRAIN_WARNING {
+        ("far beyond small strain", "")
+    } else if strain < TINY_STRAIN {
+        (
+            "implausibly small for a loaded part",
+            " (a contact of a node or two)",
+        )
+    } else {
+        return None;
+    };
+    Some(format!(
+        "{what}: the force {force:e} over the plate's {length:.4e} long lines is a mean strain \
+         of about {strain:.1e} (force / (E area), E = {youngs:e}), {size}{effect} at factor 1 \
+         (units? e.g. E in Pa with lengths in mm, or in MPa with N and m)"
+    ))
 }
 
 fn parse_analysis(s: &str) -> Option<Analysis> {
@@ -566,6 +669,13 @@ impl Builder<'_> {
             .validate()
             .or_else(|e| self.err(format!("the bodies' mesh: {e}")))?;
         let edges = model.mesh.directed_edges();
+        // the mesh's node tag of every model node, for the messages and outputs
+        let mut tags: Vec<u64> = vec![0; model.mesh.n_nodes()];
+        for (n, i) in id.iter().enumerate() {
+            if let Some(i) = i {
+                tags[*i] = self.gmsh.node_tags[n];
+            }
+        }
 
         // the nodes of a group, in model ids; an error if one is on no body
         let model_nodes = |g: &Group, name: &str, what: &str| -> Result<Vec<usize>> {
@@ -592,6 +702,7 @@ impl Builder<'_> {
         };
 
         // supports
+        let mut warnings = Vec::new();
         let mut supports = Vec::new();
         let mut prescribed = Vec::new();
         let mut extent = 0.0_f64;
@@ -664,7 +775,12 @@ impl Builder<'_> {
                     p.y,
                     p.value[1]
                 ));
+                let ends = g.lines.iter().filter_map(|&[u, v]| Some([id[u]?, id[v]?]));
+                if let Some(w) = plate_strain(&what, p, &model, &edges, ends) {
+                    warnings.push(w);
+                }
                 Some(Plate {
+                    group: p.group.clone(),
                     nodes,
                     force,
                     value: p.value,
@@ -678,7 +794,6 @@ impl Builder<'_> {
         let n_dof = 2 * model.mesh.n_nodes();
         let mut loads = Vec::new();
         let mut per_curve: Vec<(usize, Model)> = Vec::new();
-        let mut warnings = Vec::new();
         for (k, l) in spec.load.iter().enumerate() {
             let what = format!("load on {:?}{}", l.group, self.at(2, k));
             let given = [
@@ -778,6 +893,7 @@ impl Builder<'_> {
         // a segment may be B of several pairs (one base under two punches), never A twice nor
         // A of one pair and B of another
         let mut used: HashMap<(usize, usize), (bool, String)> = HashMap::new();
+        let mut notes = Vec::new();
         for (k, c) in spec.contact.iter().enumerate() {
             let what = format!(
                 "contact pair {} ({:?} on {:?}){}",
@@ -788,6 +904,13 @@ impl Builder<'_> {
             );
             if !(c.friction.is_finite() && c.friction >= 0.0) {
                 return self.err(format!("{what}: friction {} (finite, >= 0)", c.friction));
+            }
+            if c.a == c.b {
+                return self.err(format!(
+                    "{what}: a and b are both group {:?}: a pair joins two sides, each on its own \
+                     body (a: the multiplier side, b: the opposite side)",
+                    c.a
+                ));
             }
             let mut sides = Vec::new();
             for (name, is_a) in [(&c.a, true), (&c.b, false)] {
@@ -805,20 +928,15 @@ impl Builder<'_> {
                         }
                     }
                 }
-                let tags: Vec<u64> = {
-                    let mut t = vec![0; model.mesh.n_nodes()];
-                    for (n, i) in id.iter().enumerate() {
-                        if let Some(i) = i {
-                            t[*i] = self.gmsh.node_tags[n];
-                        }
-                    }
-                    t
-                };
                 let chain = gmsh::boundary_chain(&lines, &edges, &tags).or_else(|e| {
                     self.err(format!(
                         "{what}: group {name:?} is not a boundary chain: {e}"
                     ))
                 })?;
+                let chain = match &plate {
+                    Some(p) => self.off_plate(chain, p, &tags, (&what, name), &mut notes)?,
+                    None => chain,
+                };
                 let body = model.mesh.element_material[edges[&(chain[0], chain[1])].0];
                 if chain
                     .windows(2)
@@ -866,12 +984,16 @@ impl Builder<'_> {
             let gap_range = gaps.iter().fold(None, |r: Option<(f64, f64)>, &g| {
                 Some(r.map_or((g, g), |(lo, hi)| (lo.min(g), hi.max(g))))
             });
-            if seen.facing + seen.touching == 0 && seen.same_way + seen.behind > 0 {
+            // judged at any distance: sides that face each other nowhere never close, however
+            // wide the search
+            let anywhere = facing::facing(&a, &b, x, f64::INFINITY);
+            if anywhere.facing + anywhere.touching == 0 && anywhere.same_way + anywhere.behind > 0 {
                 return self.err(format!(
-                    "{what}: the sides never face each other: within the search distance \
-                     ({reach:.3e}) {} A nodes see B facing the same way and {} see it behind \
-                     them (back to back): check the groups",
-                    seen.same_way, seen.behind
+                    "{what}: these sides never face each other: of the A nodes, {} see the \
+                     nearest B segment facing the same way and {} see it behind them (back to \
+                     back), none in front: check the groups (a: the multiplier side, b: the \
+                     side it touches)",
+                    anywhere.same_way, anywhere.behind
                 ));
             }
             if seen.facing + seen.touching == 0 {
@@ -962,7 +1084,64 @@ impl Builder<'_> {
             options,
             plate,
             warnings,
+            notes,
+            tags,
         })
+    }
+
+    /// A contact side `chain` (model ids) with the nodes it shares with the rigid plate taken
+    /// off its ends (the plate holds them: a half disk's arc ends at its flat cut), a note in
+    /// `notes` saying so. An error naming both groups when a plate node is inside the chain
+    /// or the chain keeps fewer than two nodes.
+    fn off_plate(
+        &self,
+        mut chain: Vec<usize>,
+        plate: &Plate,
+        tags: &[u64],
+        (what, name): (&str, &str),
+        notes: &mut Vec<String>,
+    ) -> Result<Vec<usize>> {
+        let on = |n: &usize| plate.nodes.contains(n);
+        let mut dropped = Vec::new();
+        while chain.first().is_some_and(on) {
+            dropped.push(tags[chain.remove(0)]);
+        }
+        while chain.last().is_some_and(on) {
+            dropped.push(tags[chain.pop().unwrap_or_default()]);
+        }
+        let plate_group = &plate.group;
+        if let Some(&n) = chain.iter().find(|n| on(n)) {
+            return self.err(format!(
+                "{what}: node {} of group {name:?} is also on the plate's group {plate_group:?}: \
+                 a plate node cannot carry contact (inside a contact side it would hold the \
+                 surface rigid); make the plate's group and the contact side share at most \
+                 their end nodes",
+                tags[n]
+            ));
+        }
+        if chain.len() < 2 {
+            return self.err(format!(
+                "{what}: group {name:?} lies on the plate's group {plate_group:?}: a plate node \
+                 cannot carry contact; put the plate on another group"
+            ));
+        }
+        if !dropped.is_empty() {
+            let list: Vec<String> = dropped.iter().map(u64::to_string).collect();
+            notes.push(format!(
+                "{what}: node{} {} of group {name:?} {} on the plate's group {plate_group:?}: \
+                 the plate holds {}, so the contact side starts one segment in (leave it so \
+                 when the contact stays away from there; otherwise put the plate elsewhere)",
+                if dropped.len() > 1 { "s" } else { "" },
+                list.join(" and "),
+                if dropped.len() > 1 {
+                    "are also"
+                } else {
+                    "is also"
+                },
+                if dropped.len() > 1 { "them" } else { "it" },
+            ));
+        }
+        Ok(chain)
     }
 
     fn options(&self, o: &OptionsSpec) -> Result<ContactOptions> {
@@ -1097,8 +1276,11 @@ impl Builder<'_> {
                 return self.err(format!(
                     "body {:?}{piece} is not held against rigid motion: its supports leave \
                      {motion} free. hycon factors K before contact closes, so every body needs \
-                     supports of its own (a body pushed only through contact: hold it with a \
-                     prescribed displacement where the load goes in)",
+                     supports of its own; a load (traction, pressure, force) holds nothing. A \
+                     body pushed only through contact: put a [plate] on the group where the \
+                     load goes in, with that direction controlled by force (y = \"force\", \
+                     value = [0.0, -F]) and the other by displacement, or hold that group with \
+                     a prescribed displacement",
                     body.name
                 ));
             }
@@ -1210,16 +1392,19 @@ impl Scene {
             o.cutback_depth,
             o.cutback_min_fraction
         );
+        for n in &self.notes {
+            let _ = writeln!(s, "note: {n}");
+        }
         for w in &self.warnings {
             let _ = writeln!(s, "warning: {w}");
         }
         let _ = writeln!(
             s,
             "verdict: ready to run{}",
-            if self.warnings.is_empty() {
-                String::new()
-            } else {
-                format!(" ({} warnings above)", self.warnings.len())
+            match self.warnings.len() {
+                0 => String::new(),
+                1 => " (1 warning above)".into(),
+                n => format!(" ({n} warnings above)"),
             }
         );
         s
@@ -1368,19 +1553,134 @@ pub struct RunSummary {
     pub steps: Vec<StepResult>,
     /// The error that stopped the run, if any.
     pub error: Option<String>,
+    /// What the run suggests is wrong although it converged: a pair that never closed, a
+    /// contact zone narrower than two elements (`hycon run --strict` fails on these).
+    pub warnings: Vec<String>,
     /// Files written.
     pub files: Vec<PathBuf>,
+}
+
+/// What a converged run suggests is wrong: per pair, that it never closed over the run's
+/// steps (a push of the wrong sign, bodies far apart), or that its contact zone at the last
+/// step where it is closed spans fewer than two elements (fewer than three closed nodes: the
+/// mesh cannot resolve the pressure, or the load is tiny for its units).
+fn run_warnings(scene: &Scene, steps: &[StepResult]) -> Vec<String> {
+    let mut warnings = Vec::new();
+    if steps.is_empty() {
+        return warnings;
+    }
+    for (p, pair) in scene.pairs.iter().enumerate() {
+        let what = format!(
+            "contact pair {} ({:?} on {:?})",
+            p + 1,
+            pair.groups.0,
+            pair.groups.1
+        );
+        match steps.iter().rev().find(|s| s.pairs[p].active > 0) {
+            None => warnings.push(format!(
+                "{what} never closed in {} step{}: no A node touched B (a push of the wrong \
+                 sign? bodies too far apart? see the initial gap in hycon run --dry-run)",
+                steps.len(),
+                if steps.len() > 1 { "s" } else { "" }
+            )),
+            Some(s) if s.pairs[p].active < 3 => warnings.push(format!(
+                "{what}: at step {} the contact zone is {} node{} wide, narrower than two \
+                 elements: the mesh does not resolve the pressure there (refine both sides \
+                 near the contact, or check the units: a load tiny against E gives a tiny \
+                 contact)",
+                s.step,
+                s.pairs[p].active,
+                if s.pairs[p].active > 1 { "s" } else { "" }
+            )),
+            Some(_) => {}
+        }
+    }
+    warnings
+}
+
+/// The message of a failed increment, with the mesh's node tags in place of the model ids the
+/// contact errors name, and for an active node whose support B does not cover
+/// ([`uncovered_advice`]) what to change.
+fn failure(scene: &Scene, e: &hycon::Error) -> String {
+    use hycon::ContactError as C;
+    let hycon::Error::Contact(c) = e else {
+        return e.to_string();
+    };
+    let tags = &scene.tags;
+    if let C::Uncovered { node, coverage } = c {
+        return format!(
+            "contact: contact node {} is active but {:.1e} of its support is not covered by the \
+             opposite surface: {}",
+            tags.get(*node).copied().unwrap_or(*node as u64),
+            1.0 - coverage,
+            uncovered_advice(scene, *node)
+        );
+    }
+    let tag = |n: &mut usize| *n = tags.get(*n).map_or(*n, |&t| t as usize);
+    let mut c = c.clone();
+    match &mut c {
+        C::Cycling { node, .. }
+        | C::EdgePenetration { node, .. }
+        | C::SlipReversal { node, .. }
+        | C::ConditionViolated { node, .. }
+        | C::Unresolved { node, .. }
+        | C::SmallSlidingExceeded { node, .. } => tag(node),
+        C::BeyondSearchDistance { node, segment, .. } => {
+            tag(node);
+            segment.iter_mut().for_each(tag);
+        }
+        _ => {}
+    }
+    hycon::Error::Contact(c).to_string()
+}
+
+/// What to change when the A node `node` closed with part of its support uncovered by B.
+/// Beyond an end of B (the node does not lie over B): extend B. Over B: the search window
+/// (`search_distance` times A's mean segment, measured along A's normal) ends inside the
+/// node's support, the surfaces being far apart there: the value of `search_distance` is
+/// the cause, not B.
+fn uncovered_advice(scene: &Scene, node: usize) -> String {
+    let x = &scene.model.mesh.nodes;
+    let Some(pair) = scene.pairs.iter().find(|p| p.pair.a.contains(&node)) else {
+        return "extend the B polyline".into();
+    };
+    let b = &pair.groups.1;
+    match facing::side(&pair.pair.b, x, x[node]) {
+        None => format!(
+            "it lies beyond an end of B: extend the B side (group {b:?}) past it, or shorten A \
+             (group {:?})",
+            pair.groups.0
+        ),
+        Some(distance) => {
+            let segment = pair.reach / scene.options.search_distance;
+            format!(
+                "B (group {b:?}) runs on under it, {:.3e} away, so B's end is not the cause: the \
+                 search window (search_distance = {} A segments = {:.3e}, measured along A's \
+                 normal) ends inside the node's support. Change options.search_distance (a \
+                 multiple of A's mean segment length) so that it clears the support, e.g. {:.0}, \
+                 or make the flatter side A",
+                distance.abs(),
+                scene.options.search_distance,
+                pair.reach,
+                (2.0 * distance.abs() / segment)
+                    .ceil()
+                    .max(scene.options.search_distance + 1.0)
+            )
+        }
+    }
 }
 
 fn pair_step(k: usize, rows: &[NodeResult]) -> PairStep {
     let closed = |r: &&NodeResult| !matches!(r.state, NodeState::Open);
     PairStep {
         pair: k + 1,
-        contact_length: rows.iter().filter(closed).map(|r| r.weight).sum(),
+        // (+ 0.0: an empty sum is -0.0)
+        contact_length: rows.iter().filter(closed).map(|r| r.weight).sum::<f64>() + 0.0,
         peak_pressure: rows.iter().map(|r| -r.tn).fold(0.0, f64::max),
         total_force: rows
             .iter()
-            .fold([0.0, 0.0], |f, r| [f[0] + r.force[0], f[1] + r.force[1]]),
+            .fold([0.0, 0.0], |f, r| [f[0] + r.force[0], f[1] + r.force[1]])
+            .map(|f| f + 0.0),
         active: rows.iter().filter(closed).count(),
         slip: rows
             .iter()
@@ -1427,9 +1727,10 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
         scene: scene.file.clone(),
         steps: Vec::new(),
         error: None,
+        warnings: Vec::new(),
         files: Vec::new(),
     };
-    let mut csv = String::from("step,pair,node,x,y,state,tn,ts,pressure,gap,fx,fy\n");
+    let mut csv = String::from("step,pair,node,x0,y0,x,y,state,tn,ts,pressure,gap,fx,fy\n");
     let mut history: Vec<Vec<Vec<NodeResult>>> = Vec::new();
     let _ = writeln!(
         out,
@@ -1455,7 +1756,7 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
         let info = match step {
             Ok(i) => i,
             Err(e) => {
-                let m = format!("step {} did not converge: {e}", k + 1);
+                let m = format!("step {} did not converge: {}", k + 1, failure(scene, &e));
                 let _ = writeln!(out, "{m}");
                 summary.error = Some(m);
                 break;
@@ -1486,12 +1787,15 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
                 ps.total_force[1]
             );
             for r in &rows {
+                let x0 = scene.model.mesh.nodes[r.node];
                 let _ = writeln!(
                     csv,
-                    "{},{},{},{},{},{},{},{},{},{},{},{}",
+                    "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                     k + 1,
                     p + 1,
-                    r.node,
+                    scene.tags[r.node],
+                    x0[0],
+                    x0[1],
                     r.position[0],
                     r.position[1],
                     r.state.name(),
@@ -1525,6 +1829,10 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
         }
         history.push(rows_k);
         summary.steps.push(result);
+    }
+    summary.warnings = run_warnings(scene, &summary.steps);
+    for w in &summary.warnings {
+        let _ = writeln!(out, "warning: {w}");
     }
     let write = |path: PathBuf, text: &str, files: &mut Vec<PathBuf>| -> Result<()> {
         std::fs::write(&path, text)
