@@ -1,11 +1,11 @@
 //! Validation of the bricks against published reference values (MacNeal and Harder, FEAD 1
-//! (1985) 3-20, as collected for the project; the README's brick section has the table):
+//! (1985) 3-20, with their sources in docs/validation.md; docs/elements.md has the table):
 //! the straight cantilever (regular, trapezoidal and parallelogram elements; extension, in-plane
 //! and out-of-plane shear, twist), the twisted beam, and the thick-walled cylinder (Lamé) at
 //! nu = 0.3, 0.49, 0.4999 as a 3D slice with `u_z = 0`.
 //!
 //! `cargo test -p hycon --test solid_validation -- --nocapture` prints the table of
-//! normalised results (the README's table).
+//! normalised results (the table of docs/elements.md).
 
 use hycon::solid::mesh::{SolidMesh, graded};
 use hycon::solid::model::SolidModel;

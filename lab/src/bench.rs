@@ -1,4 +1,4 @@
-//! Measurements behind the performance figures in the README: element kernel time per element
+//! Measurements behind the performance figures of docs/performance.md: element kernel time per element
 //! kind, and the cost of assembling, analysing, factoring and solving a large linear problem.
 //! Timings are printed by the CLI (`hycon bench ...`), never asserted in tests.
 

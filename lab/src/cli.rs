@@ -163,7 +163,7 @@ enum Command {
         #[arg(long)]
         plane_strain: bool,
     },
-    /// Your own model: a TOML scene over a Gmsh mesh (see the README, "Your own model").
+    /// Your own model: a TOML scene over a Gmsh mesh (see docs/scene-files.md).
     /// Prints a line per step (iterations, contact length, peak pressure, total force) and
     /// writes the scene's outputs.
     Run {
@@ -712,7 +712,7 @@ fn beam(
     Ok(())
 }
 
-/// `bench brick`: the table (as in the README) and the plot.
+/// `bench brick`: the table (as in docs/elements.md) and the plot.
 /// `hycon bench brick-scale`: the table of sizes, the largest cube whose factor fits in
 /// `memory_gb`, and its factorization time from the fit `t = c N^p` over the factored cubes.
 fn brick_scale(ns: &[usize], factor_max: usize, memory_gb: f64) -> AnyResult {

@@ -10,7 +10,7 @@
 //! * [`axisymmetric`]: axisymmetric contact scenes with closed forms (shrink fit, push-out,
 //!   cylinders stacked on the axis).
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
-//! * [`bench`](mod@bench): the measurements behind the README's performance figures.
+//! * [`bench`](mod@bench): the measurements behind the performance figures of docs/performance.md.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
 //! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).

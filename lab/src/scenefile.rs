@@ -1,6 +1,6 @@
 //! Scene files: a contact model written in TOML over a Gmsh mesh ([`crate::gmsh`]), checked
 //! ([`load`]), described without solving ([`dry_run`]) and run ([`run`]). The format is
-//! documented in the README ("Your own model: scene files") and by [`SceneSpec`].
+//! documented in docs/scene-files.md and by [`SceneSpec`].
 //!
 //! Every set-up mistake is a [`SceneError`] that names the scene file and the group, body,
 //! pair or step at fault (mesh errors name the mesh file and line); likely unit mistakes are
@@ -355,7 +355,7 @@ pub struct Scene {
 /// Read and check a scene file and its mesh.
 ///
 /// # Errors
-/// [`SceneError`] for the first set-up mistake found (see the README's table).
+/// [`SceneError`] for the first set-up mistake found (see the table of docs/scene-files.md).
 pub fn load(path: &Path) -> Result<Scene> {
     let text = std::fs::read_to_string(path).map_err(|e| SceneError {
         file: path.to_path_buf(),

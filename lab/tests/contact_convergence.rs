@@ -20,7 +20,7 @@
 //! * `L2 <= QUASI x best approximation` (measured 1.07 .. 1.71: the multipliers oscillate over
 //!   the two or three nodes at each contact edge);
 //! * `L2 >=` the best approximation held at zero on the nodes the method found open (a check of
-//!   that bound, which the README quotes: 0.36 .. 0.41% at `n = 64`; measured ratio
+//!   that bound, which docs/validation.md quotes: 0.36 .. 0.41% at `n = 64`; measured ratio
 //!   1.00 .. 1.47);
 //! * `n >= 64`: half-width and peak within 0.1% of Hertz (measured 0.03 .. 0.07%; what is left
 //!   is the graded mesh around the contact, see [`DiskOnBlock::band_layers`]);

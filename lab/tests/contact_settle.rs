@@ -21,7 +21,7 @@ const NARROW_SEED_1: [usize; 56] = [
 
 /// Presses of `hycon bench presses --seed 1` (wide ranges, the first 2,000) that fail with the
 /// paper's rules alone and converge with 0.7.0's (the 8 others of the 47 have no state that
-/// satisfies the conditions: see the README, "Presses that settle").
+/// satisfies the conditions: see docs/robustness.md, "A stiff multiplier side over a coarse B").
 const WIDE_SEED_1: [usize; 39] = [
     4, 22, 60, 70, 201, 247, 442, 459, 507, 588, 622, 674, 677, 730, 886, 966, 1003, 1034, 1201,
     1255, 1394, 1399, 1418, 1426, 1431, 1433, 1489, 1515, 1541, 1617, 1638, 1690, 1695, 1766, 1849,

@@ -1,6 +1,6 @@
 //! Scene files over Gmsh meshes: the reader (normalisation, chains, rejected elements, a fuzz
 //! of truncated and corrupted files), the dry run, a run checked against linearity and
-//! equilibrium, and one test per set-up mistake of the README's table.
+//! equilibrium, and one test per set-up mistake of the table in docs/scene-files.md.
 
 use hycon_lab::gmsh;
 use hycon_lab::scenefile::{self, SceneError};
@@ -269,7 +269,7 @@ fn press_contact_force_balances_the_support_reaction() {
     );
 }
 
-// ---- one test per set-up mistake (the README's table) ----
+// ---- one test per set-up mistake (the table in docs/scene-files.md) ----
 
 #[test]
 fn mistake_unknown_group() {

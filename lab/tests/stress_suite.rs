@@ -435,9 +435,9 @@ fn check_patch(case: &Patch, o: &PatchOutcome, tol: f64) {
 /// `E_disk / E_block` from 1e-8 to 1e8 on the Hertz scene at 8 elements per half-width.
 ///
 /// Tolerance: half-width and peak within 1% of Hertz. At n = 8 and ratio 1 the errors are
-/// -0.31% / +0.35% (README: set-up offset of order a/R plus discretisation); across the ratios
+/// -0.31% / +0.35% (docs/validation.md: set-up offset of order a/R plus discretisation); across the ratios
 /// they stay below 0.6% (the Dundurs mismatch of dissimilar bodies shifts the pressure slightly,
-/// README overview: 0.49-0.55% at 1e-2 and 1e-4; measured here 0.33-0.51% and 0.46-0.61%),
+/// an earlier overview of the main job: 0.49-0.55% at 1e-2 and 1e-4; measured here 0.33-0.51% and 0.46-0.61%),
 /// so 1% separates them from a failure. Beyond a ratio of 1e4 the soft body's flexibility
 /// dominates the contact system (`F_soft + F_stiff`) by more than 1e4, so the results must
 /// approach a limit: the ratios 1e-8 and 1e8 must agree with 1e-4 and 1e4 in `a` and
