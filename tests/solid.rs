@@ -2,14 +2,14 @@
 //! the constant-stress patch test on an irregular mesh, stress recovery and face tractions, the
 //! shape check, and the 3D model's assembly with its analysis reused.
 
-use hycon::{ShapeError, ShapeWarning};
 use hycon::solid::geometry::{FACES, NODE_XI};
 use hycon::solid::mesh::{SolidMesh, graded};
 use hycon::solid::model::{NodalDofs, SolidModel, SolidSystem};
 use hycon::solid::{
-    self, BrickFormulation, BrickMatrix, Isotropic, N_DOF, ShapePolicy, ShapeReport, recover_stress,
-    stiffness_into,
+    self, BrickFormulation, BrickMatrix, Isotropic, N_DOF, ShapePolicy, ShapeReport,
+    recover_stress, stiffness_into,
 };
+use hycon::{ShapeError, ShapeWarning};
 
 const STRICT: ShapePolicy = ShapePolicy::Strict;
 
@@ -428,7 +428,8 @@ fn shape_report_is_scale_free() {
     let base = check_shape(&folded).unwrap();
     let (c, s) = (0.6, 0.8);
     for scale in [1e-6, 1e6] {
-        let moved = folded.map(|[x, y, z]| [scale * (c * x - s * y), scale * (s * x + c * y), scale * z]);
+        let moved =
+            folded.map(|[x, y, z]| [scale * (c * x - s * y), scale * (s * x + c * y), scale * z]);
         let r = check_shape(&moved).unwrap();
         assert!((r.integration_jacobian / base.integration_jacobian - 1.0).abs() < 1e-12);
         assert!((r.corner_jacobian / base.corner_jacobian - 1.0).abs() < 1e-12);

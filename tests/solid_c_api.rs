@@ -250,13 +250,12 @@ fn shape_policy_warns_or_rejects() {
     );
     assert_eq!(
         (report.corner, report.face, report.warnings),
-        (
-            7,
-            0,
-            HYCON_SHAPE_CORNER_JACOBIAN | HYCON_SHAPE_WARPED_FACE
-        )
+        (7, 0, HYCON_SHAPE_CORNER_JACOBIAN | HYCON_SHAPE_WARPED_FACE)
     );
-    assert!((report.corner_jacobian + 0.00158).abs() < 5e-6, "{report:?}");
+    assert!(
+        (report.corner_jacobian + 0.00158).abs() < 5e-6,
+        "{report:?}"
+    );
     assert!((report.integration_jacobian - 0.00634).abs() < 5e-6);
     assert!((report.warp_degrees - 48.0).abs() < 0.05);
     // SAFETY: `hycon_status_name` returns a static string.
@@ -265,8 +264,14 @@ fn shape_policy_warns_or_rejects() {
     // strict: 0.8's error, report untouched
     let mut strict = unset;
     // SAFETY: as above.
-    let status =
-        unsafe { hycon_brick_shape(HYCON_BRICK_H8, FRONT.as_ptr(), HYCON_SHAPE_STRICT, &mut strict) };
+    let status = unsafe {
+        hycon_brick_shape(
+            HYCON_BRICK_H8,
+            FRONT.as_ptr(),
+            HYCON_SHAPE_STRICT,
+            &mut strict,
+        )
+    };
     assert_eq!(status, HYCON_ERROR_BAD_ELEMENT);
     assert!(
         message().starts_with("hycon_brick_shape: Jacobian not positive at local node 7 ("),
@@ -279,7 +284,10 @@ fn shape_policy_warns_or_rejects() {
         // SAFETY: as above.
         let status =
             unsafe { hycon_brick_shape(HYCON_BRICK_HYBRID18, CUBE.as_ptr(), policy, &mut report) };
-        assert_eq!((status, report.warnings, message()), (HYCON_OK, 0, String::new()));
+        assert_eq!(
+            (status, report.warnings, message()),
+            (HYCON_OK, 0, String::new())
+        );
         assert!((report.warp_degrees).abs() < 1e-12 && report.corner_jacobian > 0.0);
     }
     // bad arguments: policy 0 (a zeroed value), a misaligned report, NULL coordinates; a NULL
@@ -287,30 +295,47 @@ fn shape_policy_warns_or_rejects() {
     // SAFETY: as above.
     let status = unsafe { hycon_brick_shape(HYCON_BRICK_H8, CUBE.as_ptr(), 0, &mut report) };
     assert_eq!(status, HYCON_ERROR_INVALID_ARGUMENT);
-    assert!(message().contains("unknown shape policy 0"), "{}", message());
+    assert!(
+        message().contains("unknown shape policy 0"),
+        "{}",
+        message()
+    );
     let misaligned = std::ptr::from_mut(&mut report)
         .cast::<u8>()
         .wrapping_add(1)
         .cast::<HyconShapeReport>();
     // SAFETY: the misaligned pointer is refused before any write.
     let status = unsafe {
-        hycon_brick_shape(HYCON_BRICK_H8, CUBE.as_ptr(), HYCON_SHAPE_STRICT, misaligned)
+        hycon_brick_shape(
+            HYCON_BRICK_H8,
+            CUBE.as_ptr(),
+            HYCON_SHAPE_STRICT,
+            misaligned,
+        )
     };
     assert_eq!(status, HYCON_ERROR_INVALID_ARGUMENT);
     // SAFETY: NULL coordinates are checked.
-    let status = unsafe {
-        hycon_brick_shape(HYCON_BRICK_H8, null(), HYCON_SHAPE_STRICT, &mut report)
-    };
+    let status =
+        unsafe { hycon_brick_shape(HYCON_BRICK_H8, null(), HYCON_SHAPE_STRICT, &mut report) };
     assert_eq!(status, HYCON_ERROR_NULL_POINTER);
     // SAFETY: a NULL report is "not wanted".
     let status = unsafe {
-        hycon_brick_shape(HYCON_BRICK_H8, FRONT.as_ptr(), HYCON_SHAPE_STRICT, null_mut())
+        hycon_brick_shape(
+            HYCON_BRICK_H8,
+            FRONT.as_ptr(),
+            HYCON_SHAPE_STRICT,
+            null_mut(),
+        )
     };
     assert_eq!(status, HYCON_ERROR_BAD_ELEMENT);
     // SAFETY: as above.
     let status = unsafe { hycon_brick_check(HYCON_BRICK_H8, FRONT.as_ptr()) };
     assert_eq!(status, HYCON_WARNING_SHAPE);
-    assert!(message().starts_with("hycon_brick_check: warning: "), "{}", message());
+    assert!(
+        message().starts_with("hycon_brick_check: warning: "),
+        "{}",
+        message()
+    );
 
     // the element routines: the warning, and the kernel's numbers
     let m = HyconSolidMaterial {
@@ -318,7 +343,8 @@ fn shape_policy_warns_or_rejects() {
         poisson: 0.25,
     };
     let iso = Isotropic::new(1e6, 0.25).unwrap();
-    let x: [[f64; 3]; 8] = std::array::from_fn(|k| [FRONT[3 * k], FRONT[3 * k + 1], FRONT[3 * k + 2]]);
+    let x: [[f64; 3]; 8] =
+        std::array::from_fn(|k| [FRONT[3 * k], FRONT[3 * k + 1], FRONT[3 * k + 2]]);
     let mut q = [0.0; 24];
     for k in 0..8 {
         let [a, b, c] = x[k];
@@ -334,7 +360,8 @@ fn shape_policy_warns_or_rejects() {
     ] {
         let mut k = vec![0.0; 576];
         // SAFETY: arrays of the documented sizes.
-        let status = unsafe { hycon_brick_stiffness(kind, FRONT.as_ptr(), &m, k.as_mut_ptr(), 576) };
+        let status =
+            unsafe { hycon_brick_stiffness(kind, FRONT.as_ptr(), &m, k.as_mut_ptr(), 576) };
         assert_eq!(status, HYCON_WARNING_SHAPE, "{}", message());
         assert!(message().starts_with("hycon_brick_stiffness: warning: Jacobian"));
         let mut expect = solid::BrickMatrix::zeros();
@@ -349,7 +376,16 @@ fn shape_policy_warns_or_rejects() {
         let mut s = [0.0; 6];
         // SAFETY: arrays of the documented sizes.
         let status = unsafe {
-            hycon_brick_stress(kind, FRONT.as_ptr(), &m, q.as_ptr(), 0.5, 0.2, 0.5, s.as_mut_ptr())
+            hycon_brick_stress(
+                kind,
+                FRONT.as_ptr(),
+                &m,
+                q.as_ptr(),
+                0.5,
+                0.2,
+                0.5,
+                s.as_mut_ptr(),
+            )
         };
         assert_eq!(status, HYCON_WARNING_SHAPE);
         for (got, want) in s.iter().zip([2000.0, 2000.0, 2000.0, 400.0, 400.0, 400.0]) {
@@ -358,14 +394,31 @@ fn shape_policy_warns_or_rejects() {
         let mut t = [0.0; 3];
         // SAFETY: arrays of the documented sizes.
         let status = unsafe {
-            hycon_brick_face_traction(kind, FRONT.as_ptr(), &m, q.as_ptr(), 4, 0.0, 0.0, t.as_mut_ptr())
+            hycon_brick_face_traction(
+                kind,
+                FRONT.as_ptr(),
+                &m,
+                q.as_ptr(),
+                4,
+                0.0,
+                0.0,
+                t.as_mut_ptr(),
+            )
         };
         assert_eq!(status, HYCON_WARNING_SHAPE);
         let mut beta = [0.0; HYCON_BRICK_MAX_BETA];
         let mut needed = 0;
         // SAFETY: a buffer of HYCON_BRICK_MAX_BETA doubles.
         let status = unsafe {
-            hycon_brick_stress_params(kind, FRONT.as_ptr(), &m, q.as_ptr(), beta.as_mut_ptr(), 18, &mut needed)
+            hycon_brick_stress_params(
+                kind,
+                FRONT.as_ptr(),
+                &m,
+                q.as_ptr(),
+                beta.as_mut_ptr(),
+                18,
+                &mut needed,
+            )
         };
         assert_eq!(status, HYCON_WARNING_SHAPE);
         assert_eq!(needed, f.n_beta());

@@ -501,12 +501,27 @@ fn macneal_harder_patch_test() {
     // the measures the policies judge
     let front = check_shape(&mesh.element_coords(3), ShapePolicy::default()).unwrap();
     assert!((front.corner_jacobian + 0.00158).abs() < 5e-6, "{front:?}");
-    assert!((front.integration_jacobian - 0.00634).abs() < 5e-6, "{front:?}");
+    assert!(
+        (front.integration_jacobian - 0.00634).abs() < 5e-6,
+        "{front:?}"
+    );
     let warnings = mesh.check(ShapePolicy::default()).unwrap();
     let [
         (3, ShapeWarning::CornerJacobian { node: 7, relative }),
-        (3, ShapeWarning::WarpedFace { face: 0, degrees: a }),
-        (5, ShapeWarning::WarpedFace { face: 2, degrees: b }),
+        (
+            3,
+            ShapeWarning::WarpedFace {
+                face: 0,
+                degrees: a,
+            },
+        ),
+        (
+            5,
+            ShapeWarning::WarpedFace {
+                face: 2,
+                degrees: b,
+            },
+        ),
     ] = warnings[..]
     else {
         panic!("{warnings:?}");

@@ -161,7 +161,10 @@ pub unsafe extern "C" fn hycon_brick_check(
         brick_formulation(kind)?;
         // SAFETY: the caller's contract on `coords`.
         let x = unsafe { read_brick(coords)? };
-        Ok(shape_warning(&solid::check_shape(&x, ShapePolicy::default())?))
+        Ok(shape_warning(&solid::check_shape(
+            &x,
+            ShapePolicy::default(),
+        )?))
     })
 }
 
