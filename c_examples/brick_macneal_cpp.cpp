@@ -5,6 +5,12 @@
 // tip deflection, normalised by the reference 0.1081, must be 0.981 for the hybrid brick (the
 // value tests/solid_validation.rs checks) and below 0.1 for the locking H8.
 //
+// Then the shape policy through the wrapper, on the front brick of MacNeal and Harder's 3D patch
+// test (det J < 0 at its corner node 7, a face warped by 48 degrees; brick_patch.c solves the
+// whole patch): hycon::brick_shape is an error under HYCON_SHAPE_STRICT and ok() with
+// HYCON_WARNING_SHAPE and the report under the default policy, and hycon::brick_stiffness
+// returns the matrix with the warning.
+//
 // Usage: brick_macneal_cpp. Prints OK on success.
 #include "hycon.hpp"
 
@@ -12,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 namespace {
@@ -89,6 +96,25 @@ double solve(HyconBrickKind kind) {
     return v;
 }
 
+// The shape policy on MacNeal-Harder's front brick: true when every check holds.
+bool shape_policy() {
+    const std::array<double, 24> front{0.0,   0.0,   0.0,   1.0,   0.0,   0.0,   0.826, 0.288,
+                                       0.288, 0.249, 0.342, 0.192, 0.0,   0.0,   1.0,   1.0,
+                                       0.0,   1.0,   0.677, 0.305, 0.683, 0.320, 0.186, 0.643};
+    const auto strict = hycon::brick_shape(HYCON_BRICK_HYBRID18, front, HYCON_SHAPE_STRICT);
+    const auto relaxed =
+        hycon::brick_shape(HYCON_BRICK_HYBRID18, front, HYCON_SHAPE_INTEGRATION_POINTS);
+    const auto k = hycon::brick_stiffness(HYCON_BRICK_HYBRID18, front, HyconSolidMaterial{1e6, 0.25});
+    std::printf("front brick: strict %s, default %s: %s\n", strict.status().name(),
+                relaxed.status().name(), relaxed.message().c_str());
+    return strict.code() == HYCON_ERROR_BAD_ELEMENT &&
+           strict.message().find("local node 7") != std::string::npos &&
+           relaxed.code() == HYCON_WARNING_SHAPE && relaxed->corner == 7 &&
+           relaxed->warnings == (HYCON_SHAPE_CORNER_JACOBIAN | HYCON_SHAPE_WARPED_FACE) &&
+           relaxed->integration_jacobian > 6e-3 && std::fabs(relaxed->warp_degrees - 48.0) < 0.05 &&
+           k.ok() && k.code() == HYCON_WARNING_SHAPE && (*k)[0] > 0.0;
+}
+
 }  // namespace
 
 int main() {
@@ -96,7 +122,7 @@ int main() {
     const double h8 = solve(HYCON_BRICK_H8) / 0.1081;
     std::printf("MacNeal-Harder regular cantilever, in-plane shear: hybrid18 %.3f, h8 %.3f\n",
                 hybrid, h8);
-    if (std::fabs(hybrid - 0.981) > 0.002 || h8 < 0.0 || h8 > 0.1) {
+    if (std::fabs(hybrid - 0.981) > 0.002 || h8 < 0.0 || h8 > 0.1 || !shape_policy()) {
         std::printf("wrong value\n");
         return EXIT_FAILURE;
     }

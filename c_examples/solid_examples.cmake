@@ -10,6 +10,12 @@ hycon_example(brick_macneal_cpp brick_macneal_cpp.cpp CXX hycon::hycon)
 hycon_test(brick_macneal_cpp brick_macneal_cpp)
 hycon_valgrind_test(valgrind_brick_macneal_cpp brick_macneal_cpp)
 hycon_asan_test(brick_macneal_cpp brick_macneal_cpp.cpp CXX)
+# MacNeal-Harder's 3D patch test at full distortion from C (issue #42): the shape policy's
+# warnings and errors (hycon_brick_shape), both bricks exact
+hycon_example(brick_patch brick_patch.c C hycon::hycon)
+hycon_test(brick_patch brick_patch)
+hycon_valgrind_test(valgrind_brick_patch brick_patch)
+hycon_asan_test(brick_patch brick_patch.c C)
 # the same C host solving with CHOLMOD (brick_cantilever.c with HYCON_EXAMPLE_CHOLMOD), where
 # contact_examples.cmake found SuiteSparse; checked against its conjugate gradients
 if(HYCON_CHOLMOD_INCLUDE_DIR AND HYCON_CHOLMOD_LIBRARY)

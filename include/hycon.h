@@ -110,6 +110,12 @@
 // Largest number of stress parameters of a brick (18, the hybrid brick's).
 #define HYCON_BRICK_MAX_BETA 18
 
+// Bit of `HyconShapeReport::warnings`: the Jacobian is not positive at corner node `corner`.
+#define HYCON_SHAPE_CORNER_JACOBIAN 1
+
+// Bit of `HyconShapeReport::warnings`: face `face` is warped by more than 45 degrees.
+#define HYCON_SHAPE_WARPED_FACE 2
+
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
 // `hycon_contact_free`. Thread safety: the functions taking `HyconContact *` (increments,
@@ -514,6 +520,37 @@ typedef struct HyconConstraintEntry {
 // `{sxx, syy, szz, sxy, syz, szx}`.
 typedef int32_t HyconBrickKind;
 
+// How strictly a brick's shape is judged, one of `HYCON_SHAPE_INTEGRATION_POINTS` (the default
+// of every brick routine) or `HYCON_SHAPE_STRICT` (`hycon_brick_shape`).
+//
+// Both policies reject (`HYCON_ERROR_BAD_ELEMENT`) coincident nodes, a volume that is not
+// positive, and a Jacobian that is not positive (`det J <= 1e-10 h^3`, `h` the longest edge) at
+// one of the 8 points of the 2x2x2 Gauss rule both bricks integrate with. The default then
+// warns (`HYCON_WARNING_SHAPE`, results written) where the strict policy rejects: a Jacobian
+// that is not positive at a corner node, a face warped by more than 45 degrees. The warp of a
+// face is the angle between the normals of its two triangle halves, for each of the two ways
+// of splitting it along a diagonal, the larger of the two (0 for a plane face).
+typedef int32_t HyconShapePolicy;
+
+// The measures of a brick's shape (`hycon_brick_shape`). Jacobians are relative to `h^3`, `h`
+// the brick's longest edge, so the report does not change with the units.
+typedef struct HyconShapeReport {
+    // The smallest `det J / h^3` over the 8 integration points (2x2x2 Gauss).
+    double integration_jacobian;
+    // The smallest `det J / h^3` over the 8 corner nodes, reached at node `corner`.
+    double corner_jacobian;
+    // The largest warp over the 6 faces in degrees (measure at `HyconShapePolicy`), reached at
+    // face `face`.
+    double warp_degrees;
+    // The local node (0-7) of `corner_jacobian`.
+    size_t corner;
+    // The local face (0-5) of `warp_degrees`.
+    size_t face;
+    // The warnings of the default policy: `HYCON_SHAPE_CORNER_JACOBIAN` and / or
+    // `HYCON_SHAPE_WARPED_FACE` (0: none).
+    int32_t warnings;
+} HyconShapeReport;
+
 // Isotropic material of a 3D solid: no thickness, no plane idealisation.
 typedef struct HyconSolidMaterial {
     // Young's modulus `E` (finite, in `[1e-100, 1e100]`).
@@ -564,6 +601,13 @@ typedef struct HyconSolidMaterial {
 
 // Internal error: a Rust panic was caught at the boundary. Please report it with the message.
 #define HYCON_ERROR_PANIC -99
+
+// Warning: a brick is distorted beyond the strict shape policy (a Jacobian not positive at a
+// corner, or a face warped beyond 45 degrees) but its Jacobian is positive at every
+// integration point, so the results were computed and written (see `HyconShapePolicy`). The
+// message names the corner or face and the measure. A host that tests `status != HYCON_OK`
+// rejects such bricks as 0.8 did; one that tests `status < 0` accepts them.
+#define HYCON_WARNING_SHAPE 1
 
 // Assumed-stress hybrid element (7 stress parameters; 12 for 6 nodes), 4 to 6 nodes.
 #define HYCON_ELEMENT_HYBRID 1
@@ -668,6 +712,15 @@ typedef struct HyconSolidMaterial {
 // incompressibility).
 #define HYCON_BRICK_H8 2
 
+// The default: errors only where the Jacobian at an integration point or the volume is not
+// positive; a corner Jacobian that is not positive and a warp beyond 45 degrees are warnings.
+// MacNeal and Harder's 3D patch test mesh passes with warnings, and both bricks are exact on it.
+#define HYCON_SHAPE_INTEGRATION_POINTS 1
+
+// hycon 0.8's check: the corner Jacobians and the warp limit are errors too, with 0.8's
+// messages ("Jacobian not positive at local node i", "face f is warped beyond the limit").
+#define HYCON_SHAPE_STRICT 2
+
 
 
 #ifdef __cplusplus
@@ -687,9 +740,10 @@ HyconStatus hycon_version(int32_t *out);
 // the terminating NUL.
 //
 // What the message is: every function that returns a `HyconStatus` sets it when it returns,
-// to `"<function name>: <description>"` when it fails (a negative status) and to the empty
-// string when it succeeds. So it describes the last status-returning call on this thread, and
-// is empty (return value 1) unless that call failed. This function, `hycon_status_name` and
+// to `"<function name>: <description>"` when it fails (a negative status), to
+// `"<function name>: warning: <description>"` for a warning (a positive status) and to the
+// empty string when it succeeds. So it describes the last status-returning call on this thread,
+// and is empty (return value 1) unless that call failed or warned. This function, `hycon_status_name` and
 // the `_free` functions do not change it. It is thread-local: a call on another thread never
 // changes it.
 //
@@ -699,10 +753,12 @@ HyconStatus hycon_version(int32_t *out);
 //
 // # Safety
 // `buf` must be NULL or point to `len` writable bytes.
-size_t hycon_last_error_message(char *buf, size_t len);
+size_t hycon_last_error_message(char *buf,
+                                size_t len);
 
 // A static, NUL-terminated name for a status code (`"HYCON_OK"`, `"HYCON_ERROR_NULL_POINTER"`,
-// ..., `"HYCON_WARNING"` for any positive value, `"HYCON_ERROR_UNKNOWN"` otherwise). The
+// ..., `"HYCON_WARNING_SHAPE"`, `"HYCON_WARNING"` for any other positive value,
+// `"HYCON_ERROR_UNKNOWN"` otherwise). The
 // string is owned by the library and valid for the life of the process; do not free it.
 const char *hycon_status_name(HyconStatus status);
 
@@ -1340,19 +1396,37 @@ HyconStatus hycon_element_edge_traction(HyconElementKind kind,
                                         double s,
                                         double *out);
 
-// Check one brick's shape: finite coordinates, no coincident nodes, positive volume (node
-// order as in the header's brick section), `det J > 0` at every corner, no face warped by more
-// than 45 degrees (angle between the normals of the face's two triangle halves). Both kinds
-// accept the same shapes. Tolerances relative to the longest edge.
+// Check one brick's shape under the default policy (`HyconShapePolicy`): finite coordinates,
+// no coincident nodes, positive volume (node order as in the header's brick section),
+// `det J > 0` at every integration point; a corner where `det J <= 0` and a face warped by more
+// than 45 degrees are warnings. Both kinds accept the same shapes. Tolerances relative to the
+// longest edge. `hycon_brick_shape` chooses the policy and reports the measures.
 //
-// Returns `HYCON_OK`, or `HYCON_ERROR_BAD_ELEMENT` with a message naming the defect
-// (degenerate, inverted, Jacobian not positive at local node i, face f warped),
-// `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind, non-finite coordinate),
-// `HYCON_ERROR_NULL_POINTER`.
+// Returns `HYCON_OK`, `HYCON_WARNING_SHAPE` with a message naming the corner or the face
+// (0.8 returned `HYCON_ERROR_BAD_ELEMENT` there), or `HYCON_ERROR_BAD_ELEMENT` with a message
+// naming the defect (degenerate, inverted, Jacobian not positive at the integration point
+// nearest local node i), `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind, non-finite
+// coordinate), `HYCON_ERROR_NULL_POINTER`.
 //
 // # Safety
 // `coords` must be NULL or point to 24 readable doubles.
 HyconStatus hycon_brick_check(HyconBrickKind kind, const double *coords);
+
+// Check one brick's shape under `policy` and measure it (the policies and the warp measure:
+// `HyconShapePolicy`). Both kinds accept the same shapes. `report` (NULL: not wanted) receives
+// the measures on success and on a warning.
+//
+// Returns `HYCON_OK`; `HYCON_WARNING_SHAPE` (default policy only) with a message naming the
+// corner and its `det J / h^3`, or the face and its warp; `HYCON_ERROR_BAD_ELEMENT` with a
+// message naming the defect; `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind or policy,
+// non-finite coordinate, misaligned pointer); `HYCON_ERROR_NULL_POINTER`.
+//
+// # Safety
+// `coords` must be NULL or point to 24 readable doubles; `report` NULL or writable.
+HyconStatus hycon_brick_shape(HyconBrickKind kind,
+                              const double *coords,
+                              HyconShapePolicy policy,
+                              struct HyconShapeReport *report);
 
 // Brick stiffness `K` (24 x 24) into `k_out`, row-major (`k_out[i * 24 + j] = K_ij`), rows and
 // columns in dof order `u0 v0 w0 u1 ...`. Symmetric, so column-major readers get the same.
@@ -1362,6 +1436,9 @@ HyconStatus hycon_brick_check(HyconBrickKind kind, const double *coords);
 // * `coords`: 24 doubles `x0 y0 z0 x1 ...`, node order of the header's brick section.
 // * `material`: finite, `E > 0`, `-1 < nu < 0.5`.
 // * `k_out`, `k_len`: at least 576 doubles; written only on success.
+//
+// The shape is checked under the default policy: `HYCON_WARNING_SHAPE` (`k_out` written) for a
+// corner Jacobian or a warp the strict policy rejects (see `HyconShapePolicy`).
 //
 // Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, non-finite
 // coordinate), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`,
@@ -1381,7 +1458,8 @@ HyconStatus hycon_brick_stiffness(HyconBrickKind kind,
 // `{sxx, syy, szz, sxy, syz, szx}`), 0 for H8.
 //
 // `out`, `len`, `needed`: the header's size convention (`HYCON_BRICK_MAX_BETA` always
-// suffices; `(NULL, 0, &needed)` asks for the count).
+// suffices; `(NULL, 0, &needed)` asks for the count). `HYCON_WARNING_SHAPE` as
+// `hycon_brick_stiffness`.
 //
 // # Safety
 // `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
@@ -1397,7 +1475,7 @@ HyconStatus hycon_brick_stress_params(HyconBrickKind kind,
 // Stress `{sxx, syy, szz, sxy, syz, szx}` at the physical point `(px, py, pz)` of a brick from
 // its nodal displacements `q` (24 doubles). The point should lie in the brick (it is mapped to
 // natural coordinates by Newton's method); outside, the value is an extrapolation. `out`
-// receives 6 doubles on success.
+// receives 6 doubles on success. `HYCON_WARNING_SHAPE` as `hycon_brick_stiffness`.
 //
 // # Safety
 // `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
@@ -1414,6 +1492,7 @@ HyconStatus hycon_brick_stress(HyconBrickKind kind,
 // Traction `{tx, ty, tz} = sigma n` (outward unit normal `n`) at face parameters `(s, t)` in
 // `[-1, 1]^2` of face `face` (0 to 5, numbering in the header's brick section) of a brick,
 // from its nodal displacements `q` (24 doubles). `out` receives 3 doubles on success.
+// `HYCON_WARNING_SHAPE` as `hycon_brick_stiffness`.
 //
 // # Safety
 // `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`

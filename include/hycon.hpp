@@ -8,7 +8,7 @@
  *   empty object holds no handle). The raw unique_ptr types are hycon::ModelPtr, HostPtr and
  *   ContactPtr; get() gives the C handle for calls the wrapper does not cover.
  * - Errors without exceptions: every call returns a [[nodiscard]] hycon::Status (the
- *   HyconStatus and, on an error, the message of hycon_last_error_message) or a
+ *   HyconStatus and, on an error or a warning, the message of hycon_last_error_message) or a
  *   hycon::Result<T> (a Status and a value). Nothing here throws except std::bad_alloc from
  *   the standard containers, so it builds with -fno-exceptions. ok() is true for HYCON_OK and
  *   for warnings (> 0), as in the C API. Length errors found by the wrapper itself (before any
@@ -84,10 +84,10 @@ class [[nodiscard]] Status {
     Status(HyconStatus code, std::string message) noexcept
         : code_(code), message_(std::move(message)) {}
 
-    // The status of a C call that just returned `code`: for an error, the message is read
-    // from this thread's last error.
+    // The status of a C call that just returned `code`: for an error or a warning, the message
+    // is read from this thread's last error.
     static Status from(HyconStatus code) {
-        return code < 0 ? Status(code, last_error_message()) : Status(code, std::string());
+        return code != HYCON_OK ? Status(code, last_error_message()) : Status();
     }
 
     // Success or a warning (the outputs were written).
@@ -96,7 +96,7 @@ class [[nodiscard]] Status {
     HyconStatus code() const noexcept { return code_; }
     // The constant's name, e.g. "HYCON_ERROR_CONTACT" (a static string).
     const char *name() const noexcept { return hycon_status_name(code_); }
-    // hycon's message for an error, empty otherwise.
+    // hycon's message for an error or a warning, empty otherwise.
     const std::string &message() const noexcept { return message_; }
 
   private:
@@ -246,7 +246,7 @@ inline Result<std::vector<double>> element_stress_params(HyconElementKind kind,
                                                               beta.data(), beta.size(), &needed));
     if (!s.ok()) return s;
     beta.resize(needed);
-    return beta;
+    return Result<std::vector<double>>(s, std::move(beta));
 }
 
 // Traction {tx, ty} = sigma n (outward n) at parameter s in [0, 1] along edge `edge` (local
@@ -269,9 +269,24 @@ inline Result<std::array<double, 2>> element_edge_traction(HyconElementKind kind
 // ---------------------------------------------------------------------------------------------
 // 3D element routines: 8-node bricks (numbering at HyconBrickKind in hycon.h)
 
+// The brick routines below check the shape under the default policy
+// (HYCON_SHAPE_INTEGRATION_POINTS): a brick the strict policy rejects comes back ok() with the
+// value and the code HYCON_WARNING_SHAPE, its message naming the corner or the face.
+
 // Check one brick's shape (`coords`: 24 values x0 y0 z0 x1 ...).
 inline Status brick_check(HyconBrickKind kind, const std::array<double, 24> &coords) {
     return Status::from(hycon_brick_check(kind, coords.data()));
+}
+
+// Check one brick's shape under `policy` (HYCON_SHAPE_INTEGRATION_POINTS or HYCON_SHAPE_STRICT)
+// and measure it: the report on success and with a warning (HYCON_WARNING_SHAPE).
+inline Result<HyconShapeReport> brick_shape(HyconBrickKind kind,
+                                            const std::array<double, 24> &coords,
+                                            HyconShapePolicy policy) {
+    HyconShapeReport report{};
+    const Status s = Status::from(hycon_brick_shape(kind, coords.data(), policy, &report));
+    if (!s.ok()) return s;
+    return Result<HyconShapeReport>(s, report);
 }
 
 // Brick stiffness, 24 x 24 row-major.
@@ -282,7 +297,7 @@ inline Result<std::array<double, 576>> brick_stiffness(HyconBrickKind kind,
     const Status s =
         Status::from(hycon_brick_stiffness(kind, coords.data(), &material, k.data(), k.size()));
     if (!s.ok()) return s;
-    return k;
+    return Result<std::array<double, 576>>(s, k);
 }
 
 // Stress parameters beta from the 24 nodal displacements q (18 for the hybrid brick, 0 for H8).
@@ -296,7 +311,7 @@ inline Result<std::vector<double>> brick_stress_params(HyconBrickKind kind,
         kind, coords.data(), &material, q.data(), beta.data(), beta.size(), &needed));
     if (!s.ok()) return s;
     beta.resize(needed);
-    return beta;
+    return Result<std::vector<double>>(s, std::move(beta));
 }
 
 // Stress {sxx, syy, szz, sxy, syz, szx} at the physical point p.
@@ -309,7 +324,7 @@ inline Result<std::array<double, 6>> brick_stress(HyconBrickKind kind,
     const Status s = Status::from(hycon_brick_stress(kind, coords.data(), &material, q.data(),
                                                      p[0], p[1], p[2], out.data()));
     if (!s.ok()) return s;
-    return out;
+    return Result<std::array<double, 6>>(s, out);
 }
 
 // Traction sigma n at face parameters (s, t) in [-1, 1]^2 of face `face` (0 to 5).
@@ -322,7 +337,7 @@ inline Result<std::array<double, 3>> brick_face_traction(HyconBrickKind kind,
     const Status st = Status::from(hycon_brick_face_traction(
         kind, coords.data(), &material, q.data(), face, s, t, out.data()));
     if (!st.ok()) return st;
-    return out;
+    return Result<std::array<double, 3>>(st, out);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -54,11 +54,21 @@ pub enum ShapeError {
         node: usize,
     },
     /// A brick face whose two triangle halves (split along either diagonal) differ in normal
-    /// by more than [`crate::solid::WARP_LIMIT_DEGREES`].
+    /// by more than [`crate::solid::WARP_LIMIT_DEGREES`] (the strict shape policy only).
     #[error("face {face} is warped beyond the limit (see the face numbering of the brick)")]
     WarpedFace {
         /// Local face index (0-based).
         face: usize,
+    },
+    /// A brick whose Jacobian is not positive (relative to the longest edge cubed) at a point
+    /// of its 2x2x2 integration rule: the element cannot be computed (every shape policy).
+    #[error(
+        "Jacobian not positive at the integration point nearest local node {node} (nodes 0-3 \
+         counter-clockwise seen from nodes 4-7, node 4 + i above node i)"
+    )]
+    InvertedIntegrationPoint {
+        /// The local node (0-based) nearest that integration point.
+        node: usize,
     },
     /// In axisymmetry, a node with a negative radius `x < 0` (beyond round-off of the element
     /// size): the section must lie on the side `r >= 0` of the axis.
@@ -70,6 +80,37 @@ pub enum ShapeError {
     /// The formulation or node count is not available for the material's analysis kind.
     #[error("{0}")]
     Unsupported(&'static str),
+}
+
+/// A distortion of a brick that the default shape policy accepts and the strict one rejects
+/// (see [`crate::solid::ShapePolicy`]): the results are computed and exact for linear fields, but
+/// the mesh deserves a look.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum ShapeWarning {
+    /// The Jacobian is not positive at a corner although it is at every integration point.
+    #[error(
+        "Jacobian not positive at local node {node} (det J = {relative:.2e} h^3, h the longest \
+         edge; positive at every integration point)"
+    )]
+    CornerJacobian {
+        /// The local node (0-based) with the smallest corner Jacobian.
+        node: usize,
+        /// Its `det J / h^3`.
+        relative: f64,
+    },
+    /// A face warped beyond [`crate::solid::WARP_LIMIT_DEGREES`] (the measure:
+    /// [`crate::solid::ShapeReport::warp_degrees`]).
+    #[error(
+        "face {face} is warped by {degrees:.1} degrees (angle between the normals of its \
+         triangle halves; the limit is {limit} degrees)",
+        limit = crate::solid::WARP_LIMIT_DEGREES
+    )]
+    WarpedFace {
+        /// The local face (0-based) with the largest warp.
+        face: usize,
+        /// Its warp in degrees.
+        degrees: f64,
+    },
 }
 
 /// The crate-wide error type.

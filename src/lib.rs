@@ -33,5 +33,5 @@ pub mod model;
 pub mod solid;
 pub mod solver;
 
-pub use error::{ContactError, Error, Result, ShapeError};
+pub use error::{ContactError, Error, Result, ShapeError, ShapeWarning};
 pub use material::{Analysis, Material};

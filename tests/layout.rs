@@ -150,6 +150,7 @@ macro_rules! rust_structs {
 rust_structs! {
     HyconMaterial { youngs, poisson, thickness, analysis },
     HyconSolidMaterial { youngs, poisson },
+    HyconShapeReport { integration_jacobian, corner_jacobian, warp_degrees, corner, face, warnings },
     HyconContactOptions {
         size,
         tolerance,
@@ -231,6 +232,7 @@ fn rust_aliases() -> BTreeMap<&'static str, String> {
         HyconMonitorFn,
         HyconSolveFn,
         HyconBrickKind,
+        HyconShapePolicy,
     ]
     .into_iter()
     .collect()
@@ -257,6 +259,10 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_BRICK_MAX_BETA,
         HYCON_BRICK_HYBRID18,
         HYCON_BRICK_H8,
+        HYCON_SHAPE_INTEGRATION_POINTS,
+        HYCON_SHAPE_STRICT,
+        HYCON_SHAPE_CORNER_JACOBIAN,
+        HYCON_SHAPE_WARPED_FACE,
         HYCON_FIXED,
         HYCON_OK,
         HYCON_ERROR_NULL_POINTER,
@@ -269,6 +275,7 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_ERROR_CONTACT,
         HYCON_ERROR_CALLBACK,
         HYCON_ERROR_PANIC,
+        HYCON_WARNING_SHAPE,
         HYCON_ELEMENT_HYBRID,
         HYCON_ELEMENT_PIAN_SUMIHARA,
         HYCON_ELEMENT_Q4,

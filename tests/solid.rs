@@ -2,14 +2,26 @@
 //! the constant-stress patch test on an irregular mesh, stress recovery and face tractions, the
 //! shape check, and the 3D model's assembly with its analysis reused.
 
-use hycon::ShapeError;
 use hycon::solid::geometry::{FACES, NODE_XI};
 use hycon::solid::mesh::{SolidMesh, graded};
 use hycon::solid::model::{NodalDofs, SolidModel, SolidSystem};
 use hycon::solid::{
-    self, BrickFormulation, BrickMatrix, Isotropic, N_DOF, check_shape, recover_stress,
-    stiffness_into,
+    self, BrickFormulation, BrickMatrix, Isotropic, N_DOF, ShapePolicy, ShapeReport,
+    recover_stress, stiffness_into,
 };
+use hycon::{ShapeError, ShapeWarning};
+
+const STRICT: ShapePolicy = ShapePolicy::Strict;
+
+/// The shape check under the default policy (integration points).
+fn check_shape(x: &[[f64; 3]]) -> Result<ShapeReport, ShapeError> {
+    solid::check_shape(x, ShapePolicy::default())
+}
+
+/// The shape check under the strict policy (0.8's), without the report.
+fn check_strict(x: &[[f64; 3]]) -> Result<(), ShapeError> {
+    solid::check_shape(x, STRICT).map(|_| ())
+}
 use hycon::solver::Backend;
 use nalgebra::{DMatrix, Matrix3, SymmetricEigen};
 
@@ -313,67 +325,117 @@ fn stress_and_face_traction_recovery() {
     assert!((n[0] - 1.0).abs() < 1e-15);
 }
 
+/// The errors of both policies, and the strict policy's (0.8's check, its messages) where the
+/// default one warns.
 #[test]
 fn shape_check_names_the_defect() {
-    assert_eq!(check_shape(&UNIT), Ok(()));
-    assert_eq!(check_shape(&distorted()), Ok(()));
-    assert_eq!(
-        check_shape(&UNIT[..7]),
-        Err(ShapeError::NodeCount {
-            got: 7,
-            expected: "8"
-        })
-    );
-    let mut nan = UNIT;
-    nan[3][1] = f64::NAN;
-    assert_eq!(check_shape(&nan), Err(ShapeError::NonFinite));
-    // top and bottom swapped: negative volume
-    let swapped = [4, 5, 6, 7, 0, 1, 2, 3].map(|k| UNIT[k]);
-    assert_eq!(check_shape(&swapped), Err(ShapeError::Inverted));
-    // flat: zero volume
-    let flat = UNIT.map(|[x, y, _]| [x, y, 0.0]);
-    assert_eq!(check_shape(&flat), Err(ShapeError::Degenerate));
-    let mut same = UNIT;
-    same[6] = same[5];
-    assert_eq!(check_shape(&same), Err(ShapeError::Degenerate));
-    // node 6 pushed through the brick towards node 0: re-entrant at node 6
+    for check in [check_strict, |x: &[[f64; 3]]| check_shape(x).map(|_| ())] {
+        assert_eq!(check(&UNIT), Ok(()));
+        assert_eq!(check(&distorted()), Ok(()));
+        assert_eq!(
+            check(&UNIT[..7]),
+            Err(ShapeError::NodeCount {
+                got: 7,
+                expected: "8"
+            })
+        );
+        let mut nan = UNIT;
+        nan[3][1] = f64::NAN;
+        assert_eq!(check(&nan), Err(ShapeError::NonFinite));
+        // top and bottom swapped: negative volume
+        let swapped = [4, 5, 6, 7, 0, 1, 2, 3].map(|k| UNIT[k]);
+        assert_eq!(check(&swapped), Err(ShapeError::Inverted));
+        // flat: zero volume
+        let flat = UNIT.map(|[x, y, _]| [x, y, 0.0]);
+        assert_eq!(check(&flat), Err(ShapeError::Degenerate));
+        let mut same = UNIT;
+        same[6] = same[5];
+        assert_eq!(check(&same), Err(ShapeError::Degenerate));
+        // a small twist (7.5 degrees, as in the MacNeal-Harder twisted beam) is accepted
+        assert_eq!(check(&small_twist()), Ok(()));
+    }
+    assert_eq!(check_shape(&small_twist()).unwrap().warnings().count(), 0);
+    // node 6 pushed through the brick towards node 0: re-entrant at node 6, where det J is
+    // -0.121 h^3 at the corner and -0.039 h^3 at the nearest integration point: an error under
+    // both policies, each naming it its own way
     let mut dent = UNIT;
     dent[6] = [-0.5, -0.5, -0.5];
-    assert!(matches!(
-        check_shape(&dent),
-        Err(ShapeError::InvertedCorner { .. })
-    ));
-    // top face twisted by 90 degrees: warped side faces (the Jacobian stays positive at the
-    // corners of a 90 degree twist, the faces fold)
-    let twisted = UNIT.map(|[x, y, z]| {
-        if z > 0.0 {
-            [-y * 1.0, x * 1.0, z + 3.0]
-        } else {
-            [x, y, z]
-        }
-    });
-    let got = check_shape(&twisted);
-    assert!(
-        matches!(
-            got,
-            Err(ShapeError::WarpedFace { .. }) | Err(ShapeError::InvertedCorner { .. })
-        ),
-        "{got:?}"
+    assert_eq!(
+        check_strict(&dent),
+        Err(ShapeError::InvertedCorner { node: 6 })
     );
-    // a small twist (7.5 degrees, as in the MacNeal-Harder twisted beam) is accepted
+    let got = check_shape(&dent);
+    assert_eq!(got, Err(ShapeError::InvertedIntegrationPoint { node: 6 }));
+    assert!(
+        got.unwrap_err()
+            .to_string()
+            .starts_with("Jacobian not positive at the integration point nearest local node 6")
+    );
+    // top face twisted by 90 degrees: the side faces warp by 97.9 degrees, det J stays positive
+    // (0.016 h^3 at the corners, 0.011 at the integration points): strict rejects the first
+    // face, as 0.8 did; the default warns about the worst one (the four side faces tie)
+    let twisted = UNIT.map(|[x, y, z]| if z > 0.0 { [-y, x, z + 3.0] } else { [x, y, z] });
+    assert_eq!(
+        check_strict(&twisted),
+        Err(ShapeError::WarpedFace { face: 0 })
+    );
+    let report = check_shape(&twisted).unwrap();
+    assert!((report.warp_degrees - 97.9).abs() < 0.05, "{report:?}");
+    assert!(report.corner_jacobian > 0.0 && report.integration_jacobian > 0.0);
+    assert!(report.face < 4, "{report:?}");
+    assert_eq!(
+        report.warnings().collect::<Vec<_>>(),
+        vec![ShapeWarning::WarpedFace {
+            face: report.face,
+            degrees: report.warp_degrees
+        }]
+    );
+    // a roof-folded top face (node 6 raised by 3 over a side of 2): warped by 72.1 degrees, a
+    // readable warning by default, an error when strict
+    let mut folded = UNIT;
+    folded[6][2] += 3.0;
+    assert_eq!(
+        check_strict(&folded),
+        Err(ShapeError::WarpedFace { face: 5 })
+    );
+    let warnings: Vec<_> = check_shape(&folded).unwrap().warnings().collect();
+    assert_eq!(warnings.len(), 1);
+    let text = warnings[0].to_string();
+    assert!(
+        text.starts_with("face 5 is warped by 72.1 degrees") && text.contains("limit is 45"),
+        "{text}"
+    );
+}
+
+/// A 7.5 degree twist of the top face.
+fn small_twist() -> [[f64; 3]; 8] {
     let a = 7.5f64.to_radians();
-    let small = UNIT.map(|[x, y, z]| {
+    UNIT.map(|[x, y, z]| {
         if z > 0.0 {
             [x * a.cos() - y * a.sin(), x * a.sin() + y * a.cos(), z]
         } else {
             [x, y, z]
         }
-    });
-    assert_eq!(check_shape(&small), Ok(()));
-    // a roof-folded face at 60 degrees is rejected as warped
+    })
+}
+
+/// The report is unchanged by the units (Jacobians relative to the longest edge cubed) and by a
+/// rigid rotation.
+#[test]
+fn shape_report_is_scale_free() {
     let mut folded = UNIT;
     folded[6][2] += 3.0;
-    assert!(check_shape(&folded).is_err());
+    let base = check_shape(&folded).unwrap();
+    let (c, s) = (0.6, 0.8);
+    for scale in [1e-6, 1e6] {
+        let moved =
+            folded.map(|[x, y, z]| [scale * (c * x - s * y), scale * (s * x + c * y), scale * z]);
+        let r = check_shape(&moved).unwrap();
+        assert!((r.integration_jacobian / base.integration_jacobian - 1.0).abs() < 1e-12);
+        assert!((r.corner_jacobian / base.corner_jacobian - 1.0).abs() < 1e-12);
+        assert!((r.warp_degrees - base.warp_degrees).abs() < 1e-9);
+        assert_eq!((r.corner, r.face), (base.corner, base.face));
+    }
 }
 
 #[test]

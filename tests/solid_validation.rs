@@ -1,15 +1,17 @@
 //! Validation of the bricks against published reference values (MacNeal and Harder, FEAD 1
 //! (1985) 3-20, with their sources in docs/validation.md; docs/elements.md has the table):
 //! the straight cantilever (regular, trapezoidal and parallelogram elements; extension, in-plane
-//! and out-of-plane shear, twist), the twisted beam, and the thick-walled cylinder (Lamé) at
-//! nu = 0.3, 0.49, 0.4999 as a 3D slice with `u_z = 0`.
+//! and out-of-plane shear, twist), the twisted beam, the thick-walled cylinder (Lamé) at
+//! nu = 0.3, 0.49, 0.4999 as a 3D slice with `u_z = 0`, and the 3D patch test on their mesh of
+//! seven irregular bricks (with the shape policy it needs).
 //!
 //! `cargo test -p hycon --test solid_validation -- --nocapture` prints the table of
 //! normalised results (the table of docs/elements.md).
 
 use hycon::solid::mesh::{SolidMesh, graded};
 use hycon::solid::model::SolidModel;
-use hycon::solid::{BrickFormulation, Isotropic};
+use hycon::solid::{BrickFormulation, Isotropic, ShapePolicy, check_shape};
+use hycon::{Error, ShapeError, ShapeWarning};
 
 const HYBRID: BrickFormulation = BrickFormulation::Hybrid18;
 const H8: BrickFormulation = BrickFormulation::H8;
@@ -435,5 +437,142 @@ fn saint_venant_convergence() {
                 assert!(h8 > 0.3, "{name}: h8 {h8} should lock on the coarse mesh");
             }
         }
+    }
+}
+
+/// MacNeal and Harder's 3D patch test mesh: the unit cube (nodes 0-7, in the brick order) around
+/// an irregular inner brick (nodes 8-15, node `8 + i` near corner `i`), joined by six bricks, one
+/// per face of the cube: centre, bottom, top, front (`y = 0`), back, left (`x = 0`), right.
+fn macneal_harder_patch() -> SolidMesh {
+    let nodes = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 1.0],
+        [1.0, 1.0, 1.0],
+        [0.0, 1.0, 1.0],
+        [0.249, 0.342, 0.192],
+        [0.826, 0.288, 0.288],
+        [0.850, 0.649, 0.263],
+        [0.273, 0.750, 0.230],
+        [0.320, 0.186, 0.643],
+        [0.677, 0.305, 0.683],
+        [0.788, 0.693, 0.644],
+        [0.165, 0.745, 0.702],
+    ];
+    let elements = vec![
+        [8, 9, 10, 11, 12, 13, 14, 15],
+        [0, 1, 2, 3, 8, 9, 10, 11],
+        [12, 13, 14, 15, 4, 5, 6, 7],
+        [0, 1, 9, 8, 4, 5, 13, 12],
+        [11, 10, 2, 3, 15, 14, 6, 7],
+        [0, 8, 11, 3, 4, 12, 15, 7],
+        [9, 1, 2, 10, 13, 5, 6, 14],
+    ];
+    let element_material = vec![0; elements.len()];
+    SolidMesh {
+        nodes,
+        elements,
+        element_material,
+    }
+}
+
+/// The patch test's displacement field, `1e-3 (2x + y + z, x + 2y + z, x + y + 2z) / 2`: with
+/// `E = 1e6`, `nu = 0.25` the stress `sigma_x = sigma_y = sigma_z = 2000`, every shear 400.
+fn patch_field([x, y, z]: [f64; 3]) -> [f64; 3] {
+    [
+        1e-3 * (2.0 * x + y + z) / 2.0,
+        1e-3 * (x + 2.0 * y + z) / 2.0,
+        1e-3 * (x + y + 2.0 * z) / 2.0,
+    ]
+}
+
+/// MacNeal-Harder's 3D patch test at its full distortion, which the strict policy (0.8's check)
+/// rejects: the front brick has `det J = -0.0016` at its corner node 7 (positive at every
+/// integration point, at least 0.0063) and the face it shares with the left brick is warped by 48
+/// degrees (35 on the other diagonal). The default policy runs it with those three warnings and
+/// both bricks are exact: the interior displacements to 1e-13 of the field, every brick's stress
+/// at its centre and corners to 1e-10 of 2000.
+#[test]
+fn macneal_harder_patch_test() {
+    let mesh = macneal_harder_patch();
+    // the measures the policies judge
+    let front = check_shape(&mesh.element_coords(3), ShapePolicy::default()).unwrap();
+    assert!((front.corner_jacobian + 0.00158).abs() < 5e-6, "{front:?}");
+    assert!(
+        (front.integration_jacobian - 0.00634).abs() < 5e-6,
+        "{front:?}"
+    );
+    let warnings = mesh.check(ShapePolicy::default()).unwrap();
+    let [
+        (3, ShapeWarning::CornerJacobian { node: 7, relative }),
+        (
+            3,
+            ShapeWarning::WarpedFace {
+                face: 0,
+                degrees: a,
+            },
+        ),
+        (
+            5,
+            ShapeWarning::WarpedFace {
+                face: 2,
+                degrees: b,
+            },
+        ),
+    ] = warnings[..]
+    else {
+        panic!("{warnings:?}");
+    };
+    assert_eq!(relative, front.corner_jacobian);
+    assert!((a - 48.0).abs() < 0.05 && a == b, "{a} {b}");
+    // strict: 0.8's errors and messages
+    assert_eq!(
+        mesh.check(ShapePolicy::Strict),
+        Err(Error::at_element(ShapeError::InvertedCorner { node: 7 }, 3))
+    );
+    let left = check_shape(&mesh.element_coords(5), ShapePolicy::Strict);
+    assert_eq!(left, Err(ShapeError::WarpedFace { face: 2 }));
+    assert_eq!(
+        left.unwrap_err().to_string(),
+        "face 2 is warped beyond the limit (see the face numbering of the brick)"
+    );
+
+    let m = Isotropic::new(1e6, 0.25).unwrap();
+    let exact = [2000.0, 2000.0, 2000.0, 400.0, 400.0, 400.0];
+    for f in BrickFormulation::ALL {
+        let mut model = SolidModel::new(mesh.clone(), vec![m], f).unwrap();
+        for n in 0..8 {
+            for (d, u) in patch_field(mesh.nodes[n]).into_iter().enumerate() {
+                model.fix(n, d, u);
+            }
+        }
+        let sol = model.solve().unwrap();
+        let mut u_err: f64 = 0.0;
+        for n in 8..16 {
+            for (got, want) in sol.at(n).into_iter().zip(patch_field(mesh.nodes[n])) {
+                u_err = u_err.max((got - want).abs() / 2e-3);
+            }
+        }
+        let mut s_err: f64 = 0.0;
+        for e in 0..mesh.n_elements() {
+            let field = model.element_stress(&sol, e).unwrap();
+            let mut points = vec![[0.0; 3]];
+            points.extend(hycon::solid::geometry::NODE_XI);
+            for xi in points {
+                let s = field.at_natural(xi);
+                for (got, want) in s.iter().zip(exact) {
+                    s_err = s_err.max((got - want).abs() / 2000.0);
+                }
+            }
+        }
+        println!(
+            "MacNeal-Harder 3D patch, {}: displacement error {u_err:.1e}, stress error {s_err:.1e}",
+            f.name()
+        );
+        assert!(u_err < 1e-13, "{f:?}: displacement error {u_err:e}");
+        assert!(s_err < 1e-10, "{f:?}: stress error {s_err:e}");
     }
 }

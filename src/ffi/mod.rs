@@ -15,9 +15,10 @@
 //! * Every symbol starts with `hycon_` / `Hycon` / `HYCON_`.
 //! * Functions return a [`HyconStatus`]: `0` ([`HYCON_OK`]) on success, a negative
 //!   `HYCON_ERROR_*` code on failure, and a positive value for a warning (the call succeeded,
-//!   outputs were written, but something deserves attention; codes `1..=99` are reserved, none
-//!   is produced yet). Every status-returning call sets this thread's message (a description
-//!   when it fails, empty when it succeeds); [`hycon_last_error_message`] copies it.
+//!   outputs were written, but something deserves attention; codes `1..=99` are reserved for
+//!   warnings, [`HYCON_WARNING_SHAPE`] is the first). Every status-returning call sets this
+//!   thread's message (a description when it fails or warns, empty when it succeeds);
+//!   [`hycon_last_error_message`] copies it.
 //! * Arrays are (pointer, length) pairs, or a pointer whose length is fixed by other arguments
 //!   (stated per function). `(NULL, 0)` is an empty array.
 //! * Variable-length outputs follow one size convention, `(out, len, needed)` (`fill`).
@@ -143,6 +144,12 @@ pub const HYCON_ERROR_CONTACT: HyconStatus = -8;
 pub const HYCON_ERROR_CALLBACK: HyconStatus = -9;
 /// Internal error: a Rust panic was caught at the boundary. Please report it with the message.
 pub const HYCON_ERROR_PANIC: HyconStatus = -99;
+/// Warning: a brick is distorted beyond the strict shape policy (a Jacobian not positive at a
+/// corner, or a face warped beyond 45 degrees) but its Jacobian is positive at every
+/// integration point, so the results were computed and written (see `HyconShapePolicy`). The
+/// message names the corner or face and the measure. A host that tests `status != HYCON_OK`
+/// rejects such bricks as 0.8 did; one that tests `status < 0` accepts them.
+pub const HYCON_WARNING_SHAPE: HyconStatus = 1;
 
 // ------------------------------------------------------------------------------------------
 // Enumerations passed as integers (a C enum value outside the Rust enum would be undefined
@@ -325,17 +332,38 @@ fn install_panic_hook() {
     });
 }
 
+/// A warning on its way to the C caller: the call succeeded, its outputs are written; a
+/// positive status and a message.
+#[derive(Debug)]
+struct Warning {
+    status: HyconStatus,
+    message: String,
+}
+
 /// Run one exported function's body: catch panics, map `Err` to its status and store the
 /// message (prefixed with `function`) as this thread's last error; on success clear it.
 fn boundary(function: &'static str, body: impl FnOnce() -> Result<(), Fail>) -> HyconStatus {
+    boundary_warning(function, || body().map(|()| None))
+}
+
+/// [`boundary`] for a body that may succeed with a [`Warning`]: its status is returned and its
+/// message (prefixed with `function` and `warning:`) becomes this thread's last error.
+fn boundary_warning(
+    function: &'static str,
+    body: impl FnOnce() -> Result<Option<Warning>, Fail>,
+) -> HyconStatus {
     install_panic_hook();
     BOUNDARY_DEPTH.with(|d| d.set(d.get() + 1));
     let result = catch_unwind(AssertUnwindSafe(body));
     BOUNDARY_DEPTH.with(|d| d.set(d.get() - 1));
     match result {
-        Ok(Ok(())) => {
+        Ok(Ok(None)) => {
             set_last_error("");
             HYCON_OK
+        }
+        Ok(Ok(Some(warning))) => {
+            set_last_error(&format!("{function}: warning: {}", warning.message));
+            warning.status
         }
         Ok(Err(fail)) => {
             set_last_error(&format!("{function}: {}", fail.message));
@@ -721,9 +749,10 @@ pub unsafe extern "C" fn hycon_version(out: *mut i32) -> HyconStatus {
 /// the terminating NUL.
 ///
 /// What the message is: every function that returns a `HyconStatus` sets it when it returns,
-/// to `"<function name>: <description>"` when it fails (a negative status) and to the empty
-/// string when it succeeds. So it describes the last status-returning call on this thread, and
-/// is empty (return value 1) unless that call failed. This function, `hycon_status_name` and
+/// to `"<function name>: <description>"` when it fails (a negative status), to
+/// `"<function name>: warning: <description>"` for a warning (a positive status) and to the
+/// empty string when it succeeds. So it describes the last status-returning call on this thread,
+/// and is empty (return value 1) unless that call failed or warned. This function, `hycon_status_name` and
 /// the `_free` functions do not change it. It is thread-local: a call on another thread never
 /// changes it.
 ///
@@ -761,7 +790,8 @@ pub unsafe extern "C" fn hycon_last_error_message(buf: *mut c_char, len: usize) 
 }
 
 /// A static, NUL-terminated name for a status code (`"HYCON_OK"`, `"HYCON_ERROR_NULL_POINTER"`,
-/// ..., `"HYCON_WARNING"` for any positive value, `"HYCON_ERROR_UNKNOWN"` otherwise). The
+/// ..., `"HYCON_WARNING_SHAPE"`, `"HYCON_WARNING"` for any other positive value,
+/// `"HYCON_ERROR_UNKNOWN"` otherwise). The
 /// string is owned by the library and valid for the life of the process; do not free it.
 #[unsafe(no_mangle)]
 pub extern "C" fn hycon_status_name(status: HyconStatus) -> *const c_char {
@@ -777,6 +807,7 @@ pub extern "C" fn hycon_status_name(status: HyconStatus) -> *const c_char {
         HYCON_ERROR_CONTACT => c"HYCON_ERROR_CONTACT",
         HYCON_ERROR_CALLBACK => c"HYCON_ERROR_CALLBACK",
         HYCON_ERROR_PANIC => c"HYCON_ERROR_PANIC",
+        HYCON_WARNING_SHAPE => c"HYCON_WARNING_SHAPE",
         s if s > 0 => c"HYCON_WARNING",
         _ => c"HYCON_ERROR_UNKNOWN",
     };

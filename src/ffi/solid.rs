@@ -12,9 +12,14 @@
 //! 5 `(4 5 6 7)` `zeta = +1`; face parameters `(s, t)` in `[-1, 1]^2` run from the face's first
 //! node to its second (`s`) and to its fourth (`t`). Stresses are `{sxx, syy, szz, sxy, syz,
 //! szx}`.
+//!
+//! # Shape policy
+//! Every routine checks the brick under the default policy, `HYCON_SHAPE_INTEGRATION_POINTS`,
+//! and returns `HYCON_WARNING_SHAPE` (results written) for what the strict policy rejects;
+//! `hycon_brick_shape` checks under either policy and reports the measures.
 
 use super::*;
-use crate::solid::{self, BrickFormulation, Isotropic, N_DOF, N_NODES};
+use crate::solid::{self, BrickFormulation, Isotropic, N_DOF, N_NODES, ShapePolicy, ShapeReport};
 
 /// Which brick formulation a 3D element routine uses (`hycon_brick_*`).
 ///
@@ -133,15 +138,17 @@ fn finite(values: &[f64], what: &str) -> Result<(), Fail> {
     }
 }
 
-/// Check one brick's shape: finite coordinates, no coincident nodes, positive volume (node
-/// order as in the header's brick section), `det J > 0` at every corner, no face warped by more
-/// than 45 degrees (angle between the normals of the face's two triangle halves). Both kinds
-/// accept the same shapes. Tolerances relative to the longest edge.
+/// Check one brick's shape under the default policy (`HyconShapePolicy`): finite coordinates,
+/// no coincident nodes, positive volume (node order as in the header's brick section),
+/// `det J > 0` at every integration point; a corner where `det J <= 0` and a face warped by more
+/// than 45 degrees are warnings. Both kinds accept the same shapes. Tolerances relative to the
+/// longest edge. `hycon_brick_shape` chooses the policy and reports the measures.
 ///
-/// Returns `HYCON_OK`, or `HYCON_ERROR_BAD_ELEMENT` with a message naming the defect
-/// (degenerate, inverted, Jacobian not positive at local node i, face f warped),
-/// `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind, non-finite coordinate),
-/// `HYCON_ERROR_NULL_POINTER`.
+/// Returns `HYCON_OK`, `HYCON_WARNING_SHAPE` with a message naming the corner or the face
+/// (0.8 returned `HYCON_ERROR_BAD_ELEMENT` there), or `HYCON_ERROR_BAD_ELEMENT` with a message
+/// naming the defect (degenerate, inverted, Jacobian not positive at the integration point
+/// nearest local node i), `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind, non-finite
+/// coordinate), `HYCON_ERROR_NULL_POINTER`.
 ///
 /// # Safety
 /// `coords` must be NULL or point to 24 readable doubles.
@@ -150,11 +157,128 @@ pub unsafe extern "C" fn hycon_brick_check(
     kind: HyconBrickKind,
     coords: *const f64,
 ) -> HyconStatus {
-    boundary("hycon_brick_check", || {
+    boundary_warning("hycon_brick_check", || {
         brick_formulation(kind)?;
         // SAFETY: the caller's contract on `coords`.
         let x = unsafe { read_brick(coords)? };
-        Ok(solid::check_shape(&x)?)
+        Ok(shape_warning(&solid::check_shape(
+            &x,
+            ShapePolicy::default(),
+        )?))
+    })
+}
+
+// ------------------------------------------------------------------------------------------
+// Shape policy: what is an error and what a warning, and the measures
+
+/// How strictly a brick's shape is judged, one of `HYCON_SHAPE_INTEGRATION_POINTS` (the default
+/// of every brick routine) or `HYCON_SHAPE_STRICT` (`hycon_brick_shape`).
+///
+/// Both policies reject (`HYCON_ERROR_BAD_ELEMENT`) coincident nodes, a volume that is not
+/// positive, and a Jacobian that is not positive (`det J <= 1e-10 h^3`, `h` the longest edge) at
+/// one of the 8 points of the 2x2x2 Gauss rule both bricks integrate with. The default then
+/// warns (`HYCON_WARNING_SHAPE`, results written) where the strict policy rejects: a Jacobian
+/// that is not positive at a corner node, a face warped by more than 45 degrees. The warp of a
+/// face is the angle between the normals of its two triangle halves, for each of the two ways
+/// of splitting it along a diagonal, the larger of the two (0 for a plane face).
+pub type HyconShapePolicy = i32;
+/// The default: errors only where the Jacobian at an integration point or the volume is not
+/// positive; a corner Jacobian that is not positive and a warp beyond 45 degrees are warnings.
+/// MacNeal and Harder's 3D patch test mesh passes with warnings, and both bricks are exact on it.
+pub const HYCON_SHAPE_INTEGRATION_POINTS: HyconShapePolicy = 1;
+/// hycon 0.8's check: the corner Jacobians and the warp limit are errors too, with 0.8's
+/// messages ("Jacobian not positive at local node i", "face f is warped beyond the limit").
+pub const HYCON_SHAPE_STRICT: HyconShapePolicy = 2;
+
+/// Bit of `HyconShapeReport::warnings`: the Jacobian is not positive at corner node `corner`.
+pub const HYCON_SHAPE_CORNER_JACOBIAN: i32 = 1;
+/// Bit of `HyconShapeReport::warnings`: face `face` is warped by more than 45 degrees.
+pub const HYCON_SHAPE_WARPED_FACE: i32 = 2;
+
+/// The measures of a brick's shape (`hycon_brick_shape`). Jacobians are relative to `h^3`, `h`
+/// the brick's longest edge, so the report does not change with the units.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HyconShapeReport {
+    /// The smallest `det J / h^3` over the 8 integration points (2x2x2 Gauss).
+    pub integration_jacobian: f64,
+    /// The smallest `det J / h^3` over the 8 corner nodes, reached at node `corner`.
+    pub corner_jacobian: f64,
+    /// The largest warp over the 6 faces in degrees (measure at `HyconShapePolicy`), reached at
+    /// face `face`.
+    pub warp_degrees: f64,
+    /// The local node (0-7) of `corner_jacobian`.
+    pub corner: usize,
+    /// The local face (0-5) of `warp_degrees`.
+    pub face: usize,
+    /// The warnings of the default policy: `HYCON_SHAPE_CORNER_JACOBIAN` and / or
+    /// `HYCON_SHAPE_WARPED_FACE` (0: none).
+    pub warnings: i32,
+}
+
+impl From<&ShapeReport> for HyconShapeReport {
+    fn from(r: &ShapeReport) -> Self {
+        let bit = |set: bool, b: i32| if set { b } else { 0 };
+        HyconShapeReport {
+            integration_jacobian: r.integration_jacobian,
+            corner_jacobian: r.corner_jacobian,
+            warp_degrees: r.warp_degrees,
+            corner: r.corner,
+            face: r.face,
+            warnings: bit(r.corner_warning().is_some(), HYCON_SHAPE_CORNER_JACOBIAN)
+                | bit(r.warp_warning().is_some(), HYCON_SHAPE_WARPED_FACE),
+        }
+    }
+}
+
+fn shape_policy(policy: HyconShapePolicy) -> Result<ShapePolicy, Fail> {
+    match policy {
+        HYCON_SHAPE_INTEGRATION_POINTS => Ok(ShapePolicy::IntegrationPoints),
+        HYCON_SHAPE_STRICT => Ok(ShapePolicy::Strict),
+        p => Err(Fail::invalid(format!(
+            "unknown shape policy {p} (expected HYCON_SHAPE_INTEGRATION_POINTS = 1 or \
+             HYCON_SHAPE_STRICT = 2)"
+        ))),
+    }
+}
+
+/// `HYCON_WARNING_SHAPE` with the report's warnings in words, if it has any.
+fn shape_warning(report: &ShapeReport) -> Option<Warning> {
+    let words: Vec<String> = report.warnings().map(|w| w.to_string()).collect();
+    (!words.is_empty()).then(|| Warning {
+        status: HYCON_WARNING_SHAPE,
+        message: words.join("; "),
+    })
+}
+
+/// Check one brick's shape under `policy` and measure it (the policies and the warp measure:
+/// `HyconShapePolicy`). Both kinds accept the same shapes. `report` (NULL: not wanted) receives
+/// the measures on success and on a warning.
+///
+/// Returns `HYCON_OK`; `HYCON_WARNING_SHAPE` (default policy only) with a message naming the
+/// corner and its `det J / h^3`, or the face and its warp; `HYCON_ERROR_BAD_ELEMENT` with a
+/// message naming the defect; `HYCON_ERROR_INVALID_ARGUMENT` (unknown kind or policy,
+/// non-finite coordinate, misaligned pointer); `HYCON_ERROR_NULL_POINTER`.
+///
+/// # Safety
+/// `coords` must be NULL or point to 24 readable doubles; `report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_brick_shape(
+    kind: HyconBrickKind,
+    coords: *const f64,
+    policy: HyconShapePolicy,
+    report: *mut HyconShapeReport,
+) -> HyconStatus {
+    boundary_warning("hycon_brick_shape", || {
+        brick_formulation(kind)?;
+        let policy = shape_policy(policy)?;
+        let out = optional(report, "report")?;
+        // SAFETY: the caller's contract on `coords`.
+        let x = unsafe { read_brick(coords)? };
+        let measured = solid::check_shape(&x, policy)?;
+        // SAFETY: `out` was checked (aligned, writable by contract).
+        unsafe { put(out, HyconShapeReport::from(&measured)) };
+        Ok(shape_warning(&measured))
     })
 }
 
@@ -166,6 +290,9 @@ pub unsafe extern "C" fn hycon_brick_check(
 /// * `coords`: 24 doubles `x0 y0 z0 x1 ...`, node order of the header's brick section.
 /// * `material`: finite, `E > 0`, `-1 < nu < 0.5`.
 /// * `k_out`, `k_len`: at least 576 doubles; written only on success.
+///
+/// The shape is checked under the default policy: `HYCON_WARNING_SHAPE` (`k_out` written) for a
+/// corner Jacobian or a warp the strict policy rejects (see `HyconShapePolicy`).
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, non-finite
 /// coordinate), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`,
@@ -182,19 +309,19 @@ pub unsafe extern "C" fn hycon_brick_stiffness(
     k_out: *mut f64,
     k_len: usize,
 ) -> HyconStatus {
-    boundary("hycon_brick_stiffness", || {
+    boundary_warning("hycon_brick_stiffness", || {
         let formulation = brick_formulation(kind)?;
         // SAFETY: the caller's contract.
         let (x, material) = unsafe { (read_brick(coords)?, read_solid_material(material)?) };
         check_output(k_out, k_len, N_DOF * N_DOF, "k_out")?;
         let mut k = solid::BrickMatrix::zeros();
-        solid::stiffness_into(formulation, &x, &material, &mut k)?;
+        let shape = solid::stiffness_into(formulation, &x, &material, &mut k)?;
         // row-major: the transpose's column-major storage
         let row_major = k.transpose();
         finite(row_major.as_slice(), "stiffness")?;
         // SAFETY: `k_out` was checked for 576 values.
         unsafe { write_doubles(k_out, row_major.as_slice()) };
-        Ok(())
+        Ok(shape_warning(&shape))
     })
 }
 
@@ -203,7 +330,8 @@ pub unsafe extern "C" fn hycon_brick_stiffness(
 /// `{sxx, syy, szz, sxy, syz, szx}`), 0 for H8.
 ///
 /// `out`, `len`, `needed`: the header's size convention (`HYCON_BRICK_MAX_BETA` always
-/// suffices; `(NULL, 0, &needed)` asks for the count).
+/// suffices; `(NULL, 0, &needed)` asks for the count). `HYCON_WARNING_SHAPE` as
+/// `hycon_brick_stiffness`.
 ///
 /// # Safety
 /// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
@@ -219,20 +347,21 @@ pub unsafe extern "C" fn hycon_brick_stress_params(
     len: usize,
     needed: *mut usize,
 ) -> HyconStatus {
-    boundary("hycon_brick_stress_params", || {
+    boundary_warning("hycon_brick_stress_params", || {
         // SAFETY: the caller's contract.
         let field = unsafe { brick_stress(kind, coords, material, q)? };
         let beta = field.beta();
         finite(beta, "beta")?;
         // SAFETY: the caller's contract on `out` and `needed`.
-        unsafe { fill(out, len, needed, "out", beta.len(), || Ok(beta.to_vec())) }
+        unsafe { fill(out, len, needed, "out", beta.len(), || Ok(beta.to_vec()))? };
+        Ok(shape_warning(field.shape()))
     })
 }
 
 /// Stress `{sxx, syy, szz, sxy, syz, szx}` at the physical point `(px, py, pz)` of a brick from
 /// its nodal displacements `q` (24 doubles). The point should lie in the brick (it is mapped to
 /// natural coordinates by Newton's method); outside, the value is an extrapolation. `out`
-/// receives 6 doubles on success.
+/// receives 6 doubles on success. `HYCON_WARNING_SHAPE` as `hycon_brick_stiffness`.
 ///
 /// # Safety
 /// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
@@ -249,7 +378,7 @@ pub unsafe extern "C" fn hycon_brick_stress(
     pz: f64,
     out: *mut f64,
 ) -> HyconStatus {
-    boundary("hycon_brick_stress", || {
+    boundary_warning("hycon_brick_stress", || {
         for (v, name) in [(px, "px"), (py, "py"), (pz, "pz")] {
             check_finite_scalar(v, name)?;
         }
@@ -260,13 +389,14 @@ pub unsafe extern "C" fn hycon_brick_stress(
         finite(s.as_slice(), "stress")?;
         // SAFETY: `out` is non-null and aligned (checked) and holds 6 doubles (contract).
         unsafe { write_doubles(out, s.as_slice()) };
-        Ok(())
+        Ok(shape_warning(field.shape()))
     })
 }
 
 /// Traction `{tx, ty, tz} = sigma n` (outward unit normal `n`) at face parameters `(s, t)` in
 /// `[-1, 1]^2` of face `face` (0 to 5, numbering in the header's brick section) of a brick,
 /// from its nodal displacements `q` (24 doubles). `out` receives 3 doubles on success.
+/// `HYCON_WARNING_SHAPE` as `hycon_brick_stiffness`.
 ///
 /// # Safety
 /// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
@@ -283,7 +413,7 @@ pub unsafe extern "C" fn hycon_brick_face_traction(
     t: f64,
     out: *mut f64,
 ) -> HyconStatus {
-    boundary("hycon_brick_face_traction", || {
+    boundary_warning("hycon_brick_face_traction", || {
         if face >= 6 {
             return Err(Fail::invalid(format!(
                 "face {face} of a brick (faces are 0 to 5)"
@@ -302,6 +432,6 @@ pub unsafe extern "C" fn hycon_brick_face_traction(
         finite(&tr, "traction")?;
         // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles (contract).
         unsafe { write_doubles(out, &tr) };
-        Ok(())
+        Ok(shape_warning(field.shape()))
     })
 }

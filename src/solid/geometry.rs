@@ -1,5 +1,5 @@
 //! Brick geometry: the trilinear map of the 8-node hexahedron, its node and face numbering, the
-//! shape check, and the 2x2x2 Gauss rule.
+//! shape check with its policy and measures, and the 2x2x2 Gauss rule.
 //!
 //! # Numbering
 //! Natural coordinates `xi = (xi, eta, zeta)` in `[-1, 1]^3`. Nodes 0-3 are the face
@@ -30,7 +30,7 @@
 //! | 4 | `zeta = -1` | 0 3 2 1 |
 //! | 5 | `zeta = +1` | 4 5 6 7 |
 
-use crate::error::ShapeError;
+use crate::error::{ShapeError, ShapeWarning};
 use nalgebra::{Matrix3, Vector3};
 
 /// Natural coordinates of the 8 nodes.
@@ -77,11 +77,75 @@ pub fn gauss_points() -> impl Iterator<Item = ([f64; 3], f64)> {
 /// Relative size below which an edge, a volume or a Jacobian counts as zero.
 const DEGENERATE: f64 = 1e-10;
 
-/// The largest angle between the normals of a face's two triangle halves (split along either
-/// diagonal) that [`check_brick`] accepts, in degrees. A trilinear brick stays valid with warped
-/// faces as long as its Jacobian is positive (the MacNeal-Harder twisted beam warps every face by
-/// a few degrees); beyond this a face folds on itself and the element is a mesh error.
+/// The largest warp of a face (see [`ShapeReport::warp_degrees`] for the measure) that the strict
+/// policy accepts, in degrees; beyond it the default policy warns. A trilinear brick stays valid
+/// with warped faces as long as its Jacobian is positive at the integration points (the
+/// MacNeal-Harder twisted beam warps every face by a few degrees, their 3D patch test one face
+/// by 48 degrees).
 pub const WARP_LIMIT_DEGREES: f64 = 45.0;
+
+/// How strictly [`check_brick`] judges a distorted brick. Both policies reject what cannot be
+/// computed or is not a solid: a node count other than 8, a non-finite coordinate, coincident
+/// nodes, a volume that is not positive, a Jacobian that is not positive at an integration point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum ShapePolicy {
+    /// The default: errors only where the element cannot be computed (above); a Jacobian that is
+    /// not positive at a corner, or a face warped beyond [`WARP_LIMIT_DEGREES`], is a warning
+    /// ([`ShapeReport::warnings`]). The rule of codes that check at the integration points: the
+    /// bricks only ever evaluate the Jacobian there (2x2x2 Gauss).
+    #[default]
+    IntegrationPoints,
+    /// hycon 0.8's check: a Jacobian that is not positive at a corner
+    /// ([`ShapeError::InvertedCorner`]) and a face warped beyond [`WARP_LIMIT_DEGREES`]
+    /// ([`ShapeError::WarpedFace`]) are errors too, with 0.8's messages.
+    Strict,
+}
+
+/// The measures of a brick's shape that the policies judge. Jacobians are relative to `h^3`,
+/// `h` the longest edge, so the report is unchanged by a change of units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapeReport {
+    /// The smallest `det J / h^3` over the 8 points of the 2x2x2 Gauss rule (both bricks
+    /// integrate with it); always above `1e-10` in an accepted brick.
+    pub integration_jacobian: f64,
+    /// The smallest `det J / h^3` over the 8 corners.
+    pub corner_jacobian: f64,
+    /// The local node (0-7) where [`corner_jacobian`](Self::corner_jacobian) is reached.
+    pub corner: usize,
+    /// The largest warp over the 6 faces, in degrees. The warp of a face is the angle between
+    /// the normals of its two triangle halves, for each of the two ways of splitting it along a
+    /// diagonal; the larger of the two (0 for a plane face, 180 for a face folded flat onto
+    /// itself).
+    pub warp_degrees: f64,
+    /// The local face (0-5, numbering of the module docs) where
+    /// [`warp_degrees`](Self::warp_degrees) is reached.
+    pub face: usize,
+}
+
+impl ShapeReport {
+    /// The corner warning: the Jacobian is not positive (`det J <= 1e-10 h^3`) at
+    /// [`corner`](Self::corner).
+    pub fn corner_warning(&self) -> Option<ShapeWarning> {
+        (self.corner_jacobian <= DEGENERATE).then_some(ShapeWarning::CornerJacobian {
+            node: self.corner,
+            relative: self.corner_jacobian,
+        })
+    }
+
+    /// The warp warning: [`face`](Self::face) is warped beyond [`WARP_LIMIT_DEGREES`].
+    pub fn warp_warning(&self) -> Option<ShapeWarning> {
+        (self.warp_degrees > WARP_LIMIT_DEGREES).then_some(ShapeWarning::WarpedFace {
+            face: self.face,
+            degrees: self.warp_degrees,
+        })
+    }
+
+    /// The warnings of the default policy (what the strict policy rejects): the corner
+    /// warning, then the warp warning, each at most once.
+    pub fn warnings(&self) -> impl Iterator<Item = ShapeWarning> {
+        self.corner_warning().into_iter().chain(self.warp_warning())
+    }
+}
 
 /// The trilinear map `x(xi) = sum N_k(xi) x_k` of an 8-node brick.
 #[derive(Debug, Clone, Copy)]
@@ -232,17 +296,39 @@ fn fold_angle(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> f64 {
     cos.clamp(-1.0, 1.0).acos().to_degrees()
 }
 
-/// Check an 8-node brick (see the module docs for the node order): finite coordinates, no
-/// coincident nodes, positive volume, `det J > 0` at every corner (which with the positive
-/// volume rules out re-entrant, collapsed and twisted shapes), no face warped beyond
-/// [`WARP_LIMIT_DEGREES`]. Tolerances are relative to the longest edge `h` (`det J` against
-/// `h^3`).
+/// The warp of face `face` (see [`ShapeReport::warp_degrees`]).
+fn face_warp(map: &Trilinear, face: usize) -> f64 {
+    let [a, b, c, d] = FACES[face].map(|k| map.x[k]);
+    fold_angle(a, b, c, d).max(fold_angle(b, c, d, a))
+}
+
+/// `det J / h^3` at local node `node`.
+fn corner_jacobian(map: &Trilinear, node: usize, h3: f64) -> f64 {
+    map.jacobian(NODE_XI[node]).determinant() / h3
+}
+
+/// The local node nearest Gauss point `point` of [`gauss_points`] (`x` fastest).
+fn nearest_corner(point: usize) -> usize {
+    [0, 1, 3, 2][point & 3] + 4 * (point >> 2)
+}
+
+/// Check an 8-node brick (see the module docs for the node order) under `policy` and measure
+/// it. Both policies: finite coordinates, no coincident nodes, positive volume, `det J > 0` at
+/// the 8 integration points; [`ShapePolicy::Strict`] also `det J > 0` at every corner and no
+/// face warped beyond [`WARP_LIMIT_DEGREES`] (checked before the integration points, in 0.8's
+/// order). "Positive" means above `1e-10` of `h^3`, `h` the longest edge (coincident: closer
+/// than `1e-10 h`).
 ///
 /// Errors: [`ShapeError::NodeCount`], [`ShapeError::NonFinite`], [`ShapeError::Degenerate`]
 /// (coincident nodes, zero volume), [`ShapeError::Inverted`] (negative volume: the bottom and
-/// top faces swapped or mirrored), [`ShapeError::InvertedCorner`],
-/// [`ShapeError::WarpedFace`].
-pub fn check_brick(coords: &[[f64; 3]]) -> Result<Trilinear, ShapeError> {
+/// top faces swapped or mirrored), [`ShapeError::InvertedIntegrationPoint`]; strict also
+/// [`ShapeError::InvertedCorner`], [`ShapeError::WarpedFace`]. On success the report holds the
+/// measures; under the default policy its [`warnings`](ShapeReport::warnings) are what the
+/// strict policy would have rejected.
+pub fn check_brick(
+    coords: &[[f64; 3]],
+    policy: ShapePolicy,
+) -> Result<(Trilinear, ShapeReport), ShapeError> {
     if coords.len() != 8 {
         return Err(ShapeError::NodeCount {
             got: coords.len(),
@@ -264,27 +350,59 @@ pub fn check_brick(coords: &[[f64; 3]]) -> Result<Trilinear, ShapeError> {
             }
         }
     }
-    let volume = map.volume();
-    let tiny = DEGENERATE * h * h * h;
-    if volume.abs() <= 8.0 * tiny {
+    let h3 = h * h * h;
+    let mut gauss = [0.0; 8];
+    for (g, (xi, _)) in gauss.iter_mut().zip(gauss_points()) {
+        *g = map.jacobian(xi).determinant() / h3;
+    }
+    // every Gauss weight is 1: the volume over h^3 is the sum
+    let volume: f64 = gauss.iter().sum();
+    if volume.abs() <= 8.0 * DEGENERATE {
         return Err(ShapeError::Degenerate);
     }
     if volume < 0.0 {
         return Err(ShapeError::Inverted);
     }
-    for (node, xi) in NODE_XI.iter().enumerate() {
-        if map.jacobian(*xi).determinant() <= tiny {
+    if policy == ShapePolicy::Strict {
+        // 0.8's errors: the first corner, the first face beyond the limits
+        if let Some(node) = (0..8).find(|&n| corner_jacobian(&map, n, h3) <= DEGENERATE) {
             return Err(ShapeError::InvertedCorner { node });
         }
-    }
-    for (face, f) in FACES.iter().enumerate() {
-        let [a, b, c, d] = f.map(|k| coords[k]);
-        let warp = fold_angle(a, b, c, d).max(fold_angle(b, c, d, a));
-        if warp > WARP_LIMIT_DEGREES {
+        if let Some(face) = (0..6).find(|&f| face_warp(&map, f) > WARP_LIMIT_DEGREES) {
             return Err(ShapeError::WarpedFace { face });
         }
     }
-    Ok(map)
+    if let Some(point) = gauss.iter().position(|&g| g <= DEGENERATE) {
+        return Err(ShapeError::InvertedIntegrationPoint {
+            node: nearest_corner(point),
+        });
+    }
+    let report = measure(&map, &gauss, h3);
+    Ok((map, report))
+}
+
+/// The [`ShapeReport`] of a brick with relative Gauss-point Jacobians `gauss`.
+fn measure(map: &Trilinear, gauss: &[f64; 8], h3: f64) -> ShapeReport {
+    let mut report = ShapeReport {
+        integration_jacobian: gauss.iter().copied().fold(f64::INFINITY, f64::min),
+        corner_jacobian: f64::INFINITY,
+        corner: 0,
+        warp_degrees: 0.0,
+        face: 0,
+    };
+    for node in 0..8 {
+        let det = corner_jacobian(map, node, h3);
+        if det < report.corner_jacobian {
+            (report.corner_jacobian, report.corner) = (det, node);
+        }
+    }
+    for face in 0..6 {
+        let w = face_warp(map, face);
+        if w > report.warp_degrees {
+            (report.warp_degrees, report.face) = (w, face);
+        }
+    }
+    report
 }
 
 /// Natural coordinates of the point `(s, t)` of face `face` (see the module docs).

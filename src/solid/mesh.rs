@@ -9,8 +9,8 @@
 //! map.
 
 use super::geometry::{FACES, Trilinear, face_normal};
-use super::{N_NODES, check_shape};
-use crate::error::{Error, Result};
+use super::{N_NODES, ShapePolicy, check_shape};
+use crate::error::{Error, Result, ShapeWarning};
 
 /// A mesh of 8-node bricks.
 #[derive(Debug, Clone, PartialEq)]
@@ -168,9 +168,15 @@ impl SolidMesh {
         out
     }
 
-    /// Check connectivity (node indices in range) and every brick's shape; errors name the
-    /// brick.
+    /// Check connectivity (node indices in range) and every brick's shape under the default
+    /// [`ShapePolicy`]; errors name the brick. [`check`](Self::check) returns the warnings.
     pub fn validate(&self) -> Result<()> {
+        self.check(ShapePolicy::default()).map(|_| ())
+    }
+
+    /// Check connectivity and every brick's shape under `policy`; errors name the brick. Returns
+    /// the shape warnings (none under [`ShapePolicy::Strict`]) with their bricks.
+    pub fn check(&self, policy: ShapePolicy) -> Result<Vec<(usize, ShapeWarning)>> {
         if self.element_material.len() != self.elements.len() {
             return Err(Error::InvalidInput(format!(
                 "{} material indices for {} bricks",
@@ -178,6 +184,7 @@ impl SolidMesh {
                 self.elements.len()
             )));
         }
+        let mut warnings = Vec::new();
         for (e, el) in self.elements.iter().enumerate() {
             if let Some(&n) = el.iter().find(|&&n| n >= self.nodes.len()) {
                 return Err(Error::InvalidInput(format!(
@@ -185,9 +192,11 @@ impl SolidMesh {
                     self.nodes.len()
                 )));
             }
-            check_shape(&self.element_coords(e)).map_err(|kind| Error::at_element(kind, e))?;
+            let report = check_shape(&self.element_coords(e), policy)
+                .map_err(|kind| Error::at_element(kind, e))?;
+            warnings.extend(report.warnings().map(|w| (e, w)));
         }
-        Ok(())
+        Ok(warnings)
     }
 
     /// Consistent nodal forces of the traction field `traction(x, n)` (`x` the point, `n` the

@@ -2,7 +2,7 @@
 //! trilinear displacement brick H8), structured hexahedral meshes, and a linear static 3D model
 //! assembled into the sparse Cholesky.
 //!
-//! * [`geometry`]: the trilinear map, node and face numbering, shape check.
+//! * [`geometry`]: the trilinear map, node and face numbering, shape check and policy.
 //! * [`hybrid18`]: the Pian-Tong 18-beta hybrid brick (why this field: see there).
 //! * [`h8`]: the displacement brick, the baseline.
 //! * [`mesh`]: structured hexahedral meshes of blocks and beams, graded and distorted.
@@ -29,7 +29,7 @@ use crate::material::SCALE_RANGE;
 use geometry::{FACES, Trilinear, check_brick, face_natural, face_normal};
 use nalgebra::{Cholesky, SMatrix, SVector};
 
-pub use geometry::WARP_LIMIT_DEGREES;
+pub use geometry::{ShapePolicy, ShapeReport, WARP_LIMIT_DEGREES};
 
 /// Nodes of a brick.
 pub const N_NODES: usize = 8;
@@ -143,11 +143,15 @@ impl BrickFormulation {
     }
 }
 
-/// Check a brick's shape (see [`geometry::check_brick`]: node count, finite coordinates,
-/// degenerate, inverted, `det J <= 0` at a corner, warped faces). Both formulations accept the
-/// same shapes.
-pub fn check_shape(coords: &[[f64; 3]]) -> std::result::Result<(), ShapeError> {
-    check_brick(coords).map(|_| ())
+/// Check a brick's shape under `policy` and measure it (see [`geometry::check_brick`]: node
+/// count, finite coordinates, degenerate, inverted, `det J <= 0` at an integration point; strict
+/// also at a corner, and warped faces). Both formulations accept the same shapes (both integrate
+/// with the same 2x2x2 rule). The kernels below apply the default policy and return its report.
+pub fn check_shape(
+    coords: &[[f64; 3]],
+    policy: ShapePolicy,
+) -> std::result::Result<ShapeReport, ShapeError> {
+    check_brick(coords, policy).map(|(_, report)| report)
 }
 
 /// `H` and `G` of the hybrid brick, `H` factored.
@@ -166,7 +170,8 @@ fn factored(
     Ok((chol, g))
 }
 
-/// Element stiffness `K` (24 x 24) into `out`. Never allocates.
+/// Element stiffness `K` (24 x 24) into `out`; returns the shape report of the default policy
+/// (its [`warnings`](ShapeReport::warnings) are for the caller to show). Never allocates.
 ///
 /// Hybrid: `K = G^T H^-1 G` (as `W^T W`, `W = L^-1 G`); H8: `K = integral of B^T D B dV`.
 pub fn stiffness_into(
@@ -174,8 +179,8 @@ pub fn stiffness_into(
     coords: &[[f64; 3]],
     material: &Isotropic,
     out: &mut BrickMatrix,
-) -> std::result::Result<(), ShapeError> {
-    let map = check_brick(coords)?;
+) -> std::result::Result<ShapeReport, ShapeError> {
+    let (map, report) = check_brick(coords, ShapePolicy::default())?;
     match formulation {
         BrickFormulation::H8 => *out = h8::stiffness(&map, material),
         BrickFormulation::Hybrid18 => {
@@ -187,7 +192,7 @@ pub fn stiffness_into(
             w.tr_mul_to(&w, out);
         }
     }
-    Ok(())
+    Ok(report)
 }
 
 /// The stress field recovered in one brick from its nodal displacements (`beta = H^-1 G q` for
@@ -200,6 +205,7 @@ pub struct BrickStress {
     frame: hybrid18::Frame,
     q: SVector<f64, N_DOF>,
     beta: SVector<f64, MAX_BETA>,
+    shape: ShapeReport,
 }
 
 impl BrickStress {
@@ -235,6 +241,11 @@ impl BrickStress {
     pub fn beta(&self) -> &[f64] {
         &self.beta.as_slice()[..self.formulation.n_beta()]
     }
+
+    /// The brick's shape report under the default policy (its warnings).
+    pub fn shape(&self) -> &ShapeReport {
+        &self.shape
+    }
 }
 
 /// `sigma n` for a Voigt stress.
@@ -246,15 +257,15 @@ pub fn traction(s: &Voigt, n: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-/// Recover the stress field of a brick from its 24 dofs `q` (element dof order). Panics if `q`
-/// is shorter than 24.
+/// Recover the stress field of a brick from its 24 dofs `q` (element dof order), its shape
+/// checked under the default policy. Panics if `q` is shorter than 24.
 pub fn recover_stress(
     formulation: BrickFormulation,
     coords: &[[f64; 3]],
     material: &Isotropic,
     q: &[f64],
 ) -> std::result::Result<BrickStress, ShapeError> {
-    let map = check_brick(coords)?;
+    let (map, shape) = check_brick(coords, ShapePolicy::default())?;
     let q = SVector::<f64, N_DOF>::from_column_slice(&q[..N_DOF]);
     let mut beta = SVector::<f64, MAX_BETA>::zeros();
     if formulation == BrickFormulation::Hybrid18 {
@@ -268,5 +279,6 @@ pub fn recover_stress(
         frame: hybrid18::Frame::new(&map),
         q,
         beta,
+        shape,
     })
 }
