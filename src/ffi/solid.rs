@@ -70,7 +70,7 @@ const _: () = {
     assert!(HYCON_BRICK_MAX_BETA == solid::MAX_BETA);
 };
 
-fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
+pub(super) fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
     match kind {
         HYCON_BRICK_HYBRID18 => Ok(BrickFormulation::Hybrid18),
         HYCON_BRICK_H8 => Ok(BrickFormulation::H8),
@@ -84,7 +84,7 @@ fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
 ///
 /// # Safety
 /// If `coords` is non-null it must point to 24 readable doubles.
-unsafe fn read_brick(coords: *const f64) -> Result<[[f64; 3]; N_NODES], Fail> {
+pub(super) unsafe fn read_brick(coords: *const f64) -> Result<[[f64; 3]; N_NODES], Fail> {
     let mut flat = [0.0; N_DOF];
     // SAFETY: forwarded contract.
     unsafe { read_doubles(coords, &mut flat, "coords")? };
@@ -108,7 +108,7 @@ unsafe fn read_solid_material(m: *const HyconSolidMaterial) -> Result<Isotropic,
 ///
 /// # Safety
 /// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct.
-unsafe fn brick_stress(
+pub(super) unsafe fn brick_stress(
     kind: HyconBrickKind,
     coords: *const f64,
     material: *const HyconSolidMaterial,
