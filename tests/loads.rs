@@ -79,7 +79,10 @@ fn edge_pressure_gives_the_classical_split_and_exact_moments() {
                 let len = d[0].hypot(d[1]);
                 let inward = [-d[1] / len, d[0] / len];
                 let scale = t * len * (p0.abs() + p1.abs());
-                let want = [t * len * (2.0 * p0 + p1) / 6.0, t * len * (p0 + 2.0 * p1) / 6.0];
+                let want = [
+                    t * len * (2.0 * p0 + p1) / 6.0,
+                    t * len * (p0 + 2.0 * p1) / 6.0,
+                ];
                 for (node, w) in [(a, want[0]), (b, want[1])] {
                     for dir in 0..2 {
                         let what = format!("{f:?} n={n} edge {edge} node {node} dir {dir}");
@@ -150,8 +153,20 @@ fn axisymmetric_edges_integrate_over_the_circle() {
         let exact = -p * PI * (r2 * r2 - r1 * r1);
         assert_close(total, exact, 1e-14, exact.abs(), "axial total");
         let len = r2 - r1;
-        assert_close(out[5], -2.0 * PI * p * len * (2.0 * r2 + r1) / 6.0, 1e-14, exact.abs(), "node 2");
-        assert_close(out[7], -2.0 * PI * p * len * (2.0 * r1 + r2) / 6.0, 1e-14, exact.abs(), "node 3");
+        assert_close(
+            out[5],
+            -2.0 * PI * p * len * (2.0 * r2 + r1) / 6.0,
+            1e-14,
+            exact.abs(),
+            "node 2",
+        );
+        assert_close(
+            out[7],
+            -2.0 * PI * p * len * (2.0 * r1 + r2) / 6.0,
+            1e-14,
+            exact.abs(),
+            "node 3",
+        );
         assert!(out[4] == 0.0 && out[6] == 0.0);
         // edge 3: the bore, from (r1, h) to (r1, 0), a traction (t, 0) = a pressure t there
         let t = 5.0;
@@ -203,12 +218,15 @@ fn lame_bore_load_axisymmetric() {
             }
             let m = axi(nu);
             let first = [mesh.nodes[0], mesh.nodes[2], mesh.nodes[3], mesh.nodes[1]];
-            let f = edge_load(Formulation::Hybrid, &first, &m, 3, &EdgeLoad::pressure(1.0)).unwrap();
+            let f =
+                edge_load(Formulation::Hybrid, &first, &m, 3, &EdgeLoad::pressure(1.0)).unwrap();
             let mut model = Model::new(mesh, vec![m], Formulation::Hybrid);
             let all: Vec<usize> = (0..2 * (n + 1)).collect();
             model.fix_dir(&all, 1, 0.0).unwrap();
             for (local, node) in [(0, 0), (3, 1)] {
-                model.nodal_forces.push((node, [f[2 * local], f[2 * local + 1]]));
+                model
+                    .nodal_forces
+                    .push((node, [f[2 * local], f[2 * local + 1]]));
             }
             let u = model.solve().unwrap().displacement(0)[0];
             let exact = lame_u_r(a, RADII, 1000.0, nu, 1.0);
@@ -228,7 +246,11 @@ fn ring_bore_error(nu: f64, [nr, nt]: [usize; 2]) -> f64 {
         let th = FRAC_PI_2 * j as f64 / nt as f64;
         for i in 0..=nr {
             let r = a + (b - a) * i as f64 / nr as f64;
-            let (x, y) = if j == nt { (0.0, r) } else { (r * th.cos(), r * th.sin()) };
+            let (x, y) = if j == nt {
+                (0.0, r)
+            } else {
+                (r * th.cos(), r * th.sin())
+            };
             mesh.push_node([x, y]);
         }
     }
@@ -241,10 +263,18 @@ fn ring_bore_error(nu: f64, [nr, nt]: [usize; 2]) -> f64 {
             model.mesh.push_element(&nodes, 0);
             if i == 0 {
                 let coords = nodes.map(|k| mesh.nodes[k]);
-                let f = edge_load(Formulation::Hybrid, &coords, &m, 3, &EdgeLoad::pressure(1.0))
-                    .unwrap();
+                let f = edge_load(
+                    Formulation::Hybrid,
+                    &coords,
+                    &m,
+                    3,
+                    &EdgeLoad::pressure(1.0),
+                )
+                .unwrap();
                 for (local, node) in [(3, nodes[3]), (0, nodes[0])] {
-                    model.nodal_forces.push((node, [f[2 * local], f[2 * local + 1]]));
+                    model
+                        .nodal_forces
+                        .push((node, [f[2 * local], f[2 * local + 1]]));
                 }
             }
         }
@@ -300,7 +330,10 @@ fn cylinder(nr: usize, nt: usize, nz: usize, warp: f64) -> SolidMesh {
         let inner = (r - a).abs() < 1e-12 && t > 1e-12 && t < FRAC_PI_2 - 1e-12;
         let (dr, dzz) = if inner && z > 1e-12 && z < 2.0 - 1e-12 {
             // a deterministic pseudo-random number in [-0.5, 0.5) per node
-            let s = (((t + 1.3 * z) * 12.9898).sin() * 43_758.545_3).fract().abs() - 0.5;
+            let s = (((t + 1.3 * z) * 12.9898).sin() * 43_758.545_3)
+                .fract()
+                .abs()
+                - 0.5;
             (warp * s * a * dt, -warp * s * dz)
         } else {
             (0.0, 0.0)
@@ -311,7 +344,10 @@ fn cylinder(nr: usize, nt: usize, nz: usize, warp: f64) -> SolidMesh {
 
 /// The bore faces `(brick, face)` of [`cylinder`] (face 0, `xi = -1`, at `r = a`).
 fn bore_faces(mesh: &SolidMesh, nr: usize) -> Vec<(usize, usize)> {
-    (0..mesh.n_elements()).filter(|e| e % nr == 0).map(|e| (e, 0)).collect()
+    (0..mesh.n_elements())
+        .filter(|e| e % nr == 0)
+        .map(|e| (e, 0))
+        .collect()
 }
 
 /// A uniform pressure `p` on the curved bore of a quarter cylinder (radius `a`, height `H`,
@@ -335,7 +371,13 @@ fn pressure_on_a_curved_face_sums_to_the_projected_area() {
         }
         let want = [p * a * height, p * a * height, 0.0];
         for i in 0..3 {
-            assert_close(total[i], want[i], 1e-13, want[0], &format!("warp {warp}, dir {i}"));
+            assert_close(
+                total[i],
+                want[i],
+                1e-13,
+                want[0],
+                &format!("warp {warp}, dir {i}"),
+            );
         }
     }
 }
@@ -349,7 +391,13 @@ fn pressure_on_a_curved_face_sums_to_the_projected_area() {
 #[test]
 fn linear_face_pressure_gives_exact_moments_and_tractions_their_area() {
     let (l, w, h) = (3.0, 1.5, 0.8);
-    let boxed = NODE_XI.map(|[x, y, z]| [l * (x + 1.0) / 2.0, w * (y + 1.0) / 2.0, h * (z + 1.0) / 2.0]);
+    let boxed = NODE_XI.map(|[x, y, z]| {
+        [
+            l * (x + 1.0) / 2.0,
+            w * (y + 1.0) / 2.0,
+            h * (z + 1.0) / 2.0,
+        ]
+    });
     let (p0, g) = (2.0, -1.5);
     let face = 4;
     let load = FaceLoad {
@@ -373,7 +421,13 @@ fn linear_face_pressure_gives_exact_moments_and_tractions_their_area() {
     assert_close(force[0], 0.0, 1e-14, scale, "fx");
     assert_close(force[1], 0.0, 1e-14, scale, "fy");
     assert_close(moment[0], w * resultant / 2.0, 1e-14, scale * l, "M_x");
-    assert_close(moment[1], -w * (p0 * l * l / 2.0 + g * l.powi(3) / 3.0), 1e-14, scale * l, "M_y");
+    assert_close(
+        moment[1],
+        -w * (p0 * l * l / 2.0 + g * l.powi(3) / 3.0),
+        1e-14,
+        scale * l,
+        "M_y",
+    );
     assert_close(moment[2], 0.0, 1e-14, scale * l, "M_z");
     // a plane trapezoidal face (face 5 at z = h; the brick a prism tapered in x): sum = t area
     let mut tapered = boxed;
@@ -474,9 +528,16 @@ fn volumes_match_closed_forms() {
     let exact = h * (bottom * bottom + bottom * top + top * top) / 3.0;
     assert_close(v, exact, 1e-14, exact, "frustum");
     let a = [[1.2, 0.3, -0.2], [0.1, 0.9, 0.4], [-0.3, 0.2, 1.1]];
-    let affine = NODE_XI.map(|x| std::array::from_fn(|i| (0..3).map(|j| a[i][j] * x[j]).sum::<f64>() + 5.0));
+    let affine =
+        NODE_XI.map(|x| std::array::from_fn(|i| (0..3).map(|j| a[i][j] * x[j]).sum::<f64>() + 5.0));
     let det = nalgebra::Matrix3::from_fn(|i, j| a[i][j]).determinant();
-    assert_close(solid::quality::volume(&affine).unwrap(), 8.0 * det, 1e-14, 8.0, "affine");
+    assert_close(
+        solid::quality::volume(&affine).unwrap(),
+        8.0 * det,
+        1e-14,
+        8.0,
+        "affine",
+    );
     let warped = [
         [0.0, 0.0, 0.0],
         [2.1, 0.2, -0.1],
@@ -502,7 +563,13 @@ fn volumes_match_closed_forms() {
             }
         }
     }
-    assert_close(solid::quality::volume(&warped).unwrap(), exact, 1e-14, exact, "warped");
+    assert_close(
+        solid::quality::volume(&warped).unwrap(),
+        exact,
+        1e-14,
+        exact,
+        "warped",
+    );
     // axisymmetric: the section (0, 0), (R, 0), (r, h), (0, h) swept round the axis
     let (big, small, h) = (2.0, 0.5, 1.5);
     let section = [[0.0, 0.0], [big, 0.0], [small, h], [0.0, h]];
@@ -524,11 +591,29 @@ fn volumes_match_closed_forms() {
 #[test]
 fn quality_is_the_scaled_jacobian() {
     let rect = [[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 1.0]];
-    let six = [[0.0, 0.0], [2.0, 0.0], [4.0, 0.0], [4.0, 1.0], [2.0, 1.0], [0.0, 1.0]];
-    assert_eq!(quality::scaled_jacobian(Formulation::Q4, &rect).unwrap(), 1.0);
-    assert_eq!(quality::scaled_jacobian(Formulation::Hybrid, &six).unwrap(), 1.0);
+    let six = [
+        [0.0, 0.0],
+        [2.0, 0.0],
+        [4.0, 0.0],
+        [4.0, 1.0],
+        [2.0, 1.0],
+        [0.0, 1.0],
+    ];
+    assert_eq!(
+        quality::scaled_jacobian(Formulation::Q4, &rect).unwrap(),
+        1.0
+    );
+    assert_eq!(
+        quality::scaled_jacobian(Formulation::Hybrid, &six).unwrap(),
+        1.0
+    );
     let theta: f64 = 0.6;
-    let rhombus = [[0.0, 0.0], [1.0, 0.0], [1.0 + theta.cos(), theta.sin()], [theta.cos(), theta.sin()]];
+    let rhombus = [
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [1.0 + theta.cos(), theta.sin()],
+        [theta.cos(), theta.sin()],
+    ];
     let q = quality::scaled_jacobian(Formulation::PianSumihara, &rhombus).unwrap();
     assert_close(q, theta.sin(), 1e-15, 1.0, "rhombus");
     let (c, s) = (0.3f64.cos(), 0.3f64.sin());
@@ -543,10 +628,19 @@ fn quality_is_the_scaled_jacobian() {
     assert!(qk > 0.0 && qk < 0.01, "{qk}");
     let mut cw = rect;
     cw.reverse();
-    assert_eq!(quality::scaled_jacobian(Formulation::Q4, &cw), Err(ShapeError::Inverted));
+    assert_eq!(
+        quality::scaled_jacobian(Formulation::Q4, &cw),
+        Err(ShapeError::Inverted)
+    );
 
     let unit = NODE_XI;
-    assert_close(solid::quality::scaled_jacobian(&unit).unwrap(), 1.0, 1e-15, 1.0, "cube");
+    assert_close(
+        solid::quality::scaled_jacobian(&unit).unwrap(),
+        1.0,
+        1e-15,
+        1.0,
+        "cube",
+    );
     let sheared = NODE_XI.map(|[x, y, z]| [x + theta.cos() / theta.sin() * z, y, z]);
     let qs = solid::quality::scaled_jacobian(&sheared).unwrap();
     // the edges along zeta lean by (90 deg - theta): the corner's sine is sin(theta)
@@ -567,13 +661,21 @@ fn dofs(n: usize, seed: u64) -> Vec<f64> {
     let mut state = seed;
     (0..n)
         .map(|_| {
-            state = state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
             1e-3 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5)
         })
         .collect()
 }
 
-const NATURAL: [[f64; 2]; 5] = [[0.0, 0.0], [-1.0, -1.0], [0.577, -0.3], [1.0, 0.25], [-0.8, 1.0]];
+const NATURAL: [[f64; 2]; 5] = [
+    [0.0, 0.0],
+    [-1.0, -1.0],
+    [0.577, -0.3],
+    [1.0, 0.25],
+    [-0.8, 1.0],
+];
 
 /// The stress at natural coordinates equals the stress at the mapped physical point, for every
 /// plane and axisymmetric element kind and for the 6-node hybrid element (its map runs through
@@ -611,17 +713,29 @@ fn stress_at_natural_coordinates_is_the_stress_at_the_mapped_point() {
             let at_point = field.at_full(map.point(xi, eta));
             let scale = at_point.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             for c in 0..4 {
-                let what = format!("{f:?} {} nodes at ({xi}, {eta}), component {c}", coords.len());
+                let what = format!(
+                    "{f:?} {} nodes at ({xi}, {eta}), component {c}",
+                    coords.len()
+                );
                 assert_close(at_natural[c], at_point[c], 1e-10, scale, &what);
             }
         }
-        assert!(matches!(field.at_natural_point(1.0 + 1e-12, 0.0), Err(Error::InvalidInput(_))));
-        assert!(matches!(field.at_natural_point(0.0, f64::NAN), Err(Error::InvalidInput(_))));
+        assert!(matches!(
+            field.at_natural_point(1.0 + 1e-12, 0.0),
+            Err(Error::InvalidInput(_))
+        ));
+        assert!(matches!(
+            field.at_natural_point(0.0, f64::NAN),
+            Err(Error::InvalidInput(_))
+        ));
     }
     // a 5-node element with 3 true corners has no bilinear map
     let triangle = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [1.0, 1.0], [0.5, 0.5]];
-    let field = element::recover_stress(Formulation::Hybrid, &triangle, &plane(1.0), &dofs(10, 1)).unwrap();
-    assert!(matches!(field.at_natural_point(0.0, 0.0), Err(Error::InvalidInput(s)) if s.contains("3 true corners")));
+    let field =
+        element::recover_stress(Formulation::Hybrid, &triangle, &plane(1.0), &dofs(10, 1)).unwrap();
+    assert!(
+        matches!(field.at_natural_point(0.0, 0.0), Err(Error::InvalidInput(s)) if s.contains("3 true corners"))
+    );
 }
 
 /// Bricks: the stress at natural coordinates equals the stress at the mapped point.
@@ -644,7 +758,10 @@ fn brick_stress_at_natural_coordinates() {
         for xi in [[0.0, 0.0, 0.0], [-1.0, 1.0, -1.0], [0.3, -0.7, 0.9]] {
             let a = field.at_natural_point(xi).unwrap();
             let b = field.at(map.point(xi));
-            assert!((a - b).amax() <= 1e-10 * b.amax(), "{f:?} {xi:?}: {a} vs {b}");
+            assert!(
+                (a - b).amax() <= 1e-10 * b.amax(),
+                "{f:?} {xi:?}: {a} vs {b}"
+            );
         }
         assert!(field.at_natural_point([0.0, -1.5, 0.0]).is_err());
     }

@@ -153,7 +153,11 @@ pub fn check_natural(xi: &[f64]) -> crate::error::Result<()> {
         None => Ok(()),
         Some(v) => Err(crate::error::Error::InvalidInput(format!(
             "natural coordinates {xi:?}: {v} is {} [-1, 1]",
-            if v.is_finite() { "outside" } else { "not finite, not in" }
+            if v.is_finite() {
+                "outside"
+            } else {
+                "not finite, not in"
+            }
         ))),
     }
 }

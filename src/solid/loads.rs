@@ -22,8 +22,8 @@
 //! part is exact too; on a warped face it is the square root of a polynomial, and 2 x 2 Gauss
 //! approximates it (the error vanishes with the square of the warp).
 
-use super::geometry::{FACES, Trilinear, check_brick};
 use super::N_DOF;
+use super::geometry::{FACES, Trilinear, check_brick};
 use crate::error::{Error, Result};
 use nalgebra::SVector;
 
@@ -120,7 +120,8 @@ pub fn face_forces(
             let weights = weights(s, t);
             let (mut x, mut ds, mut dt) = ([0.0; 3], [0.0; 3], [0.0; 3]);
             for i in 0..3 {
-                x[i] = weights[0] * a[i] + weights[1] * b[i] + weights[2] * c[i] + weights[3] * d[i];
+                x[i] =
+                    weights[0] * a[i] + weights[1] * b[i] + weights[2] * c[i] + weights[3] * d[i];
                 ds[i] = 0.25 * ((b[i] - a[i]) * (1.0 - t) + (c[i] - d[i]) * (1.0 + t));
                 dt[i] = 0.25 * ((d[i] - a[i]) * (1.0 - s) + (c[i] - b[i]) * (1.0 + s));
             }
