@@ -57,8 +57,8 @@ impl EdgeLoad {
 
     /// Check that every value is finite.
     pub fn validate(&self) -> Result<()> {
-        let values = self.pressure.iter().chain(self.traction.iter().flatten());
-        if values.clone().all(|v| v.is_finite()) {
+        let mut values = self.pressure.iter().chain(self.traction.iter().flatten());
+        if values.all(|v| v.is_finite()) {
             Ok(())
         } else {
             Err(Error::InvalidInput(format!(

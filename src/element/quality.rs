@@ -13,6 +13,8 @@
 //!   and is positive for every element [`super::check_shape`] accepts (whose threshold is
 //!   `1e-6`). It does not measure the aspect ratio. A triangle (the hybrid element takes 3 true
 //!   corners) reaches at most `sin 60 = 0.866`.
+//!
+//! For whole meshes, [`crate::mesh::quality`] reports corner angles and aspect ratios.
 
 use super::geometry::{area_centroid, is_corner, turn_sine};
 use super::{Formulation, checked, checked_for};

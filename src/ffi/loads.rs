@@ -64,8 +64,8 @@ unsafe fn write_result(out: *mut f64, values: &[f64], what: &str) -> Result<(), 
 /// plane analyses, `2 pi r` in axisymmetry: full-circle forces), integrated exactly, as the
 /// element force vector: `2 * n_nodes` doubles in dof order `fx0 fy0 fx1 fy1 ...`, nonzero only
 /// at the edge's two nodes (`out`, `len`: at least `2 * n_nodes`; `HYCON_MAX_DOF` always
-/// suffices). Add it into the global load vector as a stiffness is assembled. A uniform
-/// pressure `p` on a straight edge of length `L` gives `-p n t L / 2` at each end.
+/// suffices). Add it into the global load vector as a stiffness is assembled. In plane
+/// analyses a uniform pressure `p` on an edge of length `L` gives `-p n t L / 2` at each end.
 ///
 /// Not to be confused with `hycon_element_edge_traction`, which recovers the traction
 /// `sigma n` of a solved element.
