@@ -369,6 +369,110 @@ static bool test_axisymmetric(void) {
     return true;
 }
 
+/* The load and check routines (hycon_element_edge_load, _volume, _quality, _stress_natural and
+ * the hycon_brick_ twins): NULL pointers, short outputs, out-of-range edges, faces and natural
+ * coordinates, NaN in loads, coordinates and natural coordinates, bad shapes; the outputs stay
+ * untouched on every error. */
+static bool test_load_routines(void) {
+    static const double q[8] = {0, 0, 1e-3, 0, 1e-3, 0, 0, 0};
+    static const double clockwise[8] = {0, 0, 0, 1, 1, 1, 1, 0};
+    static const double cube[24] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                    0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+    static const HyconSolidMaterial solid = {210e3, 0.3};
+    const double p2[2] = {1.0, 1.0}, p4[4] = {1.0, 1.0, 1.0, 1.0};
+    const double nan2[2] = {1.0, NAN}, nan4[4] = {0.0, 0.0, INFINITY, 0.0};
+    double f[HYCON_BRICK_DOF], v = sentinel, s[6], bad_cube[24], q24[24];
+    size_t i;
+    for (i = 0; i < 24; ++i) q24[i] = 0.0;
+    fill(f, HYCON_BRICK_DOF);
+    fill(s, 6);
+    /* edge loads */
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, NULL, &steel, 0, p2, NULL,
+                                             f, 8),
+                     HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, NULL, 0, p2, NULL,
+                                             f, 8),
+                     HYCON_ERROR_NULL_POINTER, "material"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, &steel, 0, p2,
+                                             NULL, NULL, 8),
+                     HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, &steel, 0, p2,
+                                             NULL, f, 7),
+                     HYCON_ERROR_BUFFER_TOO_SMALL, "8 needed"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 4, p2, NULL, f,
+                                             8),
+                     HYCON_ERROR_INVALID_ARGUMENT, "edge 4"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, nan2, NULL,
+                                             f, 8),
+                     HYCON_ERROR_INVALID_ARGUMENT, "pressure[1]"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, NULL, nan4,
+                                             f, 8),
+                     HYCON_ERROR_INVALID_ARGUMENT, "traction[2]"));
+    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, clockwise, &steel, 0, p2, NULL,
+                                             f, 8),
+                     HYCON_ERROR_BAD_ELEMENT, "inverted"));
+    EXPECT(status_is(hycon_element_edge_load(0, 4, square, &steel, 0, p2, NULL, f, 8),
+                     HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind"));
+    /* volume and quality */
+    EXPECT(status_is(hycon_element_volume(HYCON_ELEMENT_Q4, 4, square, &steel, NULL),
+                     HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(status_is(hycon_element_volume(HYCON_ELEMENT_Q4, 3, square, &steel, &v),
+                     HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
+    EXPECT(status_is(hycon_element_quality(HYCON_ELEMENT_Q4, 4, clockwise, &v),
+                     HYCON_ERROR_BAD_ELEMENT, "inverted"));
+    EXPECT(status_is(hycon_element_quality(HYCON_ELEMENT_Q4, 4, NULL, &v),
+                     HYCON_ERROR_NULL_POINTER, "coords"));
+    /* stress at natural coordinates */
+    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                                                  1.5, 0.0, s),
+                     HYCON_ERROR_INVALID_ARGUMENT, "outside [-1, 1]"));
+    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                                                  0.0, NAN, s),
+                     HYCON_ERROR_INVALID_ARGUMENT, "not finite"));
+    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, NULL,
+                                                  0.0, 0.0, s),
+                     HYCON_ERROR_NULL_POINTER, "q"));
+    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                                                  0.0, 0.0, NULL),
+                     HYCON_ERROR_NULL_POINTER, "out"));
+    /* bricks */
+    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, cube, 6, p4, NULL, f, 24),
+                     HYCON_ERROR_INVALID_ARGUMENT, "face 6"));
+    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, cube, 0, p4, NULL, f, 23),
+                     HYCON_ERROR_BUFFER_TOO_SMALL, "24 needed"));
+    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, cube, 0, nan4, NULL, f, 24),
+                     HYCON_ERROR_INVALID_ARGUMENT, "pressure[2]"));
+    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, NULL, 0, p4, NULL, f, 24),
+                     HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(status_is(hycon_brick_face_load(7, cube, 0, p4, NULL, f, 24),
+                     HYCON_ERROR_INVALID_ARGUMENT, "unknown brick kind"));
+    for (i = 0; i < 24; ++i) bad_cube[i] = cube[i];
+    bad_cube[5] = NAN;
+    EXPECT(status_is(hycon_brick_volume(HYCON_BRICK_H8, bad_cube, &v),
+                     HYCON_ERROR_INVALID_ARGUMENT, "coords[5]"));
+    EXPECT(status_is(hycon_brick_volume(HYCON_BRICK_H8, cube, NULL), HYCON_ERROR_NULL_POINTER,
+                     "out"));
+    bad_cube[5] = 0.0;
+    bad_cube[20] = -1.0; /* node 6 below the bottom face: Jacobian not positive */
+    EXPECT(status_is(hycon_brick_quality(HYCON_BRICK_HYBRID18, bad_cube, &v),
+                     HYCON_ERROR_BAD_ELEMENT, NULL));
+    EXPECT(status_is(hycon_brick_stress_natural(HYCON_BRICK_HYBRID18, cube, &solid, q24, 0.0,
+                                                -1.5, 0.0, s),
+                     HYCON_ERROR_INVALID_ARGUMENT, "outside [-1, 1]"));
+    EXPECT(status_is(hycon_brick_stress_natural(HYCON_BRICK_HYBRID18, cube, NULL, q24, 0.0, 0.0,
+                                                0.0, s),
+                     HYCON_ERROR_NULL_POINTER, "material"));
+    EXPECT(untouched(f, HYCON_BRICK_DOF) && untouched(s, 6) && v == sentinel);
+    /* the good calls write exactly their outputs */
+    EXPECT(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, p2, NULL, f,
+                                   HYCON_BRICK_DOF) == HYCON_OK);
+    EXPECT(f[7] == 0.0 && untouched(f + 8, HYCON_BRICK_DOF - 8));
+    EXPECT(hycon_brick_stress_natural(HYCON_BRICK_H8, cube, &solid, q24, 1.0, -1.0, 0.0, s) ==
+           HYCON_OK);
+    EXPECT(s[5] == 0.0);
+    return true;
+}
+
 int main(void) {
     static const struct {
         const char *name;
@@ -388,6 +492,7 @@ int main(void) {
         {"stress_routines", test_stress_routines},
         {"status_names", test_status_names},
         {"axisymmetric", test_axisymmetric},
+        {"load_routines", test_load_routines},
     };
     size_t i, n = sizeof tests / sizeof tests[0];
     int failures = 0;

@@ -243,6 +243,40 @@ int main() {
 
     if (u) condensed_hand_over(load, *u);
 
+    // the load and check helpers: a unit pressure on edge 1 of the unit square (1/2 each end,
+    // along -x), its area, quality 1; a cube's bottom face pushed by 2 (2 in all along +z)
+    {
+        const std::vector<double> square = {0, 0, 1, 0, 1, 1, 0, 1};
+        const HyconMaterial plane = {1000.0, 0.3, 1.0, HYCON_PLANE_STRAIN};
+        const double unit[2] = {1.0, 1.0};
+        const auto fe = hycon::element_edge_load(HYCON_ELEMENT_Q4, square, plane, 1, unit, {});
+        expect(fe && fe->size() == 8 && (*fe)[2] == -0.5 && (*fe)[4] == -0.5,
+               "element_edge_load");
+        const auto v = hycon::element_volume(HYCON_ELEMENT_Q4, square, plane);
+        const auto q = hycon::element_quality(HYCON_ELEMENT_HYBRID, square);
+        expect(v && *v == 1.0 && q && *q == 1.0, "element_volume, element_quality");
+        const double one[1] = {1.0};
+        const auto bad = hycon::element_edge_load(HYCON_ELEMENT_Q4, square, plane, 1, one, {});
+        expect(bad.code() == HYCON_ERROR_INVALID_ARGUMENT, "a pressure of 1 value is refused");
+        const std::array<double, 24> cube = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                             0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+        const double two[4] = {2.0, 2.0, 2.0, 2.0};
+        const auto fb = hycon::brick_face_load(HYCON_BRICK_H8, cube, 4, two, {});
+        double fz = 0.0;
+        for (std::size_t k = 0; fb && k < 8; ++k) fz += (*fb)[3 * k + 2];
+        expect(fb && std::fabs(fz - 2.0) < 1e-14, "brick_face_load");
+        const auto vb = hycon::brick_volume(HYCON_BRICK_H8, cube);
+        const auto qb = hycon::brick_quality(HYCON_BRICK_H8, cube);
+        expect(vb && std::fabs(*vb - 1.0) < 1e-14 && qb && std::fabs(*qb - 1.0) < 1e-14,
+               "brick_volume, brick_quality");
+        const std::array<double, 24> zero{};
+        const auto sb = hycon::brick_stress_natural(HYCON_BRICK_HYBRID18, cube, {1000.0, 0.3},
+                                                    zero, {0.5, -0.5, 1.0});
+        const auto s2 = hycon::element_stress_natural(HYCON_ELEMENT_HYBRID, square, plane,
+                                                      std::vector<double>(8, 0.0), 1.0, -1.0);
+        expect(sb && (*sb)[0] == 0.0 && s2 && s2->size() == 3, "stress at natural coordinates");
+    }
+
 #if defined(__cpp_exceptions)
     // a throwing solver must not unwind into hycon: the trampoline reports a failure
     {

@@ -7,6 +7,10 @@
  * - 3D element routines (hycon_brick_*): the 18-beta hybrid brick and the H8 brick for 3D
  *   hosts: shape check, stiffness, stress parameters, stress at points, face tractions
  *   (node and face numbering at HyconBrickKind).
+ * - Load and check routines for every element kind: consistent nodal forces of a pressure or
+ *   traction on an edge or face (hycon_element_edge_load, hycon_brick_face_load), volume and
+ *   scaled Jacobian (hycon_element_volume / _quality, hycon_brick_volume / _quality), stress at
+ *   natural coordinates (hycon_element_stress_natural, hycon_brick_stress_natural).
  * - Contact, two ways in, one analysis handle (HyconContact, hycon_contact_*):
  *   model API: describe the mesh in a HyconModel (hycon_model_*), hycon assembles and factors;
  *   host-assembly API: describe the contact polylines in a HyconHost (hycon_host_*) and give
@@ -520,6 +524,14 @@ typedef struct HyconConstraintEntry {
 // `{sxx, syy, szz, sxy, syz, szx}`.
 typedef int32_t HyconBrickKind;
 
+// Isotropic material of a 3D solid: no thickness, no plane idealisation.
+typedef struct HyconSolidMaterial {
+    // Young's modulus `E` (finite, in `[1e-100, 1e100]`).
+    double youngs;
+    // Poisson's ratio (`-1 < nu < 0.5`).
+    double poisson;
+} HyconSolidMaterial;
+
 // How strictly a brick's shape is judged, one of `HYCON_SHAPE_INTEGRATION_POINTS` (the default
 // of every brick routine) or `HYCON_SHAPE_STRICT` (`hycon_brick_shape`).
 //
@@ -550,14 +562,6 @@ typedef struct HyconShapeReport {
     // `HYCON_SHAPE_WARPED_FACE` (0: none).
     int32_t warnings;
 } HyconShapeReport;
-
-// Isotropic material of a 3D solid: no thickness, no plane idealisation.
-typedef struct HyconSolidMaterial {
-    // Young's modulus `E` (finite, in `[1e-100, 1e100]`).
-    double youngs;
-    // Poisson's ratio (`-1 < nu < 0.5`).
-    double poisson;
-} HyconSolidMaterial;
 
 
 
@@ -1395,6 +1399,183 @@ HyconStatus hycon_element_edge_traction(HyconElementKind kind,
                                         size_t edge,
                                         double s,
                                         double *out);
+
+// Consistent nodal forces of a distributed load on boundary edge `edge` of an element: the
+// edge runs from local node `edge` to local node `edge + 1` (cyclically, so `edge < n_nodes`;
+// on the 5- and 6-node elements each segment between consecutive nodes is an edge), and
+// carries a pressure and a traction, each linear between the edge's two nodes:
+//
+// * `pressure`: NULL (none) or 2 doubles, the pressure at the start and end node (force per
+//   area, **positive pushing into the body**, along the inward normal);
+// * `traction`: NULL (none) or 4 doubles `{tx0, ty0, tx1, ty1}`, the traction vector at the
+//   start and end node (force per area; in axisymmetry `{t_r, t_z}`).
+//
+// With `n` the outward unit normal and `q = t - p n`, `out` receives
+// `f_a = integral of N_a q m ds` (`N_a` the edge's linear shape functions; `m` the thickness in
+// plane analyses, `2 pi r` in axisymmetry: full-circle forces), integrated exactly, as the
+// element force vector: `2 * n_nodes` doubles in dof order `fx0 fy0 fx1 fy1 ...`, nonzero only
+// at the edge's two nodes (`out`, `len`: at least `2 * n_nodes`; `HYCON_MAX_DOF` always
+// suffices). Add it into the global load vector as a stiffness is assembled. In plane
+// analyses a uniform pressure `p` on an edge of length `L` gives `-p n t L / 2` at each end.
+//
+// Not to be confused with `hycon_element_edge_traction`, which recovers the traction
+// `sigma n` of a solved element.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, `edge`, non-finite
+// coordinate or load value), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`
+// (checked as for `hycon_element_stiffness`: an inverted element would turn the normal),
+// `HYCON_ERROR_BUFFER_TOO_SMALL`.
+//
+// # Safety
+// `coords` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or a
+// readable struct; `pressure` NULL or 2 readable doubles; `traction` NULL or 4 readable
+// doubles; `out` NULL or writable for `len` doubles.
+HyconStatus hycon_element_edge_load(HyconElementKind kind,
+                                    size_t n_nodes,
+                                    const double *coords,
+                                    const struct HyconMaterial *material,
+                                    size_t edge,
+                                    const double *pressure,
+                                    const double *traction,
+                                    double *out,
+                                    size_t len);
+
+// Volume of an element into `*out`: area times thickness in plane analyses, and with a
+// `HYCON_AXISYMMETRIC` material `integral of 2 pi r dA = 2 pi r_c A` (`r_c` the radius of the
+// area centroid), the volume of the whole ring. Exact. (The area itself: call with a plane
+// material of thickness 1.)
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT`,
+// `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (the element is checked as for
+// `hycon_element_stiffness`).
+//
+// # Safety
+// `coords` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or a
+// readable struct; `out` NULL or a writable double.
+HyconStatus hycon_element_volume(HyconElementKind kind,
+                                 size_t n_nodes,
+                                 const double *coords,
+                                 const struct HyconMaterial *material,
+                                 double *out);
+
+// Jacobian quality of an element into `*out`: the **scaled Jacobian**, the smallest over the
+// element's true corners of `det J / (|dx/dxi| |dx/deta|)`, which is the sine of the interior
+// angle there (mid-side nodes of the 5- and 6-node elements are not corners). 1 for a
+// rectangle, toward 0 as a corner angle nears 0 or 180 degrees; independent of size, position
+// and rotation; in `(0, 1]` for every element `hycon_element_check` accepts (so a host can flag
+// elements below its own threshold, e.g. 0.2). It does not measure the aspect ratio.
+//
+// Errors: as `hycon_element_check`, and `HYCON_ERROR_NULL_POINTER` for `out`.
+//
+// # Safety
+// `coords` must be NULL or point to `2 * n_nodes` readable doubles; `out` NULL or a writable
+// double.
+HyconStatus hycon_element_quality(HyconElementKind kind,
+                                  size_t n_nodes,
+                                  const double *coords,
+                                  double *out);
+
+// Stress at natural coordinates `(xi, eta)` in `[-1, 1]^2` of an element, recovered from its
+// nodal displacements `q` (`2 * n_nodes` doubles): `out` receives what `hycon_element_stress`
+// writes (`{sx, sy, txy}`, or 4 values `{sigma_r, sigma_z, tau_rz, sigma_theta}` in
+// axisymmetry).
+//
+// Natural coordinates are those of the element's bilinear map: node 0 at `(-1, -1)`, node 1 at
+// `(1, -1)`, node 2 at `(1, 1)`, node 3 at `(-1, 1)`; for the 5- and 6-node hybrid elements the
+// map of their 4 true corners in node order (the first corner at `(-1, -1)`), the mid-side nodes
+// taking no part. Q4, Pian-Sumihara and the axisymmetric elements evaluate their field there
+// (at a host's Gauss points, for instance); the plane hybrid element, whose field lives in
+// physical coordinates, gives the stress at the mapped point, the same as
+// `hycon_element_stress` there.
+//
+// Errors: as `hycon_element_stress`; `HYCON_ERROR_INVALID_ARGUMENT` also for `xi` or `eta`
+// outside `[-1, 1]` and for a 5- or 6-node element with only 3 true corners.
+//
+// # Safety
+// `coords` and `q` must be NULL or point to `2 * n_nodes` readable doubles; `material` NULL or
+// a readable struct; `out` NULL or writable for 3 doubles (4 in axisymmetry).
+HyconStatus hycon_element_stress_natural(HyconElementKind kind,
+                                         size_t n_nodes,
+                                         const double *coords,
+                                         const struct HyconMaterial *material,
+                                         const double *q,
+                                         double xi,
+                                         double eta,
+                                         double *out);
+
+// Consistent nodal forces of a distributed load on face `face` (0 to 5, numbering at
+// `HyconBrickKind`) of a brick, each value given at the face's 4 nodes in the face's node order
+// (face 0 is nodes `0 4 7 3`, ...) and interpolated bilinearly:
+//
+// * `pressure`: NULL (none) or 4 doubles (force per area, **positive pushing into the body**);
+// * `traction`: NULL (none) or 12 doubles `{tx, ty, tz}` per face node (force per area).
+//
+// With `n` the outward unit normal and `q = t - p n`, `out` receives
+// `f_k = integral over the face of N_k q dA` as the brick's force vector: 24 doubles in dof
+// order `fx0 fy0 fz0 fx1 ...`, nonzero only at the face's 4 nodes (`len >= 24`). 2 x 2 Gauss:
+// exact for the pressure on any face, warped or not (the forces of a uniform pressure sum to
+// `-p` times the face's projected area vector), and for the traction on plane faces; on a
+// warped face the traction part is approximated (error of the order of the warp squared).
+//
+// Not to be confused with `hycon_brick_face_traction`, which recovers the traction `sigma n`
+// of a solved brick.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (kind, `face`, non-finite
+// coordinate or load value), `HYCON_ERROR_BAD_ELEMENT` (the shape check of
+// `hycon_brick_check`), `HYCON_ERROR_BUFFER_TOO_SMALL`.
+//
+// # Safety
+// `coords` NULL or 24 readable doubles; `pressure` NULL or 4 readable doubles; `traction` NULL
+// or 12 readable doubles; `out` NULL or writable for `len` doubles.
+HyconStatus hycon_brick_face_load(HyconBrickKind kind,
+                                  const double *coords,
+                                  size_t face,
+                                  const double *pressure,
+                                  const double *traction,
+                                  double *out,
+                                  size_t len);
+
+// Volume of a brick into `*out` (`integral of det J`, exact for any trilinear brick).
+//
+// Errors: as `hycon_brick_check`, and `HYCON_ERROR_NULL_POINTER` for `out`.
+//
+// # Safety
+// `coords` NULL or 24 readable doubles; `out` NULL or a writable double.
+HyconStatus hycon_brick_volume(HyconBrickKind kind, const double *coords, double *out);
+
+// Jacobian quality of a brick into `*out`: the **scaled Jacobian**, the smallest over the 8
+// corners of `det J / (|J_1| |J_2| |J_3|)` (`J_a = dx/dxi_a`; at a corner, half its three
+// edges), the volume of the corner's edge parallelepiped over the product of its edge lengths.
+// 1 for a rectangular box, toward 0 as a corner flattens; independent of size, position and
+// rotation; in `(0, 1]` for every brick the strict shape policy accepts (so a host can flag
+// bricks below its own threshold, e.g. 0.2), at or below 0 where the default policy warns of a
+// non-positive corner Jacobian. It does not measure the aspect ratio.
+//
+// Errors: as `hycon_brick_check`, and `HYCON_ERROR_NULL_POINTER` for `out`.
+//
+// # Safety
+// `coords` NULL or 24 readable doubles; `out` NULL or a writable double.
+HyconStatus hycon_brick_quality(HyconBrickKind kind, const double *coords, double *out);
+
+// Stress `{sxx, syy, szz, sxy, syz, szx}` at natural coordinates `(xi, eta, zeta)` in
+// `[-1, 1]^3` of a brick (node 0 at `(-1, -1, -1)`, numbering at `HyconBrickKind`), from its
+// nodal displacements `q` (24 doubles): the hybrid brick's `P beta` or the H8's `D B q` there,
+// the same as `hycon_brick_stress` at the mapped physical point. `out` receives 6 doubles.
+//
+// Errors: as `hycon_brick_stress`; `HYCON_ERROR_INVALID_ARGUMENT` also for a natural
+// coordinate outside `[-1, 1]`.
+//
+// # Safety
+// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct; `out`
+// NULL or writable for 6 doubles.
+HyconStatus hycon_brick_stress_natural(HyconBrickKind kind,
+                                       const double *coords,
+                                       const struct HyconSolidMaterial *material,
+                                       const double *q,
+                                       double xi,
+                                       double eta,
+                                       double zeta,
+                                       double *out);
 
 // Check one brick's shape under the default policy (`HyconShapePolicy`): finite coordinates,
 // no coincident nodes, positive volume (node order as in the header's brick section),

@@ -341,6 +341,115 @@ inline Result<std::array<double, 3>> brick_face_traction(HyconBrickKind kind,
 }
 
 // ---------------------------------------------------------------------------------------------
+// Load and check routines (plane, axisymmetric, brick)
+
+// Consistent nodal forces of a load on edge `edge` (local node edge to edge + 1, cyclically):
+// `pressure` empty or 2 values (at the edge's two nodes, positive pushing into the body),
+// `traction` empty or 4 values {tx0, ty0, tx1, ty1}. The element force vector, 2n values in dof
+// order (nonzero at the edge's nodes only; full-circle forces in axisymmetry).
+inline Result<std::vector<double>> element_edge_load(HyconElementKind kind, View<double> coords,
+                                                     const HyconMaterial &material,
+                                                     std::size_t edge, View<double> pressure,
+                                                     View<double> traction) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    if (!pressure.empty() && pressure.size() != 2)
+        return detail::invalid("pressure must be empty or hold 2 values");
+    if (!traction.empty() && traction.size() != 4)
+        return detail::invalid("traction must be empty or hold 4 values");
+    std::vector<double> f(coords.size());
+    const Status s = Status::from(hycon_element_edge_load(kind, coords.size() / 2, coords.data(),
+                                                          &material, edge, pressure.data(),
+                                                          traction.data(), f.data(), f.size()));
+    if (!s.ok()) return s;
+    return f;
+}
+
+// Volume of an element: A t, or 2 pi r_c A in axisymmetry.
+inline Result<double> element_volume(HyconElementKind kind, View<double> coords,
+                                     const HyconMaterial &material) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    double v = 0.0;
+    const Status s = Status::from(
+        hycon_element_volume(kind, coords.size() / 2, coords.data(), &material, &v));
+    if (!s.ok()) return s;
+    return v;
+}
+
+// Scaled Jacobian of an element (smallest sine of a corner angle), in (0, 1].
+inline Result<double> element_quality(HyconElementKind kind, View<double> coords) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    double q = 0.0;
+    const Status s =
+        Status::from(hycon_element_quality(kind, coords.size() / 2, coords.data(), &q));
+    if (!s.ok()) return s;
+    return q;
+}
+
+// Stress at natural coordinates (xi, eta) in [-1, 1]^2 from the nodal displacements `q`: 3
+// values, 4 in axisymmetry.
+inline Result<std::vector<double>> element_stress_natural(HyconElementKind kind,
+                                                          View<double> coords,
+                                                          const HyconMaterial &material,
+                                                          View<double> q, double xi, double eta) {
+    if (coords.size() % 2 != 0) return detail::invalid("coords must hold x y pairs");
+    if (q.size() != coords.size()) return detail::invalid("q must hold 2 values per node");
+    std::size_t count = 0;
+    Status s = Status::from(hycon_element_stress_components(&material, &count));
+    if (!s.ok()) return s;
+    std::vector<double> out(count);
+    s = Status::from(hycon_element_stress_natural(kind, coords.size() / 2, coords.data(),
+                                                  &material, q.data(), xi, eta, out.data()));
+    if (!s.ok()) return s;
+    return out;
+}
+
+// Consistent nodal forces of a load on brick face `face` (0 to 5): `pressure` empty or 4 values
+// at the face's nodes (face order), `traction` empty or 12 values {tx, ty, tz} per face node.
+inline Result<std::array<double, 24>> brick_face_load(HyconBrickKind kind,
+                                                      const std::array<double, 24> &coords,
+                                                      std::size_t face, View<double> pressure,
+                                                      View<double> traction) {
+    if (!pressure.empty() && pressure.size() != 4)
+        return detail::invalid("pressure must be empty or hold 4 values");
+    if (!traction.empty() && traction.size() != 12)
+        return detail::invalid("traction must be empty or hold 12 values");
+    std::array<double, 24> f{};
+    const Status s = Status::from(hycon_brick_face_load(
+        kind, coords.data(), face, pressure.data(), traction.data(), f.data(), f.size()));
+    if (!s.ok()) return s;
+    return f;
+}
+
+// Volume of a brick.
+inline Result<double> brick_volume(HyconBrickKind kind, const std::array<double, 24> &coords) {
+    double v = 0.0;
+    const Status s = Status::from(hycon_brick_volume(kind, coords.data(), &v));
+    if (!s.ok()) return s;
+    return v;
+}
+
+// Scaled Jacobian of a brick (smallest over the corners), in (0, 1].
+inline Result<double> brick_quality(HyconBrickKind kind, const std::array<double, 24> &coords) {
+    double q = 0.0;
+    const Status s = Status::from(hycon_brick_quality(kind, coords.data(), &q));
+    if (!s.ok()) return s;
+    return q;
+}
+
+// Stress {sxx, syy, szz, sxy, syz, szx} at natural coordinates xi in [-1, 1]^3.
+inline Result<std::array<double, 6>> brick_stress_natural(HyconBrickKind kind,
+                                                          const std::array<double, 24> &coords,
+                                                          const HyconSolidMaterial &material,
+                                                          const std::array<double, 24> &q,
+                                                          const std::array<double, 3> &xi) {
+    std::array<double, 6> out{};
+    const Status s = Status::from(hycon_brick_stress_natural(
+        kind, coords.data(), &material, q.data(), xi[0], xi[1], xi[2], out.data()));
+    if (!s.ok()) return s;
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Callback adapters
 
 namespace detail {

@@ -6,7 +6,7 @@
 //! Modules, each owning one concept:
 //! * [`material`]: isotropic plane strain / plane stress material (`S`, `D`).
 //! * [`element`]: pure element kernels (hybrid 4/5/6-node, Pian-Sumihara, Q4): stiffness, stress
-//!   recovery, edge tractions.
+//!   recovery, edge tractions; edge loads, volume and quality for hosts.
 //! * [`mesh`]: mesh storage, graded 2:1 mesh generators with transition elements, quality report.
 //! * [`assembly`]: dof numbering and sparse assembly (pattern built once, values refilled).
 //! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.

@@ -8,7 +8,6 @@
 //! asked for.
 
 use crate::assembly::{DofMap, SparsePattern, dof, for_each_selected_element_matrix};
-use crate::element::geometry::GAUSS2_UNIT;
 use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
@@ -211,7 +210,8 @@ impl Model {
     /// line loads, `f_a = integral of N_a q m ds` with `N_a` the linear shape function of end
     /// `a`, `q` the linear traction and `m` the measure: in plane analyses `m = t` and
     /// `f_a = t L (2 q_a + q_b) / 6`, `f_b = t L (q_a + 2 q_b) / 6`; in axisymmetry `m = 2 pi r`
-    /// is linear too and two-point Gauss integrates the cubic integrand exactly.
+    /// is linear too and two-point Gauss integrates the cubic integrand exactly
+    /// ([`element::loads::segment_forces`]).
     pub fn external_forces(&self) -> Vec<f64> {
         let mut f = vec![0.0; 2 * self.mesh.n_nodes()];
         for &(node, force) in &self.nodal_forces {
@@ -227,7 +227,6 @@ impl Model {
         for l in &self.line_loads {
             let [a, b] = l.nodes;
             let (pa, pb) = (self.mesh.nodes[a], self.mesh.nodes[b]);
-            let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
             let material = if uniform {
                 self.materials.first()
             } else {
@@ -236,20 +235,10 @@ impl Model {
             let Some(material) = material else {
                 continue; // a node outside every element: `validate` reports the model
             };
+            let [fa, fb] = element::loads::segment_forces(pa, pb, material, l.load);
             for dir in 0..2 {
-                let (qa, qb) = (l.load[0][dir], l.load[1][dir]);
-                if material.analysis == Analysis::Axisymmetric {
-                    for (s, w) in GAUSS2_UNIT {
-                        let x = [pa[0] + s * (pb[0] - pa[0]), pa[1] + s * (pb[1] - pa[1])];
-                        let q = (qa + s * (qb - qa)) * material.measure(x) * w * len;
-                        f[dof(a, dir)] += (1.0 - s) * q;
-                        f[dof(b, dir)] += s * q;
-                    }
-                } else {
-                    let t = material.thickness;
-                    f[dof(a, dir)] += t * len * (2.0 * qa + qb) / 6.0;
-                    f[dof(b, dir)] += t * len * (qa + 2.0 * qb) / 6.0;
-                }
+                f[dof(a, dir)] += fa[dir];
+                f[dof(b, dir)] += fb[dir];
             }
         }
         f

@@ -422,5 +422,46 @@ fn shape_policy_warns_or_rejects() {
         };
         assert_eq!(status, HYCON_WARNING_SHAPE);
         assert_eq!(needed, f.n_beta());
+        // the load and check routines warn the same way, with their results written
+        let mut s = [0.0; 6];
+        // SAFETY: arrays of the documented sizes.
+        let status = unsafe {
+            hycon_brick_stress_natural(
+                kind,
+                FRONT.as_ptr(),
+                &m,
+                q.as_ptr(),
+                0.1,
+                -0.2,
+                0.3,
+                s.as_mut_ptr(),
+            )
+        };
+        assert_eq!(status, HYCON_WARNING_SHAPE);
+        assert!((s[0] - 2000.0).abs() < 1e-10 * 2000.0, "{s:?}");
+        let (mut volume, mut quality) = (0.0, 1.0);
+        // SAFETY: one writable double each.
+        let status = unsafe { hycon_brick_volume(kind, FRONT.as_ptr(), &mut volume) };
+        assert_eq!(status, HYCON_WARNING_SHAPE);
+        assert_eq!(volume, solid::quality::volume(&x).unwrap());
+        // SAFETY: as above.
+        let status = unsafe { hycon_brick_quality(kind, FRONT.as_ptr(), &mut quality) };
+        assert_eq!(status, HYCON_WARNING_SHAPE);
+        assert!(quality <= 0.0, "a non-positive corner Jacobian: {quality}");
+        let mut f24 = [0.0; 24];
+        // SAFETY: a uniform pressure of 4 values, 24 writable doubles.
+        let status = unsafe {
+            hycon_brick_face_load(
+                kind,
+                FRONT.as_ptr(),
+                0,
+                [1.0; 4].as_ptr(),
+                null(),
+                f24.as_mut_ptr(),
+                24,
+            )
+        };
+        assert_eq!(status, HYCON_WARNING_SHAPE, "{}", message());
+        assert!(message().starts_with("hycon_brick_face_load: warning: "));
     }
 }

@@ -107,7 +107,7 @@ pub fn check_polygon(coords: &[[f64; 2]], min_corners: usize) -> Result<PolygonI
     let mut corners = 0;
     for i in 0..n {
         let (a, b) = (edge((i + n - 1) % n), edge(i));
-        let sine = a.perp(&b) / (a.norm() * b.norm());
+        let sine = turn_sine(coords, i);
         if sine > STRAIGHT_SINE {
             corners += 1;
         } else if sine < -STRAIGHT_SINE {
@@ -127,6 +127,39 @@ pub fn check_polygon(coords: &[[f64; 2]], min_corners: usize) -> Result<PolygonI
         centroid,
         corners,
     })
+}
+
+/// Sine of the turn of a polygon's boundary at node `i`, `(e_in x e_out) / (|e_in| |e_out|)`
+/// with `e_in`, `e_out` the edges into and out of the node: the sine of the interior angle,
+/// positive at a convex corner of a counter-clockwise polygon.
+pub fn turn_sine(coords: &[[f64; 2]], i: usize) -> f64 {
+    let n = coords.len();
+    let (p, c, q) = (coords[(i + n - 1) % n], coords[i], coords[(i + 1) % n]);
+    let a = Vector2::new(c[0] - p[0], c[1] - p[1]);
+    let b = Vector2::new(q[0] - c[0], q[1] - c[1]);
+    a.perp(&b) / (a.norm() * b.norm())
+}
+
+/// Whether node `i` of a checked polygon is a true corner (not a node on a straight edge), by
+/// the rule of [`check_polygon`].
+pub fn is_corner(coords: &[[f64; 2]], i: usize) -> bool {
+    turn_sine(coords, i) > STRAIGHT_SINE
+}
+
+/// Check natural coordinates of a reference element (`[-1, 1]` in each direction; the plane
+/// quads and the brick): finite and inside, the ends included.
+pub fn check_natural(xi: &[f64]) -> crate::error::Result<()> {
+    match xi.iter().find(|v| !(-1.0..=1.0).contains(*v)) {
+        None => Ok(()),
+        Some(v) => Err(crate::error::Error::InvalidInput(format!(
+            "natural coordinates {xi:?}: {v} is {} [-1, 1]",
+            if v.is_finite() {
+                "outside"
+            } else {
+                "not finite, not in"
+            }
+        ))),
+    }
 }
 
 /// Signed area and area centroid of a polygon (shoelace formula, taken about the first node to

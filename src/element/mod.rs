@@ -29,12 +29,14 @@
 pub mod axisymmetric;
 pub mod geometry;
 pub mod hybrid;
+pub mod loads;
 pub mod pian_sumihara;
 pub mod q4;
+pub mod quality;
 
-use crate::error::ShapeError;
+use crate::error::{Error, ShapeError};
 use crate::material::{Analysis, Material};
-use geometry::{Bilinear, Frame, PolygonInfo};
+use geometry::{Bilinear, Frame, PolygonInfo, check_natural, is_corner};
 use nalgebra::{Cholesky, SMatrix, SVector};
 
 /// Largest number of nodes of one element.
@@ -305,6 +307,49 @@ impl StressField {
             }
             _ => self.with_out_of_plane(q4::stress(map, &self.material, q, xi, eta)),
         }
+    }
+
+    /// All four stress components (as [`StressField::at_full`]) at natural coordinates
+    /// `(xi, eta)` in `[-1, 1]^2` of the element's bilinear map `x(xi, eta)`: the map of its 4
+    /// nodes, and for the 5- and 6-node transition elements the map of its 4 true corners in
+    /// node order (the first corner at `(-1, -1)`, the next at `(1, -1)`, then `(1, 1)`,
+    /// `(-1, 1)`), the mid-side nodes not taking part. The plane hybrid element's field lives
+    /// in physical coordinates: there this is the stress at the mapped point `x(xi, eta)`; the
+    /// other elements evaluate their field at `(xi, eta)` directly.
+    ///
+    /// Errors: coordinates not finite or outside `[-1, 1]`; a transition element with 3 true
+    /// corners (a triangle has no bilinear map).
+    pub fn at_natural_point(&self, xi: f64, eta: f64) -> crate::error::Result<[f64; 4]> {
+        check_natural(&[xi, eta])?;
+        let map = self.natural_map()?;
+        if self.formulation == Formulation::Hybrid && !self.axisymmetric() {
+            return Ok(self.at_full(map.point(xi, eta)));
+        }
+        Ok(self.at_natural(&map, xi, eta))
+    }
+
+    /// The bilinear map of [`StressField::at_natural_point`].
+    fn natural_map(&self) -> crate::error::Result<Bilinear> {
+        let coords = &self.coords[..self.n_nodes];
+        if self.n_nodes == 4 {
+            return Ok(Bilinear::new(coords));
+        }
+        let mut corners = [[0.0; 2]; geometry::MAX_CORNERS];
+        let mut count = 0;
+        for i in (0..self.n_nodes).filter(|&i| is_corner(coords, i)) {
+            if let Some(c) = corners.get_mut(count) {
+                *c = coords[i];
+            }
+            count += 1;
+        }
+        if count != geometry::MAX_CORNERS {
+            return Err(Error::InvalidInput(format!(
+                "a {}-node element with {} true corners has no natural coordinates (the \
+                 bilinear map needs 4 corners)",
+                self.n_nodes, count
+            )));
+        }
+        Ok(Bilinear::new(&corners))
     }
 
     /// Stress at the element's centre: the area centroid for the plane hybrid element, where it

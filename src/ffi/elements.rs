@@ -5,16 +5,16 @@ use super::*;
 use crate::element;
 
 /// The inputs shared by the element functions, read and checked.
-struct ElementInput {
-    formulation: Formulation,
-    n: usize,
+pub(super) struct ElementInput {
+    pub(super) formulation: Formulation,
+    pub(super) n: usize,
     coords: [[f64; 2]; element::MAX_NODES],
 }
 
 impl ElementInput {
     /// # Safety
     /// If `coords` is non-null it must point to `2 n_nodes` readable doubles.
-    unsafe fn read(
+    pub(super) unsafe fn read(
         kind: HyconElementKind,
         n_nodes: usize,
         coords: *const f64,
@@ -34,7 +34,7 @@ impl ElementInput {
     ///
     /// # Safety
     /// As [`read`](Self::read); `material` NULL or a readable struct.
-    unsafe fn read_with(
+    pub(super) unsafe fn read_with(
         kind: HyconElementKind,
         n_nodes: usize,
         coords: *const f64,
@@ -44,7 +44,7 @@ impl ElementInput {
         unsafe { Ok((Self::read(kind, n_nodes, coords)?, read_material(material)?)) }
     }
 
-    fn coords(&self) -> &[[f64; 2]] {
+    pub(super) fn coords(&self) -> &[[f64; 2]] {
         &self.coords[..self.n]
     }
 
@@ -52,7 +52,7 @@ impl ElementInput {
     ///
     /// # Safety
     /// If `q` is non-null it must point to `2 n` readable doubles.
-    unsafe fn stress_field(
+    pub(super) unsafe fn stress_field(
         &self,
         material: &Material,
         q: *const f64,
@@ -70,7 +70,7 @@ impl ElementInput {
 }
 
 /// Stress components written by `hycon_element_stress`: 3, or 4 in axisymmetry.
-fn stress_components(material: &Material) -> usize {
+pub(super) fn stress_components(material: &Material) -> usize {
     if material.analysis == crate::material::Analysis::Axisymmetric {
         4
     } else {

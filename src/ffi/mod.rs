@@ -4,7 +4,8 @@
 //! enums, finite values, element shape), calls the safe Rust API, and copies the result into
 //! the caller's buffers. This module holds the conventions, status codes and the checked
 //! boundary; `elements` exports the element routines ([`crate::element`]), `solid` the 3D brick
-//! routines ([`crate::solid`]) and `contact` the contact analysis ([`crate::contact`]: model API
+//! routines ([`crate::solid`]), `loads` the load and check routines of both (nodal forces of
+//! edge and face loads, volume, quality, stress at natural coordinates) and `contact` the contact analysis ([`crate::contact`]: model API
 //! and host-assembly API). The header
 //! `include/hycon.h` is generated from the crate by cbindgen
 //! (`cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`, or
@@ -61,10 +62,12 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 mod contact;
 mod elements;
+mod loads;
 mod solid;
 
 pub use contact::*;
 pub use elements::*;
+pub use loads::*;
 pub use solid::*;
 
 // ------------------------------------------------------------------------------------------

@@ -75,7 +75,7 @@ const _: () = {
     assert!(HYCON_BRICK_MAX_BETA == solid::MAX_BETA);
 };
 
-fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
+pub(super) fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
     match kind {
         HYCON_BRICK_HYBRID18 => Ok(BrickFormulation::Hybrid18),
         HYCON_BRICK_H8 => Ok(BrickFormulation::H8),
@@ -89,7 +89,7 @@ fn brick_formulation(kind: HyconBrickKind) -> Result<BrickFormulation, Fail> {
 ///
 /// # Safety
 /// If `coords` is non-null it must point to 24 readable doubles.
-unsafe fn read_brick(coords: *const f64) -> Result<[[f64; 3]; N_NODES], Fail> {
+pub(super) unsafe fn read_brick(coords: *const f64) -> Result<[[f64; 3]; N_NODES], Fail> {
     let mut flat = [0.0; N_DOF];
     // SAFETY: forwarded contract.
     unsafe { read_doubles(coords, &mut flat, "coords")? };
@@ -113,7 +113,7 @@ unsafe fn read_solid_material(m: *const HyconSolidMaterial) -> Result<Isotropic,
 ///
 /// # Safety
 /// `coords` and `q` NULL or 24 readable doubles; `material` NULL or a readable struct.
-unsafe fn brick_stress(
+pub(super) unsafe fn brick_stress(
     kind: HyconBrickKind,
     coords: *const f64,
     material: *const HyconSolidMaterial,
@@ -243,7 +243,7 @@ fn shape_policy(policy: HyconShapePolicy) -> Result<ShapePolicy, Fail> {
 }
 
 /// `HYCON_WARNING_SHAPE` with the report's warnings in words, if it has any.
-fn shape_warning(report: &ShapeReport) -> Option<Warning> {
+pub(super) fn shape_warning(report: &ShapeReport) -> Option<Warning> {
     let words: Vec<String> = report.warnings().map(|w| w.to_string()).collect();
     (!words.is_empty()).then(|| Warning {
         status: HYCON_WARNING_SHAPE,

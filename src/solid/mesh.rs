@@ -8,7 +8,7 @@
 //! connectivity: beams that twist or curve, and distorted meshes for tests, are a block plus a
 //! map.
 
-use super::geometry::{FACES, Trilinear, face_normal};
+use super::geometry::{FACES, Trilinear};
 use super::{N_NODES, ShapePolicy, check_shape};
 use crate::error::{Error, Result, ShapeWarning};
 
@@ -201,8 +201,8 @@ impl SolidMesh {
 
     /// Consistent nodal forces of the traction field `traction(x, n)` (`x` the point, `n` the
     /// outward unit normal) on face `face` of brick `e`: `f_k = integral of N_k t dA` with 2x2
-    /// Gauss on the face (exact for a uniform traction on a plane face). Returns the 4 face nodes
-    /// (global ids, in face order) and their forces.
+    /// Gauss on the face ([`super::loads::face_forces`]: exact for a uniform traction on a plane
+    /// face). Returns the 4 face nodes (global ids, in face order) and their forces.
     pub fn face_forces(
         &self,
         e: usize,
@@ -210,39 +210,8 @@ impl SolidMesh {
         traction: impl Fn([f64; 3], [f64; 3]) -> [f64; 3],
     ) -> [(usize, [f64; 3]); 4] {
         let map = Trilinear::new(&self.element_coords(e));
+        let f = super::loads::face_forces(&map, face, |p| traction(p.x, p.normal));
         let ids = FACES[face].map(|k| self.elements[e][k]);
-        let [a, b, c, d] = FACES[face].map(|k| map.x[k]);
-        let mut out = ids.map(|n| (n, [0.0; 3]));
-        for (s, ws) in super::geometry::GAUSS2 {
-            for (t, wt) in super::geometry::GAUSS2 {
-                let w = [
-                    0.25 * (1.0 - s) * (1.0 - t),
-                    0.25 * (1.0 + s) * (1.0 - t),
-                    0.25 * (1.0 + s) * (1.0 + t),
-                    0.25 * (1.0 - s) * (1.0 + t),
-                ];
-                let mut x = [0.0; 3];
-                let mut ds = [0.0; 3];
-                let mut dt = [0.0; 3];
-                for i in 0..3 {
-                    x[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i] + w[3] * d[i];
-                    ds[i] = 0.25 * ((b[i] - a[i]) * (1.0 - t) + (c[i] - d[i]) * (1.0 + t));
-                    dt[i] = 0.25 * ((d[i] - a[i]) * (1.0 - s) + (c[i] - b[i]) * (1.0 + s));
-                }
-                let cross = [
-                    ds[1] * dt[2] - ds[2] * dt[1],
-                    ds[2] * dt[0] - ds[0] * dt[2],
-                    ds[0] * dt[1] - ds[1] * dt[0],
-                ];
-                let area = (cross[0].powi(2) + cross[1].powi(2) + cross[2].powi(2)).sqrt();
-                let tr = traction(x, face_normal(&map, face, s, t));
-                for (k, (_, f)) in out.iter_mut().enumerate() {
-                    for i in 0..3 {
-                        f[i] += w[k] * tr[i] * area * ws * wt;
-                    }
-                }
-            }
-        }
-        out
+        std::array::from_fn(|k| (ids[k], f[k]))
     }
 }

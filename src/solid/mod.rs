@@ -7,6 +7,8 @@
 //! * [`h8`]: the displacement brick, the baseline.
 //! * [`mesh`]: structured hexahedral meshes of blocks and beams, graded and distorted.
 //! * [`model`]: 3D dof map (3 dofs per node), sparse assembly, solve, stresses.
+//! * [`loads`]: consistent nodal forces of pressures and tractions on a face.
+//! * [`quality`]: volume and scaled Jacobian of a brick.
 //!
 //! # Kernels
 //! Element kernels are pure, allocation-free functions of the 8 node coordinates (node order in
@@ -21,8 +23,10 @@
 pub mod geometry;
 pub mod h8;
 pub mod hybrid18;
+pub mod loads;
 pub mod mesh;
 pub mod model;
+pub mod quality;
 
 use crate::error::{Error, Result, ShapeError};
 use crate::material::SCALE_RANGE;
@@ -215,6 +219,13 @@ impl BrickStress {
             BrickFormulation::Hybrid18 => hybrid18::stress(&self.frame, self.beta(), xi),
             BrickFormulation::H8 => h8::stress(&self.map, &self.material, self.q.as_slice(), xi),
         }
+    }
+
+    /// [`BrickStress::at_natural`] with the natural coordinates checked: finite and in
+    /// `[-1, 1]^3` (the ends included).
+    pub fn at_natural_point(&self, xi: [f64; 3]) -> Result<Voigt> {
+        crate::element::geometry::check_natural(&xi)?;
+        Ok(self.at_natural(xi))
     }
 
     /// Stress at the physical point `p` (inverse trilinear map by Newton's method; a point
