@@ -444,9 +444,9 @@ mod tests {
         assert!(rel(p.area, 0.5, 1.0) < 1e-15);
         // integral over [0.5, 1] of (1 - x) = 1/8, of x = 3/8; over [0, 1] in y: 1/2
         let exact = [0.0625, 0.1875, 0.1875, 0.0625];
-        for k in 0..4 {
-            assert!(rel(p.weight[k], exact[k], 1.0) < 1e-15);
-            assert!(rel(p.m[k].iter().sum(), exact[k], 1.0) < 1e-15);
+        for ((w, m), e) in p.weight.iter().zip(&p.m).zip(exact) {
+            assert!(rel(*w, e, 1.0) < 1e-15);
+            assert!(rel(m.iter().sum(), e, 1.0) < 1e-15);
         }
     }
 
