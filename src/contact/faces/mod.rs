@@ -32,7 +32,8 @@
 //!   the covered part of the plane code's `F^A`;
 //! * `M_ab = integral_Omega N_a(x^A) M_b(x^B) dA` (A x B): the plane code's `F^B`;
 //! * the weighted mismatch `R_a = integral_Omega N_a (x^A - x^B) dA` (a 3-vector, the plane
-//!   code's `R_C`; equal to `sum_b D_ab x^A_b - sum_b M_ab x^B_b` when the rule is exact) and
+//!   code's `R_C`; equal to `sum_b D_ab x^A_b - sum_b M_ab x^B_b` to round-off, the rule being
+//!   the same for all three) and
 //!   the weighted gap `g~_a = integral_Omega N_a g dA = -n_0 . R_a` (`R_a = -g~_a n_0`);
 //! * `w_a = integral_Omega N_a dA`, the covered part of the A node's weight (`sum_b M_ab = w_a`
 //!   up to round-off since the `M_b` sum to one: the discrete patch-test condition).

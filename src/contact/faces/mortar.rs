@@ -414,9 +414,19 @@ mod tests {
         for (a, exact) in [(general, false), (square, true)] {
             let mut worst: f64 = 0.0;
             for deg in [0.0, 15.0, 45.0] {
-                let b = rect([-2.0, 3.0], [-2.0, 3.0], 0.05, deg, [0.5, 0.5], false);
+                let mut b = rect([-2.0, 3.0], [-2.0, 3.0], 0.05, deg, [0.5, 0.5], false);
+                b[1][2] += 0.3; // B tilted: a gap varying over A
                 let p = face_pair(&a, &b).unwrap().unwrap();
                 let mass = face_mass(&a).unwrap();
+                // R_a = sum_b D_ab x^A_b - sum_b M_ab x^B_b
+                for (k, r) in p.mismatch.iter().enumerate() {
+                    for (c, rc) in r.iter().enumerate() {
+                        let dm: f64 = (0..4)
+                            .map(|j| p.d[k][j] * a[j][c] - p.m[k][j] * b[j][c])
+                            .sum();
+                        assert!((rc - dm).abs() < 1e-13 * mass.area, "R {k} {c}");
+                    }
+                }
                 for k in 0..4 {
                     let (sm, sd): (f64, f64) = (p.m[k].iter().sum(), p.d[k].iter().sum());
                     assert!(rel(sm, sd, mass.area) < 1e-12, "{deg}: {sm} vs {sd}");

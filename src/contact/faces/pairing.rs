@@ -41,8 +41,8 @@ fn cells(r: [[i64; 3]; 2]) -> impl Iterator<Item = [i64; 3]> {
 /// [`super::face_pair`] decides.
 ///
 /// # Errors
-/// [`Error::InvalidInput`] for a non-finite coordinate (naming the face) or a negative or
-/// non-finite `search`.
+/// [`Error::InvalidInput`] for a non-finite coordinate (naming the face), a negative or
+/// non-finite `search`, or faces that are all points with `search = 0`.
 pub fn pair_faces(a: &[Quad], b: &[Quad], search: f64) -> Result<Vec<(usize, usize)>> {
     if !(search.is_finite() && search >= 0.0) {
         return Err(Error::InvalidInput(format!(
@@ -72,6 +72,11 @@ pub fn pair_faces(a: &[Quad], b: &[Quad], search: f64) -> Result<Vec<(usize, usi
             / boxes.len() as f64
     };
     let cell = extent(&a_boxes).max(extent(&b_boxes)).max(search);
+    if !(cell > 0.0 && cell.is_finite()) {
+        return Err(Error::InvalidInput(
+            "every face is a point and the search distance is zero".into(),
+        ));
+    }
     let mut grid: HashMap<[i64; 3], Vec<usize>> = HashMap::new();
     for (j, bb) in b_boxes.iter().enumerate() {
         for c in cells(cell_range(bb, cell)) {
@@ -142,5 +147,7 @@ mod tests {
         b[1][2][0] = f64::INFINITY;
         assert!(pair_faces(&a, &b, 1.0).is_err());
         assert!(pair_faces(&a, &[], 1.0).unwrap().is_empty());
+        let point = [[[1.0; 3]; 4]];
+        assert!(pair_faces(&point, &point, 0.0).is_err());
     }
 }

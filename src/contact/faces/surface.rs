@@ -67,19 +67,19 @@ impl SurfaceMortar {
     pub fn new(a: SurfaceFaces, b: SurfaceFaces, search: f64) -> Result<Self> {
         let (qa, qb) = (a.corners("A")?, b.corners("B")?);
         let mut out = SurfaceMortar::default();
-        let at = |i: usize, e: Error| match e {
-            Error::InvalidInput(msg) => Error::InvalidInput(format!("A face {i}: {msg}")),
+        let at = |i: usize, e: Error, b: &str| match e {
+            Error::InvalidInput(msg) => Error::InvalidInput(format!("A face {i}{b}: {msg}")),
             other => other,
         };
         for (i, (quad, ids)) in qa.iter().zip(a.faces).enumerate() {
-            let mass = face_mass(quad).map_err(|e| at(i, e))?;
+            let mass = face_mass(quad).map_err(|e| at(i, e, ""))?;
             for (k, &node) in ids.iter().enumerate() {
                 *out.weight.entry(node).or_default() += mass.weight[k];
                 out.covered.entry(node).or_default();
             }
         }
         for (i, j) in pair_faces(&qa, &qb, search)? {
-            let pair = face_pair(&qa[i], &qb[j]).map_err(|e| at(i, e))?;
+            let pair = face_pair(&qa[i], &qb[j]).map_err(|e| at(i, e, &format!(", B face {j}")))?;
             let Some(pair) = pair else { continue };
             out.pairs += 1;
             let (ia, ib) = (a.faces[i], b.faces[j]);
