@@ -10,6 +10,7 @@
 //!   its results.
 
 pub mod bodies;
+pub mod faces;
 pub mod facing;
 pub mod friction;
 pub mod geometry;

@@ -1,0 +1,312 @@
+//! The mortar integrals assembled over two surfaces of brick faces, per node.
+
+use super::{Quad, face_mass, face_pair, pair_faces};
+use crate::error::{Error, Result};
+use std::collections::BTreeMap;
+
+/// Relative shortfall of a node's coverage below which it counts as fully covered.
+pub const COVERED: f64 = 1e-10;
+
+/// One side's contact surface: node positions and faces (4 node ids indexing `x`, in
+/// [`crate::solid::geometry::FACES`] order, outward by the right-hand rule).
+#[derive(Debug, Clone, Copy)]
+pub struct SurfaceFaces<'a> {
+    /// Positions of the nodes the faces use.
+    pub x: &'a [[f64; 3]],
+    /// The faces.
+    pub faces: &'a [[usize; 4]],
+}
+
+impl SurfaceFaces<'_> {
+    fn corners(&self, side: &str) -> Result<Vec<Quad>> {
+        let n = self.x.len();
+        self.faces
+            .iter()
+            .enumerate()
+            .map(|(i, f)| match f.iter().find(|&&k| k >= n) {
+                Some(k) => Err(Error::InvalidInput(format!(
+                    "{side} face {i} uses node {k} but there are {n} nodes"
+                ))),
+                None => Ok(f.map(|k| self.x[k])),
+            })
+            .collect()
+    }
+}
+
+/// The mortar integrals of surface A (the multiplier side) against surface B, by node ids:
+/// sums over the overlapping face pairs of [`face_pair`] and over A's faces of [`face_mass`].
+///
+/// `d` is summed over the **covered** parts (Puso and Laursen's segment-wise `D`), so that for
+/// a fully covered A node `sum_j d[k, j] = covered[k] = sum_b m[k, b]` to round-off whatever
+/// the faces' shapes: a uniform pressure `p` gives the same resultant on A (`sum_j d_kj p`) as
+/// B transmits (`sum_b m_kb p`), the discrete patch-test condition. For a fully covered node
+/// it equals the whole-support `F^A` of the plane code up to the triangle rule's error (none on
+/// flat parallelograms).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SurfaceMortar {
+    /// `D_kj` (A node, A node) over the covered parts.
+    pub d: BTreeMap<(usize, usize), f64>,
+    /// `M_kb` (A node, B node).
+    pub m: BTreeMap<(usize, usize), f64>,
+    /// `R_k = integral N_k (x^A - x^B) dA` per A node (covered parts).
+    pub mismatch: BTreeMap<usize, [f64; 3]>,
+    /// `integral N_k dA` over the whole support of A node `k`.
+    pub weight: BTreeMap<usize, f64>,
+    /// `integral N_k dA` over the covered part of its support.
+    pub covered: BTreeMap<usize, f64>,
+    /// The number of overlapping face pairs.
+    pub pairs: usize,
+}
+
+impl SurfaceMortar {
+    /// Assemble over the face pairs [`pair_faces`] finds within `search`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a node id out of range, or a failing face or face pair
+    /// (the message names the faces by their index in `a.faces`, `b.faces`).
+    pub fn new(a: SurfaceFaces, b: SurfaceFaces, search: f64) -> Result<Self> {
+        let (qa, qb) = (a.corners("A")?, b.corners("B")?);
+        let mut out = SurfaceMortar::default();
+        let at = |i: usize, e: Error, b: &str| match e {
+            Error::InvalidInput(msg) => Error::InvalidInput(format!("A face {i}{b}: {msg}")),
+            other => other,
+        };
+        for (i, (quad, ids)) in qa.iter().zip(a.faces).enumerate() {
+            let mass = face_mass(quad).map_err(|e| at(i, e, ""))?;
+            for (k, &node) in ids.iter().enumerate() {
+                *out.weight.entry(node).or_default() += mass.weight[k];
+                out.covered.entry(node).or_default();
+            }
+        }
+        for (i, j) in pair_faces(&qa, &qb, search)? {
+            let pair = face_pair(&qa[i], &qb[j]).map_err(|e| at(i, e, &format!(", B face {j}")))?;
+            let Some(pair) = pair else { continue };
+            out.pairs += 1;
+            let (ia, ib) = (a.faces[i], b.faces[j]);
+            for (k, &row) in ia.iter().enumerate() {
+                *out.covered.entry(row).or_default() += pair.weight[k];
+                let r = out.mismatch.entry(row).or_default();
+                for (rc, pc) in r.iter_mut().zip(pair.mismatch[k]) {
+                    *rc += pc;
+                }
+                for l in 0..4 {
+                    *out.d.entry((row, ia[l])).or_default() += pair.d[k][l];
+                    *out.m.entry((row, ib[l])).or_default() += pair.m[k][l];
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// Coverage of A node `k`: its covered weight over its whole weight, in `[0, 1]` to
+    /// round-off (0 for a node of no A face).
+    pub fn coverage(&self, k: usize) -> f64 {
+        match (self.covered.get(&k), self.weight.get(&k)) {
+            (Some(c), Some(w)) if *w > 0.0 => c / w,
+            _ => 0.0,
+        }
+    }
+
+    /// Check that every node of `nodes` (active A nodes) is fully covered, to [`COVERED`]: an
+    /// active node only partly over B would transmit its pressure over part of its support
+    /// (a silent hole in the contact zone).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the first node that is not.
+    pub fn require_covered(&self, nodes: &[usize]) -> Result<()> {
+        match nodes.iter().find(|&&k| self.coverage(k) < 1.0 - COVERED) {
+            Some(&k) => Err(Error::InvalidInput(format!(
+                "A node {k} is active but only {:.6} of its support is over B",
+                self.coverage(k)
+            ))),
+            None => Ok(()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solid::geometry::FACES;
+    use crate::solid::mesh::SolidMesh;
+
+    /// The boundary faces of `mesh` on the plane `z = z` (node ids of the mesh).
+    fn faces_at(mesh: &SolidMesh, z: f64) -> Vec<[usize; 4]> {
+        mesh.faces_where(|p| (p[2] - z).abs() < 1e-12)
+            .into_iter()
+            .map(|(e, f)| FACES[f].map(|k| mesh.elements[e][k]))
+            .collect()
+    }
+
+    /// A: the top of a one-layer block over `[0, 1]^2` of `na x na` bricks (`z` from 0 to 1).
+    /// B: the bottom of a one-layer block of `nb x nb` bricks over `[0, 1]^2` mapped by
+    /// `place` (then raised by the gap 0.01 to z = 1.01).
+    fn meshes(na: usize, nb: usize, place: impl Fn([f64; 2]) -> [f64; 2]) -> [SolidMesh; 2] {
+        let a = SolidMesh::uniform([1.0, 1.0, 1.0], [na, na, 1]);
+        let b = SolidMesh::uniform([1.0, 1.0, 1.0], [nb, nb, 1]).map(|p| {
+            let q = place([p[0], p[1]]);
+            [q[0], q[1], p[2] + 1.01]
+        });
+        [a, b]
+    }
+
+    fn mortar(m: &[SolidMesh; 2]) -> (SurfaceMortar, Vec<usize>) {
+        let (fa, fb) = (faces_at(&m[0], 1.0), faces_at(&m[1], 1.01));
+        let sa = SurfaceFaces {
+            x: &m[0].nodes,
+            faces: &fa,
+        };
+        let sb = SurfaceFaces {
+            x: &m[1].nodes,
+            faces: &fb,
+        };
+        let out = SurfaceMortar::new(sa, sb, 0.05).unwrap();
+        let nodes = m[0].nodes_where(|p| p[2] == 1.0);
+        (out, nodes)
+    }
+
+    /// The patch-test condition at every A node (all fully covered): `sum_b M_kb = sum_j D_kj`
+    /// to 1e-10, both equal to the whole-face weight; the weighted mismatch is the gap 0.01
+    /// times the weight along `-z`; A's total area is transmitted.
+    fn check_patch(what: &str, m: &SurfaceMortar, nodes: &[usize]) {
+        m.require_covered(nodes).unwrap();
+        let mut worst: f64 = 0.0;
+        for &k in nodes {
+            let w = m.weight[&k];
+            let sum_m: f64 = m.m.range((k, 0)..(k + 1, 0)).map(|(_, v)| v).sum();
+            let sum_d: f64 = m.d.range((k, 0)..(k + 1, 0)).map(|(_, v)| v).sum();
+            worst = worst.max((sum_m - sum_d).abs() / w);
+            assert!((sum_m - sum_d).abs() <= 1e-10 * w, "{what}: node {k}");
+            assert!((sum_d - w).abs() <= 1e-12 * w, "{what}: node {k}");
+            let r = m.mismatch[&k];
+            assert!((r[2] + 0.01 * w).abs() <= 1e-12 * w, "{what}: node {k} gap");
+            assert!(
+                r[0].abs().max(r[1].abs()) <= 1e-12 * w,
+                "{what}: node {k} tangential"
+            );
+        }
+        eprintln!(
+            "{what}: {} pairs, worst |sum M - sum D| / w = {worst:.1e}",
+            m.pairs
+        );
+        let total: f64 = m.m.values().sum();
+        assert!((total - 1.0).abs() < 1e-12, "{what}: total {total}");
+    }
+
+    /// B's nodal forces from a uniform pressure on A, `sum_k M_kb p`, against the consistent
+    /// forces of that pressure on B's own faces (B exactly under A).
+    fn check_b_forces(what: &str, m: &SurfaceMortar, b: &SolidMesh) {
+        let mut consistent: BTreeMap<usize, f64> = BTreeMap::new();
+        for (e, f) in b.faces_where(|p| (p[2] - 1.01).abs() < 1e-12) {
+            for (node, force) in b.face_forces(e, f, |_, n| n) {
+                *consistent.entry(node).or_default() -= force[2];
+            }
+        }
+        let mut transmitted: BTreeMap<usize, f64> = BTreeMap::new();
+        for (&(_, node), v) in &m.m {
+            *transmitted.entry(node).or_default() += v;
+        }
+        for (node, f) in &consistent {
+            let t = transmitted.get(node).copied().unwrap_or(0.0);
+            assert!(
+                (t - f).abs() <= 1e-10 * f,
+                "{what}: B node {node}: {t} vs {f}"
+            );
+        }
+    }
+
+    #[test]
+    fn conforming_finer_and_coarser_meshes_pass_the_patch_test() {
+        for (what, na, nb) in [("conforming", 3, 3), ("A finer", 4, 3), ("A coarser", 3, 5)] {
+            let m = meshes(na, nb, |p| p);
+            let (out, nodes) = mortar(&m);
+            check_patch(what, &out, &nodes);
+            check_b_forces(what, &out, &m[1]);
+        }
+    }
+
+    #[test]
+    fn offset_and_rotated_meshes_pass_the_patch_test() {
+        // B larger than A (1.6 times), offset by a third of its face in both directions, or
+        // rotated 15 and 45 degrees about the vertical through A's centre
+        let offset = |p: [f64; 2]| [1.6 * p[0] - 0.3 + 0.32 / 3.0, 1.6 * p[1] - 0.3 + 0.32 / 3.0];
+        let rotated = |deg: f64| {
+            move |p: [f64; 2]| {
+                let (sn, cs) = f64::to_radians(deg).sin_cos();
+                let (u, v) = (1.6 * (p[0] - 0.5), 1.6 * (p[1] - 0.5));
+                [0.5 + cs * u - sn * v, 0.5 + sn * u + cs * v]
+            }
+        };
+        for (na, nb) in [(4, 5), (6, 3)] {
+            let m = meshes(na, nb, offset);
+            let (out, nodes) = mortar(&m);
+            check_patch("offset", &out, &nodes);
+            for deg in [15.0, 45.0] {
+                let m = meshes(na, nb, rotated(deg));
+                let (out, nodes) = mortar(&m);
+                check_patch(&format!("rotated {deg}"), &out, &nodes);
+            }
+        }
+    }
+
+    #[test]
+    fn partly_covered_nodes_are_reported() {
+        // B covers x >= 0.5 of A (4 x 4 faces of width 0.25)
+        let m = meshes(4, 2, |p| [0.5 + p[0], 2.0 * p[1] - 0.5]);
+        let (out, nodes) = mortar(&m);
+        for &k in &nodes {
+            let x = m[0].nodes[k][0];
+            let expected = if x < 0.3 {
+                0.0
+            } else if x < 0.6 {
+                0.5
+            } else {
+                1.0
+            };
+            assert!(
+                (out.coverage(k) - expected).abs() < 1e-12,
+                "node at x = {x}"
+            );
+        }
+        let covered: Vec<usize> = nodes
+            .iter()
+            .copied()
+            .filter(|&k| m[0].nodes[k][0] > 0.6)
+            .collect();
+        out.require_covered(&covered).unwrap();
+        let half = nodes
+            .iter()
+            .copied()
+            .find(|&k| m[0].nodes[k][0] == 0.5)
+            .unwrap();
+        let err = out.require_covered(&[covered[0], half]).unwrap_err();
+        assert!(
+            err.to_string().contains(&format!("A node {half} ")),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn bad_node_ids_and_faces_are_errors() {
+        let x = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
+        let good = [[0, 1, 2, 3]];
+        let out_of_range = [[0, 1, 2, 4]];
+        let collapsed = [[0, 1, 1, 3]];
+        let s = |faces| SurfaceFaces { x: &x, faces };
+        let flipped = [[3, 2, 1, 0]];
+        assert!(SurfaceMortar::new(s(&good), s(&out_of_range), 0.1).is_err());
+        let err = SurfaceMortar::new(s(&collapsed), s(&flipped), 0.1).unwrap_err();
+        assert!(err.to_string().contains("A face 0"), "{err}");
+        assert_eq!(
+            SurfaceMortar::new(s(&good), s(&flipped), 0.1)
+                .unwrap()
+                .pairs,
+            1
+        );
+    }
+}
