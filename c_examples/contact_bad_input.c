@@ -2190,6 +2190,23 @@ static bool test_host_add_pair_bad_friction(void) {
     return ok;
 }
 
+/* The upper block's first element (it owns A's first segment) as a host hands it over. */
+static HyconStatus set_a_element(HyconHost *d, const HyconMaterial *material) {
+    static const size_t one[2] = {0, 4};
+    const size_t *nodes = conn + 4 * NEL;
+    double xy[8];
+    int64_t eqs[8];
+    size_t i;
+    for (i = 0; i < 4; ++i) {
+        xy[2 * i] = coords[2 * nodes[i]];
+        xy[2 * i + 1] = coords[2 * nodes[i] + 1];
+        eqs[2 * i] = host.eq[2 * nodes[i]];
+        eqs[2 * i + 1] = host.eq[2 * nodes[i] + 1];
+    }
+    return hycon_host_set_elements(d, HOST_NODES(nodes, xy, eqs, 4),
+                                   BLOCK(one, nodes, 1, NULL, HYCON_ELEMENT_Q4), material, 1);
+}
+
 /* hycon_host_set_condensed, hycon_host_contact_equations and a condensed analysis: every bad
  * hand-over refused with its own message, a good one runs, its increment takes the load image
  * only, and it has no displacement of its own. */
@@ -2409,23 +2426,6 @@ static bool test_host_set_elements_bad_input(void) {
     return ok;
 }
 
-/* The upper block's first element (it owns A's first segment) as a host hands it over. */
-static HyconStatus set_a_element(HyconHost *d, const HyconMaterial *material) {
-    static const size_t one[2] = {0, 4};
-    const size_t *nodes = conn + 4 * NEL;
-    double xy[8];
-    int64_t eqs[8];
-    size_t i;
-    for (i = 0; i < 4; ++i) {
-        xy[2 * i] = coords[2 * nodes[i]];
-        xy[2 * i + 1] = coords[2 * nodes[i] + 1];
-        eqs[2 * i] = host.eq[2 * nodes[i]];
-        eqs[2 * i + 1] = host.eq[2 * nodes[i] + 1];
-    }
-    return hycon_host_set_elements(d, HOST_NODES(nodes, xy, eqs, 4),
-                                   BLOCK(one, nodes, 1, NULL, HYCON_ELEMENT_Q4), material, 1);
-}
-
 /* Hand-overs that do not match are refused where they are handed over, the host unchanged:
  * elements along A of another kind or thickness than their pair (given after the pair, or
  * before it: then the pair is refused), a second pair of another plane kind, an axisymmetric
@@ -2444,13 +2444,13 @@ static bool test_host_hand_overs_match(void) {
     EXPECT(d != NULL);
     host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
     /* the pair is plane strain with t = 1 (make_host) */
-    ok = ok && STATUS_FN(set_a_element, (d, &stress), HYCON_ERROR_INVALID_ARGUMENT,
+    ok = ok && STATUS(set_a_element(d, &stress), HYCON_ERROR_INVALID_ARGUMENT,
                          "is plane stress, the contact pairs are plane strain");
-    ok = ok && STATUS_FN(set_a_element, (d, &axi), HYCON_ERROR_INVALID_ARGUMENT,
+    ok = ok && STATUS(set_a_element(d, &axi), HYCON_ERROR_INVALID_ARGUMENT,
                          "is axisymmetric, the contact pairs are plane strain");
-    ok = ok && STATUS_FN(set_a_element, (d, &thick), HYCON_ERROR_INVALID_ARGUMENT,
+    ok = ok && STATUS(set_a_element(d, &thick), HYCON_ERROR_INVALID_ARGUMENT,
                          "thickness 2), the pair is plane strain with thickness 1");
-    ok = ok && STATUS_FN(set_a_element, (d, &strain), HYCON_OK, NULL);
+    ok = ok && STATUS(set_a_element(d, &strain), HYCON_OK, NULL);
     /* plane stress beside plane strain */
     ok = ok && STATUS_FN(hycon_host_add_pair,
                          (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB),
@@ -2464,7 +2464,7 @@ static bool test_host_hand_overs_match(void) {
     ok = ok && index == 99;
     /* elements first, then a pair they do not match */
     EXPECT(hycon_host_new(&e, host.n) == HYCON_OK);
-    ok = ok && STATUS_FN(set_a_element, (e, &stress), HYCON_OK, NULL);
+    ok = ok && STATUS(set_a_element(e, &stress), HYCON_OK, NULL);
     ok = ok && STATUS_FN(hycon_host_add_pair,
                          (e, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB),
                           0.0, HYCON_PLANE_STRAIN, 1.0, &index),
