@@ -2190,6 +2190,23 @@ static bool test_host_add_pair_bad_friction(void) {
     return ok;
 }
 
+/* The upper block's first element (it owns A's first segment) as a host hands it over. */
+static HyconStatus set_a_element(HyconHost *d, const HyconMaterial *material) {
+    static const size_t one[2] = {0, 4};
+    const size_t *nodes = conn + 4 * NEL;
+    double xy[8];
+    int64_t eqs[8];
+    size_t i;
+    for (i = 0; i < 4; ++i) {
+        xy[2 * i] = coords[2 * nodes[i]];
+        xy[2 * i + 1] = coords[2 * nodes[i] + 1];
+        eqs[2 * i] = host.eq[2 * nodes[i]];
+        eqs[2 * i + 1] = host.eq[2 * nodes[i] + 1];
+    }
+    return hycon_host_set_elements(d, HOST_NODES(nodes, xy, eqs, 4),
+                                   BLOCK(one, nodes, 1, NULL, HYCON_ELEMENT_Q4), material, 1);
+}
+
 /* hycon_host_set_condensed, hycon_host_contact_equations and a condensed analysis: every bad
  * hand-over refused with its own message, a good one runs, its increment takes the load image
  * only, and it has no displacement of its own. */
@@ -2268,6 +2285,7 @@ static bool test_host_set_condensed_bad_input(void) {
                          "not positive definite");
     /* the good one: the increment takes the load image (m values), not the right-hand side */
     EXPECT(hycon_host_set_condensed(d, &good) == HYCON_OK);
+    EXPECT(set_a_element(d, &(HyconMaterial){1.0, 0.3, 1.0, HYCON_PLANE_STRAIN}) == HYCON_OK);
     EXPECT(hycon_contact_new_host(&c, d, NULL) == HYCON_OK);
     host_rhs(&host, rhs, PRESS, 0.0);
     ok = ok && STATUS_FN(hycon_contact_increment, (c, rhs, host.n, NULL, 0, NULL),
@@ -2277,6 +2295,16 @@ static bool test_host_set_condensed_bad_input(void) {
     ok = ok && STATUS(hycon_contact_increment(c, unit, m, NULL, 0, NULL), HYCON_OK, NULL);
     ok = ok && STATUS_FN(hycon_contact_displacement, (c, x, host.n, NULL),
                          HYCON_ERROR_INVALID_ARGUMENT, "recovers the displacement");
+    ok = ok && STATUS_FN(hycon_contact_displacement_increment, (c, x, host.n, NULL),
+                         HYCON_ERROR_INVALID_ARGUMENT, "recovers the displacement");
+    /* as documented: the displacement's size query gives n (not the load length m), the
+     * stress tractions' gives 2 n_a, and the tractions themselves fail, saying why */
+    ok = ok && STATUS_FN(hycon_contact_displacement, (c, NULL, 0, &small), HYCON_OK, NULL);
+    ok = ok && small == host.n;
+    ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, NULL, 0, &small), HYCON_OK, NULL);
+    ok = ok && small == 2 * NA;
+    ok = ok && STATUS_FN(hycon_contact_stress_tractions, (c, 0, x, 2 * NA, NULL),
+                         HYCON_ERROR_INVALID_ARGUMENT, "condensed operator recovers it itself");
     hycon_contact_free(c);
     hycon_host_free(d);
     return ok;
@@ -2394,6 +2422,63 @@ static bool test_host_set_elements_bad_input(void) {
 #undef BAD_EL
     ok = ok && STATUS(hycon_host_set_elements(d, HOST_NODES(ids, xy, eqs, 4), BLOCK(offsets, ccw, 1, NULL, HYCON_ELEMENT_Q4), &mat, 1),
                       HYCON_OK, NULL);
+    hycon_host_free(d);
+    return ok;
+}
+
+/* Hand-overs that do not match are refused where they are handed over, the host unchanged:
+ * elements along A of another kind or thickness than their pair (given after the pair, or
+ * before it: then the pair is refused), a second pair of another plane kind, an axisymmetric
+ * pair with a node at r < 0. */
+static bool test_host_hand_overs_match(void) {
+    const HyconMaterial strain = {1.0, 0.3, 1.0, HYCON_PLANE_STRAIN};
+    const HyconMaterial thick = {1.0, 0.3, 2.0, HYCON_PLANE_STRAIN};
+    const HyconMaterial stress = {1.0, 0.3, 1.0, HYCON_PLANE_STRESS};
+    const HyconMaterial axi = {1.0, 0.3, 1.0, HYCON_AXISYMMETRIC};
+    HyconHost *d = make_host(&host), *e = NULL;
+    double a_xy[2 * NA], b_xy[2 * NB];
+    int64_t a_eq[2 * NA], b_eq[2 * NB];
+    char part[64];
+    size_t index = 99;
+    bool ok = true;
+    EXPECT(d != NULL);
+    host_pair_arrays(&host, a_xy, a_eq, b_xy, b_eq);
+    /* the pair is plane strain with t = 1 (make_host) */
+    ok = ok && STATUS(set_a_element(d, &stress), HYCON_ERROR_INVALID_ARGUMENT,
+                         "is plane stress, the contact pairs are plane strain");
+    ok = ok && STATUS(set_a_element(d, &axi), HYCON_ERROR_INVALID_ARGUMENT,
+                         "is axisymmetric, the contact pairs are plane strain");
+    ok = ok && STATUS(set_a_element(d, &thick), HYCON_ERROR_INVALID_ARGUMENT,
+                         "thickness 2), the pair is plane strain with thickness 1");
+    ok = ok && STATUS(set_a_element(d, &strain), HYCON_OK, NULL);
+    /* plane stress beside plane strain */
+    ok = ok && STATUS_FN(hycon_host_add_pair,
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB),
+                          0.0, HYCON_PLANE_STRESS, 1.0, &index),
+                         HYCON_ERROR_INVALID_ARGUMENT, "contact pair 1: its analysis (plane stress)");
+    /* the same pair again with another thickness: its element (given above) disagrees */
+    ok = ok && STATUS_FN(hycon_host_add_pair,
+                         (d, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB),
+                          0.0, HYCON_PLANE_STRAIN, 3.0, &index),
+                         HYCON_ERROR_INVALID_ARGUMENT, "of contact pair 1) has material 0");
+    ok = ok && index == 99;
+    /* elements first, then a pair they do not match */
+    EXPECT(hycon_host_new(&e, host.n) == HYCON_OK);
+    ok = ok && STATUS(set_a_element(e, &stress), HYCON_OK, NULL);
+    ok = ok && STATUS_FN(hycon_host_add_pair,
+                         (e, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB),
+                          0.0, HYCON_PLANE_STRAIN, 1.0, &index),
+                         HYCON_ERROR_INVALID_ARGUMENT, "is plane stress, the contact pairs are");
+    ok = ok && index == 99;
+    /* axisymmetric: a B node at r = x < 0 */
+    b_xy[0] = -0.5;
+    snprintf(part, sizeof part, "B node %lu has r = x = -0.5", (unsigned long)pair_b[0]);
+    ok = ok && STATUS_FN(hycon_host_add_pair,
+                         (e, HOST_NODES(pair_a, a_xy, a_eq, NA), HOST_NODES(pair_b, b_xy, b_eq, NB),
+                          0.0, HYCON_AXISYMMETRIC, 1.0, &index),
+                         HYCON_ERROR_INVALID_ARGUMENT, part);
+    ok = ok && index == 99;
+    hycon_host_free(e);
     hycon_host_free(d);
     return ok;
 }
@@ -2664,6 +2749,7 @@ int main(void) {
         {"host_set_csr_bad_input", test_host_set_csr_bad_input},
         {"host_set_condensed_bad_input", test_host_set_condensed_bad_input},
         {"host_set_elements_bad_input", test_host_set_elements_bad_input},
+        {"host_hand_overs_match", test_host_hand_overs_match},
         {"host_set_solver_null", test_host_set_solver_null},
         {"contact_new_host_bad_input", test_contact_new_host_bad_input},
         {"contact_new_host_singular_csr", test_contact_new_host_singular_csr},

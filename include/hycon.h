@@ -871,6 +871,9 @@ HyconStatus hycon_contact_new(struct HyconContact **out,
 // Create a host description for a system of `n_equations` equations (the host's `K` after its
 // boundary conditions: symmetric positive definite).
 //
+// Errors: `HYCON_ERROR_NULL_POINTER` (`out`), `HYCON_ERROR_INVALID_ARGUMENT` (`n_equations`
+// zero or beyond what memory can address).
+//
 // # Safety
 // `out` must point to a writable pointer.
 HyconStatus hycon_host_new(struct HyconHost **out, size_t n_equations);
@@ -890,15 +893,20 @@ void hycon_host_free(struct HyconHost *host);
 // `HYCON_AXISYMMETRIC` and 1): the contact integrals are weighted by A's surface measure,
 // `t ds` or `2 pi r ds` (the full circle), so the tractions are pressures (force per area)
 // and the contact forces are in the units of the host's stiffness (which carries `t`, or is
-// over the full circle). All pairs of a host share one analysis kind. The pair's index is written to `index` unless it
-// is NULL. The arrays are copied; on an error the host is unchanged.
+// over the full circle). All pairs of a host share one analysis kind (plane strain and plane
+// stress are two kinds); their thicknesses may differ. Elements handed over
+// (`hycon_host_set_elements`, before or after this call) along a pair's A segments must be of
+// its kind and thickness. The pair's index is written to `index` unless it is NULL. The
+// arrays are copied; on an error the host is unchanged.
 //
 // Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
 // `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
 // fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
 // a bad friction coefficient, an unknown analysis kind or one other than the host's earlier
-// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), a misaligned
-// pointer).
+// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), in
+// axisymmetry a node of A or B at `r = x < 0` beyond round-off (1e-10 of its segments'
+// length), an element handed over on a segment of A whose material differs from `analysis`
+// or `thickness` (or any element of another kind), a misaligned pointer).
 //
 // # Safety
 // `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
@@ -944,6 +952,12 @@ HyconStatus hycon_host_set_pair_inside(struct HyconHost *host, size_t pair, cons
 // equations (`HYCON_FIXED` in `hycon_host_add_pair`) or kept as an identity row and column
 // (1 on the diagonal, 0 elsewhere and in the right-hand side): both work.
 //
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, an array with entries to read),
+// `HYCON_ERROR_INVALID_ARGUMENT` (an unknown `triangle`, `row_ptr` not starting at 0 or
+// decreasing, a column out of range, an entry in the wrong triangle, a non-finite value, a
+// full matrix that is not symmetric, a misaligned pointer). On an error the host is
+// unchanged.
+//
 // # Safety
 // `host` must be a live handle; the arrays NULL or of the stated lengths.
 HyconStatus hycon_host_set_csr(struct HyconHost *host,
@@ -959,6 +973,8 @@ HyconStatus hycon_host_set_csr(struct HyconHost *host,
 // earlier matrix or solver. This is the path for distributed hosts (e.g. PETSc over MPI): hycon
 // only ever asks for solves and works on the contact dofs, which every rank can hold.
 //
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `solve`).
+//
 // # Safety
 // `host` must be a live handle; `solve` a valid function as documented.
 HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, void *user_data);
@@ -970,11 +986,17 @@ HyconStatus hycon_host_set_solver(struct HyconHost *host, HyconSolveFn solve, vo
 // image**, `u0 = K^-1 rhs` at the `m` candidate equations in their order (`load_len = m`;
 // the host's solve of its total right-hand side), and after an increment the host recovers
 // its displacement with one solve of its own, `K u = rhs + forces` with
-// `hycon_contact_forces` (`hycon_contact_displacement` fails: hycon has no solver of `K`).
+// `hycon_contact_forces` (`hycon_contact_displacement`, `hycon_contact_displacement_increment`
+// and `hycon_contact_stress_tractions` fail: hycon has no solver of `K`, their size queries
+// answer as on the other paths).
 // `hycon_host_contact_equations` lists the equations the candidates must hold. Replaces an
 // earlier matrix or solver. Checked here: `size`, the kind, `m > 0`, candidates in range and
 // distinct, finite values, symmetry; at `hycon_contact_new_host`: every contact equation
 // among the candidates, a Schur complement positive definite (`HYCON_ERROR_SINGULAR`).
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `condensed`, its arrays),
+// `HYCON_ERROR_INVALID_ARGUMENT` (the checks above, a misaligned pointer). On an error the
+// host is unchanged.
 //
 // # Safety
 // `host` must be a live handle; `condensed` NULL or a readable `HyconCondensed` whose arrays
@@ -1003,12 +1025,18 @@ HyconStatus hycon_host_contact_equations(const struct HyconHost *host,
 // `hycon_model_new`: nodes, elements, materials. `nodes` is the node table of every node the
 // elements use (ids, reference coordinates, equations with `HYCON_FIXED` for a held dof);
 // `elements` the elements (hycon formulations, counter-clockwise, node ids of the host's
-// numbering); `materials` the `n_materials` materials the elements' indices refer to. Copied;
-// replaces earlier elements.
+// numbering); `materials` the `n_materials` materials the elements' indices refer to. Every
+// material the elements use is of the pairs' analysis kind, and an element on a segment of a
+// pair's A polyline has that pair's kind and thickness (`hycon_host_add_pair`; pairs added
+// later are checked against these elements there): the stresses would otherwise be of
+// another analysis, silently wrong. Copied; replaces earlier elements; on an error the host
+// is unchanged.
 //
 // Errors: `HYCON_ERROR_NULL_POINTER` (`host`, a view, an array of a view with a nonzero count,
 // `materials`), `HYCON_ERROR_INVALID_ARGUMENT` (counts, unknown ids, equations, non-finite
-// coordinates, misaligned pointers), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`.
+// coordinates, misaligned pointers, a material of another kind than the pairs', an element
+// along A of another kind or thickness than its pair), `HYCON_ERROR_INVALID_MATERIAL`,
+// `HYCON_ERROR_BAD_ELEMENT`.
 //
 // # Safety
 // `host` must be a live handle; `nodes` and `elements` NULL or readable views whose arrays
@@ -1020,13 +1048,18 @@ HyconStatus hycon_host_set_elements(struct HyconHost *host,
                                     size_t n_materials);
 
 // Start a contact analysis of a host's system: factor its CSR matrix once (the contact
-// equations last) and read the flexibility off the factor, or build the flexibility from
-// batched solves through its callback. `options` NULL means the defaults.
+// equations last) and read the flexibility off the factor, build the flexibility from
+// batched solves through its callback, or read it off its condensed operator. `options`
+// NULL means the defaults. The checks of `hycon_host_add_pair` and `hycon_host_set_elements`
+// (sections, radii, elements along A) hold already, as they were made there.
 //
-// Errors: `HYCON_ERROR_INVALID_ARGUMENT` (no pair, no stiffness or solver given, a pair
-// whose polylines run the same way or lie back to back, a pair whose surfaces touch wherever
-// they are near each other without `hycon_host_set_pair_inside`, bad options),
-// `HYCON_ERROR_SINGULAR` (the CSR matrix is not positive definite: a body not held),
+// Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `host`), `HYCON_ERROR_INVALID_ARGUMENT` (no
+// pair, no stiffness, solver or condensed operator given, a pair whose polylines run the same
+// way or lie back to back, a pair whose surfaces touch wherever they are near each other
+// without `hycon_host_set_pair_inside`, a contact equation that is no candidate of the
+// condensed operator, bad options), `HYCON_ERROR_SINGULAR` (the CSR matrix or the condensed
+// Schur complement is not positive definite: a body not held), `HYCON_ERROR_SOLVER` (the
+// factorization failed otherwise, or the options' backend is not built in),
 // `HYCON_ERROR_CALLBACK` (the solver failed or returned non-finite values).
 //
 // # Safety
@@ -1053,7 +1086,9 @@ void hycon_contact_free(struct HyconContact *contact);
 //   `prescribed` = (NULL, 0).
 //
 // `load_len` is the field length, which the size query of the displacement gives:
-// `hycon_contact_displacement(contact, NULL, 0, &load_len)`.
+// `hycon_contact_displacement(contact, NULL, 0, &load_len)`; on the condensed path it is
+// instead the candidate count `m` the host handed over (`HyconCondensed::m`), and that size
+// query gives the host's equation count (the length of `hycon_contact_forces`).
 //
 // An increment that fails for an iteration reason is taken again in sub-increments (the
 // automatic cutback, `HyconContactOptions::cutback_depth`); it is still one increment, and
@@ -1107,10 +1142,18 @@ HyconStatus hycon_contact_plate(const struct HyconContact *contact,
 // The displacement of the last converged increment (total, from the reference state; zero
 // before the first) over the field: all `2 * n_nodes` dofs of a model (`u0 v0 u1 v1 ...`), the
 // host's `n_equations` equations. The size query `(NULL, 0, &needed)` gives that length, which
-// is also the `load_len` of `hycon_contact_increment`. The first call after an increment
-// recovers the field (one solve; a host's solve callback is called), later calls copy it.
+// is also the `load_len` of `hycon_contact_increment` (except on the condensed path, whose
+// `load_len` is the candidate count `m`). The first call after an increment recovers the
+// field (one solve; a host's solve callback is called), later calls copy it.
 //
-// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+// A host that handed over its condensed operator (`hycon_host_set_condensed`) recovers its
+// displacement itself (`K u = rhs + hycon_contact_forces`): hycon has no solver of its `K`,
+// so there the size query still gives `n_equations` but a call with `out` fails with
+// `HYCON_ERROR_INVALID_ARGUMENT` (saying so), before the first increment too.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` on the condensed path, `HYCON_ERROR_CALLBACK` when a host's
+// solve fails or returns non-finite values, `HYCON_ERROR_SOLVER` when hycon's solve fails.
 //
 // # Safety
 // `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
@@ -1121,10 +1164,17 @@ HyconStatus hycon_contact_displacement(const struct HyconContact *contact,
                                        size_t *needed);
 
 // The displacement increment of the last converged increment (its total displacement minus
-// the previous increment's; the total at the first), same layout and length as
-// `hycon_contact_displacement`. One solve per call (not for the size query).
+// the previous increment's; the total at the first; zero before the first), same layout and
+// length as `hycon_contact_displacement`. One solve per call (not for the size query).
 //
-// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+// On the condensed path (`hycon_host_set_condensed`) as `hycon_contact_displacement`: the
+// size query gives `n_equations`, a call with `out` after an increment fails with
+// `HYCON_ERROR_INVALID_ARGUMENT` (hycon has no solver of `K`; the host solves
+// `K du = rhs - rhs_previous + forces - forces_previous` itself).
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` on the condensed path, `HYCON_ERROR_CALLBACK` when a host's
+// solve fails or returns non-finite values, `HYCON_ERROR_SOLVER` when hycon's solve fails.
 //
 // # Safety
 // `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
@@ -1181,14 +1231,19 @@ HyconStatus hycon_contact_b_node_results(const struct HyconContact *contact,
                                          size_t *needed);
 
 // Tractions way (a), from the element stresses of body A: `tn ts` per A node of `pair` in its
-// nodal frame, `2 * n_a` doubles (the size query gives `2 * n_a`). Model API; host API when
-// the host handed over the elements along A (`hycon_host_set_elements`, else
-// `HYCON_ERROR_INVALID_ARGUMENT`, not for the size query). Costs the displacement recovery
-// (one solve) if not done yet.
+// nodal frame, `2 * n_a` doubles (the size query gives `2 * n_a` on every path). Model API;
+// host API when the host handed over the elements along A (`hycon_host_set_elements`) and
+// its stiffness as a CSR matrix or a solver: the stresses come from the displacement, which
+// costs its recovery (one solve) if not done yet. A host that handed over its condensed
+// operator instead recovers the displacement itself, so hycon has none to take the stresses
+// of: there a call with `out` fails with `HYCON_ERROR_INVALID_ARGUMENT` (the message says
+// so); the multipliers (`hycon_contact_node_results`) are the tractions on that path.
 //
 // Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
-// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range, `HYCON_ERROR_SOLVER` when the
-// displacement or the stresses overflow (never non-finite values).
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range, no elements handed over, the
+// condensed path, an A node or segment that is no node or edge of the elements handed over,
+// `HYCON_ERROR_SOLVER` when the displacement or the stresses overflow (never non-finite
+// values), `HYCON_ERROR_CALLBACK` when a host's solve fails.
 //
 // # Safety
 // `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or

@@ -608,7 +608,9 @@ class Host {
 
     // Add a pair: per polyline, node ids, 2 n reference coordinates and 2 n equation numbers
     // (HYCON_FIXED for a dof held at zero); the A side's analysis kind and thickness (the
-    // contact tractions are pressures on A's surface measure). Returns the pair's index.
+    // contact tractions are pressures on A's surface measure; one kind per host, elements
+    // along A of the pair's kind and thickness, no axisymmetric node at r < 0: see
+    // hycon_host_add_pair). Returns the pair's index.
     Result<std::size_t> add_pair(View<std::size_t> a_nodes, View<double> a_coords,
                                  View<std::int64_t> a_equations, View<std::size_t> b_nodes,
                                  View<double> b_coords, View<std::int64_t> b_equations,
@@ -645,7 +647,8 @@ class Host {
     }
 
     // The elements of body A along its contact polylines (hycon formulations, counter-clockwise,
-    // host node ids), so that Contact::stress_tractions works on this host. The order of
+    // host node ids), so that Contact::stress_tractions works on this host (not on the
+    // condensed path); an element along A has its pair's kind and thickness. The order of
     // hycon_host_set_elements (and of Model::create): nodes, elements, materials. The node
     // table gives each node's id, coordinates (2 each) and equations (2 each, HYCON_FIXED if
     // held).
@@ -693,7 +696,8 @@ class Host {
     // Schur complement (HYCON_CONDENSED_STIFFNESS) or the flexibility block
     // (HYCON_CONDENSED_FLEXIBILITY), m x m column-major in the order of `equations`. Increments
     // then take the load image u0 = K^-1 rhs at the candidates; the host recovers its
-    // displacement with Contact::forces (see hycon_host_set_condensed).
+    // displacement with Contact::forces (see hycon_host_set_condensed): Contact::displacement
+    // and Contact::stress_tractions fail on this path.
     Status set_condensed(HyconCondensedKind kind, View<std::int64_t> equations,
                          View<double> matrix) {
         if (matrix.size() != equations.size() * equations.size())
@@ -863,7 +867,8 @@ class Contact {
             });
     }
 
-    // tn ts per A node of `pair` from body A's element stresses, 2 n_a values.
+    // tn ts per A node of `pair` from body A's element stresses, 2 n_a values (a host: with
+    // its elements handed over, not on the condensed path).
     Result<std::vector<double>> stress_tractions(std::size_t pair) const {
         return fetch<double>([this, pair](double *out, std::size_t n, std::size_t *needed) {
             return hycon_contact_stress_tractions(get(), pair, out, n, needed);

@@ -750,7 +750,10 @@ fn host_pair_with(
         }),
         elements,
         a_inside,
-        measures: vec![hycon::contact::geometry::SurfaceMeasure::default()],
+        sections: vec![hycon::contact::handover::Section::new(
+            Analysis::PlaneStrain,
+            1.0,
+        )?],
     };
     let (mut a, mut b): (Vec<usize>, Vec<usize>) = ((0..5).collect(), (5..10).collect());
     if reversed {

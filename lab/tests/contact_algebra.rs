@@ -208,7 +208,7 @@ fn callback_path_matches_the_reference_with_fewer_solves() {
             stiffness: HostStiffness::Solver(Box::new(OwnSolver { factor, columns })),
             elements: None,
             a_inside: Vec::new(),
-            measures: vec![pair.measure_on(model).unwrap()],
+            sections: vec![pair.section_on(model).unwrap()],
         };
         ContactAnalysis::host(system, vec![pair.clone()], ContactOptions::default()).unwrap()
     };

@@ -342,12 +342,13 @@ pub struct HostSystem {
     /// centroid is then taken). A point given is checked to lie on A's body side of its
     /// polyline (see [`check_a_inside`](crate::contact::iteration::check_a_inside)).
     pub a_inside: Vec<Option<[f64; 2]>>,
-    /// The surface measure of each contact pair's A side, in the order of the pairs (its
-    /// thickness in plane analysis, `2 pi r` in axisymmetry; all pairs of one kind): the
-    /// contact integrals are weighted by it, so that the tractions are pressures and the
-    /// contact forces are in the units of the host's stiffness (per thickness, or over the full
-    /// circle).
-    pub measures: Vec<crate::contact::geometry::SurfaceMeasure>,
+    /// The section of each contact pair's A side, in the order of the pairs: its analysis kind
+    /// (all pairs of one kind) and thickness. The contact integrals are weighted by its
+    /// measure (the thickness in plane analysis, `2 pi r` in axisymmetry), so that the
+    /// tractions are pressures and the contact forces are in the units of the host's stiffness
+    /// (per thickness, or over the full circle); the [`elements`](Self::elements) along A are
+    /// of their pair's section (checked, see [`handover`](crate::contact::handover)).
+    pub sections: Vec<crate::contact::handover::Section>,
 }
 
 /// Elements of a host along its A polylines (those owning the A segments), with hycon's element

@@ -701,6 +701,12 @@ fn axis_round_off(ids: &[usize], k: usize, x: &[[f64; 2]]) -> f64 {
     AXIS_ROUND_OFF * left.max(right)
 }
 
+/// The first node of contact polyline `ids` at `r = x < 0` beyond round-off of its segments'
+/// length ([`AXIS_ROUND_OFF`]), if any: in axisymmetry no node lies there.
+pub(crate) fn below_axis(ids: &[usize], x: &[[f64; 2]]) -> Option<usize> {
+    (0..ids.len()).find(|&k| x[ids[k]][0] < -axis_round_off(ids, k, x))
+}
+
 /// Whether node `k` of contact polyline `ids` lies on the axis of an axisymmetric analysis
 /// (`|r|` within round-off of its segments' length, [`AXIS_ROUND_OFF`]).
 pub(crate) fn on_axis(ids: &[usize], k: usize, x: &[[f64; 2]]) -> bool {
@@ -793,7 +799,7 @@ fn evaluate_impl(
     check_polyline("A", a, x)?;
     check_polyline("B", b, x)?;
     if measure == SurfaceMeasure::Axisymmetric
-        && let Some(k) = (0..a.len()).find(|&k| x[a[k]][0] < -axis_round_off(a, k, x))
+        && let Some(k) = below_axis(a, x)
     {
         return Err(Error::InvalidInput(format!(
             "contact polyline A: node {} has r = {} < 0 beyond round-off of its segments' \

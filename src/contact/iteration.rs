@@ -62,10 +62,11 @@
 //! increment's motion. Any other cycle stops the increment with an error naming the node; so
 //! does the iteration cap. A failed increment leaves the last converged state untouched.
 
-use super::bodies::{Bodies, HostSystem};
+use super::bodies::{Bodies, HostElements, HostSystem};
 use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{self, ContactSurface, SurfaceMeasure};
+use super::handover::{self, Section};
 use crate::assembly::dof;
 use crate::element::geometry::edge_normal;
 use crate::error::{ContactError, Error, Result};
@@ -156,16 +157,25 @@ impl ContactPair {
         self.friction_law().map(drop)
     }
 
-    /// The surface measure of the pair on `model` ([`SurfaceMeasure::of`] the material of the
-    /// elements that own A's segments): the contact integrals are weighted by it, so that the
-    /// multipliers are pressures. Call after [`check_on`](Self::check_on).
+    /// The surface measure of the pair on `model`: its [`section_on`](Self::section_on)'s.
+    /// The contact integrals are weighted by it, so that the multipliers are pressures. Call
+    /// after [`check_on`](Self::check_on).
+    ///
+    /// # Errors
+    /// As [`section_on`](Self::section_on).
+    pub fn measure_on(&self, model: &Model) -> Result<SurfaceMeasure> {
+        self.section_on(model)?.measure()
+    }
+
+    /// The section of the pair on `model` ([`Section::of`] the material of the elements that
+    /// own A's segments). Call after [`check_on`](Self::check_on).
     ///
     /// # Errors
     /// [`Error::InvalidInput`] when A's segments lie on elements of different thicknesses or
-    /// kinds (the pair's tractions would have no one measure).
-    pub fn measure_on(&self, model: &Model) -> Result<SurfaceMeasure> {
+    /// kinds (the pair's tractions would have no one measure), or A has no segment.
+    pub fn section_on(&self, model: &Model) -> Result<Section> {
         let edges = model.mesh.directed_edges();
-        let mut measure: Option<SurfaceMeasure> = None;
+        let mut section: Option<Section> = None;
         for w in self.a.windows(2) {
             let Some(&(e, _)) = edges.get(&(w[0], w[1])) else {
                 return Err(Error::InvalidInput(format!(
@@ -174,22 +184,22 @@ impl ContactPair {
                 )));
             };
             let material = model.mesh.element_material[e];
-            let m = SurfaceMeasure::of(model.materials.get(material).ok_or_else(|| {
+            let s = Section::of(model.materials.get(material).ok_or_else(|| {
                 Error::InvalidInput(format!("element {e} has no material {material}"))
             })?);
-            match measure {
-                Some(first) if first != m => {
+            match section {
+                Some(first) if first != s => {
                     return Err(Error::InvalidInput(format!(
                         "the A polyline lies on elements of different measures ({first:?} and \
-                         {m:?} at segment {} -> {}): a pair's tractions are per one measure; \
+                         {s:?} at segment {} -> {}): a pair's tractions are per one measure; \
                          split the pair",
                         w[0], w[1]
                     )));
                 }
-                _ => measure = Some(m),
+                _ => section = Some(s),
             }
         }
-        Ok(measure.unwrap_or_default())
+        section.ok_or_else(|| Error::InvalidInput("the A polyline has no segment".into()))
     }
 
     /// The friction law between the pair's surfaces: Coulomb with coefficient
@@ -795,15 +805,15 @@ impl ContactAnalysis {
                 given.or_else(beside)
             })
             .collect();
-        let measures = std::mem::take(&mut system.measures);
-        check_measures(&measures, pairs.len())?;
+        let sections = std::mem::take(&mut system.sections);
+        let measures = host_measures(&sections, &pairs, system.elements.as_ref())?;
         let clock = std::time::Instant::now();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::host(system, options.backend, lazy, options.threads)?;
         let seconds = clock.elapsed().as_secs_f64();
         let n_nodes = bodies.positions().len();
         check_host_nodes(&pairs, &bodies)?;
-        let pairs = pairs
+        let pairs: Vec<ContactPair> = pairs
             .into_iter()
             .map(|p| {
                 let local = |ids: &[usize]| ids.iter().filter_map(|&n| bodies.local(n)).collect();
@@ -814,6 +824,7 @@ impl ContactAnalysis {
                 }
             })
             .collect();
+        check_host_radii(&pairs, &sections, &bodies)?;
         let dofs = (0..2 * n_nodes).collect();
         let mut analysis = Self::setup(bodies, pairs, measures, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
@@ -1564,25 +1575,29 @@ enum Side {
     Inside(Option<[f64; 2]>),
 }
 
-/// One valid measure per pair, all of one kind (plane or axisymmetric).
-fn check_measures(measures: &[SurfaceMeasure], pairs: usize) -> Result<()> {
-    if measures.len() != pairs {
-        return Err(Error::InvalidInput(format!(
-            "{} surface measures for {pairs} contact pairs (one per pair)",
-            measures.len()
-        )));
+/// A host's pair measures from its `sections` (one per pair, valid, of one kind), checked
+/// against the `elements` along A if it gave them (see [`handover`]).
+fn host_measures(
+    sections: &[Section],
+    pairs: &[ContactPair],
+    elements: Option<&HostElements>,
+) -> Result<Vec<SurfaceMeasure>> {
+    handover::check_sections(sections, pairs.len())?;
+    if let Some(elements) = elements {
+        handover::check_element_sections(elements, pairs, sections)?;
     }
-    for (i, m) in measures.iter().enumerate() {
-        m.validate().map_err(|e| in_pair(i, e))?;
-        if !m.same_kind(&measures[0]) {
-            return Err(in_pair(
-                i,
-                Error::InvalidInput(format!(
-                    "its surface measure {m:?} is not of the kind of pair 0's ({:?}): all \
-                     pairs of an analysis share one analysis kind",
-                    measures[0]
-                )),
-            ));
+    sections.iter().map(Section::measure).collect()
+}
+
+/// In axisymmetry, no node of a host's pairs (local ids) at `r < 0` (see
+/// [`handover::check_radii`]).
+fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies) -> Result<()> {
+    let x = bodies.positions();
+    for (i, (pair, section)) in pairs.iter().zip(sections).enumerate() {
+        for (side, ids) in [("A", &pair.a), ("B", &pair.b)] {
+            let points: Vec<[f64; 2]> = ids.iter().map(|&n| x[n]).collect();
+            let external: Vec<usize> = ids.iter().map(|&n| bodies.external(n)).collect();
+            handover::check_radii(section, side, &external, &points).map_err(|e| in_pair(i, e))?;
         }
     }
     Ok(())
@@ -1691,7 +1706,7 @@ fn finite(u: &[f64], increment: usize, iteration: usize) -> Result<()> {
 }
 
 /// Name the pair in an error of its checks.
-fn in_pair(i: usize, e: Error) -> Error {
+pub(crate) fn in_pair(i: usize, e: Error) -> Error {
     match e {
         Error::InvalidInput(m) => Error::InvalidInput(format!("contact pair {i}: {m}")),
         other => other,
@@ -1760,8 +1775,7 @@ mod tests {
     use super::*;
 
     /// A pair's measure comes from the material of the elements that own A's segments; A on
-    /// elements of two thicknesses is rejected; an analysis's measures are one per pair, valid
-    /// and of one kind.
+    /// elements of two thicknesses is rejected (a host's sections: `handover.rs`).
     #[test]
     fn pair_measure_from_the_model() {
         use crate::material::{Analysis, Material};
@@ -1799,18 +1813,6 @@ mod tests {
         assert_eq!(top.measure_on(&model(2.5)).unwrap(), plane(2.5));
         let e = top.measure_on(&model(1.0)).unwrap_err().to_string();
         assert!(e.contains("different measures"), "{e}");
-        check_measures(&[plane(1.0), plane(2.0)], 2).unwrap();
-        let e = check_measures(&[plane(1.0)], 2).unwrap_err().to_string();
-        assert!(e.contains("1 surface measures for 2 contact pairs"), "{e}");
-        let e = check_measures(&[plane(1.0), SurfaceMeasure::Axisymmetric], 2)
-            .unwrap_err()
-            .to_string();
-        assert!(
-            e.contains("contact pair 1") && e.contains("one analysis kind"),
-            "{e}"
-        );
-        let e = check_measures(&[plane(-1.0)], 1).unwrap_err().to_string();
-        assert!(e.contains("thickness"), "{e}");
         // axisymmetric: the measure is 2 pi r, the thickness must be 1
         let axi = SurfaceMeasure::new(Analysis::Axisymmetric, 1.0).unwrap();
         assert_eq!(axi, SurfaceMeasure::Axisymmetric);

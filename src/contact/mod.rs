@@ -5,6 +5,7 @@
 //!   the mortar matrices `F^A` and `F^B`, the weighted gap `R_C`, coverage and the coupling rows.
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
+//! * [`handover`]: a host's hand-overs checked against each other (sections, radii, elements).
 //! * [`friction`]: the friction laws the iteration asks about (Coulomb).
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
 //!   its results.
@@ -14,4 +15,5 @@ pub mod faces;
 pub mod facing;
 pub mod friction;
 pub mod geometry;
+pub mod handover;
 pub mod iteration;

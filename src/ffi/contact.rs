@@ -23,7 +23,7 @@ use crate::contact::bodies::{
     Condensed, CondensedKind, Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem,
     Triangle,
 };
-use crate::contact::geometry::SurfaceMeasure;
+use crate::contact::handover::{self, Section};
 use crate::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, IterationRecord, Kinematics, Monitor, NodeState,
     PlateControl,
@@ -504,8 +504,8 @@ pub struct HyconHost {
     pairs: Vec<ContactPair>,
     /// Per pair, a point inside body A (`hycon_host_set_pair_inside`).
     a_inside: Vec<Option<[f64; 2]>>,
-    /// The surface measure of each pair's A side.
-    measures: Vec<SurfaceMeasure>,
+    /// The section (analysis kind, thickness) of each pair's A side.
+    sections: Vec<Section>,
     stiffness: Option<HostSource>,
     elements: Option<HostElements>,
 }
@@ -1070,6 +1070,9 @@ pub unsafe extern "C" fn hycon_contact_new(
 /// Create a host description for a system of `n_equations` equations (the host's `K` after its
 /// boundary conditions: symmetric positive definite).
 ///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`out`), `HYCON_ERROR_INVALID_ARGUMENT` (`n_equations`
+/// zero or beyond what memory can address).
+///
 /// # Safety
 /// `out` must point to a writable pointer.
 #[unsafe(no_mangle)]
@@ -1092,7 +1095,7 @@ pub unsafe extern "C" fn hycon_host_new(
                     nodes: Vec::new(),
                     pairs: Vec::new(),
                     a_inside: Vec::new(),
-                    measures: Vec::new(),
+                    sections: Vec::new(),
                     stiffness: None,
                     elements: None,
                 },
@@ -1152,15 +1155,20 @@ impl HyconHost {
 /// `HYCON_AXISYMMETRIC` and 1): the contact integrals are weighted by A's surface measure,
 /// `t ds` or `2 pi r ds` (the full circle), so the tractions are pressures (force per area)
 /// and the contact forces are in the units of the host's stiffness (which carries `t`, or is
-/// over the full circle). All pairs of a host share one analysis kind. The pair's index is written to `index` unless it
-/// is NULL. The arrays are copied; on an error the host is unchanged.
+/// over the full circle). All pairs of a host share one analysis kind (plane strain and plane
+/// stress are two kinds); their thicknesses may differ. Elements handed over
+/// (`hycon_host_set_elements`, before or after this call) along a pair's A segments must be of
+/// its kind and thickness. The pair's index is written to `index` unless it is NULL. The
+/// arrays are copied; on an error the host is unchanged.
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, or an array of a view with `n > 0`),
 /// `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, equations out of range or shared,
 /// fewer than 2 nodes, repeated nodes, a zero-length segment, a node given before differently,
 /// a bad friction coefficient, an unknown analysis kind or one other than the host's earlier
-/// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), a misaligned
-/// pointer).
+/// pairs', a thickness that is not finite and positive (or not 1 in axisymmetry), in
+/// axisymmetry a node of A or B at `r = x < 0` beyond round-off (1e-10 of its segments'
+/// length), an element handed over on a segment of A whose material differs from `analysis`
+/// or `thickness` (or any element of another kind), a misaligned pointer).
 ///
 /// # Safety
 /// `host` must be a live handle; `a`, `b` NULL or readable views whose arrays hold the stated
@@ -1181,15 +1189,10 @@ pub unsafe extern "C" fn hycon_host_add_pair(
         let index = optional(index, "index")?;
         let kind =
             analysis_from_c(analysis).ok_or_else(|| Fail::invalid(unknown_analysis(analysis)))?;
-        let measure = SurfaceMeasure::new(kind, thickness)?;
-        if let Some(first) = h.measures.first()
-            && !first.same_kind(&measure)
-        {
-            return Err(Fail::invalid(format!(
-                "all pairs of a host share one analysis kind: this pair's ({kind:?}) differs from \
-                 the earlier pairs'"
-            )));
-        }
+        let section = Section::new(kind, thickness)?;
+        let mut sections = h.sections.clone();
+        sections.push(section);
+        handover::check_sections(&sections, sections.len())?;
         let a = unsafe { read_host_nodes(a, "a", "A", h.equations)? };
         let b = unsafe { read_host_nodes(b, "b", "B", h.equations)? };
         let ids = |nodes: &[HostNode]| nodes.iter().map(|n| n.id).collect::<Vec<_>>();
@@ -1206,6 +1209,13 @@ pub unsafe extern "C" fn hycon_host_add_pair(
                     w[0].id, w[1].id
                 )));
             }
+            let points: Vec<[f64; 2]> = nodes.iter().map(|n| n.position).collect();
+            handover::check_radii(&section, side, &ids(nodes), &points)?;
+        }
+        let mut pairs = h.pairs.clone();
+        pairs.push(pair);
+        if let Some(elements) = &h.elements {
+            handover::check_element_sections(elements, &pairs, &sections)?;
         }
         // all-or-nothing: merge into a copy
         let mut nodes = h.nodes.clone();
@@ -1215,9 +1225,9 @@ pub unsafe extern "C" fn hycon_host_add_pair(
             h.nodes = nodes;
             return Err(e);
         }
-        h.pairs.push(pair);
+        h.pairs = pairs;
         h.a_inside.push(None);
-        h.measures.push(measure);
+        h.sections = sections;
         // SAFETY: the caller's contract on `index`.
         unsafe { put(index, h.pairs.len() - 1) };
         Ok(())
@@ -1283,6 +1293,12 @@ pub unsafe extern "C" fn hycon_host_set_pair_inside(
 /// equations (`HYCON_FIXED` in `hycon_host_add_pair`) or kept as an identity row and column
 /// (1 on the diagonal, 0 elsewhere and in the right-hand side): both work.
 ///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, an array with entries to read),
+/// `HYCON_ERROR_INVALID_ARGUMENT` (an unknown `triangle`, `row_ptr` not starting at 0 or
+/// decreasing, a column out of range, an entry in the wrong triangle, a non-finite value, a
+/// full matrix that is not symmetric, a misaligned pointer). On an error the host is
+/// unchanged.
+///
 /// # Safety
 /// `host` must be a live handle; the arrays NULL or of the stated lengths.
 #[unsafe(no_mangle)]
@@ -1332,6 +1348,8 @@ pub unsafe extern "C" fn hycon_host_set_csr(
 /// earlier matrix or solver. This is the path for distributed hosts (e.g. PETSc over MPI): hycon
 /// only ever asks for solves and works on the contact dofs, which every rank can hold.
 ///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `solve`).
+///
 /// # Safety
 /// `host` must be a live handle; `solve` a valid function as documented.
 #[unsafe(no_mangle)]
@@ -1358,11 +1376,17 @@ pub unsafe extern "C" fn hycon_host_set_solver(
 /// image**, `u0 = K^-1 rhs` at the `m` candidate equations in their order (`load_len = m`;
 /// the host's solve of its total right-hand side), and after an increment the host recovers
 /// its displacement with one solve of its own, `K u = rhs + forces` with
-/// `hycon_contact_forces` (`hycon_contact_displacement` fails: hycon has no solver of `K`).
+/// `hycon_contact_forces` (`hycon_contact_displacement`, `hycon_contact_displacement_increment`
+/// and `hycon_contact_stress_tractions` fail: hycon has no solver of `K`, their size queries
+/// answer as on the other paths).
 /// `hycon_host_contact_equations` lists the equations the candidates must hold. Replaces an
 /// earlier matrix or solver. Checked here: `size`, the kind, `m > 0`, candidates in range and
 /// distinct, finite values, symmetry; at `hycon_contact_new_host`: every contact equation
 /// among the candidates, a Schur complement positive definite (`HYCON_ERROR_SINGULAR`).
+///
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `condensed`, its arrays),
+/// `HYCON_ERROR_INVALID_ARGUMENT` (the checks above, a misaligned pointer). On an error the
+/// host is unchanged.
 ///
 /// # Safety
 /// `host` must be a live handle; `condensed` NULL or a readable `HyconCondensed` whose arrays
@@ -1453,12 +1477,18 @@ pub unsafe extern "C" fn hycon_host_contact_equations(
 /// `hycon_model_new`: nodes, elements, materials. `nodes` is the node table of every node the
 /// elements use (ids, reference coordinates, equations with `HYCON_FIXED` for a held dof);
 /// `elements` the elements (hycon formulations, counter-clockwise, node ids of the host's
-/// numbering); `materials` the `n_materials` materials the elements' indices refer to. Copied;
-/// replaces earlier elements.
+/// numbering); `materials` the `n_materials` materials the elements' indices refer to. Every
+/// material the elements use is of the pairs' analysis kind, and an element on a segment of a
+/// pair's A polyline has that pair's kind and thickness (`hycon_host_add_pair`; pairs added
+/// later are checked against these elements there): the stresses would otherwise be of
+/// another analysis, silently wrong. Copied; replaces earlier elements; on an error the host
+/// is unchanged.
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, a view, an array of a view with a nonzero count,
 /// `materials`), `HYCON_ERROR_INVALID_ARGUMENT` (counts, unknown ids, equations, non-finite
-/// coordinates, misaligned pointers), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT`.
+/// coordinates, misaligned pointers, a material of another kind than the pairs', an element
+/// along A of another kind or thickness than its pair), `HYCON_ERROR_INVALID_MATERIAL`,
+/// `HYCON_ERROR_BAD_ELEMENT`.
 ///
 /// # Safety
 /// `host` must be a live handle; `nodes` and `elements` NULL or readable views whose arrays
@@ -1489,19 +1519,25 @@ pub unsafe extern "C" fn hycon_host_set_elements(
         };
         // check now (shapes, ids), so that errors come from this call
         crate::contact::bodies::check_elements(&elements, h.equations)?;
+        handover::check_element_sections(&elements, &h.pairs, &h.sections)?;
         h.elements = Some(elements);
         Ok(())
     })
 }
 
 /// Start a contact analysis of a host's system: factor its CSR matrix once (the contact
-/// equations last) and read the flexibility off the factor, or build the flexibility from
-/// batched solves through its callback. `options` NULL means the defaults.
+/// equations last) and read the flexibility off the factor, build the flexibility from
+/// batched solves through its callback, or read it off its condensed operator. `options`
+/// NULL means the defaults. The checks of `hycon_host_add_pair` and `hycon_host_set_elements`
+/// (sections, radii, elements along A) hold already, as they were made there.
 ///
-/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` (no pair, no stiffness or solver given, a pair
-/// whose polylines run the same way or lie back to back, a pair whose surfaces touch wherever
-/// they are near each other without `hycon_host_set_pair_inside`, bad options),
-/// `HYCON_ERROR_SINGULAR` (the CSR matrix is not positive definite: a body not held),
+/// Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `host`), `HYCON_ERROR_INVALID_ARGUMENT` (no
+/// pair, no stiffness, solver or condensed operator given, a pair whose polylines run the same
+/// way or lie back to back, a pair whose surfaces touch wherever they are near each other
+/// without `hycon_host_set_pair_inside`, a contact equation that is no candidate of the
+/// condensed operator, bad options), `HYCON_ERROR_SINGULAR` (the CSR matrix or the condensed
+/// Schur complement is not positive definite: a body not held), `HYCON_ERROR_SOLVER` (the
+/// factorization failed otherwise, or the options' backend is not built in),
 /// `HYCON_ERROR_CALLBACK` (the solver failed or returned non-finite values).
 ///
 /// # Safety
@@ -1543,7 +1579,7 @@ pub unsafe extern "C" fn hycon_contact_new_host(
             stiffness,
             elements: h.elements.clone(),
             a_inside: h.a_inside.clone(),
-            measures: h.measures.clone(),
+            sections: h.sections.clone(),
         };
         let mut analysis = ContactAnalysis::host(system, h.pairs.clone(), opts)?;
         analysis.set_monitor(monitor);
@@ -1587,7 +1623,9 @@ fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo 
 ///   `prescribed` = (NULL, 0).
 ///
 /// `load_len` is the field length, which the size query of the displacement gives:
-/// `hycon_contact_displacement(contact, NULL, 0, &load_len)`.
+/// `hycon_contact_displacement(contact, NULL, 0, &load_len)`; on the condensed path it is
+/// instead the candidate count `m` the host handed over (`HyconCondensed::m`), and that size
+/// query gives the host's equation count (the length of `hycon_contact_forces`).
 ///
 /// An increment that fails for an iteration reason is taken again in sub-increments (the
 /// automatic cutback, `HyconContactOptions::cutback_depth`); it is still one increment, and
@@ -1704,10 +1742,18 @@ pub unsafe extern "C" fn hycon_contact_plate(
 /// The displacement of the last converged increment (total, from the reference state; zero
 /// before the first) over the field: all `2 * n_nodes` dofs of a model (`u0 v0 u1 v1 ...`), the
 /// host's `n_equations` equations. The size query `(NULL, 0, &needed)` gives that length, which
-/// is also the `load_len` of `hycon_contact_increment`. The first call after an increment
-/// recovers the field (one solve; a host's solve callback is called), later calls copy it.
+/// is also the `load_len` of `hycon_contact_increment` (except on the condensed path, whose
+/// `load_len` is the candidate count `m`). The first call after an increment recovers the
+/// field (one solve; a host's solve callback is called), later calls copy it.
 ///
-/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+/// A host that handed over its condensed operator (`hycon_host_set_condensed`) recovers its
+/// displacement itself (`K u = rhs + hycon_contact_forces`): hycon has no solver of its `K`,
+/// so there the size query still gives `n_equations` but a call with `out` fails with
+/// `HYCON_ERROR_INVALID_ARGUMENT` (saying so), before the first increment too.
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` on the condensed path, `HYCON_ERROR_CALLBACK` when a host's
+/// solve fails or returns non-finite values, `HYCON_ERROR_SOLVER` when hycon's solve fails.
 ///
 /// # Safety
 /// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
@@ -1732,10 +1778,17 @@ pub unsafe extern "C" fn hycon_contact_displacement(
 }
 
 /// The displacement increment of the last converged increment (its total displacement minus
-/// the previous increment's; the total at the first), same layout and length as
-/// `hycon_contact_displacement`. One solve per call (not for the size query).
+/// the previous increment's; the total at the first; zero before the first), same layout and
+/// length as `hycon_contact_displacement`. One solve per call (not for the size query).
 ///
-/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+/// On the condensed path (`hycon_host_set_condensed`) as `hycon_contact_displacement`: the
+/// size query gives `n_equations`, a call with `out` after an increment fails with
+/// `HYCON_ERROR_INVALID_ARGUMENT` (hycon has no solver of `K`; the host solves
+/// `K du = rhs - rhs_previous + forces - forces_previous` itself).
+///
+/// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+/// `HYCON_ERROR_INVALID_ARGUMENT` on the condensed path, `HYCON_ERROR_CALLBACK` when a host's
+/// solve fails or returns non-finite values, `HYCON_ERROR_SOLVER` when hycon's solve fails.
 ///
 /// # Safety
 /// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
@@ -1880,14 +1933,19 @@ pub unsafe extern "C" fn hycon_contact_b_node_results(
 }
 
 /// Tractions way (a), from the element stresses of body A: `tn ts` per A node of `pair` in its
-/// nodal frame, `2 * n_a` doubles (the size query gives `2 * n_a`). Model API; host API when
-/// the host handed over the elements along A (`hycon_host_set_elements`, else
-/// `HYCON_ERROR_INVALID_ARGUMENT`, not for the size query). Costs the displacement recovery
-/// (one solve) if not done yet.
+/// nodal frame, `2 * n_a` doubles (the size query gives `2 * n_a` on every path). Model API;
+/// host API when the host handed over the elements along A (`hycon_host_set_elements`) and
+/// its stiffness as a CSR matrix or a solver: the stresses come from the displacement, which
+/// costs its recovery (one solve) if not done yet. A host that handed over its condensed
+/// operator instead recovers the displacement itself, so hycon has none to take the stresses
+/// of: there a call with `out` fails with `HYCON_ERROR_INVALID_ARGUMENT` (the message says
+/// so); the multipliers (`hycon_contact_node_results`) are the tractions on that path.
 ///
 /// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
-/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range, `HYCON_ERROR_SOLVER` when the
-/// displacement or the stresses overflow (never non-finite values).
+/// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range, no elements handed over, the
+/// condensed path, an A node or segment that is no node or edge of the elements handed over,
+/// `HYCON_ERROR_SOLVER` when the displacement or the stresses overflow (never non-finite
+/// values), `HYCON_ERROR_CALLBACK` when a host's solve fails.
 ///
 /// # Safety
 /// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or

@@ -91,7 +91,9 @@ impl ContactAnalysis {
     /// Contact tractions at the A nodes of pair `p` from the element stresses of body A (the
     /// paper's way (a)): at each node, `t = sigma n` of the element owning each adjacent A
     /// segment, evaluated at the node and averaged over the (one or two) segments, returned as
-    /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered).
+    /// `(tn, ts)` in the nodal frame. Needs the full field (one solve if not yet recovered):
+    /// an error for a host that handed over its condensed operator, whose displacement hycon
+    /// cannot recover.
     pub fn stress_tractions(&self, p: usize) -> Result<Vec<(f64, f64)>> {
         let frames = self.node_results(p)?;
         let missing = || {
@@ -104,6 +106,15 @@ impl ContactAnalysis {
         if !self.bodies.has_elements() {
             return Err(missing());
         }
+        self.bodies.check_solver().map_err(|_| {
+            Error::InvalidInput(
+                "tractions from element stresses need the displacement of the elements' nodes, \
+                 and a host that handed over its condensed operator recovers it itself (hycon \
+                 has no solver of its K): take the multipliers (node_results, \
+                 hycon_contact_node_results) or the host's own stresses"
+                    .into(),
+            )
+        })?;
         let field = self.displacement()?.to_vec();
         let (model, q, local) = self.bodies.elements(&field).ok_or_else(missing)?;
         let a = self.pairs[p]
