@@ -75,6 +75,18 @@
 #include <stdint.h>
 #include <stddef.h>
 
+// Relative size (of the longest edge `h`) below which two points coincide: clipped vertices
+// this close to a corner of either face are snapped to it, consecutive vertices this close are
+// merged, and a vertex this close to the line through its neighbours is dropped.
+#define SNAP 1e-10
+
+// Relative area (of the A face's projected area) below which an overlap is a sliver and
+// dropped.
+#define SLIVER 1e-12
+
+// Relative shortfall of a node's coverage below which it counts as fully covered.
+#define COVERED 1e-10
+
 // Major version of the library this header belongs to (from `Cargo.toml`).
 #define HYCON_VERSION_MAJOR 0
 
@@ -562,6 +574,9 @@ typedef struct HyconShapeReport {
     // `HYCON_SHAPE_WARPED_FACE` (0: none).
     int32_t warnings;
 } HyconShapeReport;
+
+// Corner parameters `(s_k, t_k)` of a face.
+#define CORNERS { { -1.0, -1.0, }, { 1.0, -1.0, }, { 1.0, 1.0, }, { -1.0, 1.0, }, }
 
 
 
