@@ -1043,6 +1043,26 @@ static bool test_contact_new_unknown_backend(void) {
     return rejects_enum_option(&o, &o.backend, "backend");
 }
 
+#ifdef HYCON_WITHOUT_CHOLMOD
+/* A library built without the `suitesparse` feature (CMake: HYCON_CARGO_FEATURES without it)
+ * refuses the CHOLMOD backend when the analysis is made, with an error that names the feature,
+ * and writes no handle. */
+static bool test_contact_new_cholmod_without_feature(void) {
+    HyconContactOptions o;
+    HyconModel *m = make_model(HOLD_UPPER | WITH_PAIR);
+    HyconContact *c = MARKER(HyconContact);
+    bool ok;
+    EXPECT(m != NULL);
+    EXPECT(hycon_contact_options_default(&o) == HYCON_OK);
+    o.backend = HYCON_BACKEND_CHOLMOD;
+    ok = STATUS_FN(hycon_contact_new, (&c, m, &o), HYCON_ERROR_SOLVER,
+                   "built without the `suitesparse` feature") &&
+         c == MARKER(HyconContact);
+    hycon_model_free(m);
+    return ok;
+}
+#endif
+
 /* A model without contact pairs is allowed (its increments are linear solves); every pair
  * query then names the missing pair. */
 static bool test_contact_new_no_pair(void) {
@@ -2713,6 +2733,9 @@ int main(void) {
         {"contact_new_null_pointers", test_contact_new_null_pointers},
         {"contact_new_bad_options", test_contact_new_bad_options},
         {"contact_new_unknown_backend", test_contact_new_unknown_backend},
+#ifdef HYCON_WITHOUT_CHOLMOD
+        {"contact_new_cholmod_without_feature", test_contact_new_cholmod_without_feature},
+#endif
         {"contact_new_unknown_kinematics", test_contact_new_unknown_kinematics},
         {"contact_new_no_pair", test_contact_new_no_pair},
         {"contact_new_unconstrained_body", test_contact_new_unconstrained_body},

@@ -7,10 +7,14 @@
 # what else it needs (cmake, ninja-build, libsuitesparse-dev, libclang-dev, pkg-config,
 # valgrind, g++, petsc-dev and openmpi-bin for the PETSc example) with apt-get when any is
 # missing: as root, or through sudo.
-# Order: builds and tests first (their summaries are printed as they finish), then the
-# static checks (clippy, rustfmt, rustdoc). Every step shares cargo's target/ directory, so
-# the library is compiled once per profile: release (used by CMake) and dev (used by tests).
-# No `cargo test --release`: it would compile faer a third time.
+# Order: tests first (their summaries are printed as they finish), then the static checks
+# (clippy, rustfmt, rustdoc). Every step shares cargo's target/ directory. hycon is compiled
+# four times, each for what only it can check: dev with CHOLMOD for every Rust test (one
+# build: the backends test runs in it), release without features for CMake (what a host
+# links: ctest, install, consumers), release with CHOLMOD for the C examples on CHOLMOD, and
+# clippy's check build. No `cargo test --release`: its dev-dependencies change features of
+# faer's dependencies, so faer would be compiled twice in release.
+# The step timings printed at the end are kept in docs/ci-timings.md.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 root=$PWD
@@ -50,27 +54,30 @@ if ((${#missing[@]} > 0)); then
     if [[ $(id -u) -ne 0 ]]; then sudo=(sudo); fi
     "${sudo[@]}" apt-get update
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get -o DPkg::Lock::Timeout=900 install -y "${packages[@]}"
+else
+    step "install system packages: none missing"
 fi
 
 export CARGO_TERM_COLOR=${CARGO_TERM_COLOR:-never}
 build=$root/build
 stage=$build/stage
 
-step "cargo build --release --locked"
-cargo build --release --locked
-
-step "regression guard: accuracy at fixed meshes against docs/bench/guard.csv"
-cargo run --release --locked --quiet -- bench guard
-
-step "cargo test --locked (unit, integration, C API, header freshness, C examples via cc)"
-log=$(mktemp)
-cargo test --locked 2>&1 | tee "$log"
-grep -E '^test result:' "$log" |
-    awk '{p += $4; f += $6; i += $8} END {printf "==== cargo test: %d passed, %d failed, %d ignored\n", p, f, i}'
-rm -f "$log"
-
-step "cargo test --locked -p hycon-lab --features suitesparse --test backends (faer and CHOLMOD agree)"
-cargo test --locked -p hycon-lab --features suitesparse --test backends
+# cargo-nextest (on the machines CI uses) runs the tests of every binary side by side, each in
+# its own process; plain `cargo test` (binaries one after another) where it is not installed.
+# Neither runs doctests: the crates have none (a ```rust block in a doc comment would need
+# `cargo test --doc` here).
+features=(--workspace --features hycon-lab/suitesparse)
+if cargo nextest --version >/dev/null 2>&1; then
+    step "cargo nextest run ${features[*]} (unit, integration, C API, header, layout, faer against CHOLMOD, accuracy guard)"
+    cargo nextest run --locked "${features[@]}" --no-fail-fast
+else
+    step "cargo test ${features[*]} (unit, integration, C API, header, layout, faer against CHOLMOD, accuracy guard)"
+    log=$(mktemp)
+    cargo test --locked "${features[@]}" 2>&1 | tee "$log"
+    grep -E '^test result:' "$log" |
+        awk '{p += $4; f += $6; i += $8} END {printf "==== cargo test: %d passed, %d failed, %d ignored\n", p, f, i}'
+    rm -f "$log"
+fi
 
 step "cmake configure"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$stage" -DHYCON_REQUIRE_PETSC=ON
@@ -103,8 +110,7 @@ cc -std=c99 -Wall -Wextra -Werror -pedantic tests/consumer/main.c -o "$build/con
     $(PKG_CONFIG_PATH="$build/relocated/lib/pkgconfig" pkg-config --cflags --libs hycon)
 LD_LIBRARY_PATH="$build/relocated/lib" "$build/consumer-pc"
 
-step "cargo clippy --all-targets -- -D warnings (without and with feature suitesparse)"
-cargo clippy --locked --all-targets -- -D warnings
+step "cargo clippy --workspace --all-targets --all-features -- -D warnings"
 cargo clippy --locked --workspace --all-targets --all-features -- -D warnings
 
 step "cargo fmt --check"

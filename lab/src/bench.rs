@@ -206,6 +206,41 @@ pub struct ContactRun {
     pub iterations: usize,
 }
 
+/// A guard value beside its committed one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GuardVerdict {
+    /// The value computed now.
+    pub now: GuardValue,
+    /// The committed value of the same name.
+    pub committed: f64,
+}
+
+impl GuardVerdict {
+    /// Worse than committed by more than 1e-6 relative (round-off across machines stays far
+    /// below that): `now > committed (1 + 1e-6) + 1e-15`.
+    pub fn worse(&self) -> bool {
+        self.now.value > self.committed * (1.0 + 1e-6) + 1e-15
+    }
+}
+
+/// Pair each of `values` with its committed value in `committed` (the text of
+/// `docs/bench/guard.csv`: lines `name,value`); a name missing there is an error.
+pub fn guard_verdicts(values: Vec<GuardValue>, committed: &str) -> Result<Vec<GuardVerdict>> {
+    values
+        .into_iter()
+        .map(|now| {
+            let text = committed
+                .lines()
+                .find_map(|l| l.strip_prefix(&format!("{},", now.name)))
+                .ok_or_else(|| Error::InvalidInput(format!("guard.csv has no value for {:?}", now.name)))?;
+            let committed = text.trim().parse().map_err(|e| {
+                Error::InvalidInput(format!("guard.csv value of {:?}: {e}", now.name))
+            })?;
+            Ok(GuardVerdict { now, committed })
+        })
+        .collect()
+}
+
 /// The reference Hertz scene at `n` elements per half-width (`a = R/64`, friction
 /// coefficient `friction`): time the whole contact analysis (its substitutions on `threads`
 /// threads) and, on the same model, one plain factorization and solve.

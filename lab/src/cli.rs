@@ -1432,24 +1432,14 @@ fn guard(reference: &Path, write: bool) -> AnyResult {
     let committed = std::fs::read_to_string(reference)
         .map_err(|e| format!("cannot read {}: {e}", reference.display()))?;
     let mut worse = Vec::new();
-    for v in &values {
-        let old: f64 = committed
-            .lines()
-            .find_map(|l| l.strip_prefix(&format!("{},", v.name)))
-            .ok_or_else(|| format!("{} has no value for {:?}", reference.display(), v.name))?
-            .trim()
-            .parse()?;
-        let verdict = if v.value > old * (1.0 + 1e-6) + 1e-15 {
-            "WORSE"
-        } else {
-            "ok"
-        };
+    for v in hycon_lab::bench::guard_verdicts(values.clone(), &committed)? {
+        let verdict = if v.worse() { "WORSE" } else { "ok" };
         println!(
-            "  {:<32} committed {old:.6e}  now {:.6e}  {verdict}",
-            v.name, v.value
+            "  {:<32} committed {:.6e}  now {:.6e}  {verdict}",
+            v.now.name, v.committed, v.now.value
         );
-        if verdict == "WORSE" {
-            worse.push(v.name.clone());
+        if v.worse() {
+            worse.push(v.now.name);
         }
     }
     if worse.is_empty() {
