@@ -958,6 +958,9 @@ fn faer_symbolic(
     match rule {
         OrderingRule::Auto => {
             let amd = amd()?;
+            if ordering::factor_flops(&amd) < ordering::ND_TRIAL_FLOPS {
+                return Ok((amd, FillOrdering::Amd));
+            }
             if ordering::metis_status().is_err() {
                 return Ok((amd, FillOrdering::AmdWithoutMetis));
             }

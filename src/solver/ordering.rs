@@ -21,9 +21,11 @@
 //! ([`FillOrdering::AmdWithoutMetis`]).
 //!
 //! # The rule
-//! [`OrderingRule::Auto`] computes the symbolic factorization with both orderings and keeps
-//! the one with fewer factorization flops ([`factor_flops`]; AMD on a tie). The symbolic
-//! analyses cost far less than the factorization (about 1% of it on a 40^3 brick cube).
+//! [`OrderingRule::Auto`] computes the symbolic factorization with AMD; when it needs at least
+//! [`ND_TRIAL_FLOPS`], also with nested dissection, and keeps the one with fewer factorization
+//! flops ([`factor_flops`]; AMD on a tie). Below that the factorization takes about a second
+//! or less and a second analysis would cost a noticeable part of it: the plane meshes of the
+//! contact examples (25k dofs, a few 1e8 flops) keep AMD without calling METIS.
 
 use crate::error::{Error, Result};
 use faer::sparse::SymbolicSparseColMatRef;
@@ -31,12 +33,17 @@ use faer::sparse::linalg::cholesky::{SymbolicCholesky, SymbolicCholeskyRaw};
 use std::ffi::{c_int, c_void};
 use std::sync::{Mutex, OnceLock};
 
+/// Factorization flops of AMD's order from which [`OrderingRule::Auto`] also tries nested
+/// dissection (about 1 to 2 s of faer's sequential factorization).
+pub const ND_TRIAL_FLOPS: f64 = 1e10;
+
 /// How [`SparseCholesky::analyze_ordered`](super::SparseCholesky::analyze_ordered) orders the
 /// unknowns.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum OrderingRule<'a> {
-    /// faer: both AMD and nested dissection analysed, the one with fewer flops kept (AMD when
-    /// METIS is absent). CHOLMOD: its own default strategy.
+    /// faer: AMD, and when its factorization needs at least [`ND_TRIAL_FLOPS`] nested
+    /// dissection too, the one with fewer flops kept (AMD when METIS is absent). CHOLMOD: its
+    /// own default strategy.
     #[default]
     Auto,
     /// Approximate minimum degree (faer's AMD, for either backend).
@@ -486,12 +493,31 @@ mod tests {
         );
         assert!(fill < 0.80, "nnz(L) nd / amd = {fill}");
         assert!(work < 0.62, "flops nd / amd = {work}");
-        // the automatic rule keeps the cheaper one
-        let auto =
+        // below the trial threshold the automatic rule keeps AMD without calling METIS
+        assert!(amd.flops() < ND_TRIAL_FLOPS);
+        let auto = |a: &SymbolicSparseColMat<usize>| {
             SparseCholesky::analyze_ordered(a.as_ref(), Backend::Faer, &[], OrderingRule::Auto)
-                .unwrap();
+                .unwrap()
+        };
+        assert_eq!(auto(&a).order(), amd.order());
+    }
+
+    #[test]
+    fn automatic_rule_keeps_the_cheaper_order_of_a_larger_cube() {
+        use crate::solver::{Backend, SparseCholesky};
+        let a = grid_pattern(20, 3);
+        let analyze =
+            |rule| SparseCholesky::analyze_ordered(a.as_ref(), Backend::Faer, &[], rule).unwrap();
+        let (amd, nd, auto) = (
+            analyze(OrderingRule::Amd),
+            analyze(OrderingRule::NestedDissection),
+            analyze(OrderingRule::Auto),
+        );
+        assert!(amd.flops() >= ND_TRIAL_FLOPS);
+        assert!(nd.flops() < 0.5 * amd.flops());
         assert_eq!(auto.ordering(), FillOrdering::NestedDissection);
         assert_eq!(auto.order(), nd.order());
+        assert_eq!(auto.flops(), nd.flops());
     }
 
     #[test]
