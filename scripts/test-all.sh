@@ -41,7 +41,7 @@ summary() {
 }
 trap summary EXIT
 
-packages=(cmake ninja-build libsuitesparse-dev libclang-dev pkg-config valgrind g++ petsc-dev openmpi-bin)
+packages=(cmake ninja-build libsuitesparse-dev libmetis5 libclang-dev pkg-config valgrind g++ petsc-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then

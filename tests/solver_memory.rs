@@ -1,7 +1,7 @@
 //! A factor larger than the memory the process may use is an error, never an abort.
 //!
 //! Its own test binary: the address-space limit it sets (`RLIMIT_AS`) holds for the whole
-//! process. The limit is the current address space plus 256 MiB; the cube of 26 x 26 x 26
+//! process. The limit is the current address space plus 256 MiB; the cube of 30 x 30 x 30
 //! bricks needs more than twice that for `L` alone, so its analysis fits and its factorization
 //! cannot.
 
@@ -20,7 +20,7 @@ fn virtual_size() -> u64 {
 
 #[test]
 fn a_factor_beyond_memory_is_an_error() {
-    let n = 26;
+    let n = 30;
     let mesh = SolidMesh::uniform([1.0, 1.0, 1.0], [n, n, n]);
     let fixed = mesh
         .nodes_where(|p| p[0] == 0.0)

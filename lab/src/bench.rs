@@ -8,7 +8,7 @@ use hycon::element::{self, ElementMatrix, Formulation};
 use hycon::error::{Error, Result};
 use hycon::material::{Analysis, Material};
 use hycon::mesh::generate::{self, Transition};
-use hycon::solver::{Backend, SparseCholesky};
+use hycon::solver::{Backend, FillOrdering, OrderingRule, SparseCholesky};
 use std::time::Instant;
 
 /// Mean time of one element stiffness evaluation.
@@ -136,42 +136,115 @@ pub fn scale_run(n: usize) -> Result<ScaleRun> {
     Ok(run)
 }
 
+/// One ordering of one brick cube in [`brick_scale_run`].
+#[derive(Debug, Clone)]
+pub struct BrickOrderingRun {
+    /// The ordering faer's analysis used.
+    pub ordering: FillOrdering,
+    /// Stored entries of `L`.
+    pub nnz_l: usize,
+    /// Factorization flops (`sum_j c_j^2`).
+    pub flops: f64,
+    /// Pattern and symbolic analysis (ordering, elimination tree), seconds.
+    pub analysis: f64,
+    /// faer's numeric factorization (sequential), seconds; `None` when not factored.
+    pub factorization: Option<f64>,
+    /// One solve, seconds.
+    pub solve: Option<f64>,
+    /// CHOLMOD's numeric factorization with the same permutation (`CHOLMOD_GIVEN`), seconds.
+    pub cholmod: Option<f64>,
+    /// CHOLMOD's flop count and `nnz(L)` for that permutation.
+    pub cholmod_flops: Option<(f64, usize)>,
+    /// Peak resident memory of the process after this ordering's run, bytes, if known.
+    pub peak_memory: Option<u64>,
+}
+
 /// The 3D counterpart of [`scale_run`]: a cube of `n x n x n` hybrid bricks clamped on `x = 0`
-/// with a uniform load in `y`. The symbolic analysis alone gives `nnz(L)` (the factor's memory,
-/// 8 bytes per entry) at any size; the numeric phases run only when `factor` is set, so the
-/// largest cube that fits in memory is found without factoring it.
-pub fn brick_scale_run(n: usize, factor: bool) -> Result<ScaleRun> {
+/// with a uniform load in `y`, analysed with each ordering of `rules`. The symbolic analysis
+/// alone gives `nnz(L)` and the flops at any size; the numeric phases run only when `factor`
+/// is set, and also through CHOLMOD with faer's permutation for the rules whose `cholmod` flag
+/// is set (needs the feature `suitesparse`). Returns the free dofs, `nnz(K)` and one record
+/// per ordering.
+pub fn brick_scale_run(
+    n: usize,
+    rules: &[OrderingRule<'static>],
+    factor: bool,
+    cholmod: &[bool],
+) -> Result<(usize, usize, Vec<BrickOrderingRun>)> {
     use hycon::solid::mesh::SolidMesh;
     use hycon::solid::model::{NodalDofs, SolidSystem};
     use hycon::solid::{BrickFormulation, Isotropic};
-    let mut run = ScaleRun::default();
-    let t = Instant::now();
     let mesh = SolidMesh::uniform([1.0, 1.0, 1.0], [n, n, n]);
-    run.mesh = t.elapsed().as_secs_f64();
-    let t = Instant::now();
-    let fixed = mesh
+    let fixed: Vec<usize> = mesh
         .nodes_where(|p| p[0] == 0.0)
         .into_iter()
-        .flat_map(|k| [3 * k, 3 * k + 1, 3 * k + 2]);
+        .flat_map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
+        .collect();
     let dofs = NodalDofs::new(mesh.n_nodes(), 3, fixed)?;
-    let mut system = SolidSystem::new(&mesh, dofs, Backend::Faer)?;
-    run.analysis = t.elapsed().as_secs_f64();
-    run.dofs = system.dofs().n_free();
-    run.nnz_k = system.nnz();
-    run.nnz_l = system.cholesky().nnz_l();
-    run.tip_ratio = f64::NAN;
-    if factor {
-        let material = Isotropic::new(1000.0, 0.3)?;
+    let material = Isotropic::new(1000.0, 0.3)?;
+    let mut runs = Vec::new();
+    let (mut n_free, mut nnz_k) = (0, 0);
+    for (k, &rule) in rules.iter().enumerate() {
         let t = Instant::now();
-        system.assemble_and_factor(&mesh, &[material], BrickFormulation::Hybrid18, &[])?;
-        run.factorization = t.elapsed().as_secs_f64();
-        let mut rhs = Mat::<f64>::from_fn(run.dofs, 1, |i, _| if i % 3 == 1 { 1e-3 } else { 0.0 });
-        let t = Instant::now();
-        system.solve_in_place(&mut rhs)?;
-        run.solve = t.elapsed().as_secs_f64();
+        let mut system = SolidSystem::with_ordering(&mesh, dofs.clone(), Backend::Faer, rule)?;
+        let analysis = t.elapsed().as_secs_f64();
+        (n_free, nnz_k) = (system.dofs().n_free(), system.nnz());
+        let chol = system.cholesky();
+        let mut run = BrickOrderingRun {
+            ordering: chol.ordering(),
+            nnz_l: chol.nnz_l(),
+            flops: chol.flops(),
+            analysis,
+            factorization: None,
+            solve: None,
+            cholmod: None,
+            cholmod_flops: None,
+            peak_memory: None,
+        };
+        if factor {
+            system.assemble(&mesh, &[material], BrickFormulation::Hybrid18, &[])?;
+            let t = Instant::now();
+            system.factor()?;
+            run.factorization = Some(t.elapsed().as_secs_f64());
+            let mut rhs =
+                Mat::<f64>::from_fn(n_free, 1, |i, _| if i % 3 == 1 { 1e-3 } else { 0.0 });
+            let t = Instant::now();
+            system.solve_in_place(&mut rhs)?;
+            run.solve = Some(t.elapsed().as_secs_f64());
+            if cholmod.get(k) == Some(&true) {
+                let order = system.cholesky().order();
+                let mut other = SparseCholesky::analyze_ordered(
+                    system.matrix().symbolic(),
+                    Backend::Cholmod,
+                    &[],
+                    OrderingRule::Given(&order),
+                )?;
+                let t = Instant::now();
+                other.factorize(system.matrix())?;
+                run.cholmod = Some(t.elapsed().as_secs_f64());
+                run.cholmod_flops = Some((other.flops(), other.nnz_l()));
+            }
+        }
+        run.peak_memory = peak_memory();
+        runs.push(run);
     }
-    run.peak_memory = peak_memory();
-    Ok(run)
+    Ok((n_free, nnz_k, runs))
+}
+
+/// The BLAS libraries mapped into this process (`/proc/self/maps` entries naming `blas`):
+/// which one CHOLMOD ran on (Debian's `libblas.so.3` is the reference BLAS unless
+/// update-alternatives points it at OpenBLAS).
+pub fn blas_libraries() -> Vec<String> {
+    let maps = std::fs::read_to_string("/proc/self/maps").unwrap_or_default();
+    let mut libs: Vec<String> = maps
+        .lines()
+        .filter_map(|l| l.split_whitespace().nth(5))
+        .filter(|p| p.contains("blas"))
+        .map(str::to_owned)
+        .collect();
+    libs.sort();
+    libs.dedup();
+    libs
 }
 
 /// Peak resident set size of this process (Linux `/proc/self/status`, `VmHWM`), in bytes.

@@ -236,9 +236,18 @@ enum Bench {
         /// Factor only cubes with at most this many free dofs.
         #[arg(long, default_value_t = 30_000)]
         factor_max: usize,
-        /// Memory available to the factor, GB (decimal), for the largest cube that fits.
+        /// Memory available to L plus K, GB (decimal), for the largest cube that fits.
         #[arg(long, default_value_t = 24.0)]
         memory_gb: f64,
+        /// Orderings of faer's analysis, comma separated: amd, nd (METIS nested dissection),
+        /// auto (the one with fewer flops).
+        #[arg(long, value_delimiter = ',', default_values = ["amd", "nd"])]
+        orderings: Vec<String>,
+        /// Orderings (of --orderings) whose factored cubes CHOLMOD also factors with faer's
+        /// permutation, comma separated (needs --features suitesparse; one thread: run with
+        /// OPENBLAS_NUM_THREADS=1).
+        #[arg(long, value_delimiter = ',')]
+        cholmod: Vec<String>,
     },
     /// The Hertz scene (a = R/64, calibration + 3 increments; frictionless, then mu = 0.3) at
     /// each refinement: whole contact analysis against one assembly + factorization + solve of K.
@@ -713,50 +722,112 @@ fn beam(
 }
 
 /// `bench brick`: the table (as in docs/elements.md) and the plot.
-/// `hycon bench brick-scale`: the table of sizes, the largest cube whose factor fits in
-/// `memory_gb`, and its factorization time from the fit `t = c N^p` over the factored cubes.
-fn brick_scale(ns: &[usize], factor_max: usize, memory_gb: f64) -> AnyResult {
+/// `hycon bench brick-scale`: per cube and ordering, `nnz(L)`, flops, `L + K` memory, faer's
+/// factorization time and rate (and CHOLMOD's with the same permutation), then the largest cube
+/// whose `L + K` fits in `memory_gb` per ordering, with its factorization time from the fit
+/// `t = c N^p` over the factored cubes.
+fn brick_scale(
+    ns: &[usize],
+    factor_max: usize,
+    memory_gb: f64,
+    orderings: &[String],
+    cholmod: &[String],
+) -> AnyResult {
+    use hycon::solver::OrderingRule;
+    let rules = orderings
+        .iter()
+        .map(|o| match o.as_str() {
+            "amd" => Ok(OrderingRule::Amd),
+            "nd" => Ok(OrderingRule::NestedDissection),
+            "auto" => Ok(OrderingRule::Auto),
+            other => Err(format!("--orderings: {other} is not amd, nd or auto")),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    if let Some(o) = cholmod.iter().find(|o| !orderings.contains(o)) {
+        return Err(format!("--cholmod: {o} is not one of --orderings").into());
+    }
+    if !cholmod.is_empty() && !hycon::solver::Backend::Cholmod.available() {
+        return Err("--cholmod needs hycon built with --features suitesparse".into());
+    }
+    let with_cholmod: Vec<bool> = orderings.iter().map(|o| cholmod.contains(o)).collect();
+    match hycon::solver::ordering::metis_status() {
+        Ok(bits) => println!("METIS: libmetis.so.5 loaded, {bits}-bit idx_t"),
+        Err(e) => println!("METIS: {e}"),
+    }
     println!(
-        "| n | free dofs | nnz(K) | nnz(L) | factor GB | analysis s | factorization s | solve s | peak RSS GB |"
+        "| n | free dofs | ordering | nnz(L) | flops | L+K GB | analysis s | faer factorization s | faer Gflop/s | CHOLMOD nnz(L) | CHOLMOD flops | CHOLMOD factorization s | CHOLMOD Gflop/s | solve s | peak RSS GB |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|");
-    let mut factored = Vec::new();
-    let mut largest = None;
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let seconds = |t: Option<f64>| t.map_or("-".into(), |t| format!("{t:.2}"));
+    let rate =
+        |flops: f64, t: Option<f64>| t.map_or("-".into(), |t| format!("{:.2}", flops / t * 1e-9));
+    // per ordering: factored (dofs, seconds) and the largest cube that fits
+    let mut factored = vec![Vec::new(); rules.len()];
+    let mut largest = vec![None; rules.len()];
     for &n in ns {
         let dofs = 3 * n * (n + 1) * (n + 1);
-        let r = hycon_lab::bench::brick_scale_run(n, dofs <= factor_max)?;
-        let gb = r.nnz_l as f64 * 8e-9;
-        let timed = r.factorization > 0.0;
-        let cell = |t: f64| if timed { format!("{t:.2}") } else { "-".into() };
-        println!(
-            "| {n} | {} | {} | {} | {gb:.2} | {:.2} | {} | {} | {} |",
-            r.dofs,
-            r.nnz_k,
-            r.nnz_l,
-            r.analysis,
-            cell(r.factorization),
-            cell(r.solve),
-            r.peak_memory
-                .map_or("n/a".into(), |b| format!("{:.2}", b as f64 * 1e-9))
-        );
-        if timed {
-            factored.push((r.dofs as f64, r.factorization));
+        let (n_free, nnz_k, runs) =
+            hycon_lab::bench::brick_scale_run(n, &rules, dofs <= factor_max, &with_cholmod)?;
+        for (k, r) in runs.iter().enumerate() {
+            // L: 8-byte values; K: 8-byte values and 8-byte row indices
+            let gb = (r.nnz_l * 8 + nnz_k * 16) as f64 * 1e-9;
+            println!(
+                "| {n} | {n_free} | {} | {:.3e} | {:.2e} | {gb:.2} | {:.2} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                r.ordering,
+                r.nnz_l as f64,
+                r.flops,
+                r.analysis,
+                seconds(r.factorization),
+                rate(r.flops, r.factorization),
+                r.cholmod_flops
+                    .map_or("-".into(), |(_, nnz)| format!("{:.3e}", nnz as f64)),
+                r.cholmod_flops
+                    .map_or("-".into(), |(fl, _)| format!("{fl:.2e}")),
+                seconds(r.cholmod),
+                rate(r.cholmod_flops.map_or(r.flops, |(fl, _)| fl), r.cholmod),
+                seconds(r.solve),
+                r.peak_memory
+                    .map_or("n/a".into(), |b| format!("{:.2}", b as f64 * 1e-9))
+            );
+            if let Some(t) = r.factorization {
+                factored[k].push((n_free as f64, t));
+            }
+            if gb <= memory_gb && largest[k].is_none_or(|(m, _, _)| n > m) {
+                largest[k] = Some((n, n_free, gb));
+            }
         }
-        if gb <= memory_gb {
-            largest = Some((n, r.dofs, gb));
+        if let (Some(a), Some(b)) = (runs.first(), runs.get(1)) {
+            println!(
+                "  n = {n}: {} / {}: nnz(L) x{:.3}, flops x{:.3}{}",
+                b.ordering,
+                a.ordering,
+                b.nnz_l as f64 / a.nnz_l as f64,
+                b.flops / a.flops,
+                match (a.factorization, b.factorization) {
+                    (Some(ta), Some(tb)) => format!(", factorization {:.2}x faster", ta / tb),
+                    _ => String::new(),
+                }
+            );
         }
     }
-    if let Some((n, dofs, gb)) = largest {
-        print!(
-            "largest cube whose factor fits in {memory_gb} GB: n = {n}, {dofs} free dofs, factor {gb:.2} GB"
+    if !cholmod.is_empty() {
+        println!(
+            "CHOLMOD's BLAS: {}",
+            hycon_lab::bench::blas_libraries().join(", ")
         );
-        if let Some((p, c, _)) = hycon_lab::bench::fit_power(&factored) {
-            println!(
+    }
+    for (k, fits) in largest.iter().enumerate() {
+        let Some((n, dofs, gb)) = fits else { continue };
+        print!(
+            "{}: largest cube whose L + K fits in {memory_gb} GB: n = {n}, {dofs} free dofs, {gb:.2} GB",
+            orderings[k]
+        );
+        match hycon_lab::bench::fit_power(&factored[k]) {
+            Some((p, c, _)) => println!(
                 "; factorization time fitted as {c:.3e} N^{p:.2} over the factored sizes: about {:.0} s",
-                c * (dofs as f64).powf(p)
-            );
-        } else {
-            println!();
+                c * (*dofs as f64).powf(p)
+            ),
+            None => println!(),
         }
     }
     Ok(())
@@ -887,7 +958,9 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             n,
             factor_max,
             memory_gb,
-        } => brick_scale(&n, factor_max, memory_gb)?,
+            orderings,
+            cholmod,
+        } => brick_scale(&n, factor_max, memory_gb, &orderings, &cholmod)?,
         Bench::Sweep {
             min,
             max,

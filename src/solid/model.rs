@@ -16,7 +16,7 @@
 use super::mesh::SolidMesh;
 use super::{BrickFormulation, BrickMatrix, BrickStress, Isotropic, N_DOF, N_NODES};
 use crate::error::{Error, Result};
-use crate::solver::{Backend, SparseCholesky};
+use crate::solver::{Backend, FillOrdering, OrderingRule, SparseCholesky};
 use faer::Mat;
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 
@@ -105,8 +105,18 @@ pub struct SolidSystem {
 
 impl SolidSystem {
     /// Pattern from the node adjacency of `mesh` expanded to the free dofs, and its symbolic
-    /// analysis with `backend`.
+    /// analysis with `backend` (the ordering chosen by [`OrderingRule::Auto`]).
     pub fn new(mesh: &SolidMesh, dofs: NodalDofs, backend: Backend) -> Result<Self> {
+        Self::with_ordering(mesh, dofs, backend, OrderingRule::Auto)
+    }
+
+    /// [`new`](Self::new) with the fill-reducing ordering chosen by `rule`.
+    pub fn with_ordering(
+        mesh: &SolidMesh,
+        dofs: NodalDofs,
+        backend: Backend,
+        rule: OrderingRule<'_>,
+    ) -> Result<Self> {
         let mut adjacency = vec![Vec::new(); mesh.n_nodes()];
         for el in &mesh.elements {
             for &a in el {
@@ -134,7 +144,7 @@ impl SolidSystem {
         }
         let n = dofs.n_free();
         let symbolic = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
-        let cholesky = SparseCholesky::analyze(symbolic, backend, &[])?;
+        let cholesky = SparseCholesky::analyze_ordered(symbolic, backend, &[], rule)?;
         let values = vec![0.0; row_idx.len()];
         Ok(SolidSystem {
             dofs,
@@ -164,6 +174,19 @@ impl SolidSystem {
     /// load correction `-K_fp u_p` of the prescribed values `prescribed` (global dof, value),
     /// indexed by free equation.
     pub fn assemble_and_factor(
+        &mut self,
+        mesh: &SolidMesh,
+        materials: &[Isotropic],
+        formulation: BrickFormulation,
+        prescribed: &[(usize, f64)],
+    ) -> Result<Vec<f64>> {
+        let correction = self.assemble(mesh, materials, formulation, prescribed)?;
+        self.factor()?;
+        Ok(correction)
+    }
+
+    /// The assembly half of [`assemble_and_factor`](Self::assemble_and_factor).
+    pub fn assemble(
         &mut self,
         mesh: &SolidMesh,
         materials: &[Isotropic],
@@ -210,12 +233,24 @@ impl SolidSystem {
                 }
             }
         }
+        Ok(correction)
+    }
+
+    /// Factor the assembled `K_ff` (reusing the analysis).
+    pub fn factor(&mut self) -> Result<()> {
         let n = self.dofs.n_free();
         let symbolic =
             SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
-        self.cholesky
-            .factorize(SparseColMatRef::new(symbolic, &self.values))?;
-        Ok(correction)
+        let matrix = SparseColMatRef::new(symbolic, &self.values);
+        self.cholesky.factorize(matrix)
+    }
+
+    /// The assembled lower triangle of `K_ff`.
+    pub fn matrix(&self) -> SparseColMatRef<'_, usize, f64> {
+        let n = self.dofs.n_free();
+        let symbolic =
+            SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
+        SparseColMatRef::new(symbolic, &self.values)
     }
 
     /// Solve `K_ff u_f = f_f` for each column of `rhs` (free equations), in place.
@@ -256,6 +291,8 @@ pub struct SolidSolution {
     pub n_free: usize,
     /// Stored entries of the Cholesky factor.
     pub nnz_l: usize,
+    /// The factorization's fill-reducing ordering.
+    pub ordering: FillOrdering,
 }
 
 impl SolidSolution {
@@ -351,6 +388,7 @@ impl SolidModel {
             displacements,
             n_free: dofs.n_free(),
             nnz_l: system.cholesky().nnz_l(),
+            ordering: system.cholesky().ordering(),
         })
     }
 

@@ -336,6 +336,11 @@ impl CholmodLlt {
         unsafe { slice((*self.l).Perm.cast::<Long>(), self.n) }
     }
 
+    /// CHOLMOD's flop count of the analysed factorization (`Common->fl`, `sum_j c_j^2`).
+    pub(crate) fn flops(&self) -> f64 {
+        self.common.fl
+    }
+
     /// Order of the matrix.
     pub(crate) fn n(&self) -> usize {
         self.n

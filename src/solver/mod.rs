@@ -19,6 +19,7 @@
 
 #[cfg(feature = "suitesparse")]
 mod cholmod;
+pub mod ordering;
 pub(crate) mod vector_state;
 
 use crate::error::{Error, Result};
@@ -33,6 +34,7 @@ use faer::sparse::linalg::cholesky::{
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, Mat, MatMut, Par, Side};
+pub use ordering::{FillOrdering, OrderingRule};
 
 /// How many right-hand sides one internal solve call handles (bounds the workspace).
 const RHS_BATCH: usize = 64;
@@ -95,6 +97,7 @@ pub struct SparseCholesky {
     factored: bool,
     /// Number of unknowns ordered last (see [`SparseCholesky::analyze`]).
     trailing: usize,
+    ordering: FillOrdering,
 }
 
 /// The library-specific part of [`SparseCholesky`].
@@ -116,6 +119,7 @@ impl std::fmt::Debug for SparseCholesky {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("SparseCholesky")
             .field("backend", &self.backend())
+            .field("ordering", &self.ordering)
             .field("n", &self.n())
             .field("nnz_l", &self.nnz_l())
             .field("factorizations", &self.factorizations)
@@ -125,8 +129,10 @@ impl std::fmt::Debug for SparseCholesky {
 
 impl SparseCholesky {
     /// Symbolic analysis (fill-reducing ordering, elimination tree, supernodes) of the
-    /// lower-triangle pattern with the given backend: faer's AMD, or CHOLMOD's default strategy
-    /// (AMD, METIS when AMD fills badly). An unavailable backend is an [`Error::Solver`].
+    /// lower-triangle pattern with the given backend and [`OrderingRule::Auto`]: for faer, AMD
+    /// or METIS's nested dissection, whichever needs fewer flops; for CHOLMOD, its default
+    /// strategy (AMD, METIS when AMD fills badly). An unavailable backend is an
+    /// [`Error::Solver`].
     ///
     /// The unknowns `trailing` (none: `&[]`) are eliminated last, in the order given, the
     /// others keeping the backend's own order. After [`factorize`](Self::factorize), the
@@ -138,37 +144,18 @@ impl SparseCholesky {
         backend: Backend,
         trailing: &[usize],
     ) -> Result<Self> {
-        if trailing.is_empty() {
-            Self::analyze_plain(pattern, backend)
-        } else {
-            Self::analyze_with_trailing(pattern, backend, trailing)
-        }
+        Self::analyze_ordered(pattern, backend, trailing, OrderingRule::Auto)
     }
 
-    /// [`analyze`](Self::analyze) with no trailing unknowns: the backend's own ordering.
-    fn analyze_plain(
-        pattern: SymbolicSparseColMatRef<'_, usize>,
-        backend: Backend,
-    ) -> Result<Self> {
-        backend.check_available()?;
-        let engine = match backend {
-            Backend::Faer => {
-                Engine::Faer(Box::new(FaerLlt::analyze(pattern, SymmetricOrdering::Amd)?))
-            }
-            #[cfg(feature = "suitesparse")]
-            Backend::Cholmod => Engine::Cholmod(cholmod::CholmodLlt::analyze(pattern, None)?),
-            #[cfg(not(feature = "suitesparse"))]
-            Backend::Cholmod => unreachable!("checked by check_available"),
-        };
-        Ok(Self::with_engine(engine, 0))
-    }
-
-    /// [`analyze`](Self::analyze) with trailing unknowns: the backend's order with them moved
-    /// to the end.
-    fn analyze_with_trailing(
+    /// [`analyze`](Self::analyze) with the fill-reducing ordering chosen by `rule` (the
+    /// trailing unknowns moved to the end of it); [`ordering`](Self::ordering) reports the one
+    /// used. A nested dissection requested without METIS, or a given order that is not a
+    /// permutation, is an error.
+    pub fn analyze_ordered(
         pattern: SymbolicSparseColMatRef<'_, usize>,
         backend: Backend,
         trailing: &[usize],
+        rule: OrderingRule<'_>,
     ) -> Result<Self> {
         backend.check_available()?;
         let n = pattern.nrows();
@@ -180,49 +167,76 @@ impl SparseCholesky {
                 )));
             }
         }
-        // The backend's fill-reducing order with the trailing unknowns moved to the end.
-        let order = |own: &mut dyn Iterator<Item = usize>| -> Vec<usize> {
-            own.filter(|&i| !last[i])
+        // An elimination order with the trailing unknowns moved to the end.
+        let moved = |own: &[usize]| -> Vec<usize> {
+            own.iter()
+                .copied()
+                .filter(|&i| !last[i])
                 .chain(trailing.iter().copied())
                 .collect()
         };
-        let engine = match backend {
+        let (engine, ordering) = match backend {
             Backend::Faer => {
-                let amd = FaerLlt::analyze(pattern, SymmetricOrdering::Amd)?;
-                let fwd = match amd.symbolic.perm() {
-                    Some(p) => order(&mut p.arrays().0.iter().copied()),
-                    None => order(&mut (0..n)),
-                };
-                drop(amd);
-                let mut inv = vec![0; n];
-                for (new, &old) in fwd.iter().enumerate() {
-                    inv[old] = new;
-                }
-                let perm = PermRef::new_checked(&fwd, &inv, n);
-                Engine::Faer(Box::new(FaerLlt::analyze(
-                    pattern,
-                    SymmetricOrdering::Custom(perm),
-                )?))
+                let (symbolic, ordering) =
+                    faer_symbolic(pattern, rule, &moved, !trailing.is_empty())?;
+                (Engine::Faer(Box::new(FaerLlt::new(symbolic)?)), ordering)
             }
             #[cfg(feature = "suitesparse")]
             Backend::Cholmod => {
-                let mut llt = cholmod::CholmodLlt::analyze(pattern, None)?;
-                let fwd = order(&mut llt.perm().iter().map(|&i| i as usize));
-                llt.reorder(&fwd)?;
-                Engine::Cholmod(llt)
+                let (order, ordering) = match rule {
+                    OrderingRule::Auto => (None, FillOrdering::CholmodDefault),
+                    OrderingRule::Amd => (Some(amd_order(pattern)?), FillOrdering::Amd),
+                    OrderingRule::NestedDissection => (
+                        Some(ordering::nested_dissection(pattern)?),
+                        FillOrdering::NestedDissection,
+                    ),
+                    OrderingRule::Given(o) => (Some(o.to_vec()), FillOrdering::Given),
+                };
+                let mut llt =
+                    cholmod::CholmodLlt::analyze(pattern, order.map(|o| moved(&o)).as_deref())?;
+                if ordering == FillOrdering::CholmodDefault && !trailing.is_empty() {
+                    let own: Vec<usize> = llt.perm().iter().map(|&i| i as usize).collect();
+                    llt.reorder(&moved(&own))?;
+                }
+                (Engine::Cholmod(llt), ordering)
             }
             #[cfg(not(feature = "suitesparse"))]
             Backend::Cholmod => unreachable!("checked by check_available"),
         };
-        Ok(Self::with_engine(engine, trailing.len()))
-    }
-
-    fn with_engine(engine: Engine, trailing: usize) -> Self {
-        SparseCholesky {
+        Ok(SparseCholesky {
             engine,
             factorizations: 0,
             factored: false,
-            trailing,
+            trailing: trailing.len(),
+            ordering,
+        })
+    }
+
+    /// The fill-reducing ordering in use.
+    pub fn ordering(&self) -> FillOrdering {
+        self.ordering
+    }
+
+    /// The elimination order: `order()[k]` is the original index of the `k`-th pivot (to give
+    /// another backend the same permutation with [`OrderingRule::Given`]).
+    pub fn order(&self) -> Vec<usize> {
+        match &self.engine {
+            Engine::Faer(f) => match f.symbolic.perm() {
+                Some(p) => p.arrays().0.to_vec(),
+                None => (0..f.n()).collect(),
+            },
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.perm().iter().map(|&i| i as usize).collect(),
+        }
+    }
+
+    /// Floating-point operations of one numeric factorization, `sum_j c_j^2` over the columns
+    /// of `L` with `c_j` entries (see [`ordering::factor_flops`]; CHOLMOD's own count for it).
+    pub fn flops(&self) -> f64 {
+        match &self.engine {
+            Engine::Faer(f) => ordering::factor_flops(&f.symbolic),
+            #[cfg(feature = "suitesparse")]
+            Engine::Cholmod(c) => c.flops(),
         }
     }
 
@@ -925,18 +939,99 @@ impl Blocks<'_> {
     }
 }
 
+/// faer's symbolic factorization with the ordering `rule` (see
+/// [`SparseCholesky::analyze_ordered`]), `moved` putting the trailing unknowns last.
+fn faer_symbolic(
+    pattern: SymbolicSparseColMatRef<'_, usize>,
+    rule: OrderingRule<'_>,
+    moved: &dyn Fn(&[usize]) -> Vec<usize>,
+    has_trailing: bool,
+) -> Result<(SymbolicCholesky<usize>, FillOrdering)> {
+    let custom = |order: &[usize]| symbolic_with(pattern, Some(&moved(order)));
+    let amd = || {
+        if has_trailing {
+            custom(&amd_order(pattern)?)
+        } else {
+            symbolic_with(pattern, None)
+        }
+    };
+    match rule {
+        OrderingRule::Auto => {
+            let amd = amd()?;
+            if ordering::factor_flops(&amd) < ordering::ND_TRIAL_FLOPS {
+                return Ok((amd, FillOrdering::Amd));
+            }
+            if ordering::metis_status().is_err() {
+                return Ok((amd, FillOrdering::AmdWithoutMetis));
+            }
+            let nd = custom(&ordering::nested_dissection(pattern)?)?;
+            Ok(
+                if ordering::factor_flops(&nd) < ordering::factor_flops(&amd) {
+                    (nd, FillOrdering::NestedDissection)
+                } else {
+                    (amd, FillOrdering::Amd)
+                },
+            )
+        }
+        OrderingRule::Amd => Ok((amd()?, FillOrdering::Amd)),
+        OrderingRule::NestedDissection => Ok((
+            custom(&ordering::nested_dissection(pattern)?)?,
+            FillOrdering::NestedDissection,
+        )),
+        OrderingRule::Given(order) => Ok((custom(order)?, FillOrdering::Given)),
+    }
+}
+
+/// faer's AMD elimination order of the pattern.
+fn amd_order(pattern: SymbolicSparseColMatRef<'_, usize>) -> Result<Vec<usize>> {
+    let symbolic = symbolic_with(pattern, None)?;
+    Ok(match symbolic.perm() {
+        Some(p) => p.arrays().0.to_vec(),
+        None => (0..pattern.nrows()).collect(),
+    })
+}
+
+/// faer's symbolic factorization with the elimination order `order` (`None`: AMD); an order
+/// that is not a permutation of the unknowns is an error.
+fn symbolic_with(
+    pattern: SymbolicSparseColMatRef<'_, usize>,
+    order: Option<&[usize]>,
+) -> Result<SymbolicCholesky<usize>> {
+    let n = pattern.nrows();
+    let mut inv;
+    let ordering = match order {
+        None => SymmetricOrdering::Amd,
+        Some(fwd) => {
+            inv = vec![usize::MAX; n];
+            if fwd.len() != n {
+                return Err(Error::InvalidInput(format!(
+                    "elimination order of length {}, the matrix has order {n}",
+                    fwd.len()
+                )));
+            }
+            for (new, &old) in fwd.iter().enumerate() {
+                if old >= n || inv[old] != usize::MAX {
+                    return Err(Error::InvalidInput(format!(
+                        "elimination order: unknown {old} is out of range or repeated"
+                    )));
+                }
+                inv[old] = new;
+            }
+            SymmetricOrdering::Custom(PermRef::new_checked(fwd, &inv, n))
+        }
+    };
+    factorize_symbolic_cholesky(
+        pattern,
+        Side::Lower,
+        ordering,
+        CholeskySymbolicParams::default(),
+    )
+    .map_err(|e| Error::Solver(format!("symbolic analysis failed: {e:?}")))
+}
+
 impl FaerLlt {
-    fn analyze(
-        pattern: SymbolicSparseColMatRef<'_, usize>,
-        ordering: SymmetricOrdering<'_, usize>,
-    ) -> Result<Self> {
-        let symbolic = factorize_symbolic_cholesky(
-            pattern,
-            Side::Lower,
-            ordering,
-            CholeskySymbolicParams::default(),
-        )
-        .map_err(|e| Error::Solver(format!("symbolic analysis failed: {e:?}")))?;
+    /// The workspace of factor and solve for a symbolic factorization.
+    fn new(symbolic: SymbolicCholesky<usize>) -> Result<Self> {
         let par = Par::Seq;
         let req = StackReq::any_of(&[
             symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()),
