@@ -66,6 +66,7 @@ use super::bodies::{Bodies, HostSystem};
 use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{self, ContactSurface, SurfaceMeasure};
+pub use super::tangent::{SlipDirection, Tangential, Traction};
 use crate::assembly::dof;
 use crate::element::geometry::edge_normal;
 use crate::error::{ContactError, Error, Result};
@@ -423,20 +424,22 @@ impl Default for ContactOptions {
 }
 
 /// State of an A node.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum NodeState {
     /// Not in contact: no rows.
     Open,
     /// In contact, no relative tangential motion since the increment began.
     Stick,
-    /// In contact, sliding; `sign` is the direction (along `s`) of A's slip relative to B, and
-    /// the friction traction on A is `ts = mu sign tn` (opposing it, since `tn < 0`).
+    /// In contact, sliding; `direction` is the direction of A's slip relative to B in the
+    /// node's tangent space (in the plane `+s` or `-s`), and the friction traction on A is the
+    /// law's `ts = mu tn direction` (opposing it, since `tn < 0`).
     Slip {
-        /// +1 or -1.
-        sign: i8,
+        /// A unit vector of the tangent space (in the plane [`SlipDirection::PLUS`] or
+        /// [`SlipDirection::MINUS`]; before 0.9 a sign `+1` or `-1`).
+        direction: SlipDirection,
     },
     /// In contact without friction (a pair with `friction = 0`): only the normal row, no
-    /// tangential traction (`ts = 0`). (Before 0.7.0 recorded as `Slip { sign: 1 }`.)
+    /// tangential traction (`ts = 0`). (Before 0.7.0 recorded as a slip along `+s`.)
     Frictionless,
 }
 
@@ -448,6 +451,16 @@ impl NodeState {
             NodeState::Stick => "stick",
             NodeState::Slip { .. } => "slip",
             NodeState::Frictionless => "frictionless",
+        }
+    }
+
+    /// Whether `other` is the same state, slip directions compared by
+    /// [`SlipDirection::same_as`] (what the active set's cycle check compares; in the plane
+    /// the same as `==`).
+    pub fn same_as(&self, other: &NodeState) -> bool {
+        match (self, other) {
+            (NodeState::Slip { direction: a }, NodeState::Slip { direction: b }) => a.same_as(b),
+            _ => self == other,
         }
     }
 }
@@ -631,8 +644,7 @@ pub type Monitor = Box<dyn FnMut(&IterationRecord) -> bool + Send>;
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct NodeData {
     state: NodeState,
-    tn: f64,
-    ts: f64,
+    traction: Traction,
 }
 
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
@@ -874,8 +886,7 @@ impl ContactAnalysis {
                 vec![
                     NodeData {
                         state: NodeState::Open,
-                        tn: 0.0,
-                        ts: 0.0,
+                        traction: Traction::zero(1),
                     };
                     p.a.len()
                 ]
@@ -1719,7 +1730,7 @@ impl ContactAnalysis {
         number: usize,
         iterations: usize,
         states: &[Vec<NodeState>],
-        tractions: &[Vec<(f64, f64)>],
+        tractions: &[Vec<Traction>],
         uc: Vec<f64>,
         surfaces: Vec<ContactSurface>,
         converged: Converged,
@@ -1737,8 +1748,8 @@ impl ContactAnalysis {
         }
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {
-                let (tn, ts) = tractions[p][k];
-                self.nodes[p][k] = NodeData { state, tn, ts };
+                let traction = tractions[p][k];
+                self.nodes[p][k] = NodeData { state, traction };
             }
         }
         self.increment = number;

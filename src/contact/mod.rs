@@ -6,6 +6,7 @@
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
 //! * [`friction`]: the friction laws the iteration asks about (Coulomb).
+//! * [`tangent`]: a node's tangent space for any dimension: tractions, slip directions.
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
 //!   its results.
 
@@ -14,3 +15,4 @@ pub mod facing;
 pub mod friction;
 pub mod geometry;
 pub mod iteration;
+pub mod tangent;

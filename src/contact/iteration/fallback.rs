@@ -154,7 +154,7 @@ impl ContactAnalysis {
                 None => NodeState::Frictionless,
                 Some(ts) if ts.abs() >= (1.0 - FALLBACK_CONE) * law.stick_limit(t[i]) => {
                     NodeState::Slip {
-                        sign: if ts > 0.0 { -1 } else { 1 },
+                        direction: SlipDirection::opposing(Tangential::along(ts)),
                     }
                 }
                 Some(_) => NodeState::Stick,
@@ -299,7 +299,8 @@ impl<'a> Linearized<'a> {
                     conditions[j] = if at.abs() < law.stick_limit(an) {
                         Condition::Row
                     } else {
-                        Condition::Cone(law.slip_coefficient(if at > 0.0 { -1 } else { 1 }))
+                        let slip = SlipDirection::opposing(Tangential::along(at));
+                        Condition::Cone(law.slip_coefficients(slip).components()[0])
                     };
                 }
             }
