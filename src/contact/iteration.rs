@@ -80,6 +80,7 @@ mod active_set;
 mod boundary;
 mod checks;
 mod cutback;
+mod failure;
 mod fallback;
 mod loads;
 #[cfg(feature = "oracles")]
@@ -88,10 +89,11 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
-use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
+use active_set::{ActiveSet, BNodes, Commit, Locks, NodeKey, count};
 use boundary::{Flexibility, NodeFlexibility};
 use checks::change_ratio;
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
+use failure::Failure;
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Plate, plate_force};
@@ -615,14 +617,14 @@ pub enum PlateControl {
 }
 
 /// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
-/// prescribed dofs), the locks of its contact set, and whether its rules closed A nodes for B
-/// nodes penetrating their open segments (not in the fallback's last attempt, see
+/// prescribed dofs), the locks of its contact set, and how its rules judged B nodes
+/// penetrating open segments (at convergence only in the fallback's last attempt, see
 /// `rules.rs`).
 #[derive(Clone)]
 struct Settled {
     load: Vec<f64>,
     locks: Locks,
-    pointwise_b: bool,
+    b_nodes: BNodes,
 }
 
 /// What the full field of a converged increment is recovered from.
@@ -687,10 +689,6 @@ pub struct ContactAnalysis {
     fallback: bool,
     /// Increments that converged from the fallback's states.
     fallbacks: usize,
-    /// The rules close an A node where a B node penetrates its open segments (off in the
-    /// fallback's last attempt, whose condition check at convergence measures those
-    /// penetrations, and in the first attempt of the same totals again after it).
-    pointwise_b: bool,
     /// What the last converged increment without a plate settled with.
     settled: Option<Settled>,
     /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
@@ -904,7 +902,6 @@ impl ContactAnalysis {
             refactor_each_iteration: false,
             fallback: true,
             fallbacks: 0,
-            pointwise_b: true,
             largest_motion: 0.0,
             largest_node_motion: 0.0,
             converged: None,
@@ -1302,9 +1299,9 @@ impl ContactAnalysis {
         // the same totals again: resume with the last increment's locks and its way of
         // judging B nodes, so that a contact set it settled by locking or in the fallback's
         // last attempt settles at once on the same state
-        let (locks, pointwise_b) = match (&self.settled, control) {
-            (Some(last), None) if last.load == load => (last.locks.clone(), last.pointwise_b),
-            _ => (Locks::default(), true),
+        let (locks, b_nodes) = match (&self.settled, control) {
+            (Some(last), None) if last.load == load => (last.locks.clone(), last.b_nodes),
+            _ => (Locks::default(), BNodes::Pointwise),
         };
         let attempt = Attempt {
             number,
@@ -1322,22 +1319,31 @@ impl ContactAnalysis {
             flexibility_before: self.timings.flexibility,
         };
         let mut records = Vec::new();
-        self.pointwise_b = pointwise_b;
-        let first = self.iterate(&attempt, states, locks, &mut records);
-        self.pointwise_b = true;
+        let first = self.iterate(&attempt, states, locks, b_nodes, &mut records);
         match first {
-            Err(e) if self.fallback && border.is_none() && fallback::settles_by_fallback(&e) => {
+            Err(e)
+                if self.fallback && border.is_none() && Failure::of(&e).fallback_may_settle() =>
+            {
                 // the paper's rules did not settle: start again from the states of the
                 // solution of the linearized conditions (fallback.rs), first with the
                 // paper's rules from those states, then with B nodes checked pointwise only at
                 // convergence (rules.rs)
                 let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
-                let mut info =
-                    self.iterate(&attempt, states.clone(), Locks::default(), &mut records);
+                let mut info = self.iterate(
+                    &attempt,
+                    states.clone(),
+                    Locks::default(),
+                    BNodes::Pointwise,
+                    &mut records,
+                );
                 if info.is_err() {
-                    self.pointwise_b = false;
-                    info = self.iterate(&attempt, states, Locks::default(), &mut records);
-                    self.pointwise_b = true;
+                    info = self.iterate(
+                        &attempt,
+                        states,
+                        Locks::default(),
+                        BNodes::AtConvergence,
+                        &mut records,
+                    );
                 }
                 // a state that settled but breaks a condition says more than the rules' failure
                 let info = info.map_err(|last| match last {
@@ -1358,6 +1364,7 @@ impl ContactAnalysis {
         attempt: &Attempt<'_>,
         states: Vec<Vec<NodeState>>,
         locks: Locks,
+        b_nodes: BNodes,
         records: &mut Vec<IterationRecord>,
     ) -> Result<IncrementInfo> {
         let Attempt {
@@ -1377,7 +1384,7 @@ impl ContactAnalysis {
         // iterate on the contact dofs only; geometry from the start configuration
         let mut uc = startc.clone();
         let mut surfaces = self.surfaces.clone();
-        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds);
+        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
         let first_record = records.len();
         // time of the refactor-every-iteration variant (feature `oracles`), counted as
         // factorization
@@ -1415,7 +1422,14 @@ impl ContactAnalysis {
                 }
                 .into());
             }
-            let violation = self.violation(&surfaces, states, &tractions, &uc_new, startc);
+            let violation = self.violation(
+                &surfaces,
+                states,
+                &tractions,
+                set.b_nodes(),
+                &uc_new,
+                startc,
+            );
             let (active, stick, slip) = set.count();
             let record = IterationRecord {
                 increment: number,
@@ -1481,7 +1495,7 @@ impl ContactAnalysis {
                 self.settled = control.is_none().then(|| Settled {
                     load: load.to_vec(),
                     locks: set.locks().clone(),
-                    pointwise_b: self.pointwise_b,
+                    b_nodes: set.b_nodes(),
                 });
                 return Ok(self.finish(
                     number,

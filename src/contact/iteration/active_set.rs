@@ -50,11 +50,23 @@ pub(super) struct Locks {
     pub(super) open: Vec<NodeKey>,
 }
 
-/// The states of every A node during one increment, with the locks and the history.
+/// How the rules judge a B node that penetrates an A segment whose two nodes are open.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum BNodes {
+    /// In every iteration: the rules close the nearer A node (the paper's rules, the default).
+    Pointwise,
+    /// Only at convergence, by the condition check (the fallback's last attempt, and the
+    /// same totals again after it): the rules leave such B nodes alone.
+    AtConvergence,
+}
+
+/// The states of every A node during one increment, with the locks, the way B nodes are
+/// judged, and the history.
 #[derive(Debug, Clone)]
 pub(super) struct ActiveSet {
     states: Vec<Vec<NodeState>>,
     locks: Locks,
+    b_nodes: BNodes,
     /// The state sets since the increment began, or since the last lock.
     history: Vec<Vec<Vec<NodeState>>>,
     /// Lock rounds used and allowed.
@@ -71,9 +83,21 @@ impl ActiveSet {
             history: vec![states.clone()],
             states,
             locks,
+            b_nodes: BNodes::Pointwise,
             rounds: 0,
             max_rounds,
         }
+    }
+
+    /// The set with B nodes judged as `b_nodes` (the default: [`BNodes::Pointwise`]).
+    pub(super) fn judging(mut self, b_nodes: BNodes) -> Self {
+        self.b_nodes = b_nodes;
+        self
+    }
+
+    /// How the rules judge B nodes over open A segments.
+    pub(super) fn b_nodes(&self) -> BNodes {
+        self.b_nodes
     }
 
     /// The locks so far.

@@ -412,8 +412,8 @@ impl ContactAnalysis {
     ///                 distance >= 0                  max(0, -distance) / g_s
     /// ```
     ///
-    /// The last line is measured only when the rules do not check B nodes themselves (the
-    /// fallback's last attempt, see `fallback.rs`): otherwise the rules close the nearer A node
+    /// The last line is measured only when the rules do not check B nodes themselves
+    /// (`b_nodes` is [`BNodes::AtConvergence`]: the fallback's last attempt, see `fallback.rs`): otherwise the rules close the nearer A node
     /// of a B node that penetrates by more than the gap tolerance (a node locked open
     /// excepted, as 0.6.2 did: beside one, a B node may end up through A's segment by about
     /// `1e-3` of the gap scale, as in the axisymmetric sphere of
@@ -425,6 +425,7 @@ impl ContactAnalysis {
         surfaces: &[ContactSurface],
         states: &[Vec<NodeState>],
         tractions: &[Vec<Traction>],
+        b_nodes: BNodes,
         uc: &[f64],
         startc: &[f64],
     ) -> Violation {
@@ -487,7 +488,7 @@ impl ContactAnalysis {
                     _ => {}
                 }
             }
-            if self.pointwise_b {
+            if b_nodes == BNodes::Pointwise {
                 // the rules hold these: they close the nearer A node
                 continue;
             }

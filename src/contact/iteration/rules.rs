@@ -150,7 +150,7 @@ impl ContactAnalysis {
             let open: Vec<bool> = (0..a.len())
                 .map(|k| states[p][k] == NodeState::Open && depth[k].is_none())
                 .collect();
-            let inside = if self.pointwise_b {
+            let inside = if set.b_nodes() == BNodes::Pointwise {
                 self.b_node_distances(p, &open, &x, xg)
             } else {
                 Vec::new()
