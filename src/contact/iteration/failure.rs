@@ -48,3 +48,38 @@ impl Failure {
         self != Failure::Final
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rules' failures go to the fallback and the cutback, a step too long to the cutback
+    /// only, the rest to neither.
+    #[test]
+    fn each_failure_has_one_remedy() {
+        let unsettled: Error = ContactError::NoConvergence {
+            increment: 1,
+            iterations: 60,
+            last_r: 1.0,
+        }
+        .into();
+        let too_long: Error = ContactError::BeyondSearchDistance {
+            node: 3,
+            segment: [1, 2],
+            depth: 1.0,
+            search_distance: 0.5,
+        }
+        .into();
+        let last = Error::Singular("K".into());
+        assert_eq!(Failure::of(&unsettled), Failure::Unsettled);
+        assert_eq!(Failure::of(&too_long), Failure::TooLong);
+        assert_eq!(Failure::of(&last), Failure::Final);
+        let remedies = |e: &Error| {
+            let f = Failure::of(e);
+            (f.fallback_may_settle(), f.shorter_step_may_settle())
+        };
+        assert_eq!(remedies(&unsettled), (true, true));
+        assert_eq!(remedies(&too_long), (false, true));
+        assert_eq!(remedies(&last), (false, false));
+    }
+}
