@@ -2,7 +2,10 @@
 //! fully covered, nodes locked open not penetrating, nodes locked in slip not sliding against
 //! their friction, small kinematics within their range.
 
-use super::*;
+use super::{
+    BNodes, ContactAnalysis, ContactError, ContactSurface, Kinematics, NodeKey, NodeState, Result,
+    Tangential, Traction, dot, facing, geometry,
+};
 
 /// Under small kinematics, the largest change of an active node's gap caused by sliding with
 /// the pairing frozen (slip times the angle between the surfaces), relative to the contact's

@@ -25,7 +25,10 @@
 //! and the error returned: the analysis is exactly as before the call.
 
 use super::failure::Failure;
-use super::*;
+use super::{
+    ContactAnalysis, ContactSurface, Converged, Error, IncrementInfo, LoadSolve, NodeData,
+    NodeFlexibility, OnceLock, Plate, PlateControl, Result, Settled,
+};
 
 /// Whether a shorter step may remove the cause of a failed increment
 /// ([`Failure::shorter_step_may_settle`]).

@@ -36,7 +36,10 @@
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
-use super::*;
+use super::{
+    Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, SlipDirection,
+    Tangential, column, dot, plate, rules, small_system,
+};
 use plate::dot_dense;
 use rules::closed_at_rest;
 
@@ -317,6 +320,7 @@ impl<'a> Linearized<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::friction::Coulomb;
     use small_system::Row;
 
     /// The unknowns, `S` and `r` of a test problem.

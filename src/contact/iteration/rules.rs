@@ -24,7 +24,10 @@
 //! When the rules do not settle, the increment starts again from the fallback's states
 //! (`fallback.rs`).
 
-use super::*;
+use super::{
+    ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, FrictionLaw, NodeState,
+    Result, SlipDirection, Tangential, Traction, edge_normal, geometry,
+};
 
 /// A run of penetrating nodes away from the contact zone closes where its penetration is at
 /// least this fraction of its deepest ([`ActiveSet::closing`]).
@@ -287,6 +290,7 @@ impl ActiveSet {
 
 #[cfg(test)]
 mod tests {
+    use super::super::Locks;
     use super::*;
 
     const SLIP: NodeState = NodeState::Slip {

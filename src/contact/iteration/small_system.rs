@@ -4,7 +4,14 @@
 //! estimate (the reference algebra of the test oracles, feature `oracles`; the product's
 //! algebra is `boundary.rs`).
 
-use super::*;
+#[cfg(any(test, feature = "oracles"))]
+use super::DVector;
+#[cfg(feature = "oracles")]
+use super::plate::Border;
+use super::{
+    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Tangential,
+    Traction, dof, rules,
+};
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
 
