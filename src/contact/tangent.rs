@@ -9,12 +9,12 @@
 //! handle these types only, so that a surface with two tangents plugs in without editing them.
 
 /// The most tangential components a node has (`D - 1` for a 3D face).
-pub const MAX_TANGENTS: usize = 2;
+pub(crate) const MAX_TANGENTS: usize = 2;
 
 /// Two slip directions are the same (for the active set's cycle check) when the cosine of
 /// their angle is at least `1 - SAME_DIRECTION`. In the plane a direction is `+s` or `-s` and
 /// the cosine is exactly 1 or -1.
-pub const SAME_DIRECTION: f64 = 1e-12;
+pub(crate) const SAME_DIRECTION: f64 = 1e-12;
 
 /// Components of a vector of the tangent space along the node's tangents `s_1 .. s_{D-1}`
 /// (one in the plane and in axisymmetry, two on a 3D face).
@@ -28,7 +28,7 @@ impl Tangential {
     /// Zero with `len` components (1 or 2).
     ///
     /// # Panics
-    /// When `len` is 0 or above [`MAX_TANGENTS`] (a programming error: the geometry fixes it).
+    /// When `len` is 0 or above `MAX_TANGENTS` (a programming error: the geometry fixes it).
     pub fn zero(len: usize) -> Self {
         assert!((1..=MAX_TANGENTS).contains(&len), "{len} tangents");
         Tangential {
@@ -156,7 +156,7 @@ impl SlipDirection {
         self.0.dot(v)
     }
 
-    /// Whether `other` is the same direction to [`SAME_DIRECTION`] (in the plane: equal).
+    /// Whether `other` is the same direction to `SAME_DIRECTION` (in the plane: equal).
     pub fn same_as(&self, other: &SlipDirection) -> bool {
         self.0.dot(&other.0) >= 1.0 - SAME_DIRECTION
     }
