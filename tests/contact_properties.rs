@@ -513,9 +513,10 @@ fn a_press_whose_corner_alternates_between_stick_and_slip_settles() {
             hycon::contact::iteration::NodeState::Stick => {
                 assert!(node.ts.abs() <= mu * node.tn.abs() * (1.0 + 1e-9))
             }
-            hycon::contact::iteration::NodeState::Slip { sign } => {
+            hycon::contact::iteration::NodeState::Slip { direction } => {
                 assert!((node.ts.abs() - mu * node.tn.abs()).abs() <= 1e-12 * node.tn.abs());
-                assert!(f64::from(sign) * node.ts <= 0.0, "{node:?}");
+                let ts = hycon::contact::tangent::Tangential::along(node.ts);
+                assert!(direction.along(&ts) <= 0.0, "{node:?}");
             }
             other => panic!("{other:?}: the punch is pressed on its whole width"),
         }

@@ -278,6 +278,10 @@ enum Bench {
         /// the report lists the ones the reference settles).
         #[arg(long, value_delimiter = ',')]
         press: Vec<usize>,
+        /// Write one line per press to this file (`seed index outcome iterations paper
+        /// paper-iterations`, tab separated), to compare two versions press by press.
+        #[arg(long)]
+        list: Option<std::path::PathBuf>,
     },
     /// The L2 error of the contact pressure against where the Hertz edge falls between two
     /// nodes (frictionless reference scene, small kinematics): the method and the best
@@ -1056,14 +1060,24 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             seed,
             ranges,
             press,
+            list,
         } => {
+            let mut lines = String::new();
             for seed in seed {
                 let presses: Vec<_> = hycon_lab::presses::Press::draw_from(ranges, count, seed)
                     .into_iter()
                     .enumerate()
                     .filter(|(i, _)| press.is_empty() || press.contains(i))
                     .collect();
-                presses_report(&hycon_lab::presses::outcomes(&presses), ranges, seed);
+                let outcomes = hycon_lab::presses::outcomes(&presses);
+                presses_report(&outcomes, ranges, seed);
+                for line in &outcomes.listing {
+                    lines.push_str(&format!("{seed}\t{line}\n"));
+                }
+            }
+            if let Some(path) = list {
+                std::fs::write(&path, lines)?;
+                println!("written: {}", path.display());
             }
         }
         Bench::Contact { n, threads } => {

@@ -350,6 +350,41 @@ pub struct Outcomes {
     pub rescued: (usize, usize, f64),
     /// Seconds of the failed presses with the new rules (the cutback's tries included).
     pub failed_seconds: f64,
+    /// One line per press, in the order run: what `hycon bench presses --list` writes.
+    pub listing: Vec<PressLine>,
+}
+
+/// How one press ended, both ways: the line `hycon bench presses --list` writes for it, to
+/// compare two versions press by press.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PressLine {
+    /// The press's index in its draw (from 0).
+    pub index: usize,
+    /// Its outcome class with hycon's rules: `converged` (with `fallback` or `cutback` when
+    /// they were needed) or the failure's class as [`Outcomes::failed`] counts it.
+    pub outcome: String,
+    /// Iterations with hycon's rules (records of the converged analysis; none when failed).
+    pub iterations: Option<usize>,
+    /// Its outcome with the paper's rules alone: `converged` or the error's kind.
+    pub paper: String,
+    /// Iterations with the paper's rules alone.
+    pub paper_iterations: Option<usize>,
+}
+
+impl std::fmt::Display for PressLine {
+    /// `index<TAB>outcome<TAB>iterations<TAB>paper<TAB>paper iterations` (`-` for none).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let count = |n: Option<usize>| n.map_or("-".to_string(), |n| n.to_string());
+        write!(
+            f,
+            "{}\t{}\t{}\t{}\t{}",
+            self.index,
+            self.outcome,
+            count(self.iterations),
+            self.paper,
+            count(self.paper_iterations)
+        )
+    }
 }
 
 /// The largest condition violation at convergence (the last record of each increment).
@@ -399,14 +434,18 @@ pub fn outcomes(presses: &[(usize, Press)]) -> Outcomes {
         };
         let (new, new_seconds) = timed(true);
         let (paper, paper_seconds) = timed(false);
-        match &paper {
-            Ok(_) => out.paper_converged += 1,
-            Err(e) => {
-                *out.paper_failed
-                    .entry(format!("{}, {}", kind(e), friction(press)))
-                    .or_default() += 1
+        let paper_line = match &paper {
+            Ok(_) => {
+                out.paper_converged += 1;
+                "converged".to_string()
             }
-        }
+            Err(e) => {
+                let class = format!("{}, {}", kind(e), friction(press));
+                *out.paper_failed.entry(class.clone()).or_default() += 1;
+                class
+            }
+        };
+        let paper_iterations = paper.as_ref().ok().map(|b| b.records().len());
         match (&new, &paper) {
             (Ok(a), Ok(b)) => {
                 out.both += 1;
@@ -422,14 +461,23 @@ pub fn outcomes(presses: &[(usize, Press)]) -> Outcomes {
             }
             _ => {}
         }
-        match new {
+        let (outcome, iterations) = match new {
             Ok(a) => {
                 out.converged += 1;
-                out.by_fallback += usize::from(a.fallbacks() > 0);
-                out.by_cutback += usize::from(a.records().iter().any(|r| r.sub_increment > 1));
+                let fallback = a.fallbacks() > 0;
+                let cutback = a.records().iter().any(|r| r.sub_increment > 1);
+                out.by_fallback += usize::from(fallback);
+                out.by_cutback += usize::from(cutback);
                 let v = converged_violation(&a);
                 out.worst_violation = out.worst_violation.max(v);
                 out.violating += usize::from(v > hycon::contact::iteration::CONDITION_LIMIT);
+                let mut outcome = "converged".to_string();
+                for (used, name) in [(fallback, "fallback"), (cutback, "cutback")] {
+                    if used {
+                        outcome.push_str(&format!(", {name}"));
+                    }
+                }
+                (outcome, Some(a.records().len()))
             }
             Err(e) => {
                 out.failed_seconds += new_seconds;
@@ -440,11 +488,18 @@ pub fn outcomes(presses: &[(usize, Press)]) -> Outcomes {
                     }
                     Err(r) => format!("the reference fails too ({})", kind(&r)),
                 };
-                *out.failed
-                    .entry(format!("{}, {}: {class}", kind(&e), friction(press)))
-                    .or_default() += 1;
+                let class = format!("{}, {}: {class}", kind(&e), friction(press));
+                *out.failed.entry(class.clone()).or_default() += 1;
+                (class, None)
             }
-        }
+        };
+        out.listing.push(PressLine {
+            index,
+            outcome,
+            iterations,
+            paper: paper_line,
+            paper_iterations,
+        });
     }
     out
 }

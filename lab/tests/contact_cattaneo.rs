@@ -16,7 +16,9 @@
 //! distance between the two stick/slip boundaries, each located halfway between the outermost
 //! stick node and the next (slip) node.
 
-use hycon::contact::iteration::{ContactAnalysis, ContactOptions, NodeResult, NodeState};
+use hycon::contact::iteration::{
+    ContactAnalysis, ContactOptions, NodeResult, NodeState, SlipDirection,
+};
 use hycon_lab::cases::Hertz;
 use hycon_lab::scene::DiskOnBlock;
 
@@ -168,7 +170,14 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
         slip_signs_ok: nodes
             .iter()
             .filter(|n| matches!(n.state, NodeState::Slip { .. }))
-            .all(|n| n.state == NodeState::Slip { sign: -1 } && n.ts > 0.0 && n.tangent[0] > 0.99),
+            .all(|n| {
+                n.state
+                    == NodeState::Slip {
+                        direction: SlipDirection::MINUS,
+                    }
+                    && n.ts > 0.0
+                    && n.tangent[0] > 0.99
+            }),
     }
 }
 

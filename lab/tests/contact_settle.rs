@@ -57,11 +57,12 @@ fn settles(ranges: Ranges, indices: &[usize]) {
                 NodeState::Stick => {
                     assert!(n.tn <= 0.0 && n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9))
                 }
-                NodeState::Slip { sign } => {
+                NodeState::Slip { direction } => {
                     assert!(n.tn <= 0.0, "{ranges:?} {i}: {n:?}");
                     assert!((n.ts.abs() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max);
                     // the friction on A opposes its slip
-                    assert!(f64::from(sign) * n.ts <= 0.0, "{ranges:?} {i}: {n:?}");
+                    let ts = hycon::contact::tangent::Tangential::along(n.ts);
+                    assert!(direction.along(&ts) <= 0.0, "{ranges:?} {i}: {n:?}");
                 }
             }
         }

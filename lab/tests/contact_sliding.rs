@@ -23,7 +23,7 @@
 //! * Hertz at the same `P` with `E*` of the scene.
 
 use hycon::contact::iteration::{
-    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState,
+    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState, SlipDirection,
 };
 use hycon_lab::cases::Hertz;
 use hycon_lab::scene::{DiskOnBlock, Scene};
@@ -553,7 +553,9 @@ fn frictional_sliding() {
             // friction drags the block forwards
             assert_eq!(
                 n.state,
-                NodeState::Slip { sign: -1 },
+                NodeState::Slip {
+                    direction: SlipDirection::MINUS
+                },
                 "step {k} node {}",
                 n.node
             );

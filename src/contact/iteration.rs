@@ -67,6 +67,7 @@ use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{self, ContactSurface, SurfaceMeasure};
 use super::handover::{self, Section};
+pub use super::tangent::{SlipDirection, Tangential, Traction};
 use crate::assembly::dof;
 use crate::element::geometry::edge_normal;
 use crate::error::{ContactError, Error, Result};
@@ -80,6 +81,7 @@ mod active_set;
 mod boundary;
 mod checks;
 mod cutback;
+mod failure;
 mod fallback;
 mod loads;
 #[cfg(feature = "oracles")]
@@ -88,10 +90,11 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
-use active_set::{ActiveSet, Commit, Locks, NodeKey, count};
+use active_set::{ActiveSet, BNodes, Commit, Locks, NodeKey, count};
 use boundary::{Flexibility, NodeFlexibility};
 use checks::change_ratio;
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
+use failure::Failure;
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Plate, plate_force};
@@ -433,20 +436,22 @@ impl Default for ContactOptions {
 }
 
 /// State of an A node.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum NodeState {
     /// Not in contact: no rows.
     Open,
     /// In contact, no relative tangential motion since the increment began.
     Stick,
-    /// In contact, sliding; `sign` is the direction (along `s`) of A's slip relative to B, and
-    /// the friction traction on A is `ts = mu sign tn` (opposing it, since `tn < 0`).
+    /// In contact, sliding; `direction` is the direction of A's slip relative to B in the
+    /// node's tangent space (in the plane `+s` or `-s`), and the friction traction on A is the
+    /// law's `ts = mu tn direction` (opposing it, since `tn < 0`).
     Slip {
-        /// +1 or -1.
-        sign: i8,
+        /// A unit vector of the tangent space (in the plane [`SlipDirection::PLUS`] or
+        /// [`SlipDirection::MINUS`]; before 0.9 a sign `+1` or `-1`).
+        direction: SlipDirection,
     },
     /// In contact without friction (a pair with `friction = 0`): only the normal row, no
-    /// tangential traction (`ts = 0`). (Before 0.7.0 recorded as `Slip { sign: 1 }`.)
+    /// tangential traction (`ts = 0`). (Before 0.7.0 recorded as a slip along `+s`.)
     Frictionless,
 }
 
@@ -458,6 +463,16 @@ impl NodeState {
             NodeState::Stick => "stick",
             NodeState::Slip { .. } => "slip",
             NodeState::Frictionless => "frictionless",
+        }
+    }
+
+    /// Whether `other` is the same state, slip directions compared by
+    /// [`SlipDirection::same_as`] (what the active set's cycle check compares; in the plane
+    /// the same as `==`).
+    pub fn same_as(&self, other: &NodeState) -> bool {
+        match (self, other) {
+            (NodeState::Slip { direction: a }, NodeState::Slip { direction: b }) => a.same_as(b),
+            _ => self == other,
         }
     }
 }
@@ -612,14 +627,14 @@ pub enum PlateControl {
 }
 
 /// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
-/// prescribed dofs), the locks of its contact set, and whether its rules closed A nodes for B
-/// nodes penetrating their open segments (not in the fallback's last attempt, see
+/// prescribed dofs), the locks of its contact set, and how its rules judged B nodes
+/// penetrating open segments (at convergence only in the fallback's last attempt, see
 /// `rules.rs`).
 #[derive(Clone)]
 struct Settled {
     load: Vec<f64>,
     locks: Locks,
-    pointwise_b: bool,
+    b_nodes: BNodes,
 }
 
 /// What the full field of a converged increment is recovered from.
@@ -641,8 +656,7 @@ pub type Monitor = Box<dyn FnMut(&IterationRecord) -> bool + Send>;
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct NodeData {
     state: NodeState,
-    tn: f64,
-    ts: f64,
+    traction: Traction,
 }
 
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
@@ -685,10 +699,6 @@ pub struct ContactAnalysis {
     fallback: bool,
     /// Increments that converged from the fallback's states.
     fallbacks: usize,
-    /// The rules close an A node where a B node penetrates its open segments (off in the
-    /// fallback's last attempt, whose condition check at convergence measures those
-    /// penetrations, and in the first attempt of the same totals again after it).
-    pointwise_b: bool,
     /// What the last converged increment without a plate settled with.
     settled: Option<Settled>,
     /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
@@ -885,8 +895,7 @@ impl ContactAnalysis {
                 vec![
                     NodeData {
                         state: NodeState::Open,
-                        tn: 0.0,
-                        ts: 0.0,
+                        traction: Traction::zero(1),
                     };
                     p.a.len()
                 ]
@@ -904,7 +913,6 @@ impl ContactAnalysis {
             refactor_each_iteration: false,
             fallback: true,
             fallbacks: 0,
-            pointwise_b: true,
             largest_motion: 0.0,
             largest_node_motion: 0.0,
             converged: None,
@@ -1302,9 +1310,9 @@ impl ContactAnalysis {
         // the same totals again: resume with the last increment's locks and its way of
         // judging B nodes, so that a contact set it settled by locking or in the fallback's
         // last attempt settles at once on the same state
-        let (locks, pointwise_b) = match (&self.settled, control) {
-            (Some(last), None) if last.load == load => (last.locks.clone(), last.pointwise_b),
-            _ => (Locks::default(), true),
+        let (locks, b_nodes) = match (&self.settled, control) {
+            (Some(last), None) if last.load == load => (last.locks.clone(), last.b_nodes),
+            _ => (Locks::default(), BNodes::Pointwise),
         };
         let attempt = Attempt {
             number,
@@ -1322,22 +1330,31 @@ impl ContactAnalysis {
             flexibility_before: self.timings.flexibility,
         };
         let mut records = Vec::new();
-        self.pointwise_b = pointwise_b;
-        let first = self.iterate(&attempt, states, locks, &mut records);
-        self.pointwise_b = true;
+        let first = self.iterate(&attempt, states, locks, b_nodes, &mut records);
         match first {
-            Err(e) if self.fallback && border.is_none() && fallback::settles_by_fallback(&e) => {
+            Err(e)
+                if self.fallback && border.is_none() && Failure::of(&e).fallback_may_settle() =>
+            {
                 // the paper's rules did not settle: start again from the states of the
                 // solution of the linearized conditions (fallback.rs), first with the
                 // paper's rules from those states, then with B nodes checked pointwise only at
                 // convergence (rules.rs)
                 let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
-                let mut info =
-                    self.iterate(&attempt, states.clone(), Locks::default(), &mut records);
+                let mut info = self.iterate(
+                    &attempt,
+                    states.clone(),
+                    Locks::default(),
+                    BNodes::Pointwise,
+                    &mut records,
+                );
                 if info.is_err() {
-                    self.pointwise_b = false;
-                    info = self.iterate(&attempt, states, Locks::default(), &mut records);
-                    self.pointwise_b = true;
+                    info = self.iterate(
+                        &attempt,
+                        states,
+                        Locks::default(),
+                        BNodes::AtConvergence,
+                        &mut records,
+                    );
                 }
                 // a state that settled but breaks a condition says more than the rules' failure
                 let info = info.map_err(|last| match last {
@@ -1358,6 +1375,7 @@ impl ContactAnalysis {
         attempt: &Attempt<'_>,
         states: Vec<Vec<NodeState>>,
         locks: Locks,
+        b_nodes: BNodes,
         records: &mut Vec<IterationRecord>,
     ) -> Result<IncrementInfo> {
         let Attempt {
@@ -1377,7 +1395,7 @@ impl ContactAnalysis {
         // iterate on the contact dofs only; geometry from the start configuration
         let mut uc = startc.clone();
         let mut surfaces = self.surfaces.clone();
-        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds);
+        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
         let first_record = records.len();
         // time of the refactor-every-iteration variant (feature `oracles`), counted as
         // factorization
@@ -1415,7 +1433,14 @@ impl ContactAnalysis {
                 }
                 .into());
             }
-            let violation = self.violation(&surfaces, states, &tractions, &uc_new, startc);
+            let violation = self.violation(
+                &surfaces,
+                states,
+                &tractions,
+                set.b_nodes(),
+                &uc_new,
+                startc,
+            );
             let (active, stick, slip) = set.count();
             let record = IterationRecord {
                 increment: number,
@@ -1481,7 +1506,7 @@ impl ContactAnalysis {
                 self.settled = control.is_none().then(|| Settled {
                     load: load.to_vec(),
                     locks: set.locks().clone(),
-                    pointwise_b: self.pointwise_b,
+                    b_nodes: set.b_nodes(),
                 });
                 return Ok(self.finish(
                     number,
@@ -1734,7 +1759,7 @@ impl ContactAnalysis {
         number: usize,
         iterations: usize,
         states: &[Vec<NodeState>],
-        tractions: &[Vec<(f64, f64)>],
+        tractions: &[Vec<Traction>],
         uc: Vec<f64>,
         surfaces: Vec<ContactSurface>,
         converged: Converged,
@@ -1752,8 +1777,8 @@ impl ContactAnalysis {
         }
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {
-                let (tn, ts) = tractions[p][k];
-                self.nodes[p][k] = NodeData { state, tn, ts };
+                let traction = tractions[p][k];
+                self.nodes[p][k] = NodeData { state, traction };
             }
         }
         self.increment = number;

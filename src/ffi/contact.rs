@@ -1871,7 +1871,9 @@ pub unsafe extern "C" fn hycon_contact_node_results(
                     let (state, slip_sign) = match r.state {
                         NodeState::Open => (HYCON_NODE_OPEN, 0),
                         NodeState::Stick => (HYCON_NODE_STICK, 0),
-                        NodeState::Slip { sign } => (HYCON_NODE_SLIP, i32::from(sign)),
+                        NodeState::Slip { direction } => {
+                            (HYCON_NODE_SLIP, i32::from(direction.sign().unwrap_or(1)))
+                        }
                         NodeState::Frictionless => (HYCON_NODE_FRICTIONLESS, 0),
                     };
                     HyconNodeResult {

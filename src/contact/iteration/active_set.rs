@@ -13,7 +13,9 @@
 //!   and open (penetrating by a hair) has zero traction and zero gap to round-off: it is
 //!   **locked open** and may not close (its penetration is checked at convergence).
 //!
-//! Any other returning set is a cycle, reported with a node that flips.
+//! Any other returning set is a cycle, reported with a node that flips. Sets are compared
+//! node by node with [`NodeState::same_as`]: slip directions by their angle (in the plane
+//! `+s` and `-s`, equal or not; on a 3D face, the same to round-off).
 //!
 //! Which penetrating nodes close is decided with the other rules, in `rules.rs`
 //! ([`ActiveSet::closing`]).
@@ -48,11 +50,23 @@ pub(super) struct Locks {
     pub(super) open: Vec<NodeKey>,
 }
 
-/// The states of every A node during one increment, with the locks and the history.
+/// How the rules judge a B node that penetrates an A segment whose two nodes are open.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum BNodes {
+    /// In every iteration: the rules close the nearer A node (the paper's rules, the default).
+    Pointwise,
+    /// Only at convergence, by the condition check (the fallback's last attempt, and the
+    /// same totals again after it): the rules leave such B nodes alone.
+    AtConvergence,
+}
+
+/// The states of every A node during one increment, with the locks, the way B nodes are
+/// judged, and the history.
 #[derive(Debug, Clone)]
 pub(super) struct ActiveSet {
     states: Vec<Vec<NodeState>>,
     locks: Locks,
+    b_nodes: BNodes,
     /// The state sets since the increment began, or since the last lock.
     history: Vec<Vec<Vec<NodeState>>>,
     /// Lock rounds used and allowed.
@@ -69,9 +83,21 @@ impl ActiveSet {
             history: vec![states.clone()],
             states,
             locks,
+            b_nodes: BNodes::Pointwise,
             rounds: 0,
             max_rounds,
         }
+    }
+
+    /// The set with B nodes judged as `b_nodes` (the default: [`BNodes::Pointwise`]).
+    pub(super) fn judging(mut self, b_nodes: BNodes) -> Self {
+        self.b_nodes = b_nodes;
+        self
+    }
+
+    /// How the rules judge B nodes over open A segments.
+    pub(super) fn b_nodes(&self) -> BNodes {
+        self.b_nodes
     }
 
     /// The locks so far.
@@ -110,7 +136,7 @@ impl ActiveSet {
             .iter()
             .flatten()
             .zip(self.states.iter().flatten())
-            .filter(|(a, b)| a != b)
+            .filter(|(a, b)| !a.same_as(b))
             .count()
     }
 
@@ -125,10 +151,10 @@ impl ActiveSet {
     /// open), the history restarts, and the locked proposal is accepted; otherwise the cycle is
     /// returned and the states stay as they were.
     pub(super) fn commit(&mut self, mut proposed: Vec<Vec<NodeState>>) -> Commit {
-        if proposed == self.states {
+        if same_set(&proposed, &self.states) {
             return Commit::Accepted;
         }
-        let Some(j) = self.history.iter().position(|h| *h == proposed) else {
+        let Some(j) = self.history.iter().position(|h| same_set(h, &proposed)) else {
             self.history.push(proposed.clone());
             self.states = proposed;
             return Commit::Accepted;
@@ -156,6 +182,14 @@ impl ActiveSet {
         self.states = proposed;
         Commit::Accepted
     }
+}
+
+/// Whether two state sets are the same node by node ([`NodeState::same_as`]).
+fn same_set(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(sa, sb)| sa.len() == sb.len() && sa.iter().zip(sb).all(|(x, y)| x.same_as(y)))
 }
 
 /// `(active, stick, slip)` counts (active: every state but open, frictionless included).
@@ -200,17 +234,21 @@ fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<NodeKey>
 
 /// The first node whose state differs between two state sets.
 fn first_difference(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Option<NodeKey> {
-    a.iter()
-        .zip(b)
-        .enumerate()
-        .find_map(|(p, (sa, sb))| sa.iter().zip(sb).position(|(x, y)| x != y).map(|k| (p, k)))
+    a.iter().zip(b).enumerate().find_map(|(p, (sa, sb))| {
+        (sa.iter().zip(sb))
+            .position(|(x, y)| !x.same_as(y))
+            .map(|k| (p, k))
+    })
 }
 
 #[cfg(test)]
 mod tests {
+    use super::super::{SlipDirection, Tangential};
     use super::*;
 
-    const SLIP: NodeState = NodeState::Slip { sign: 1 };
+    const SLIP: NodeState = NodeState::Slip {
+        direction: SlipDirection::PLUS,
+    };
 
     /// A stick/slip alternation is locked in slip, an open/closed one locked open; a cycle of
     /// another kind, or one past the lock rounds, is reported with a flipping node.
@@ -246,5 +284,45 @@ mod tests {
         assert_eq!(edge.locked_open(), &[(0, 0)]);
         assert_eq!(edge.changes(&[vec![SLIP]]), 1);
         assert_eq!(edge.count(), (0, 0, 0));
+    }
+
+    /// The cycle check compares slip directions, not signs: on a face (two tangents) a slip
+    /// whose direction comes back to round-off closes a cycle (locked as a benign stick/slip
+    /// alternation), while a turned direction is a new set; in the plane `-s` is not `+s`.
+    #[test]
+    fn cycles_compare_slip_directions() {
+        use NodeState::Stick;
+        let slip = |s1: f64, s2: f64| NodeState::Slip {
+            direction: SlipDirection::of(Tangential::on_face(s1, s2)).unwrap(),
+        };
+        let mut set = ActiveSet::new(vec![vec![slip(1.0, 1.0)]], Locks::default(), 0);
+        assert_eq!(set.commit(vec![vec![slip(1.0, -1.0)]]), Commit::Accepted);
+        assert_eq!(set.commit(vec![vec![Stick]]), Commit::Accepted);
+        // back to the first direction, up to round-off: a cycle (no lock rounds)
+        assert_eq!(
+            set.commit(vec![vec![slip(1.0, 1.0 + 1e-15)]]),
+            Commit::Cycle {
+                returns_to: 1,
+                node: (0, 0)
+            }
+        );
+        // the same proposal as the current set is no change
+        assert_eq!(set.changes(&[vec![Stick]]), 0);
+        // turned by a quarter: a set not seen before
+        assert_eq!(set.commit(vec![vec![slip(-1.0, 1.0)]]), Commit::Accepted);
+        // a stick/slip alternation with a direction is locked in that slip
+        let mut locking = ActiveSet::new(vec![vec![Stick]], Locks::default(), 1);
+        assert_eq!(locking.commit(vec![vec![slip(0.0, 2.0)]]), Commit::Accepted);
+        assert_eq!(locking.commit(vec![vec![Stick]]), Commit::Accepted);
+        assert!(locking.states()[0][0].same_as(&slip(0.0, 1.0)));
+        assert!(!locking.may_stick((0, 0)));
+        // in the plane the two directions differ
+        let plus = NodeState::Slip {
+            direction: SlipDirection::PLUS,
+        };
+        let minus = NodeState::Slip {
+            direction: SlipDirection::MINUS,
+        };
+        assert!(!plus.same_as(&minus) && plus.same_as(&plus));
     }
 }

@@ -13,7 +13,9 @@
 //! from `F` in every iteration, nalgebra's unblocked LU) is a test oracle behind the feature
 //! `oracles` (`oracles.rs`); the tests compare the two.
 
-use super::*;
+use super::{
+    Border, ContactAnalysis, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
+};
 use crate::contact::bodies::Images;
 use crate::solver::vector_state::clean_after;
 use faer::Par;

@@ -2,7 +2,10 @@
 //! fully covered, nodes locked open not penetrating, nodes locked in slip not sliding against
 //! their friction, small kinematics within their range.
 
-use super::*;
+use super::{
+    BNodes, ContactAnalysis, ContactError, ContactSurface, Kinematics, NodeKey, NodeState, Result,
+    Tangential, Traction, dot, facing, geometry,
+};
 
 /// Under small kinematics, the largest change of an active node's gap caused by sliding with
 /// the pairing frozen (slip times the angle between the surfaces), relative to the contact's
@@ -151,16 +154,16 @@ impl ContactAnalysis {
     }
 
     /// The tangential slip of A relative to B at `node` since the increment began, per unit
-    /// length: `s_k = (r_k . (u - u_start)) / w_k`, `r_k` the node's tangent row (its coupling
-    /// along the tangent) and `w_k` its weight.
+    /// length, in the node's tangent space: `s_k = (r_k . (u - u_start)) / w_k`, `r_k` the
+    /// node's tangent row (its coupling along the tangent) and `w_k` its weight.
     pub(super) fn slip_since_start(
         &self,
         node: &geometry::ContactNode,
         uc: &[f64],
         startc: &[f64],
-    ) -> f64 {
+    ) -> Tangential {
         let row = self.directed(&node.coupling, node.tangent);
-        (dot(&row, uc) - dot(&row, startc)) / node.weight
+        Tangential::along((dot(&row, uc) - dot(&row, startc)) / node.weight)
     }
 
     /// Nodes locked in slip after a stick/slip cycle must sit on the cone with a vanishing
@@ -182,11 +185,11 @@ impl ContactAnalysis {
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
         for &(p, k) in locked_slip {
-            let NodeState::Slip { sign } = states[p][k] else {
+            let NodeState::Slip { direction } = states[p][k] else {
                 continue;
             };
             let against =
-                -f64::from(sign) * self.slip_since_start(&surfaces[p].nodes[k], uc, startc);
+                -direction.along(&self.slip_since_start(&surfaces[p].nodes[k], uc, startc));
             let scale = self.motion_scale(p, xg, uc, startc);
             if against > SLIP_REVERSAL * scale {
                 return Err(ContactError::SlipReversal {
@@ -412,8 +415,8 @@ impl ContactAnalysis {
     ///                 distance >= 0                  max(0, -distance) / g_s
     /// ```
     ///
-    /// The last line is measured only when the rules do not check B nodes themselves (the
-    /// fallback's last attempt, see `fallback.rs`): otherwise the rules close the nearer A node
+    /// The last line is measured only when the rules do not check B nodes themselves
+    /// (`b_nodes` is [`BNodes::AtConvergence`]: the fallback's last attempt, see `fallback.rs`): otherwise the rules close the nearer A node
     /// of a B node that penetrates by more than the gap tolerance (a node locked open
     /// excepted, as 0.6.2 did: beside one, a B node may end up through A's segment by about
     /// `1e-3` of the gap scale, as in the axisymmetric sphere of
@@ -424,7 +427,8 @@ impl ContactAnalysis {
         &self,
         surfaces: &[ContactSurface],
         states: &[Vec<NodeState>],
-        tractions: &[Vec<(f64, f64)>],
+        tractions: &[Vec<Traction>],
+        b_nodes: BNodes,
         uc: &[f64],
         startc: &[f64],
     ) -> Violation {
@@ -440,11 +444,16 @@ impl ContactAnalysis {
             // a closed node's gap and a stick node's slip are solved for: what is left of them
             // is round-off of the motion, however far the bodies move
             let motion_scale = self.motion_scale(p, xg, uc, startc);
-            let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
+            let tn_max = tractions[p]
+                .iter()
+                .fold(0.0f64, |m, t| m.max(t.normal.abs()));
             let per_traction = |v: f64| if tn_max > 0.0 { v / tn_max } else { 0.0 };
             let law = &*self.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let (tn, ts) = tractions[p][k];
+                let Traction {
+                    normal: tn,
+                    tangential: ts,
+                } = tractions[p][k];
                 let gap = node.normal_gap;
                 let slip = || self.slip_since_start(node, uc, startc);
                 let mut found = |relative: f64, condition: &'static str| {
@@ -470,19 +479,19 @@ impl ContactAnalysis {
                 match states[p][k] {
                     NodeState::Stick => {
                         found(
-                            per_traction(ts.abs() - law.stick_limit(tn)),
+                            per_traction(ts.norm() - law.stick_limit(tn)),
                             "a stick node is outside the friction cone",
                         );
-                        found(slip().abs() / motion_scale, "a stick node slides");
+                        found(slip().norm() / motion_scale, "a stick node slides");
                     }
-                    NodeState::Slip { sign } if !law.is_frictionless() => found(
-                        -f64::from(sign) * slip() / motion_scale,
+                    NodeState::Slip { direction } if !law.is_frictionless() => found(
+                        -direction.along(&slip()) / motion_scale,
                         "a slip node slides against its friction",
                     ),
                     _ => {}
                 }
             }
-            if self.pointwise_b {
+            if b_nodes == BNodes::Pointwise {
                 // the rules hold these: they close the nearer A node
                 continue;
             }

@@ -24,25 +24,16 @@
 //! left uncovered, small kinematics exceeded), everything the increment changed is restored
 //! and the error returned: the analysis is exactly as before the call.
 
-use super::*;
+use super::failure::Failure;
+use super::{
+    ContactAnalysis, ContactSurface, Converged, Error, IncrementInfo, LoadSolve, NodeData,
+    NodeFlexibility, OnceLock, Plate, PlateControl, Result, Settled,
+};
 
-/// Whether a shorter step may remove the cause of a failed increment: the iteration's own
-/// failures (no convergence, a cycling set, a locked node breaking its lock, a converged state
-/// violating the contact conditions, a node beyond what the pairing sees, positions the
-/// geometry cannot resolve).
-pub(super) fn retryable(e: &Error) -> bool {
-    matches!(
-        e,
-        Error::Contact(
-            ContactError::NoConvergence { .. }
-                | ContactError::Cycling { .. }
-                | ContactError::EdgePenetration { .. }
-                | ContactError::SlipReversal { .. }
-                | ContactError::ConditionViolated { .. }
-                | ContactError::BeyondSearchDistance { .. }
-                | ContactError::Unresolved { .. }
-        )
-    )
+/// Whether a shorter step may remove the cause of a failed increment
+/// ([`Failure::shorter_step_may_settle`]).
+fn retryable(e: &Error) -> bool {
+    Failure::of(e).shorter_step_may_settle()
 }
 
 /// What a failed try may change in the analysis besides timings and the caches of `K`'s

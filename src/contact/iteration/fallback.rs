@@ -14,7 +14,7 @@
 //! but the rules go {stick, stick} -> {slip(+1), slip(-1)} and then cycle between
 //! {slip(+1), stick} and {slip(+1), slip(-1)}.
 //!
-//! When the rules fail for such a reason ([`settles_by_fallback`]), the increment starts
+//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `failure.rs`), the increment starts
 //! again from the states of the solution of the same conditions, linearized at the start of
 //! the increment, over the candidate nodes (closed at the start, or penetrating under the
 //! load alone, and their neighbours): with every candidate's normal and tangent rows,
@@ -36,26 +36,12 @@
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
-use super::*;
+use super::{
+    Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, SlipDirection,
+    Tangential, column, dot, plate, rules, small_system,
+};
 use plate::dot_dense;
 use rules::closed_at_rest;
-
-/// Whether an increment that failed with `e` is tried again from the fallback's states: a
-/// failure of the rules (a cycle, the iteration cap, a node locked in slip that slides
-/// against its friction, a node locked open that penetrates). Geometry, coverage, a singular
-/// system and a host's or monitor's failure are not the rules' to fix.
-pub(super) fn settles_by_fallback(e: &Error) -> bool {
-    matches!(
-        e,
-        Error::Contact(
-            ContactError::Cycling { .. }
-                | ContactError::NoConvergence { .. }
-                | ContactError::SlipReversal { .. }
-                | ContactError::EdgePenetration { .. }
-                | ContactError::ConditionViolated { .. }
-        )
-    )
-}
 
 /// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
 /// for `m` unknowns (a few seconds). Gauss-Seidel contracts by about `1 - 1/cond(S)` per
@@ -154,7 +140,7 @@ impl ContactAnalysis {
                 None => NodeState::Frictionless,
                 Some(ts) if ts.abs() >= (1.0 - FALLBACK_CONE) * law.stick_limit(t[i]) => {
                     NodeState::Slip {
-                        sign: if ts > 0.0 { -1 } else { 1 },
+                        direction: SlipDirection::opposing(Tangential::along(ts)),
                     }
                 }
                 Some(_) => NodeState::Stick,
@@ -299,7 +285,8 @@ impl<'a> Linearized<'a> {
                     conditions[j] = if at.abs() < law.stick_limit(an) {
                         Condition::Row
                     } else {
-                        Condition::Cone(law.slip_coefficient(if at > 0.0 { -1 } else { 1 }))
+                        let slip = SlipDirection::opposing(Tangential::along(at));
+                        Condition::Cone(law.slip_coefficients(slip).components()[0])
                     };
                 }
             }
@@ -333,6 +320,7 @@ impl<'a> Linearized<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::friction::Coulomb;
     use small_system::Row;
 
     /// The unknowns, `S` and `r` of a test problem.

@@ -2,7 +2,7 @@
 //! combination of recent ones (proportional loading, a slide on a fixed approach); a host that
 //! handed over its condensed operator gives `u0` itself (its load image).
 
-use super::*;
+use super::{ContactAnalysis, ContactError, DMatrix, DVector, Error, Result, checks, plate_force};
 
 /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs for one load `(f, q_p)`.
 #[derive(Debug, Clone)]

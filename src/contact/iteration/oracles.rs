@@ -3,7 +3,7 @@
 //! product's algebra with, and the benchmark's control that factors `K` again in every
 //! iteration.
 
-use super::*;
+use super::{Border, ContactAnalysis, Flexibility, NodeFlexibility, Result, SmallSystem, boundary};
 
 impl ContactAnalysis {
     /// Run the iteration on the dense reference algebra (`true`) or on the lazy, cached one

@@ -2,7 +2,10 @@
 //! force-controlled per increment; force control borders the small system with the plate's
 //! force balance (METHOD.md section 3, floating bodies).
 
-use super::*;
+use super::{
+    ContactAnalysis, ContactOptions, ContactPair, ContactSurface, Error, IncrementInfo, Model,
+    NodeState, PlateControl, Result, Sparse, dof, dot, rules,
+};
 
 /// A rigid loading plate: nodes of one body's face tied to two plate translations. Each
 /// direction is displacement- or force-controlled per increment.

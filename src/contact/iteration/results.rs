@@ -2,7 +2,7 @@
 //! forces and pressures on the B side, element stresses of body A), and the contact-element
 //! matrices for hosts that assemble the mixed system themselves.
 
-use super::{BNodeResult, ContactAnalysis, NodeResult};
+use super::{BNodeResult, ContactAnalysis, NodeResult, Traction};
 use crate::contact::geometry::ContactSurface;
 use crate::element::geometry::edge_normal;
 use crate::error::{Error, Result};
@@ -236,9 +236,10 @@ impl ContactAnalysis {
         // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
         let mut force = vec![[0.0; 2]; pair.a.len()];
         for (k, node) in surface.nodes.iter().enumerate() {
+            let (tn, ts) = plane_parts(&data[k].traction);
             let t = [
-                data[k].tn * node.normal[0] + data[k].ts * node.tangent[0],
-                data[k].tn * node.normal[1] + data[k].ts * node.tangent[1],
+                tn * node.normal[0] + ts * node.tangent[0],
+                tn * node.normal[1] + ts * node.tangent[1],
             ];
             for &(j, c) in &node.coupling {
                 if let Some(i) = pair.a.iter().position(|&a| a == j) {
@@ -254,8 +255,8 @@ impl ContactAnalysis {
             .map(|(k, node)| NodeResult {
                 node: self.bodies.external(node.node),
                 state: data[k].state,
-                tn: data[k].tn,
-                ts: data[k].ts,
+                tn: plane_parts(&data[k].traction).0,
+                ts: plane_parts(&data[k].traction).1,
                 normal: node.normal,
                 tangent: node.tangent,
                 position: x[node.node],
@@ -265,4 +266,9 @@ impl ContactAnalysis {
             })
             .collect())
     }
+}
+
+/// `(tn, ts)` of a traction at a node with one tangent (the plane's and axisymmetry's results).
+fn plane_parts(t: &Traction) -> (f64, f64) {
+    (t.normal, t.tangential.components()[0])
 }

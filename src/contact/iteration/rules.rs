@@ -7,14 +7,15 @@
 //! |---|---|---|
 //! | open | weighted gap `< -gap_tol` (or a B node over its open segments penetrates), and chosen by [`ActiveSet::closing`] | closed: stick, slip (sliding since the increment began) or frictionless |
 //! | stick, slip, frictionless | `tn > tension_tol tn_max` | open |
-//! | stick | `|ts| > mu |tn| (1 + friction_tol)` | slip, `sign = -sign(ts)` |
-//! | slip | slip reversed: `sign v < -slip_tol` (not locked in slip) | stick |
+//! | stick | `|ts| > mu |tn| (1 + friction_tol)` | slip, in the direction `-ts / |ts|` |
+//! | slip | slip reversed: `d . v < -slip_tol` along its direction `d` (not locked in slip) | stick |
 //! | any | otherwise | unchanged |
 //!
 //! What each state adds to the small system ([`rows_of`], read by
 //! [`ContactAnalysis::build_system`]): open, nothing; frictionless, the normal row (column
 //! `n`); stick, the normal row and the tangent row `s` (no slip since the increment began);
-//! slip, the normal row with the column `n + mu sign s`. Which penetrating nodes close in an
+//! slip, the normal row with the column `n + sum_i c_i s_i`, `c = mu d` the law's slip
+//! coefficients for the slip direction `d`. Which penetrating nodes close in an
 //! iteration is [`ActiveSet::closing`], below.
 //!
 //! The locks of a cycling set ([`ActiveSet::commit`]) and the checks at convergence
@@ -23,7 +24,10 @@
 //! When the rules do not settle, the increment starts again from the fallback's states
 //! (`fallback.rs`).
 
-use super::*;
+use super::{
+    ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, FrictionLaw, NodeState,
+    Result, SlipDirection, Tangential, Traction, edge_normal, geometry,
+};
 
 /// A run of penetrating nodes away from the contact zone closes where its penetration is at
 /// least this fraction of its deepest ([`ActiveSet::closing`]).
@@ -42,9 +46,9 @@ pub(super) enum Rows {
     None,
     /// Frictionless: the normal row, column `n`.
     Normal,
-    /// Slip: the normal row, column `n + c s` with `c` the law's slip coefficient
+    /// Slip: the normal row, column `n + sum_i c_i s_i` with `c` the law's slip coefficients
     /// (`ts = c tn`).
-    NormalSlip(f64),
+    NormalSlip(Tangential),
     /// Stick: the normal row and the tangent row (no slip since the increment began), each
     /// its own column.
     NormalTangent,
@@ -55,7 +59,7 @@ pub(super) fn rows_of(state: NodeState, law: &dyn FrictionLaw) -> Rows {
     match state {
         NodeState::Open => Rows::None,
         NodeState::Frictionless => Rows::Normal,
-        NodeState::Slip { sign } => Rows::NormalSlip(law.slip_coefficient(sign)),
+        NodeState::Slip { direction } => Rows::NormalSlip(law.slip_coefficients(direction)),
         NodeState::Stick => Rows::NormalTangent,
     }
 }
@@ -78,7 +82,7 @@ impl ContactAnalysis {
     pub(super) fn update_states(
         &self,
         set: &ActiveSet,
-        tractions: &[Vec<(f64, f64)>],
+        tractions: &[Vec<Traction>],
         surfaces: &[ContactSurface],
         uc: &[f64],
         startc: &[f64],
@@ -93,25 +97,28 @@ impl ContactAnalysis {
             let reach = self.search_reach(p, xg, uc, startc);
             // penetration is judged against the increment's own displacement scale
             let gap_tolerance = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
-            let tn_max = tractions[p].iter().fold(0.0f64, |m, t| m.max(t.0.abs()));
+            let tn_max = tractions[p]
+                .iter()
+                .fold(0.0f64, |m, t| m.max(t.normal.abs()));
             // a node closing while the surfaces slide past each other slides with them; one
             // closing without relative motion sticks
             let closed = |k: usize, node: &geometry::ContactNode| {
                 let slip = self.slip_since_start(node, uc, startc);
-                if self.node_law(p, k).is_frictionless() {
-                    NodeState::Frictionless
-                } else if slip.abs() > slip_tolerance {
-                    NodeState::Slip {
-                        sign: if slip > 0.0 { 1 } else { -1 },
+                match SlipDirection::of(slip) {
+                    _ if self.node_law(p, k).is_frictionless() => NodeState::Frictionless,
+                    Some(direction) if slip.norm() > slip_tolerance => {
+                        NodeState::Slip { direction }
                     }
-                } else {
-                    NodeState::Stick
+                    _ => NodeState::Stick,
                 }
             };
             // how deep each open node penetrates; which of them close is decided below
             let mut depth: Vec<Option<f64>> = vec![None; surface.nodes.len()];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let (tn, ts) = tractions[p][k];
+                let Traction {
+                    normal: tn,
+                    tangential: ts,
+                } = tractions[p][k];
                 match states[p][k] {
                     NodeState::Open => {
                         if node.normal_gap < -gap_tolerance {
@@ -122,16 +129,16 @@ impl ContactAnalysis {
                         new[p][k] = NodeState::Open;
                     }
                     NodeState::Stick => {
-                        if ts.abs() > law.stick_limit(tn) * (1.0 + self.options.friction_tolerance)
+                        if ts.norm() > law.stick_limit(tn) * (1.0 + self.options.friction_tolerance)
                         {
                             new[p][k] = NodeState::Slip {
-                                sign: if ts > 0.0 { -1 } else { 1 },
+                                direction: SlipDirection::opposing(ts),
                             };
                         }
                     }
-                    NodeState::Slip { sign } => {
+                    NodeState::Slip { direction } => {
                         if set.may_stick((p, k))
-                            && f64::from(sign) * self.slip_since_start(node, uc, startc)
+                            && direction.along(&self.slip_since_start(node, uc, startc))
                                 < -slip_tolerance
                         {
                             new[p][k] = NodeState::Stick;
@@ -146,7 +153,7 @@ impl ContactAnalysis {
             let open: Vec<bool> = (0..a.len())
                 .map(|k| states[p][k] == NodeState::Open && depth[k].is_none())
                 .collect();
-            let inside = if self.pointwise_b {
+            let inside = if set.b_nodes() == BNodes::Pointwise {
                 self.b_node_distances(p, &open, &x, xg)
             } else {
                 Vec::new()
@@ -283,9 +290,12 @@ impl ActiveSet {
 
 #[cfg(test)]
 mod tests {
+    use super::super::Locks;
     use super::*;
 
-    const SLIP: NodeState = NodeState::Slip { sign: 1 };
+    const SLIP: NodeState = NodeState::Slip {
+        direction: SlipDirection::PLUS,
+    };
 
     /// Holes fill, bands beside the zone close by their nearer half (a band of two whole), new
     /// regions from their deepest nodes; locked nodes are skipped without stopping the growth.

@@ -4,7 +4,14 @@
 //! estimate (the reference algebra of the test oracles, feature `oracles`; the product's
 //! algebra is `boundary.rs`).
 
-use super::*;
+#[cfg(any(test, feature = "oracles"))]
+use super::DVector;
+#[cfg(feature = "oracles")]
+use super::plate::Border;
+use super::{
+    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Tangential,
+    Traction, dof, rules,
+};
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
 
@@ -164,26 +171,28 @@ impl SmallSystem {
         f
     }
 
-    /// `(tn, ts)` of every A node from the unknowns (zero at open nodes; `ts = c tn` at slip
-    /// nodes, `c` the pair's [`FrictionLaw::slip_coefficient`]).
+    /// The traction of every A node from the unknowns (zero at open nodes; `ts` of the law,
+    /// [`FrictionLaw::slip_traction`], at slip nodes).
     pub(super) fn tractions(
         &self,
         tau: &[f64],
         states: &[Vec<NodeState>],
         laws: &[Box<dyn FrictionLaw>],
-    ) -> Vec<Vec<(f64, f64)>> {
-        let mut t: Vec<Vec<(f64, f64)>> =
-            states.iter().map(|s| vec![(0.0, 0.0); s.len()]).collect();
+    ) -> Vec<Vec<Traction>> {
+        let mut t: Vec<Vec<Traction>> = states
+            .iter()
+            .map(|s| vec![Traction::zero(1); s.len()])
+            .collect();
         for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
             match row {
-                Row::Normal => t[p][k].0 = v,
-                Row::Tangent => t[p][k].1 = v,
+                Row::Normal => t[p][k].normal = v,
+                Row::Tangent => t[p][k].tangential = Tangential::along(v),
             }
         }
         for (p, s) in states.iter().enumerate() {
             for (k, state) in s.iter().enumerate() {
-                if let NodeState::Slip { sign } = state {
-                    t[p][k].1 = laws[p].slip_coefficient(*sign) * t[p][k].0;
+                if let NodeState::Slip { direction } = *state {
+                    t[p][k].tangential = laws[p].slip_traction(direction, t[p][k].normal);
                 }
             }
         }
@@ -232,7 +241,9 @@ impl ContactAnalysis {
                 let b = dot(&normal, uc) - rg;
                 let tangent = || self.directed(&node.coupling, node.tangent);
                 let (col, basis) = match rows {
-                    rules::Rows::NormalSlip(w) => {
+                    rules::Rows::NormalSlip(c) => {
+                        // one tangent: `c` has one component
+                        let w = c.components()[0];
                         let mut c = normal.clone();
                         c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
                         (c, vec![(p, k, Row::Normal, 1.0), (p, k, Row::Tangent, w)])
