@@ -1,5 +1,5 @@
 /* Shrink fit of two thick tubes through the model API, axisymmetric (x = r, y = z, the full
- * circle): inner tube a <= r <= b + delta, outer tube b <= r <= c (VALIDATION.md: a = 0.5,
+ * circle): inner tube a <= r <= b + delta, outer tube b <= r <= c (docs/validation.md, "Shrink fit of two tubes": a = 0.5,
  * b = 1, c = 2, E = 1, nu = 0.3, delta = 1e-3), length 0.5, their ends held axially so that
  * Lame's plane-strain solution is exact. The interference is an overlap of the two meshes in
  * the reference configuration; one increment with no load closes it (small kinematics).

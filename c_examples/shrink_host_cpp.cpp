@@ -4,7 +4,7 @@
 // 2 pi r), describes the contact pair in its numbering with the analysis kind
 // (Host::add_pair(..., HYCON_AXISYMMETRIC, 1.0)) and runs hycon's contact iteration.
 //
-// Two thick tubes (VALIDATION.md: a = 0.5, b = 1, c = 2, E = 1, nu = 0.3, interference
+// Two thick tubes (docs/validation.md, "Shrink fit of two tubes": a = 0.5, b = 1, c = 2, E = 1, nu = 0.3, interference
 // delta = 1e-3), the inner one a <= r <= b + delta, the outer one b <= r <= c, length 0.5 with
 // non-matching meshes along the axis (4 and 3 layers); their ends held axially (u_z = 0: the
 // host leaves those dofs out of its equations) so that Lame's plane-strain solution is exact.

@@ -141,7 +141,7 @@ fn lame_bore(f: Formulation, nu: f64, n: usize) -> f64 {
     model.solve().unwrap().displacement(0)[0]
 }
 
-/// The closed form gives VALIDATION.md's MacNeal-Harder values.
+/// The closed form gives the values of docs/validation.md, "Thick cylinder under internal pressure".
 #[test]
 fn lame_closed_form_matches_the_reference_table() {
     for (nu, want) in [

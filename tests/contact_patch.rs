@@ -1,4 +1,4 @@
-//! The contact patch test (Taylor-Papadopoulos) with non-matching meshes (METHOD.md section 7;
+//! The contact patch test (Taylor-Papadopoulos) with non-matching meshes (docs/validation.md, "Contact patch test";
 //! issue 3, validation items e and f).
 //!
 //! Two blocks stacked, plane strain, unit thickness: lower `[0, 1] x [-0.5, 0]` (`E = 3`,
@@ -33,7 +33,7 @@
 //! the hybrid elements reproduce constant stress exactly, a constant traction is a linear
 //! multiplier field, and the weighted gaps of two coinciding straight lines vanish for any
 //! pair of meshes. So the discrete solution is the exact one, to round-off, in all three cases
-//! for this flat interface (the side dependence METHOD.md mentions appears where the exact
+//! for this flat interface (the side dependence docs/method.md mentions appears where the exact
 //! traction is not in the multiplier space, or with node-to-segment collocation, not here).
 //! Every case runs with both contact kinematics. Small kinematics: the tractions are per unit
 //! reference length, like the line load and the element stresses, so the contact pressure is

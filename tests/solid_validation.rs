@@ -104,7 +104,7 @@ fn cantilever(shape: Shape, load: Load, f: BrickFormulation) -> f64 {
     }
 }
 
-/// MacNeal and Harder's HEX8 column (OptiStruct's, normalised; VALIDATION.md) for the three
+/// MacNeal and Harder's HEX8 column (OptiStruct's, normalised; docs/validation.md, "MacNeal and Harder's 3D problems") for the three
 /// bending loads and extension: a brick with incompatible modes, to which Pian and Tong's
 /// 18-beta field is the hybrid counterpart.
 const PUBLISHED_HEX8: [(Shape, [f64; 3]); 3] = [

@@ -141,7 +141,7 @@ pub struct ShrinkFit {
 }
 
 impl Default for ShrinkFit {
-    /// VALIDATION.md's data: `a = 0.5, b = 1, c = 2, E = 1, nu = 0.3, delta = 1e-3`; length 0.5,
+    /// The data of docs/validation.md ("Shrink fit of two tubes"): `a = 0.5, b = 1, c = 2, E = 1, nu = 0.3, delta = 1e-3`; length 0.5,
     /// 8 elements through each wall, 4 and 3 along the tubes, frictionless, hybrid.
     fn default() -> Self {
         ShrinkFit {

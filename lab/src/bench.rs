@@ -305,7 +305,9 @@ pub fn guard_verdicts(values: Vec<GuardValue>, committed: &str) -> Result<Vec<Gu
             let text = committed
                 .lines()
                 .find_map(|l| l.strip_prefix(&format!("{},", now.name)))
-                .ok_or_else(|| Error::InvalidInput(format!("guard.csv has no value for {:?}", now.name)))?;
+                .ok_or_else(|| {
+                    Error::InvalidInput(format!("guard.csv has no value for {:?}", now.name))
+                })?;
             let committed = text.trim().parse().map_err(|e| {
                 Error::InvalidInput(format!("guard.csv value of {:?}: {e}", now.name))
             })?;

@@ -1,4 +1,4 @@
-//! The paper's examples (METHOD.md section 6) on the reference disk-on-block scene
+//! The paper's examples (docs/validation.md, "The paper's examples on the reference scene") on the reference disk-on-block scene
 //! ([`DiskOnBlock`]), as library functions that run an analysis and return plain result structs
 //! (no printing, no files; [`crate::report`] writes them).
 //!

@@ -1,6 +1,6 @@
 //! Axisymmetric contact (`x = r`, `y = z`, measure `2 pi r`, tractions as pressures) against
 //! closed forms: two cylinders stacked on the axis (a contact zone centred on the axis: no
-//! spurious pressure at `r = 0`), the shrink fit of two thick tubes (Lamé; VALIDATION.md's
+//! spurious pressure at `r = 0`), the shrink fit of two thick tubes (Lamé; docs/validation.md's
 //! data), and pushing the fit out (gross slip: axial force = mu times the normal force). Scenes
 //! and closed forms in `hycon_lab::axisymmetric`.
 
@@ -71,7 +71,7 @@ fn stacked_cylinders_carry_the_pressure_through_the_axis() {
     }
 }
 
-/// The shrink fit (VALIDATION.md: a = 0.5, b = 1, c = 2, E = 1, nu = 0.3, delta = 1e-3, ends
+/// The shrink fit (docs/validation.md, "Shrink fit of two tubes": a = 0.5, b = 1, c = 2, E = 1, nu = 0.3, delta = 1e-3, ends
 /// held axially, frictionless, small kinematics). The interface pressure on the outer bore (A,
 /// the multiplier side) against Lamé's for the radii modelled (the inner tube's outside at
 /// b + delta) within 1e-6 at every node and every mesh; against the textbook formula (p =

@@ -1,4 +1,4 @@
-//! Cattaneo-Mindlin partial slip (METHOD.md section 7; issue 3, validation items d and f).
+//! Cattaneo-Mindlin partial slip (docs/validation.md, "Cattaneo-Mindlin partial slip"; issue 3, validation items d and f).
 //!
 //! Set-up: [`DiskOnBlock`] with identical materials (`modulus_ratio = 1`, `E = 1`, `nu = 0.3`,
 //! plane strain: Dundurs `beta = 0`, so the tangential load does not change the pressure and the

@@ -1,4 +1,4 @@
-//! Convergence to Hertz with small-deformation kinematics (METHOD.md sections 2b and 7).
+//! Convergence to Hertz with small-deformation kinematics (docs/method.md, "Kinematics: small and finite"; docs/validation.md, "Hertz: cylinder on a half-plane").
 //!
 //! The reference scene ([`DiskOnBlock`]: half disk on a block, plane strain, hybrid 7-beta
 //! elements on the graded mesh with transition elements, node-to-internode), frictionless,

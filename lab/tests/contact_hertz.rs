@@ -1,4 +1,4 @@
-//! Hertz validation of the contact method (METHOD.md section 7): a half disk of radius R pressed
+//! Hertz validation of the contact method (docs/validation.md, "Hertz: cylinder on a half-plane"): a half disk of radius R pressed
 //! onto a large block, plane strain, frictionless, node-to-internode meshes graded toward the
 //! contact with transition elements, displacement control in 3 increments up to the approach
 //! that gives a = R/64 (see `hycon_lab::scene` for every number of the set-up).

@@ -725,7 +725,7 @@ fn callback_asks_no_column_twice() {
     }
 }
 
-/// The shrink fit (axisymmetric, VALIDATION.md's data) as a host: its elements handed over with
+/// The shrink fit (axisymmetric, the data of docs/validation.md, "Shrink fit of two tubes") as a host: its elements handed over with
 /// the pair's section give tractions from element stresses within 20% of Lamé's pressure at
 /// every A node (measured: -14.8% at every node, the stress at the bore of 8 elements through
 /// the wall; 20% catches the +84% of a plane-strain material), while elements of a

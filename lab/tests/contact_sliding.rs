@@ -1,4 +1,4 @@
-//! Extensive sliding of the disk on the block (METHOD.md sections 4, 6 and 7; issue 3,
+//! Extensive sliding of the disk on the block (docs/method.md, "The contact iteration"; docs/validation.md, "Coulomb gross slip and push-out"; issue 3,
 //! validation items b, c and f).
 //!
 //! Set-up: [`DiskOnBlock`] (plane strain, `R = 1`, block `[-4R, 4R] x [-4R, 0]`, identical
@@ -217,7 +217,7 @@ mod tol {
     pub const CENTRE: f64 = 0.01;
     /// Fitted peak vs Hertz at the same load, relative. Measured +0.26 % .. +0.36 % (R/16:
     /// +0.98 % .. +1.04 %, where `a/R` is 4 times larger); discretisation is O(h/a) at the
-    /// edge, finite bodies and `a/R` a few tenths of a percent (METHOD.md section 7).
+    /// edge, finite bodies and `a/R` a few tenths of a percent (docs/validation.md, "Hertz: cylinder on a half-plane").
     pub const PEAK: f64 = 0.015;
     /// Fitted half-width, relative. Measured -0.14 % .. +0.31 % (R/16: -0.85 % .. -0.69 %).
     pub const HALF_WIDTH: f64 = 0.015;

@@ -1,5 +1,5 @@
 //! Friction laws: what the contact iteration asks of the friction between the surfaces of a
-//! contact pair (METHOD.md section 4).
+//! contact pair (docs/method.md, "The rules").
 //!
 //! The iteration ([`super::iteration`]) reads a pair's friction only through [`FrictionLaw`]:
 //! whether there is any (no tangential rows at all when not), the largest tangential traction

@@ -1,5 +1,5 @@
 //! Contact-element kernels: the mortar integrals of one contact pair at given nodal positions
-//! (METHOD.md section 2): the current ones `x = X + U` for finite kinematics, the reference
+//! (docs/method.md, "Contact surfaces and contact elements"): the current ones `x = X + U` for finite kinematics, the reference
 //! ones `X` (once per analysis) for small kinematics.
 //!
 //! # Conventions

@@ -1,6 +1,6 @@
 //! The contact-set iteration of Kubomura and Pian with the stiffness factored once per analysis.
 //!
-//! # The equations (METHOD.md sections 3 and 4)
+//! # The equations (docs/method.md: "The mixed system with K factored once", "The contact iteration")
 //! `t` is the traction acting on body A (the multiplier side), interpolated linearly between the
 //! A nodes (quadratically, with zero slope at `r = 0`, next to an axisymmetric node on the axis:
 //! `geometry.rs`); at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
@@ -35,7 +35,7 @@
 //! `u0` is reused when a load is a combination of earlier ones, and the full displacement
 //! field is recovered only when asked for (one solve).
 //!
-//! # Kinematics (METHOD.md section 2b)
+//! # Kinematics (docs/method.md, "Kinematics: small and finite")
 //! [`Kinematics::Small`] (the default) evaluates the contact geometry of every pair once, in
 //! the reference configuration: pairing, frames, weights and the coupling `c_kj` (`F^A`, `F^B`)
 //! are constant, the gap is linear, `R_C,k(q) = R_C,k(X) + sum_j c_kj q_j`, and the normal row
@@ -242,7 +242,7 @@ fn check_chain(ids: &[usize], side: &str) -> Result<()> {
     }
 }
 
-/// How the contact geometry follows the deformation (METHOD.md section 2b).
+/// How the contact geometry follows the deformation (docs/method.md, "Kinematics: small and finite").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Kinematics {
     /// Small deformation ("small sliding"), consistent with the small-strain elasticity of the

@@ -1,4 +1,4 @@
-//! Contact between two bodies by the method of Kubomura and Pian (METHOD.md sections 2 to 5).
+//! Contact between two bodies by the method of Kubomura and Pian (docs/method.md).
 //!
 //! * [`geometry`]: pure contact-element kernels of one contact pair at given positions (the
 //!   reference ones for small kinematics, the current ones for finite): nodal frames, weights,

@@ -1,4 +1,4 @@
-//! The contact boundary as the iteration uses it (METHOD.md section 3): the flexibility
+//! The contact boundary as the iteration uses it (docs/method.md, "The contact boundary's algebra"): the flexibility
 //! `F = E^T K^-1 E`, either whole (read off a factor's trailing block) or lazily: under small
 //! kinematics the node flexibility `N_ab = v_a^T F v_b` of the node directions that become
 //! active, computed once per direction from their images `W v_a = L^-1 P E v_a` (hycon's own
@@ -1107,7 +1107,7 @@ impl ContactAnalysis {
         self.solve_boundary(system, u0c, border)
     }
 
-    /// Solve the small system (METHOD.md section 3): `S tau = b - rows . u0` with
+    /// Solve the small system (docs/method.md, "The contact boundary's algebra"): `S tau = b - rows . u0` with
     /// `S_ij = row_i . F col_j`, bordered by the force-controlled plate translations `U` as in
     /// the reference (`SmallSystem::solve`). Without a border, the block of the unknowns whose
     /// column is their row, `S_PP`, is factored by Cholesky (under small kinematics straight

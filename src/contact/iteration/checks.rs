@@ -398,7 +398,7 @@ pub(super) struct Violation {
 
 impl ContactAnalysis {
     /// The worst violation of the discrete contact conditions, node by node, in the state
-    /// `states` with tractions `tractions` at displacement `uc` (METHOD.md section 4), each
+    /// `states` with tractions `tractions` at displacement `uc` (docs/method.md, "The checks at convergence"), each
     /// relative to its scale: gaps to the gap scale `g_s` of the pair
     /// ([`gap_scale`](Self::gap_scale)), tractions to the pair's largest `|tn|`, slips
     /// (weighted, since the increment began) to the motion scale `v_s`

@@ -1,6 +1,6 @@
 //! The rigid loading plate: a face tied to two translations, each displacement- or
 //! force-controlled per increment; force control borders the small system with the plate's
-//! force balance (METHOD.md section 3, floating bodies).
+//! force balance (docs/method.md, "Floating bodies and the rigid plate").
 
 use super::{
     ContactAnalysis, ContactOptions, ContactPair, ContactSurface, Error, IncrementInfo, Model,

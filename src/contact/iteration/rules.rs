@@ -1,7 +1,7 @@
 //! The contact rules in one place: which state an A node takes next, and what to do when the
 //! paper's rules do not settle.
 //!
-//! # The rules (METHOD.md section 4), per A node after each solve
+//! # The rules (docs/method.md, "The rules"), per A node after each solve
 //!
 //! | state | condition (after the solve) | next state |
 //! |---|---|---|
@@ -227,7 +227,7 @@ impl ContactAnalysis {
 }
 
 impl ActiveSet {
-    /// The open nodes of pair `p` that close in this iteration (METHOD.md section 4, step 3a,
+    /// The open nodes of pair `p` that close in this iteration (docs/method.md, "The rules", step 3a,
     /// damped). `depth[k]` is `Some(d)` for an open node that penetrates (`d < 0`: the deeper of
     /// its weighted gap and any B node's distance that closes it), `None` otherwise. Per run of
     /// consecutive penetrating nodes:

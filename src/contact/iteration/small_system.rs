@@ -1,4 +1,4 @@
-//! The small dense system of one iteration (METHOD.md section 3): the rows and force columns
+//! The small dense system of one iteration (docs/method.md, "The mixed system with K factored once"): the rows and force columns
 //! of the active nodes over the contact dofs, `S tau = b - rows . u0` with `S = rows^T F cols`,
 //! bordered by the plate's force-controlled translations, solved by LU with a condition
 //! estimate (the reference algebra of the test oracles, feature `oracles`; the product's
