@@ -91,13 +91,13 @@
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 8
+#define HYCON_VERSION_MINOR 9
 
 // Patch version of the library this header belongs to.
-#define HYCON_VERSION_PATCH 1
+#define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 801
+#define HYCON_VERSION 900
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6
@@ -131,6 +131,10 @@
 
 // Bit of `HyconShapeReport::warnings`: face `face` is warped by more than 45 degrees.
 #define HYCON_SHAPE_WARPED_FACE 2
+
+// Factorization flops of AMD's order from which [`OrderingRule::Auto`] also tries nested
+// dissection (about 1 to 2 s of faer's sequential factorization).
+#define ND_TRIAL_FLOPS 1e10
 
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
