@@ -75,18 +75,6 @@
 #include <stdint.h>
 #include <stddef.h>
 
-// Relative size (of the longest edge `h`) below which two points coincide: clipped vertices
-// this close to a corner of either face are snapped to it, consecutive vertices this close are
-// merged, and a vertex this close to the line through its neighbours is dropped.
-#define SNAP 1e-10
-
-// Relative area (of the A face's projected area) below which an overlap is a sliver and
-// dropped.
-#define SLIVER 1e-12
-
-// Relative shortfall of a node's coverage below which it counts as fully covered.
-#define COVERED 1e-10
-
 // Major version of the library this header belongs to (from `Cargo.toml`).
 #define HYCON_VERSION_MAJOR 0
 
@@ -131,10 +119,6 @@
 
 // Bit of `HyconShapeReport::warnings`: face `face` is warped by more than 45 degrees.
 #define HYCON_SHAPE_WARPED_FACE 2
-
-// Factorization flops of AMD's order from which [`OrderingRule::Auto`] also tries nested
-// dissection (about 1 to 2 s of faer's sequential factorization).
-#define ND_TRIAL_FLOPS 1e10
 
 // A contact analysis: `K` factored once (or the host's solver), the converged state, the
 // records. Create with `hycon_contact_new` (model API) or `hycon_contact_new_host`, free with
@@ -578,9 +562,6 @@ typedef struct HyconShapeReport {
     // `HYCON_SHAPE_WARPED_FACE` (0: none).
     int32_t warnings;
 } HyconShapeReport;
-
-// Corner parameters `(s_k, t_k)` of a face.
-#define CORNERS { { -1.0, -1.0, }, { 1.0, -1.0, }, { 1.0, 1.0, }, { -1.0, 1.0, }, }
 
 
 
