@@ -15,8 +15,7 @@ use hycon::material::{Analysis, Material};
 use hycon::mesh::Mesh;
 use hycon::model::Model;
 
-mod common;
-use common::block;
+use crate::common::block;
 
 /// One two-block problem.
 #[derive(Debug, Clone, Copy)]
@@ -644,7 +643,7 @@ fn draw(d: &mut Draws) -> Press {
 }
 
 /// Search for frictional slides that fail in one step without cutback after a press that
-/// converges (run by hand: `cargo test --test contact_cutback -- --ignored --nocapture search`).
+/// converges (run by hand: `cargo test --test integration -- --ignored --nocapture contact_cutback::search`).
 #[test]
 #[ignore]
 fn search() {

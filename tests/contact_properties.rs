@@ -35,8 +35,7 @@ use hycon::{Analysis, Error, Material};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
-mod common;
-use common::block;
+use crate::common::block;
 
 /// One random problem.
 #[derive(Debug, Clone)]

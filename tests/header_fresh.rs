@@ -1,5 +1,5 @@
 //! The committed C header `include/hycon.h` must be what cbindgen generates for the crate with
-//! `cbindgen.toml`. Regenerate with `HYCON_BLESS=1 cargo test --test header_fresh` (or the
+//! `cbindgen.toml`. Regenerate with `HYCON_BLESS=1 cargo test --test integration header_fresh::` (or the
 //! cbindgen 0.29.4 CLI: `cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`).
 
 use std::path::Path;
@@ -40,7 +40,7 @@ fn committed_header_is_fresh() {
         .unwrap_or_else(|| fresh.lines().count().min(committed.lines().count()));
     panic!(
         "include/hycon.h is stale (first difference at line {}):\n  generated: {:?}\n  committed: {:?}\n\
-         regenerate with `HYCON_BLESS=1 cargo test --test header_fresh` and commit it",
+         regenerate with `HYCON_BLESS=1 cargo test --test integration header_fresh::` and commit it",
         first + 1,
         fresh.lines().nth(first).unwrap_or("<end of file>"),
         committed.lines().nth(first).unwrap_or("<end of file>"),

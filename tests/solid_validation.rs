@@ -5,7 +5,7 @@
 //! nu = 0.3, 0.49, 0.4999 as a 3D slice with `u_z = 0`, and the 3D patch test on their mesh of
 //! seven irregular bricks (with the shape policy it needs).
 //!
-//! `cargo test -p hycon --test solid_validation -- --nocapture` prints the table of
+//! `cargo test -p hycon --test integration solid_validation:: -- --nocapture` prints the table of
 //! normalised results (the table of docs/elements.md).
 
 use hycon::solid::mesh::{SolidMesh, graded};

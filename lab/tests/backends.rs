@@ -3,7 +3,7 @@
 //! comparison at about 100k unknowns (printed with `--nocapture`, never asserted). That
 //! `Backend::Cholmod` is an error without the feature is a unit test in `src/solver`.
 //!
-//! Run: `cargo test --features suitesparse --test backends -- --nocapture`
+//! Run: `cargo test --features suitesparse --test lab backends:: -- --nocapture`
 #![cfg(feature = "suitesparse")]
 
 use faer::Mat;

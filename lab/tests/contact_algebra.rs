@@ -15,8 +15,7 @@ use hycon::contact::iteration::{
 use hycon::solver::{Backend, SparseCholesky};
 use hycon_lab::scene::{DiskOnBlock, Scene};
 
-mod common;
-use common::OwnSolver;
+use crate::common::OwnSolver;
 
 /// Tractions to this fraction of the peak `|tn|`.
 const TRACTIONS: f64 = 1e-10;

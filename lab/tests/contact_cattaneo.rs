@@ -22,8 +22,7 @@ use hycon::contact::iteration::{
 use hycon_lab::cases::Hertz;
 use hycon_lab::scene::DiskOnBlock;
 
-#[path = "common/l2.rs"]
-mod l2;
+use crate::common::l2;
 
 const N: usize = 16;
 const MU: f64 = 0.3;

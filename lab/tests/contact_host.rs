@@ -21,8 +21,7 @@ use hycon::model::Model;
 use hycon::solver::SparseCholesky;
 use hycon_lab::scene::{DiskOnBlock, Scene};
 
-mod common;
-use common::OwnSolver;
+use crate::common::OwnSolver;
 
 const SHIFT: usize = 1000;
 

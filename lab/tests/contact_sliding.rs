@@ -28,8 +28,7 @@ use hycon::contact::iteration::{
 use hycon_lab::cases::Hertz;
 use hycon_lab::scene::{DiskOnBlock, Scene};
 
-#[path = "common/l2.rs"]
-mod l2;
+use crate::common::l2;
 
 /// Elements per target half-width.
 const N: usize = 16;

@@ -1,7 +1,7 @@
 //! Numerical stability stress suite (issue 5, item 5): extreme moduli, Poisson's ratios, element
 //! shapes, units, loads, refinements, near-coincident nodes and bad situations. Every case either
 //! gives a result correct within a stated tolerance or a clear error; never NaN, never silent
-//! garbage. Each test prints a small table (`cargo test --test stress_suite -- --nocapture`).
+//! garbage. Each test prints a small table (`cargo test --test lab stress_suite:: -- --nocapture`).
 //!
 //! Two set-ups are used:
 //! * the Hertz scene of `hycon_lab::scene` (half disk on a block, plane strain), pressed by

@@ -9,7 +9,7 @@
 //! and host-assembly API). The header
 //! `include/hycon.h` is generated from the crate by cbindgen
 //! (`cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`, or
-//! `HYCON_BLESS=1 cargo test --test header_fresh`) and committed; `tests/header_fresh.rs` fails
+//! `HYCON_BLESS=1 cargo test --test integration header_fresh::`) and committed; `tests/header_fresh.rs` fails
 //! when it is stale.
 //!
 //! # Conventions (repeated at the top of the header)

@@ -1,4 +1,4 @@
-//! Helpers shared by the integration tests of the product (the lab's own live in
+//! Helpers shared by the integration test modules of the product (the lab's own live in
 //! `lab/tests/common`; these tests cannot use the lab, which depends on the product).
 
 use hycon::mesh::Mesh;

@@ -1,5 +1,4 @@
-//! L2 comparisons of nodal values with a closed form, shared by the contact tests that include
-//! this file (`#[path = "common/l2.rs"] mod l2;`).
+//! L2 comparisons of nodal values with a closed form, shared by the contact tests.
 
 /// `(|v_h - exact|, |exact|)` in L2 over the span of the points `v` (sorted by x), `v_h` their
 /// linear interpolant: the midpoint rule on 64 sub-intervals of each segment.

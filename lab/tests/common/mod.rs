@@ -1,4 +1,6 @@
-//! What several test files share.
+//! What several test modules share.
+
+pub mod l2;
 
 use hycon::contact::bodies::HostSolve;
 use hycon::solver::SparseCholesky;

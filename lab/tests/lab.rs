@@ -1,0 +1,22 @@
+//! The tests of hycon-lab (the scenes, reference cases, benchmarks' building blocks and the
+//! `hycon` program), one module per file, built as one test binary: `cargo test -p hycon-lab
+//! --test lab [filter]`, e.g. `contact_hertz::` for one file's tests.
+
+mod common;
+
+mod backends;
+mod cli;
+mod contact_algebra;
+mod contact_axisymmetric;
+mod contact_cattaneo;
+mod contact_convergence;
+mod contact_hertz;
+mod contact_host;
+mod contact_robustness;
+mod contact_settle;
+mod contact_sliding;
+mod guard;
+mod linear;
+mod scene_findings;
+mod scenes;
+mod stress_suite;
