@@ -538,16 +538,7 @@ fn volumes_match_closed_forms() {
         8.0,
         "affine",
     );
-    let warped = [
-        [0.0, 0.0, 0.0],
-        [2.1, 0.2, -0.1],
-        [2.4, 1.9, 0.2],
-        [-0.2, 1.5, 0.1],
-        [0.3, -0.1, 1.2],
-        [2.0, 0.1, 1.4],
-        [2.2, 2.2, 1.7],
-        [0.1, 1.7, 1.1],
-    ];
+    let warped = crate::common::distorted_brick();
     let map = Trilinear::new(&warped);
     let g4 = [
         (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
@@ -741,16 +732,7 @@ fn stress_at_natural_coordinates_is_the_stress_at_the_mapped_point() {
 /// Bricks: the stress at natural coordinates equals the stress at the mapped point.
 #[test]
 fn brick_stress_at_natural_coordinates() {
-    let warped = [
-        [0.0, 0.0, 0.0],
-        [2.1, 0.2, -0.1],
-        [2.4, 1.9, 0.2],
-        [-0.2, 1.5, 0.1],
-        [0.3, -0.1, 1.2],
-        [2.0, 0.1, 1.4],
-        [2.2, 2.2, 1.7],
-        [0.1, 1.7, 1.1],
-    ];
+    let warped = crate::common::distorted_brick();
     let m = Isotropic::new(1000.0, 0.3).unwrap();
     let map = Trilinear::new(&warped);
     for f in BrickFormulation::ALL {

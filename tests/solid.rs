@@ -27,19 +27,7 @@ use nalgebra::{DMatrix, Matrix3, SymmetricEigen};
 
 const UNIT: [[f64; 3]; 8] = NODE_XI;
 
-/// A clearly distorted brick (no two faces parallel, no face planar).
-fn distorted() -> [[f64; 3]; 8] {
-    [
-        [0.0, 0.0, 0.0],
-        [2.1, 0.2, -0.1],
-        [2.4, 1.9, 0.2],
-        [-0.2, 1.5, 0.1],
-        [0.3, -0.1, 1.2],
-        [2.0, 0.1, 1.4],
-        [2.2, 2.2, 1.7],
-        [0.1, 1.7, 1.1],
-    ]
-}
+use crate::common::distorted_brick as distorted;
 
 fn steel() -> Isotropic {
     Isotropic::new(210e3, 0.3).unwrap()

@@ -32,3 +32,17 @@ pub fn block(
     }
     ids
 }
+
+/// A clearly distorted brick (no two faces parallel, no face planar).
+pub fn distorted_brick() -> [[f64; 3]; 8] {
+    [
+        [0.0, 0.0, 0.0],
+        [2.1, 0.2, -0.1],
+        [2.4, 1.9, 0.2],
+        [-0.2, 1.5, 0.1],
+        [0.3, -0.1, 1.2],
+        [2.0, 0.1, 1.4],
+        [2.2, 2.2, 1.7],
+        [0.1, 1.7, 1.1],
+    ]
+}
