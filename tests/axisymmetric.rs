@@ -4,6 +4,7 @@
 //! Lamé's thick cylinder against the closed form (no locking as `nu -> 0.5`, where Q4 locks),
 //! and the model-level checks (one analysis kind per model, `t = 1`, the axial support).
 
+use crate::common::{annulus_node, inner_arc_error, quarter_annulus};
 use hycon::element::{self, ElementMatrix, Formulation};
 use hycon::mesh::Mesh;
 use hycon::model::Model;
@@ -466,22 +467,8 @@ fn sphere_u(radius: f64, [a, b]: [f64; 2], youngs: f64, nu: f64, p: f64) -> f64 
 /// pressure a traction normal to each chord of the cavity.
 fn sphere_error(f: Formulation, nu: f64, [nr, nt]: [usize; 2]) -> f64 {
     let radii = [1.0, 2.0];
-    let id = |i: usize, j: usize| j * (nr + 1) + i;
-    let mut mesh = Mesh::new();
-    for j in 0..=nt {
-        let t = std::f64::consts::FRAC_PI_2 * j as f64 / nt as f64;
-        for i in 0..=nr {
-            let r = radii[0] + (radii[1] - radii[0]) * i as f64 / nr as f64;
-            // exactly on the axis at the pole
-            let x = if j == nt { 0.0 } else { r * t.cos() };
-            mesh.push_node([x, r * t.sin()]);
-        }
-    }
-    for j in 0..nt {
-        for i in 0..nr {
-            mesh.push_element(&[id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)], 0);
-        }
-    }
+    let id = |i, j| annulus_node(nr, i, j);
+    let mesh = quarter_annulus(radii, [nr, nt]);
     let mut model = Model::new(mesh.clone(), vec![axi(1000.0, nu)], f);
     let equator: Vec<usize> = (0..=nr).map(|i| id(i, 0)).collect();
     let axis: Vec<usize> = (0..=nr).map(|i| id(i, nt)).collect();
@@ -495,13 +482,7 @@ fn sphere_error(f: Formulation, nu: f64, [nr, nt]: [usize; 2]) -> f64 {
     }
     let solution = model.solve().unwrap();
     let exact = sphere_u(radii[0], radii, 1000.0, nu, 1.0);
-    (0..=nt)
-        .map(|j| {
-            let p = mesh.nodes[id(0, j)];
-            let u = solution.displacement(id(0, j));
-            ((u[0] * p[0] + u[1] * p[1]) / radii[0] / exact - 1.0).abs()
-        })
-        .fold(0.0, f64::max)
+    inner_arc_error(&mesh, &solution, [nr, nt], radii[0], exact)
 }
 
 /// A genuinely two-dimensional closed form with the axis in the mesh: Lamé's hollow sphere.

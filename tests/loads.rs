@@ -3,6 +3,7 @@
 //! a pressure on a curved face summing to the projected area, Lamé's bore load solved through
 //! the model APIs), element volumes, the scaled Jacobian, and stress at natural coordinates.
 
+use crate::common::{annulus_node, inner_arc_error, quarter_annulus};
 use hycon::element::geometry::Bilinear;
 use hycon::element::loads::{EdgeLoad, edge_load};
 use hycon::element::{self, Formulation, quality};
@@ -239,44 +240,27 @@ fn lame_bore_load_axisymmetric() {
 /// elements, `nr x nt` in polar coordinates, symmetry supports), its polygonal bore loaded by a
 /// unit pressure through `edge_load`, element by element, assembled by the test.
 fn ring_bore_error(nu: f64, [nr, nt]: [usize; 2]) -> f64 {
-    let [a, b] = RADII;
-    let id = |i: usize, j: usize| j * (nr + 1) + i;
-    let mut mesh = Mesh::new();
-    for j in 0..=nt {
-        let th = FRAC_PI_2 * j as f64 / nt as f64;
-        for i in 0..=nr {
-            let r = a + (b - a) * i as f64 / nr as f64;
-            let (x, y) = if j == nt {
-                (0.0, r)
-            } else {
-                (r * th.cos(), r * th.sin())
-            };
-            mesh.push_node([x, y]);
-        }
-    }
+    let a = RADII[0];
+    let id = |i, j| annulus_node(nr, i, j);
+    let mesh = quarter_annulus(RADII, [nr, nt]);
     let m = plane(1.0);
     let m = Material::new(1000.0, nu, 1.0, m.analysis).unwrap();
     let mut model = Model::new(mesh.clone(), vec![m], Formulation::Hybrid);
     for j in 0..nt {
-        for i in 0..nr {
-            let nodes = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
-            model.mesh.push_element(&nodes, 0);
-            if i == 0 {
-                let coords = nodes.map(|k| mesh.nodes[k]);
-                let f = edge_load(
-                    Formulation::Hybrid,
-                    &coords,
-                    &m,
-                    3,
-                    &EdgeLoad::pressure(1.0),
-                )
-                .unwrap();
-                for (local, node) in [(3, nodes[3]), (0, nodes[0])] {
-                    model
-                        .nodal_forces
-                        .push((node, [f[2 * local], f[2 * local + 1]]));
-                }
-            }
+        let nodes = [id(0, j), id(1, j), id(1, j + 1), id(0, j + 1)];
+        let coords = nodes.map(|k| mesh.nodes[k]);
+        let f = edge_load(
+            Formulation::Hybrid,
+            &coords,
+            &m,
+            3,
+            &EdgeLoad::pressure(1.0),
+        )
+        .unwrap();
+        for (local, node) in [(3, nodes[3]), (0, nodes[0])] {
+            model
+                .nodal_forces
+                .push((node, [f[2 * local], f[2 * local + 1]]));
         }
     }
     let bottom: Vec<usize> = (0..=nr).map(|i| id(i, 0)).collect();
@@ -285,12 +269,7 @@ fn ring_bore_error(nu: f64, [nr, nt]: [usize; 2]) -> f64 {
     model.fix_dir(&left, 0, 0.0).unwrap();
     let solution = model.solve().unwrap();
     let exact = lame_u_r(a, RADII, 1000.0, nu, 1.0);
-    (0..=nt)
-        .map(|j| {
-            let (p, u) = (mesh.nodes[id(0, j)], solution.displacement(id(0, j)));
-            ((u[0] * p[0] + u[1] * p[1]) / a / exact - 1.0).abs()
-        })
-        .fold(0.0, f64::max)
+    inner_arc_error(&mesh, &solution, [nr, nt], a, exact)
 }
 
 /// Lamé's bore load in plane strain: a quarter ring whose bore is a polygon, loaded through

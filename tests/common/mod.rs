@@ -46,3 +46,48 @@ pub fn distorted_brick() -> [[f64; 3]; 8] {
         [0.1, 1.7, 1.1],
     ]
 }
+
+/// A quarter annulus `radii[0] <= r <= radii[1]` in the first quadrant, meshed `nr x nt` in
+/// polar coordinates: node `(i, j)` (outward `i`, `j` from the x axis to the y axis, the last
+/// row exactly on the y axis) is `annulus_node(nr, i, j)`; quads in row order, material 0.
+pub fn quarter_annulus(radii: [f64; 2], [nr, nt]: [usize; 2]) -> Mesh {
+    let id = |i, j| annulus_node(nr, i, j);
+    let mut mesh = Mesh::new();
+    for j in 0..=nt {
+        let t = std::f64::consts::FRAC_PI_2 * j as f64 / nt as f64;
+        for i in 0..=nr {
+            let r = radii[0] + (radii[1] - radii[0]) * i as f64 / nr as f64;
+            let x = if j == nt { 0.0 } else { r * t.cos() };
+            mesh.push_node([x, r * t.sin()]);
+        }
+    }
+    for j in 0..nt {
+        for i in 0..nr {
+            mesh.push_element(&[id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)], 0);
+        }
+    }
+    mesh
+}
+
+/// The id of node `(i, j)` of [`quarter_annulus`] with `nr` elements through the wall.
+pub fn annulus_node(nr: usize, i: usize, j: usize) -> usize {
+    j * (nr + 1) + i
+}
+
+/// The largest `|u_r / exact - 1|` over the inner arc's nodes (radius `a`) of a solved
+/// [`quarter_annulus`], `u_r = u . x / a`.
+pub fn inner_arc_error(
+    mesh: &Mesh,
+    solution: &hycon::model::Solution,
+    [nr, nt]: [usize; 2],
+    a: f64,
+    exact: f64,
+) -> f64 {
+    (0..=nt)
+        .map(|j| {
+            let k = annulus_node(nr, 0, j);
+            let (p, u) = (mesh.nodes[k], solution.displacement(k));
+            ((u[0] * p[0] + u[1] * p[1]) / a / exact - 1.0).abs()
+        })
+        .fold(0.0, f64::max)
+}
