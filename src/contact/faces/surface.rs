@@ -18,7 +18,8 @@ pub struct SurfaceFaces<'a> {
 }
 
 impl SurfaceFaces<'_> {
-    fn corners(&self, side: &str) -> Result<Vec<Quad>> {
+    /// The corners of every face; an error names a face using a node id out of range.
+    pub(super) fn corners(&self, side: &str) -> Result<Vec<Quad>> {
         let n = self.x.len();
         self.faces
             .iter()
