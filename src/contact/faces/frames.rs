@@ -65,7 +65,8 @@ const VANISHING: f64 = 1e-8;
 pub struct SymmetryPlane {
     /// A point of the plane.
     pub point: [f64; 3],
-    /// Its unit normal (either orientation).
+    /// Its unit normal (either orientation; [`SymmetryPlane::new`] and [`SurfaceFrames::new`]
+    /// normalise it).
     pub normal: [f64; 3],
 }
 
@@ -287,7 +288,8 @@ impl SurfaceFrames {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] for a node id out of range or a failing face (naming it), a
-    /// reference that is zero or not finite, a node whose faces' normals cancel, a node on
+    /// reference or a symmetry plane that is zero or not finite (the planes' normals are
+    /// normalised here too), a node whose faces' normals cancel, a node on
     /// three independent symmetry planes or whose normal is along a plane's normal, and a
     /// nodal normal within [`MIN_REFERENCE_SINE`] of the reference (naming the node).
     pub fn new(
@@ -296,9 +298,13 @@ impl SurfaceFrames {
         symmetry: &[SymmetryPlane],
     ) -> Result<Self> {
         let sums = node_sums(&surface)?;
+        let symmetry = symmetry
+            .iter()
+            .map(|p| SymmetryPlane::new(p.point, p.normal))
+            .collect::<Result<Vec<_>>>()?;
         let constrained = sums
             .iter()
-            .map(|(&k, s)| constrain(k, surface.x[k], s, symmetry).map(|c| (k, c)))
+            .map(|(&k, s)| constrain(k, surface.x[k], s, &symmetry).map(|c| (k, c)))
             .collect::<Result<Vec<_>>>()?;
         let r = match reference {
             Some(r) => {
@@ -610,6 +616,12 @@ mod tests {
         let plane = SymmetryPlane::new([0.0; 3], [0.0, 0.0, 2.0]).unwrap();
         let err = SurfaceFrames::new(s, None, &[plane]).unwrap_err();
         assert!(err.to_string().contains("A node 0:"), "{err}");
+        let zero = SymmetryPlane {
+            point: [0.0; 3],
+            normal: [0.0; 3],
+        };
+        let err = SurfaceFrames::new(s, None, &[zero]).unwrap_err();
+        assert!(err.to_string().contains("symmetry plane"), "{err}");
         assert!(SymmetryPlane::new([0.0; 3], [0.0; 3]).is_err());
         assert!(SymmetryPlane::new([f64::INFINITY, 0.0, 0.0], [1.0, 0.0, 0.0]).is_err());
         let bad = [[0, 1, 2, 7]];
