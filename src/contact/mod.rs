@@ -7,6 +7,8 @@
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
 //! * [`handover`]: a host's hand-overs checked against each other (sections, radii, elements).
 //! * [`friction`]: the friction laws the iteration asks about (Coulomb).
+//! * [`space`]: vectors and nodal frames for any dimension ([`space::Vector`], [`space::Frame`]):
+//!   what the core handles positions, gaps, forces and frames with.
 //! * [`tangent`]: a node's tangent space for any dimension: tractions, slip directions.
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
 //!   its results.
@@ -18,4 +20,5 @@ pub mod friction;
 pub mod geometry;
 pub mod handover;
 pub mod iteration;
+pub mod space;
 pub mod tangent;
