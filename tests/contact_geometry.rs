@@ -1,4 +1,4 @@
-//! Contact-element kernels (`hycon::contact::geometry`): conventions, mortar integrals, coverage,
+//! Contact-element kernels (`hycon::contact::plane::mortar`): conventions, mortar integrals, coverage,
 //! the choice of hit, invariance, the coupling against finite differences, input checks.
 //!
 //! Tolerances: quantities that are exact in real arithmetic (the split-and-Gauss rule integrates
@@ -8,7 +8,7 @@
 //! the same scales. The finite-difference check states its own tolerance.
 
 use hycon::Error;
-use hycon::contact::geometry::{
+use hycon::contact::plane::mortar::{
     ContactNode, ContactSurface, SurfaceMeasure, evaluate, evaluate_into,
 };
 use std::collections::BTreeMap;

@@ -7,10 +7,10 @@
 //! warnings ([`Scene::warnings`]).
 
 use crate::gmsh::{self, GmshMesh, Group};
-use hycon::contact::facing;
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult, NodeState, PlateControl,
 };
+use hycon::contact::plane::facing;
 use hycon::element::Formulation;
 use hycon::material::{Analysis, Material};
 use hycon::mesh::Mesh;

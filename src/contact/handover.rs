@@ -12,8 +12,8 @@
 //! [`ContactAnalysis::host`]: super::iteration::ContactAnalysis::host
 
 use super::bodies::HostElements;
-use super::geometry::{self, SurfaceMeasure};
 use super::iteration::{ContactPair, in_pair};
+use super::plane::mortar::{self as geometry, SurfaceMeasure};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
 use std::collections::HashMap;

@@ -3,7 +3,7 @@
 //! # The equations (docs/method.md: "The mixed system with K factored once", "The contact iteration")
 //! `t` is the traction acting on body A (the multiplier side), interpolated linearly between the
 //! A nodes (quadratically, with zero slope at `r = 0`, next to an axisymmetric node on the axis:
-//! `geometry.rs`); at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
+//! `plane/mortar.rs`); at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
 //! With `Gc` the coupling (its column for a normal multiplier is `+F^A n_k` at A's dofs and
 //! `-F^B n_k` at B's: the contact forces on both bodies, equal and opposite), equilibrium in the
 //! total form reads
@@ -63,10 +63,10 @@
 //! does the iteration cap. A failed increment leaves the last converged state untouched.
 
 use super::bodies::{Bodies, HostElements, HostSystem};
-use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
-use super::geometry::{self, ContactSurface, SurfaceMeasure};
 use super::handover::{self, Section};
+use super::plane::facing;
+use super::plane::mortar::{self as geometry, ContactSurface, SurfaceMeasure};
 pub use super::tangent::{SlipDirection, Tangential, Traction};
 use crate::assembly::dof;
 use crate::element::geometry::edge_normal;

@@ -1,6 +1,7 @@
 //! Contact between two bodies by the method of Kubomura and Pian (docs/method.md).
 //!
-//! * [`geometry`]: pure contact-element kernels of one contact pair at given positions (the
+//! * [`plane`]: the plane and axisymmetric geometry of a pair of polylines: [`plane::mortar`], the
+//!   pure contact-element kernels of one contact pair at given positions (the
 //!   reference ones for small kinematics, the current ones for finite): nodal frames, weights,
 //!   the mortar matrices `F^A` and `F^B`, the weighted gap `R_C`, coverage and the coupling rows.
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
@@ -15,10 +16,9 @@
 
 pub mod bodies;
 pub mod faces;
-pub mod facing;
 pub mod friction;
-pub mod geometry;
 pub mod handover;
 pub mod iteration;
+pub mod plane;
 pub mod space;
 pub mod tangent;

@@ -3,7 +3,7 @@
 //! matrices for hosts that assemble the mixed system themselves.
 
 use super::{BNodeResult, ContactAnalysis, NodeResult, Traction};
-use crate::contact::geometry::ContactSurface;
+use crate::contact::plane::mortar::ContactSurface;
 use crate::element::geometry::edge_normal;
 use crate::error::{Error, Result};
 

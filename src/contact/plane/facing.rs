@@ -1,9 +1,9 @@
 //! How the two polylines of a contact pair face each other, judged without the search window
-//! of the contact kernels ([`super::geometry`]): the orientation check of a pair in the
+//! of the contact kernels ([`super::mortar`]): the orientation check of a pair in the
 //! reference configuration, and the check that no node the search lost has passed through the
 //! opposite surface.
 //!
-//! Conventions as in [`super::geometry`]: each polyline has its body on the left, a segment
+//! Conventions as in [`super::mortar`]: each polyline has its body on the left, a segment
 //! `p0 -> p1` has the outward normal `n = (d_y, -d_x) / |d|`, `d = p1 - p0`, and a node's
 //! normal is the length-weighted mean of its adjacent segments' normals.
 
