@@ -17,6 +17,7 @@
 pub mod bodies;
 pub mod faces;
 pub mod friction;
+pub mod geometry;
 pub mod handover;
 pub mod iteration;
 pub mod plane;

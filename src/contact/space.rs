@@ -186,6 +186,14 @@ impl Frame {
         }
     }
 
+    /// A zero frame of dimension `dim` (zero normal and tangents): a node not evaluated yet.
+    pub fn zero(dim: usize) -> Self {
+        Frame {
+            normal: Vector::zero(dim),
+            tangents: [Vector::zero(dim); 2],
+        }
+    }
+
     /// The frame of a 3D face node: unit normal `n`, unit tangents `s1`, `s2` (the caller
     /// makes them orthonormal).
     pub fn face(n: [f64; 3], s1: [f64; 3], s2: [f64; 3]) -> Self {
@@ -208,6 +216,11 @@ impl Frame {
     /// The tangents `s_1 .. s_{dim-1}`.
     pub fn tangents(&self) -> &[Vector] {
         &self.tangents[..self.dim() - 1]
+    }
+
+    /// The tangent `s_i` (`i < dim - 1`).
+    pub fn tangent(&self, i: usize) -> Vector {
+        self.tangents()[i]
     }
 
     /// The tangential components `s_i . v` of `v`.

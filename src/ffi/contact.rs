@@ -1601,6 +1601,11 @@ pub unsafe extern "C" fn hycon_contact_free(contact: *mut HyconContact) {
     unsafe { free_handle(contact) }
 }
 
+/// The two components of a plane vector, as the C structs hold them.
+fn plane(v: crate::contact::space::Vector) -> [f64; 2] {
+    [v[0], v[1]]
+}
+
 fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo {
     HyconIncrementInfo {
         increment: i.increment,
@@ -2079,9 +2084,9 @@ pub unsafe extern "C" fn hycon_contact_surface_nodes(
                 node: n.node,
                 weight: n.weight,
                 coverage: n.coverage,
-                normal: n.normal,
-                tangent: n.tangent,
-                gap: n.gap,
+                normal: plane(n.frame.normal()),
+                tangent: plane(n.frame.tangent(0)),
+                gap: plane(n.gap),
                 normal_gap: n.normal_gap,
             })
             .collect();

@@ -925,10 +925,10 @@ impl ContactAnalysis {
             .map(|&(p, k, row)| {
                 let node = &self.reference[p].nodes[k];
                 let d = match row {
-                    Row::Normal => node.normal,
-                    Row::Tangent => node.tangent,
+                    Row::Normal => node.frame.normal(),
+                    Row::Tangent => node.frame.tangent(0),
                 };
-                self.directed(&node.coupling, d)
+                self.directed(&node.coupling, &d)
             })
             .collect();
         if new.is_empty() {
@@ -1345,10 +1345,10 @@ impl ContactAnalysis {
                 .min_by(|a, b| a.1.normal_gap.total_cmp(&b.1.normal_gap));
             if let Some((k, node)) = nearest {
                 rows.push((p, k, Row::Normal));
-                keys.push(self.directed(&node.coupling, node.normal));
+                keys.push(self.directed(&node.coupling, &node.frame.normal()));
                 if !self.laws[p].is_frictionless() {
                     rows.push((p, k, Row::Tangent));
-                    keys.push(self.directed(&node.coupling, node.tangent));
+                    keys.push(self.directed(&node.coupling, &node.frame.tangent(0)));
                 }
             }
         }

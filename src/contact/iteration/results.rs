@@ -3,7 +3,8 @@
 //! matrices for hosts that assemble the mixed system themselves.
 
 use super::{BNodeResult, ContactAnalysis, NodeResult, Traction};
-use crate::contact::plane::mortar::ContactSurface;
+use crate::contact::geometry::ContactSurface;
+use crate::contact::space::Vector;
 use crate::element::geometry::edge_normal;
 use crate::error::{Error, Result};
 
@@ -72,9 +73,9 @@ impl ContactAnalysis {
             values: Vec::new(),
         };
         for node in &surface.nodes {
-            for direction in [node.normal, node.tangent] {
+            for direction in [node.frame.normal(), node.frame.tangent(0)] {
                 for &(j, c) in &node.coupling {
-                    for (d, component) in direction.iter().enumerate() {
+                    for (d, component) in direction.components().iter().enumerate() {
                         let field = self.bodies.field_index(crate::assembly::dof(j, d));
                         if let Some(i) = field.filter(|_| *component != 0.0) {
                             rows.columns.push(i);
@@ -182,6 +183,7 @@ impl ContactAnalysis {
         let surface = self.converged_surface(p)?;
         let x = self.positions(&self.qc);
         let xg = self.geometry_positions(&x);
+        let (x, xg) = (x.as_chunks::<2>().0, xg.as_chunks::<2>().0);
         let pair = &self.pairs[p];
         let index = |j: usize| pair.b.iter().position(|&b| b == j);
         let mut weight = vec![0.0; pair.b.len()];
@@ -231,16 +233,14 @@ impl ContactAnalysis {
     pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
         let surface = self.converged_surface(p)?;
         let x = self.positions(&self.qc);
+        let x = x.as_chunks::<2>().0;
         let pair = &self.pairs[p];
         let data = &self.nodes[p];
         // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
         let mut force = vec![[0.0; 2]; pair.a.len()];
         for (k, node) in surface.nodes.iter().enumerate() {
-            let (tn, ts) = plane_parts(&data[k].traction);
-            let t = [
-                tn * node.normal[0] + ts * node.tangent[0],
-                tn * node.normal[1] + ts * node.tangent[1],
-            ];
+            let traction = &data[k].traction;
+            let t = node.frame.vector(traction.normal, traction.tangential);
             for &(j, c) in &node.coupling {
                 if let Some(i) = pair.a.iter().position(|&a| a == j) {
                     force[i][0] += c * t[0];
@@ -257,8 +257,8 @@ impl ContactAnalysis {
                 state: data[k].state,
                 tn: plane_parts(&data[k].traction).0,
                 ts: plane_parts(&data[k].traction).1,
-                normal: node.normal,
-                tangent: node.tangent,
+                normal: plane(node.frame.normal()),
+                tangent: plane(node.frame.tangent(0)),
                 position: x[node.node],
                 weight: node.weight,
                 gap: node.normal_gap,
@@ -266,6 +266,11 @@ impl ContactAnalysis {
             })
             .collect())
     }
+}
+
+/// The two components of a plane vector (the plane's and axisymmetry's results).
+fn plane(v: Vector) -> [f64; 2] {
+    [v[0], v[1]]
 }
 
 /// `(tn, ts)` of a traction at a node with one tangent (the plane's and axisymmetry's results).

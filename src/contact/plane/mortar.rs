@@ -108,6 +108,8 @@
 //! piece, and every candidate is tested exactly. The cost is near-linear in the number of
 //! segments.
 
+pub use crate::contact::geometry::{ContactNode, ContactSurface};
+use crate::contact::space::{Frame, Vector};
 use crate::element::geometry::{GAUSS2_UNIT, GAUSS3, edge_normal};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material, SCALE_RANGE};
@@ -361,78 +363,6 @@ const END_SNAP: f64 = 1e-10;
 
 /// A segment shorter than this fraction of its polyline's longest segment is rejected.
 const ZERO_LENGTH: f64 = 1e-12;
-
-/// The contact quantities of one A node (see the [module docs](self) for the equations).
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct ContactNode {
-    /// Global node id (an entry of A).
-    pub node: usize,
-    /// Nodal normal `n_k = normalise(sum_e h_e n_e)` over the adjacent A segments (A's outward
-    /// normal, pointing into B).
-    pub normal: [f64; 2],
-    /// Nodal tangent `s_k = (n_k.y, -n_k.x)`.
-    pub tangent: [f64; 2],
-    /// `weight_k = integral M_k dS` over the whole support (the tributary measure: length
-    /// times thickness in plane, area of the full circle's band in axisymmetry).
-    pub weight: f64,
-    /// `integral M_k dS` over the covered part of the support only (`== weight` when
-    /// `coverage == 1`).
-    pub covered_weight: f64,
-    /// Fraction of the support's length where B was found, in `[0, 1]`; exactly `1.0` when fully
-    /// covered. The contact solver must not activate a node with `coverage < 1`.
-    pub coverage: f64,
-    /// `R_C,k = integral M_k (x^A - x^B) dS = -integral M_k g n dS` over the covered part.
-    pub gap: [f64; 2],
-    /// `-n_k . R_C,k / covered_weight`: the weighted normal gap as a length, negative =
-    /// penetration. `f64::INFINITY` when nothing of the support is covered.
-    pub normal_gap: f64,
-    /// `integral M_k g dS / covered_weight`, with each segment's own normal: the weighted mean
-    /// signed distance (equal to `normal_gap` where A is straight; on a curved A it reproduces a
-    /// constant offset exactly, while `normal_gap` carries the factor `n_k . n_e`).
-    /// `f64::INFINITY` when nothing of the support is covered.
-    pub mean_distance: f64,
-    /// The coupling row: `(global node id, c_kj)` with `c_kj = +F^A_kj` at A nodes and
-    /// `-F^B_kj` at B nodes, one entry per node, sorted by node id, exact zeros dropped.
-    pub coupling: Vec<(usize, f64)>,
-}
-
-impl ContactNode {
-    /// Whether the node's whole support is covered by B (`coverage == 1`).
-    pub fn is_covered(&self) -> bool {
-        self.coverage >= 1.0
-    }
-
-    /// `sum_j c_kj du_j`: the first-order change of `R_C,k` (frozen pairing) under nodal
-    /// displacement increments `du` (indexed by global node id).
-    pub fn coupling_times(&self, du: &[[f64; 2]]) -> [f64; 2] {
-        self.coupling.iter().fold([0.0, 0.0], |acc, &(j, c)| {
-            [acc[0] + c * du[j][0], acc[1] + c * du[j][1]]
-        })
-    }
-}
-
-/// The contact quantities of a whole pair: one [`ContactNode`] per A node, in A's order.
-///
-/// Keeps its scratch buffers between calls of [`evaluate_into`], so that re-evaluating the
-/// same pair does not reallocate.
-#[derive(Debug, Clone, Default)]
-pub struct ContactSurface {
-    /// One entry per A node, in A's order.
-    pub nodes: Vec<ContactNode>,
-    work: Workspace,
-}
-
-impl ContactSurface {
-    /// An empty surface (fill it with [`evaluate_into`]).
-    pub fn new() -> Self {
-        Self::default()
-    }
-
-    /// Whether every A node is fully covered by B.
-    pub fn all_covered(&self) -> bool {
-        self.nodes.iter().all(ContactNode::is_covered)
-    }
-}
 
 /// Evaluate the contact pair `(a, b)` at the positions `x` (all nodes, indexed by node
 /// id) with A's surface measure `measure`: weights, `F^A`, `F^B`, `R_C`, nodal frames, coverage
@@ -807,7 +737,7 @@ fn evaluate_impl(
             a[k], x[a[k]][0]
         )));
     }
-    let w = &mut out.work;
+    let w = out.work.get::<Workspace>();
     check_distinct(a, b, &mut w.sorted)?;
 
     let (na, nb) = (a.len(), b.len());
@@ -823,7 +753,7 @@ fn evaluate_impl(
         w.seg_hats.push(Hats::of_segment(measure, r, h, e, na));
     }
     // nodes: frame, weight, F^A
-    out.nodes.resize_with(na, ContactNode::default);
+    out.nodes.resize_with(na, || ContactNode::empty(2));
     w.support.clear();
     for (k, node) in out.nodes.iter_mut().enumerate() {
         let left = (k > 0).then(|| (x[a[k - 1]], w.seg_hats[k - 1]));
@@ -837,11 +767,10 @@ fn evaluate_impl(
         }
         let n = m.normal;
         node.node = a[k];
-        node.normal = n;
-        node.tangent = [n[1], -n[0]];
+        node.frame = Frame::plane(n);
         node.weight = m.weight;
         node.covered_weight = 0.0;
-        node.gap = [0.0, 0.0];
+        node.gap = Vector::zero(2);
         node.coupling.clear();
         if k > 0 {
             node.coupling.push((a[k - 1], m.mass[0]));
@@ -1052,7 +981,7 @@ fn evaluate_impl(
             (1.0 - w.uncovered[k] / support).clamp(0.0, 1.0)
         };
         if node.covered_weight > 0.0 {
-            node.normal_gap = -dot(node.normal, node.gap) / node.covered_weight;
+            node.normal_gap = -node.frame.normal().dot(&node.gap) / node.covered_weight;
             node.mean_distance = w.distance[k] / node.covered_weight;
         } else {
             node.normal_gap = f64::INFINITY;
@@ -1137,8 +1066,8 @@ mod tests {
         let (a, b, x) = flat(&[0.0, 1.0, 2.0], &[0.0, 2.0], 0.1);
         let s = evaluate(&a, &b, &x, 1.0, SurfaceMeasure::default()).unwrap();
         for nd in &s.nodes {
-            assert_eq!(nd.normal, [0.0, 1.0]);
-            assert_eq!(nd.tangent, [1.0, 0.0]);
+            assert_eq!(nd.frame.normal(), Vector::plane(0.0, 1.0));
+            assert_eq!(nd.frame.tangents(), &[Vector::plane(1.0, 0.0)]);
             assert!((nd.normal_gap - 0.1).abs() < 1e-15);
         }
     }
