@@ -1750,7 +1750,7 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
                         PlateControl::Displacement(s * p.value[d])
                     }
                 };
-                analysis.increment_with_plate(&f, &qp, [c(0), c(1)])
+                analysis.increment_with_plate(&f, &qp, &[c(0), c(1)])
             }
         };
         let info = match step {

@@ -160,7 +160,7 @@ fn push_out_at_gross_slip() {
         let nodes = analysis.node_results(0).unwrap();
         let normal: f64 = nodes
             .iter()
-            .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+            .map(|n| -(n.frame.normal().dot(&n.force)))
             .sum();
         let q = analysis.displacement().unwrap().to_vec();
         // the end reactions: K q minus the contact forces at the (contact) end nodes

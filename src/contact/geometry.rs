@@ -244,6 +244,10 @@ pub trait ContactGeometry: std::fmt::Debug + Send + Sync {
     /// distance measured at the current positions `x`.
     fn b_node_distances(&self, open: &[bool], x: &[f64], xg: &[f64]) -> Vec<BNodeDistance>;
 
+    /// B's outward normal at B node `i` (index into B) at positions `x`: the direction of the
+    /// mean of its elements' normals.
+    fn b_node_normal(&self, i: usize, x: &[f64]) -> Vector;
+
     /// Whether A node `k` at the current positions `x` lies behind B (inside B's body) by more
     /// than `limit`, over B's facing elements without a search window: the B element's nodes
     /// (global ids) and the depth.

@@ -69,7 +69,7 @@ use super::handover::{self, Section};
 use super::plane::PlaneGeometry;
 pub use super::plane::facing::check_a_inside;
 use super::plane::mortar::SurfaceMeasure;
-use super::space::Vector;
+use super::space::{Frame, Vector};
 pub use super::tangent::{SlipDirection, Tangential, Traction};
 use crate::assembly::dof;
 use crate::error::{ContactError, Error, Result};
@@ -99,7 +99,7 @@ pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use failure::Failure;
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
-use plate::{Border, Plate, plate_force};
+use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
 
@@ -494,13 +494,12 @@ pub struct NodeResult {
     pub tn: f64,
     /// Tangential traction on A along `s` (force per area).
     pub ts: f64,
-    /// Nodal normal (A's outward): of the reference configuration under small kinematics, of
-    /// the converged one under finite kinematics.
-    pub normal: [f64; 2],
-    /// Nodal tangent `s = (n_y, -n_x)`.
-    pub tangent: [f64; 2],
+    /// Nodal frame: A's outward normal and the tangents (in the plane `s = (n_y, -n_x)`), of
+    /// the reference configuration under small kinematics, of the converged one under finite
+    /// kinematics.
+    pub frame: Frame,
     /// Current position (reference position plus the converged displacement).
-    pub position: [f64; 2],
+    pub position: Vector,
     /// Tributary measure `integral of M_k dS` (`dS = t ds` in plane, `2 pi r ds` in
     /// axisymmetry: an area), measured in the configuration the geometry lives in (reference
     /// under small kinematics, converged under finite): the tractions are per unit of it, and
@@ -510,7 +509,7 @@ pub struct NodeResult {
     /// the node's support).
     pub gap: f64,
     /// Equivalent nodal contact force on A at this node, `sum_k F^A_kj t_k` (global x, y).
-    pub force: [f64; 2],
+    pub force: Vector,
 }
 
 /// Converged contact results at one B node (see [`ContactAnalysis::b_node_results`]).
@@ -521,11 +520,11 @@ pub struct BNodeResult {
     /// `integral of L^B_j dS` over the projected overlap (A's measure `dS`).
     pub weight: f64,
     /// Equivalent nodal contact force on B (global x, y).
-    pub force: [f64; 2],
+    pub force: Vector,
     /// Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
     pub pressure: f64,
     /// Current position of the node.
-    pub position: [f64; 2],
+    pub position: Vector,
 }
 
 /// What happened in one iteration.
@@ -778,7 +777,7 @@ impl ContactAnalysis {
         let mut dofs: Vec<usize> = pairs
             .iter()
             .flat_map(|p| p.a.iter().chain(&p.b))
-            .flat_map(|&n| [dof(n, 0), dof(n, 1)])
+            .flat_map(|&n| (0..DIM).map(move |c| dof(n, c)))
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
@@ -837,7 +836,7 @@ impl ContactAnalysis {
             })
             .collect();
         check_host_radii(&pairs, &sections, &bodies)?;
-        let dofs = (0..2 * n_nodes).collect();
+        let dofs = (0..DIM * n_nodes).collect();
         let mut analysis = Self::setup(bodies, pairs, measures, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
@@ -855,7 +854,7 @@ impl ContactAnalysis {
         options: ContactOptions,
         a_inside: Option<Vec<Option<Vector>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; 2 * bodies.positions().len()];
+        let mut slot = vec![None; bodies.positions().as_flattened().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
         }
@@ -1126,7 +1125,7 @@ impl ContactAnalysis {
     /// a pairing that held at its start still finds its partner, however fine the mesh (a
     /// reach tied to the element size alone breaks exactly when a user refines).
     fn search_reach(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
-        let motion = checks::largest_node_motion(uc, startc);
+        let motion = checks::largest_node_motion(uc, startc, self.dim());
         (self.options.search_distance * self.mean_size(p, xg)).max(2.0 * motion)
     }
 
@@ -1299,7 +1298,7 @@ impl ContactAnalysis {
         &mut self,
         f: &[f64],
         qp: &[f64],
-        control: Option<[PlateControl; 2]>,
+        control: Option<Controls>,
     ) -> Result<IncrementInfo> {
         let number = self.increment + 1;
         let loads::Solved {
@@ -1560,11 +1559,11 @@ struct Attempt<'a> {
     number: usize,
     f: &'a [f64],
     qp: &'a [f64],
-    control: Option<[PlateControl; 2]>,
+    control: Option<Controls>,
     /// The load solve at the contact dofs.
     u0c: &'a [f64],
     border: Option<&'a Border>,
-    force0: [f64; 2],
+    force0: Vector,
     /// The load (`f` and `q_p`) the increment's locks are kept with.
     load: &'a [f64],
     /// The converged displacement of the contact dofs the increment starts from.
@@ -1603,7 +1602,7 @@ fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies
     let x = bodies.positions();
     for (i, (pair, section)) in pairs.iter().zip(sections).enumerate() {
         for (side, ids) in [("A", &pair.a), ("B", &pair.b)] {
-            let points: Vec<[f64; 2]> = ids.iter().map(|&n| x[n]).collect();
+            let points: Vec<f64> = ids.iter().flat_map(|&n| x[n]).collect();
             let external: Vec<usize> = ids.iter().map(|&n| bodies.external(n)).collect();
             handover::check_radii(section, side, &external, &points).map_err(|e| in_pair(i, e))?;
         }
@@ -1713,7 +1712,7 @@ impl ContactAnalysis {
         let motion: Vec<f64> = uc.iter().zip(&self.qc).map(|(a, b)| a - b).collect();
         self.largest_motion = self.largest_motion.max(checks::norm2(&motion));
         self.largest_node_motion =
-            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc));
+            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc, self.dim()));
         self.qc = uc;
         self.surfaces = surfaces;
         self.previous = self.converged.replace(converged);

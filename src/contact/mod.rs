@@ -1,9 +1,20 @@
 //! Contact between two bodies by the method of Kubomura and Pian (docs/method.md).
 //!
-//! * [`plane`]: the plane and axisymmetric geometry of a pair of polylines: [`plane::mortar`], the
-//!   pure contact-element kernels of one contact pair at given positions (the
-//!   reference ones for small kinematics, the current ones for finite): nodal frames, weights,
-//!   the mortar matrices `F^A` and `F^B`, the weighted gap `R_C`, coverage and the coupling rows.
+//! The core (the iteration, its active set, checks and boundary algebra, the results) is
+//! dimension-free: it reaches a pair's surfaces only through [`geometry::ContactGeometry`],
+//! and handles positions (flat, `dim` values per node), gaps, forces and frames as
+//! [`space::Vector`] and [`space::Frame`], tractions and slips as [`tangent`]'s types. A
+//! geometry of another dimension is a sibling of [`plane`], not an edit of it.
+//!
+//! * [`geometry`]: the seam: the [`geometry::ContactGeometry`] trait (evaluate a pair at
+//!   positions, its scales and checks) and what an evaluation gives per A node
+//!   ([`geometry::ContactNode`], [`geometry::ContactSurface`]).
+//! * [`plane`]: the plane and axisymmetric geometry of a pair of polylines,
+//!   [`plane::PlaneGeometry`]: [`plane::mortar`], the pure contact-element kernels of one pair
+//!   at given positions (the reference ones for small kinematics, the current ones for
+//!   finite): nodal frames, weights, the mortar matrices `F^A` and `F^B`, the weighted gap
+//!   `R_C`, coverage and the coupling rows; [`plane::facing`], the orientation checks.
+//! * [`faces`]: the mortar integrals of brick faces (3D, not yet behind the seam).
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
 //! * [`handover`]: a host's hand-overs checked against each other (sections, radii, elements).

@@ -7,7 +7,7 @@
 //! at `x[dim * i..dim * i + dim]`, see [`node`]).
 //!
 //! Every operation reproduces, with 2 components, the floating-point operations of the
-//! `[f64; 2]` code it replaced (same order; `hypot` for lengths), so plane results are
+//! two-array code it replaced (same order; `hypot` for lengths), so plane results are
 //! unchanged bit for bit.
 
 use super::tangent::Tangential;
@@ -115,15 +115,13 @@ impl Vector {
     }
 }
 
-impl From<[f64; 2]> for Vector {
-    fn from(c: [f64; 2]) -> Self {
-        Vector::plane(c[0], c[1])
-    }
-}
-
-impl From<[f64; 3]> for Vector {
-    fn from(c: [f64; 3]) -> Self {
-        Vector::solid(c[0], c[1], c[2])
+/// The vector of components `c`.
+///
+/// # Panics
+/// When `N` is not 2 or 3.
+impl<const N: usize> From<[f64; N]> for Vector {
+    fn from(c: [f64; N]) -> Self {
+        Vector::from_components(&c)
     }
 }
 
@@ -178,10 +176,10 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// The plane frame of the unit normal `n`: `s = (n_y, -n_x)`.
-    pub fn plane(n: [f64; 2]) -> Self {
+    /// The plane frame of the unit normal `n` (2 components): `s = (n_y, -n_x)`.
+    pub fn plane(n: Vector) -> Self {
         Frame {
-            normal: n.into(),
+            normal: n,
             tangents: [Vector::plane(n[1], -n[0]), Vector::zero(2)],
         }
     }
@@ -250,7 +248,7 @@ impl Frame {
 mod tests {
     use super::*;
 
-    /// With two components every operation is the `[f64; 2]` expression it replaced, bit for
+    /// With two components every operation is the two-array expression it replaced, bit for
     /// bit (values chosen so that a different order or a plain square root would round
     /// differently somewhere).
     #[test]
@@ -266,7 +264,7 @@ mod tests {
             &[u[0] + 0.3 * v[0], u[1] + 0.3 * v[1]]
         );
         let n = [0.6, 0.8];
-        let f = Frame::plane(n);
+        let f = Frame::plane(n.into());
         assert_eq!(f.tangents(), &[Vector::plane(0.8, -0.6)]);
         assert_eq!(
             f.tangential(&a),

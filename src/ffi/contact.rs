@@ -1209,7 +1209,7 @@ pub unsafe extern "C" fn hycon_host_add_pair(
                     w[0].id, w[1].id
                 )));
             }
-            let points: Vec<[f64; 2]> = nodes.iter().map(|n| n.position).collect();
+            let points: Vec<f64> = nodes.iter().flat_map(|n| n.position).collect();
             handover::check_radii(&section, side, &ids(nodes), &points)?;
         }
         let mut pairs = h.pairs.clone();
@@ -1710,7 +1710,7 @@ pub unsafe extern "C" fn hycon_contact_increment_with_plate(
                 }
             };
         }
-        let done = c.analysis.increment_with_plate(f, qp, plate)?;
+        let done = c.analysis.increment_with_plate(f, qp, &plate)?;
         unsafe { put(info, info_to_c(done)) };
         Ok(())
     })
@@ -1737,8 +1737,8 @@ pub unsafe extern "C" fn hycon_contact_plate(
         check_pointer(force.cast_const(), "force")?;
         // SAFETY: both checked non-null and aligned, writable for 2 doubles (contract).
         unsafe {
-            write_doubles(displacement, &u);
-            write_doubles(force, &f);
+            write_doubles(displacement, u.components());
+            write_doubles(force, f.components());
         }
         Ok(())
     })
@@ -1887,12 +1887,12 @@ pub unsafe extern "C" fn hycon_contact_node_results(
                         slip_sign,
                         tn: r.tn,
                         ts: r.ts,
-                        normal: r.normal,
-                        tangent: r.tangent,
-                        position: r.position,
+                        normal: plane(r.frame.normal()),
+                        tangent: plane(r.frame.tangent(0)),
+                        position: plane(r.position),
                         weight: r.weight,
                         gap: r.gap,
-                        force: r.force,
+                        force: plane(r.force),
                     }
                 })
                 .collect())
@@ -1929,9 +1929,9 @@ pub unsafe extern "C" fn hycon_contact_b_node_results(
                 .map(|r| HyconBNodeResult {
                     node: r.node,
                     weight: r.weight,
-                    force: r.force,
+                    force: plane(r.force),
                     pressure: r.pressure,
-                    position: r.position,
+                    position: plane(r.position),
                 })
                 .collect())
         };

@@ -34,10 +34,10 @@ pub(super) const ROUND_OFF: f64 = 1e4 * f64::EPSILON;
 pub(super) const POSITION_ROUND_OFF: f64 = 64.0 * f64::EPSILON;
 
 /// The largest length of a contact node's displacement from `before` to `after` (both over
-/// the contact dofs, a node's two components side by side).
-pub(super) fn largest_node_motion(after: &[f64], before: &[f64]) -> f64 {
-    (after.chunks_exact(2).zip(before.chunks_exact(2)))
-        .map(|(a, b)| (a[0] - b[0]).hypot(a[1] - b[1]))
+/// the contact dofs, a node's `dim` components side by side).
+pub(super) fn largest_node_motion(after: &[f64], before: &[f64], dim: usize) -> f64 {
+    (after.chunks_exact(dim).zip(before.chunks_exact(dim)))
+        .map(|(a, b)| (Vector::from_components(a) - Vector::from_components(b)).norm())
         .fold(0.0, f64::max)
 }
 
@@ -94,7 +94,7 @@ impl ContactAnalysis {
     /// `contact_randomized 1000 1` by 1.8e-4 of their peak).
     pub(super) fn motion_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
         let h = self.mean_size(p, xg);
-        let motion = largest_node_motion(uc, startc);
+        let motion = largest_node_motion(uc, startc, self.dim());
         motion.max(self.largest_node_motion).max(1e-12 * h)
     }
 

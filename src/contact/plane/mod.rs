@@ -81,7 +81,7 @@ impl ContactGeometry for PlaneGeometry {
         total / (self.a.len().max(2) - 1) as f64
     }
 
-    /// A node on the axis in axisymmetry ([`mortar::on_axis`]).
+    /// A node on the axis in axisymmetry (`|r|` within round-off of its segments' length).
     fn frictionless_at(&self, k: usize, x: &[f64]) -> bool {
         self.measure == SurfaceMeasure::Axisymmetric && mortar::on_axis(&self.a, k, points(x))
     }
@@ -119,7 +119,7 @@ impl ContactGeometry for PlaneGeometry {
     }
 
     /// Over A segments whose two nodes are open: the B nodes projecting strictly inside the
-    /// segment ([`mortar::interior_parameter`]), closing the nearer end.
+    /// segment (more than `1e-3` of its length from either end), closing the nearer end.
     fn b_node_distances(&self, open: &[bool], x: &[f64], xg: &[f64]) -> Vec<BNodeDistance> {
         let (x, xg) = (points(x), points(xg));
         let mut out = Vec::new();
@@ -153,6 +153,14 @@ impl ContactGeometry for PlaneGeometry {
             }
         }
         out
+    }
+
+    /// The rotated chord of B's neighbours of node `i` (of its one segment at an end).
+    fn b_node_normal(&self, i: usize, x: &[f64]) -> Vector {
+        let b = &self.b;
+        let (prev, next) = (b[i.saturating_sub(1)], b[(i + 1).min(b.len() - 1)]);
+        let x = points(x);
+        edge_normal(x[prev], x[next]).0.into()
     }
 
     /// Against every B segment ([`facing::behind`]), the A node with its nodal normal.

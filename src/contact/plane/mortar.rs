@@ -767,7 +767,7 @@ fn evaluate_impl(
         }
         let n = m.normal;
         node.node = a[k];
-        node.frame = Frame::plane(n);
+        node.frame = Frame::plane(n.into());
         node.weight = m.weight;
         node.covered_weight = 0.0;
         node.gap = Vector::zero(2);
