@@ -193,9 +193,6 @@ pub trait ContactGeometry: std::fmt::Debug + Send + Sync {
     /// The multiplier-side (A) nodes, in the order of the evaluated [`ContactNode`]s.
     fn a_nodes(&self) -> &[usize];
 
-    /// The opposite side's (B) nodes.
-    fn b_nodes(&self) -> &[usize];
-
     /// Evaluate the pair at positions `x`, pairing B with A within `reach` (a length > 0),
     /// into `out` (reusing its allocations).
     ///

@@ -66,10 +66,6 @@ impl ContactGeometry for PlaneGeometry {
         &self.a
     }
 
-    fn b_nodes(&self) -> &[usize] {
-        &self.b
-    }
-
     fn evaluate_into(&self, x: &[f64], reach: f64, out: &mut ContactSurface) -> Result<()> {
         mortar::evaluate_into(&self.a, &self.b, points(x), reach, self.measure, out)
     }
@@ -195,5 +191,74 @@ impl ContactGeometry for PlaneGeometry {
             }
         }
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A flat A on `y = 0` at `x = 2, 1, 0` (right to left: its body below, `n = +y`) and a
+    /// flat B on `y = -0.1` at `x = -0.5, 0.75, 2.5` (left to right: its body above), so A
+    /// penetrates B by 0.1 everywhere; positions flat, A's nodes 0..3, B's 3..6.
+    fn pair() -> (PlaneGeometry, Vec<f64>) {
+        let x = vec![
+            2.0, 0.0, 1.0, 0.0, 0.0, 0.0, -0.5, -0.1, 0.75, -0.1, 2.5, -0.1,
+        ];
+        let g = PlaneGeometry::new(vec![0, 1, 2], vec![3, 4, 5], SurfaceMeasure::default());
+        (g, x)
+    }
+
+    /// Through the seam, over flat positions: the evaluation is the kernel's over points, the
+    /// mean size is the mean segment length, the point inside A lies below it.
+    #[test]
+    fn the_seam_is_the_plane_kernels() {
+        let (g, x) = pair();
+        let geometry: &dyn ContactGeometry = &g;
+        let direct =
+            mortar::evaluate(&[0, 1, 2], &[3, 4, 5], points(&x), 1.0, g.measure()).unwrap();
+        assert_eq!(geometry.evaluate(&x, 1.0).unwrap().nodes, direct.nodes);
+        assert_eq!(geometry.dim(), 2);
+        assert_eq!(geometry.mean_size(&x), 1.0);
+        assert!(!geometry.frictionless_at(2, &x));
+        assert!(geometry.check_inside(&x, &Vector::plane(1.0, -0.5)).is_ok());
+        assert!(geometry.check_inside(&x, &Vector::plane(1.0, 0.5)).is_err());
+        assert_eq!(
+            geometry.b_node_normal(1, &x),
+            Vector::plane(0.0, -1.0),
+            "B's outward normal points into A"
+        );
+    }
+
+    /// The B node at `x = 0.75` projects inside A's second segment (`1 -> 0`, at a quarter of
+    /// it), penetrates by 0.1 and closes A node 1; with node 1 closed nothing is checked.
+    /// A node 1 lies 0.1 behind B's second segment; round-off of a motion of `1e20` hides
+    /// A's unit segments.
+    #[test]
+    fn b_nodes_passing_through_and_resolution() {
+        let (mut g, x) = pair();
+        for frozen in [false, true] {
+            if frozen {
+                g.freeze_b_nodes(&x);
+            }
+            let found = g.b_node_distances(&[true; 3], &x, &x);
+            assert_eq!(found.len(), 1);
+            let d = &found[0];
+            assert_eq!(
+                (d.node, d.element.as_slice(), d.nearest),
+                (4, &[1, 2][..], 1)
+            );
+            assert!((d.distance + 0.1).abs() < 1e-15, "{}", d.distance);
+            assert!(g.b_node_distances(&[true, false, true], &x, &x).is_empty());
+        }
+        let (element, depth) = g.behind(1, &x, 0.05).unwrap();
+        assert_eq!(element, vec![4, 5]);
+        assert!((depth - 0.1).abs() < 1e-15, "{depth}");
+        assert_eq!(g.behind(1, &x, 0.2), None);
+        assert_eq!(g.unresolved(&x, &x, 1e-14), None);
+        let mut moved = x.clone();
+        moved[0] += 1e20;
+        let u = g.unresolved(&moved, &x, 1e-14).unwrap();
+        assert_eq!((u.node, u.motion, u.length), (0, 1e20, 1.0));
     }
 }
