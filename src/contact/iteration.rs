@@ -783,7 +783,8 @@ impl ContactAnalysis {
         dofs.dedup();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::model(model, &dofs, options.backend, lazy, options.threads)?;
-        Self::setup(bodies, pairs, measures, dofs, options, None)
+        let geometries = plane_geometries(&pairs, measures);
+        Self::setup(bodies, pairs, geometries, dofs, options, None)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -837,19 +838,20 @@ impl ContactAnalysis {
             .collect();
         check_host_radii(&pairs, &sections, &bodies)?;
         let dofs = (0..DIM * n_nodes).collect();
-        let mut analysis = Self::setup(bodies, pairs, measures, dofs, options, Some(a_inside))?;
+        let geometries = plane_geometries(&pairs, measures);
+        let mut analysis = Self::setup(bodies, pairs, geometries, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }
 
-    /// The common part of the constructors: slots, `F`, node data. `measures`: one per pair,
-    /// checked by the constructors (a model's come from its validated materials, a host's are
-    /// checked before its stiffness is factored). `a_inside`: a host's points inside body A per
+    /// The common part of the constructors: slots, `F`, node data. `geometries`: one per pair,
+    /// its measure checked by the constructors (a model's come from its validated materials, a
+    /// host's are checked before its stiffness is factored). `a_inside`: a host's points inside body A per
     /// pair (`None` for a model, whose element edges tell the sides).
     fn setup(
         mut bodies: Bodies,
         pairs: Vec<ContactPair>,
-        measures: Vec<SurfaceMeasure>,
+        mut geometries: Vec<Box<dyn ContactGeometry>>,
         dofs: Vec<usize>,
         options: ContactOptions,
         a_inside: Option<Vec<Option<Vector>>>,
@@ -868,12 +870,6 @@ impl ContactAnalysis {
         };
         timings.flexibility = clock.elapsed().as_secs_f64();
         let x = bodies.positions().as_flattened();
-        let mut geometries: Vec<Box<dyn ContactGeometry>> = (pairs.iter().zip(measures))
-            .map(|(p, m)| {
-                Box::new(PlaneGeometry::new(p.a.clone(), p.b.clone(), m))
-                    as Box<dyn ContactGeometry>
-            })
-            .collect();
         let reach: Vec<f64> = (geometries.iter())
             .map(|g| options.search_distance * g.mean_size(x))
             .collect();
@@ -1571,6 +1567,19 @@ struct Attempt<'a> {
     resolution: f64,
     clock: std::time::Instant,
     flexibility_before: f64,
+}
+
+/// The plane and axisymmetric geometry of every pair: its polylines with the measure of its A
+/// side.
+fn plane_geometries(
+    pairs: &[ContactPair],
+    measures: Vec<SurfaceMeasure>,
+) -> Vec<Box<dyn ContactGeometry>> {
+    (pairs.iter().zip(measures))
+        .map(|(p, m)| {
+            Box::new(PlaneGeometry::new(p.a.clone(), p.b.clone(), m)) as Box<dyn ContactGeometry>
+        })
+        .collect()
 }
 
 /// What tells the side of body A of a pair beyond the geometry of its polylines.
