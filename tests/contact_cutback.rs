@@ -277,12 +277,12 @@ fn a_plate_slide_is_cut_back_with_its_controls() {
     let down = -(press.gap + press.depth);
     plate
         .analysis
-        .increment_with_plate(&f, &qp, [Displacement(0.0), Displacement(down)])
+        .increment_with_plate(&f, &qp, &[Displacement(0.0), Displacement(down)])
         .unwrap();
     let (_, pressed) = plate.analysis.plate().unwrap();
     let got = plate
         .analysis
-        .increment_with_plate(&f, &qp, [Displacement(slide), Displacement(down)])
+        .increment_with_plate(&f, &qp, &[Displacement(slide), Displacement(down)])
         .unwrap();
     assert_eq!(got, want);
     let bits = |a: &ContactAnalysis| -> Vec<u64> {
@@ -295,10 +295,13 @@ fn a_plate_slide_is_cut_back_with_its_controls() {
 
     let mut forced = Scene::with_plate(press, ContactOptions::default()).unwrap();
     let load = [Displacement(0.0), Force(pressed[1])];
-    forced.analysis.increment_with_plate(&f, &qp, load).unwrap();
+    forced
+        .analysis
+        .increment_with_plate(&f, &qp, &load)
+        .unwrap();
     let info = forced
         .analysis
-        .increment_with_plate(&f, &qp, [Displacement(slide), Force(pressed[1])])
+        .increment_with_plate(&f, &qp, &[Displacement(slide), Force(pressed[1])])
         .unwrap();
     let (u, force) = forced.analysis.plate().unwrap();
     assert_eq!(u[0], slide);

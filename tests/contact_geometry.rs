@@ -1,4 +1,4 @@
-//! Contact-element kernels (`hycon::contact::geometry`): conventions, mortar integrals, coverage,
+//! Contact-element kernels (`hycon::contact::plane::mortar`): conventions, mortar integrals, coverage,
 //! the choice of hit, invariance, the coupling against finite differences, input checks.
 //!
 //! Tolerances: quantities that are exact in real arithmetic (the split-and-Gauss rule integrates
@@ -8,9 +8,10 @@
 //! the same scales. The finite-difference check states its own tolerance.
 
 use hycon::Error;
-use hycon::contact::geometry::{
+use hycon::contact::plane::mortar::{
     ContactNode, ContactSurface, SurfaceMeasure, evaluate, evaluate_into,
 };
+use hycon::contact::space::Vector;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
@@ -101,8 +102,8 @@ fn sign_conventions() {
         let (a, b, x) = flat(&[0.0, 1.0, 2.0], &[-0.5, 2.5], gap, 0.0);
         let s = evaluate(&a, &b, &x, 1.0, UNIT).unwrap();
         for nd in &s.nodes {
-            assert_eq!(nd.normal, [0.0, 1.0], "{name}");
-            assert_eq!(nd.tangent, [1.0, 0.0], "{name}");
+            assert_eq!(nd.frame.normal(), [0.0, 1.0].into(), "{name}");
+            assert_eq!(nd.frame.tangent(0), [1.0, 0.0].into(), "{name}");
             assert!(
                 close(nd.normal_gap, gap, EXACT),
                 "{name}: {}",
@@ -138,16 +139,16 @@ fn nodal_frame_is_length_weighted() {
         [-5.0, 5.0],
     ];
     let s = evaluate(&[0, 1, 2], &[3, 4], &x, 100.0, UNIT).unwrap();
-    let m = s.nodes[1].normal;
+    let m = s.nodes[1].frame.normal();
     let norm = 5f64.sqrt();
     assert!(
         close(m[0], 1.0 / norm, EXACT) && close(m[1], 2.0 / norm, EXACT),
         "{m:?}"
     );
-    let t = s.nodes[1].tangent;
-    assert_eq!(t, [m[1], -m[0]]);
-    assert_eq!(s.nodes[0].normal, [1.0, 0.0]);
-    assert_eq!(s.nodes[2].normal, [0.0, 1.0]);
+    let t = s.nodes[1].frame.tangent(0);
+    assert_eq!(t, [m[1], -m[0]].into());
+    assert_eq!(s.nodes[0].frame.normal(), [1.0, 0.0].into());
+    assert_eq!(s.nodes[2].frame.normal(), [0.0, 1.0].into());
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -491,7 +492,7 @@ fn assert_same(
     tol: f64,
     what: &str,
 ) {
-    let r = |v: [f64; 2]| {
+    let r = |v: Vector| {
         [
             rot[0][0] * v[0] + rot[0][1] * v[1],
             rot[1][0] * v[0] + rot[1][1] * v[1],
@@ -500,10 +501,10 @@ fn assert_same(
     for (p, q) in s.nodes.iter().zip(&t.nodes) {
         let tag = format!("{what}, node {}", p.node);
         assert_eq!(p.node, q.node);
-        let (n, sv, g) = (r(p.normal), r(p.tangent), r(p.gap));
+        let (n, sv, g) = (r(p.frame.normal()), r(p.frame.tangent(0)), r(p.gap));
         for i in 0..2 {
-            assert!(close(n[i], q.normal[i], tol), "{tag}: normal");
-            assert!(close(sv[i], q.tangent[i], tol), "{tag}: tangent");
+            assert!(close(n[i], q.frame.normal()[i], tol), "{tag}: normal");
+            assert!(close(sv[i], q.frame.tangent(0)[i], tol), "{tag}: tangent");
             assert!(
                 close(scale * scale * g[i], q.gap[i], tol * scale * scale),
                 "{tag}: R_C"
@@ -689,7 +690,7 @@ fn coupling_matches_finite_differences_at_zero_gap() {
                     xp[j][dir] += eps;
                     let pert = evaluate(&a, &b, &xp, 0.1, UNIT).unwrap();
                     for (k, (p, q)) in base.nodes.iter().zip(&pert.nodes).enumerate() {
-                        let n = p.normal;
+                        let n = p.frame.normal();
                         let fd =
                             (n[0] * (q.gap[0] - p.gap[0]) + n[1] * (q.gap[1] - p.gap[1])) / eps;
                         let c = p
@@ -759,8 +760,8 @@ fn plane_thickness_scales_every_integral() {
                 assert!(u.0 == v.0 && same(t * u.1, v.1), "trial {trial}");
             }
             assert_eq!(
-                (p.normal, p.tangent, p.coverage),
-                (q.normal, q.tangent, q.coverage)
+                (p.frame.normal(), p.frame.tangent(0), p.coverage),
+                (q.frame.normal(), q.frame.tangent(0), q.coverage)
             );
             assert!(same(p.normal_gap, q.normal_gap) && same(p.mean_distance, q.mean_distance));
         }
@@ -800,7 +801,7 @@ fn axisymmetric_integrals_are_exact() {
         let h = xa[1];
         assert_eq!(x[axis.node][0], 0.0);
         assert!(close(axis.weight, PI * h * h / 2.0, EXACT * area));
-        assert_eq!(axis.normal, [0.0, 1.0]);
+        assert_eq!(axis.frame.normal(), [0.0, 1.0].into());
         let g = |r: f64| g0 + slope * r;
         let hat = |nodes: &[f64], j: usize, r: f64| -> f64 {
             let left = j > 0 && r >= nodes[j - 1] && r <= nodes[j];
@@ -914,15 +915,19 @@ fn axisymmetric_curved_meridian() {
         assert!(close(total, frustums, EXACT * frustums), "trial {trial}");
         assert!((total / (2.0 * PI) - 1.0).abs() < 0.05); // about a hemisphere's 2 pi
         for node in &s.nodes {
-            let cross = node.normal[0] * node.gap[1] - node.normal[1] * node.gap[0];
-            let along = -(node.normal[0] * node.gap[0] + node.normal[1] * node.gap[1]);
+            let cross = node.frame.normal()[0] * node.gap[1] - node.frame.normal()[1] * node.gap[0];
+            let along =
+                -(node.frame.normal()[0] * node.gap[0] + node.frame.normal()[1] * node.gap[1]);
             assert!(
                 along > 0.0 && cross.abs() < 1e-2 * along,
                 "trial {trial}: {node:?}"
             );
         }
         let pole = s.nodes.last().unwrap();
-        assert!(pole.weight > 0.0 && pole.normal[1] > 0.9, "{pole:?}");
+        assert!(
+            pole.weight > 0.0 && pole.frame.normal()[1] > 0.9,
+            "{pole:?}"
+        );
     }
 }
 
@@ -952,7 +957,7 @@ fn axisymmetric_coupling_matches_finite_differences() {
                 xp[j][dir] += eps;
                 let pert = evaluate(&a, &b, &xp, 0.1, m).unwrap();
                 for (p, q) in base.nodes.iter().zip(&pert.nodes) {
-                    let n = p.normal;
+                    let n = p.frame.normal();
                     let fd = (n[0] * (q.gap[0] - p.gap[0]) + n[1] * (q.gap[1] - p.gap[1])) / eps;
                     let c = p
                         .coupling

@@ -264,7 +264,7 @@ fn run(case: Case) -> Outcome {
     let multipliers = nodes.iter().map(|n| rel(-n.tn)).fold(0.0, f64::max);
     let forces = nodes
         .iter()
-        .map(|n| rel(-(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight))
+        .map(|n| rel(-(n.frame.normal().dot(&n.force)) / n.weight))
         .fold(0.0, f64::max);
     // B side: K q at B's nodes is the contact force on B; divided by B's tributary lengths
     // (in the geometry's configuration) it must be the contact pressure, pushing B down
@@ -321,7 +321,7 @@ fn run(case: Case) -> Outcome {
         - 1.0;
     let total = nodes
         .iter()
-        .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+        .map(|n| -(n.frame.normal().dot(&n.force)))
         .sum::<f64>()
         / (P * t)
         - 1.0;

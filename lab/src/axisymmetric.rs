@@ -573,7 +573,7 @@ impl SphereScene {
         let nodes = analysis.node_results(0)?;
         let load: f64 = nodes
             .iter()
-            .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+            .map(|n| -(n.frame.normal().dot(&n.force)))
             .sum();
         let hertz = HertzSphere::new(load, 1.0, self.e_star);
         let sorted = |pressure: &dyn Fn(&NodeResult) -> f64| -> Vec<[f64; 2]> {
@@ -585,8 +585,7 @@ impl SphereScene {
             points
         };
         let points = sorted(&|n| -n.tn);
-        let from_forces =
-            sorted(&|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight);
+        let from_forces = sorted(&|n| -(n.frame.normal().dot(&n.force)) / n.weight);
         let m = moments(&points, &hertz);
         Ok(SphereComparison {
             load,

@@ -655,7 +655,7 @@ fn evaluate(
         .map(|n| NodeRow {
             x: n.position[0],
             p: -n.tn,
-            p_forces: -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight,
+            p_forces: -(n.frame.normal().dot(&n.force)) / n.weight,
             q: n.ts,
             state: n.state,
             p_exact: closed_form.pressure(n.position[0]),

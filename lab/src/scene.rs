@@ -436,7 +436,7 @@ impl Scene {
         let mut nodes = analysis.node_results(0)?;
         if analysis.options().kinematics == Kinematics::Small {
             for n in &mut nodes {
-                n.position = self.model.mesh.nodes[n.node];
+                n.position = self.model.mesh.nodes[n.node].into();
             }
         }
         Ok(nodes)
@@ -465,7 +465,7 @@ impl Scene {
 pub fn total_load(nodes: &[NodeResult]) -> f64 {
     nodes
         .iter()
-        .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+        .map(|n| -(n.frame.normal().dot(&n.force)))
         .sum()
 }
 
@@ -483,8 +483,7 @@ pub fn compare_with_hertz(
     }
     let hertz = Hertz::new(load, radius, e_star);
     let pressure = |n: &NodeResult| -n.tn;
-    let force_pressure =
-        |n: &NodeResult| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight;
+    let force_pressure = |n: &NodeResult| -(n.frame.normal().dot(&n.force)) / n.weight;
     let weight_sum: f64 = nodes.iter().map(|n| pressure(n) * n.weight).sum();
     let centre = nodes
         .iter()

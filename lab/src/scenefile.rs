@@ -7,10 +7,10 @@
 //! warnings ([`Scene::warnings`]).
 
 use crate::gmsh::{self, GmshMesh, Group};
-use hycon::contact::facing;
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, Kinematics, NodeResult, NodeState, PlateControl,
 };
+use hycon::contact::plane::facing;
 use hycon::element::Formulation;
 use hycon::material::{Analysis, Material};
 use hycon::mesh::Mesh;
@@ -1750,7 +1750,7 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
                         PlateControl::Displacement(s * p.value[d])
                     }
                 };
-                analysis.increment_with_plate(&f, &qp, [c(0), c(1)])
+                analysis.increment_with_plate(&f, &qp, &[c(0), c(1)])
             }
         };
         let info = match step {

@@ -160,7 +160,7 @@ fn push_out_at_gross_slip() {
         let nodes = analysis.node_results(0).unwrap();
         let normal: f64 = nodes
             .iter()
-            .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+            .map(|n| -(n.frame.normal().dot(&n.force)))
             .sum();
         let q = analysis.displacement().unwrap().to_vec();
         // the end reactions: K q minus the contact forces at the (contact) end nodes
@@ -200,7 +200,7 @@ fn push_out_at_gross_slip() {
 ///   (`p0 = 6 M1^2 / (5 M3) = 3 P / (2 pi a^2)`): within 0.1% at n = 64 for modulus ratios 1,
 ///   1e-2, 1e-4;
 /// * `p(0)`, the multiplier of the node on the axis (zero-slope shapes on the axis segment:
-///   `hycon::contact::geometry`, "Nodes on the axis"): within 0.45% at n = 64 (measured
+///   `hycon::contact::plane::mortar`, "Nodes on the axis"): within 0.45% at n = 64 (measured
 ///   -0.39%, -0.43%, -0.44% for the three ratios; the linear hats gave -0.52%, -0.54%,
 ///   -0.54%) and falling with n. It still lags its neighbours (within 0.1%): the axis node's
 ///   equivalent nodal force, Q4 and hybrid alike, is low by O(h) against theirs;

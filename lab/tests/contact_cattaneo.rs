@@ -112,12 +112,9 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
     by_x.sort_by(|a, b| a.position[0].total_cmp(&b.position[0]));
     let load: f64 = nodes
         .iter()
-        .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+        .map(|n| -(n.frame.normal().dot(&n.force)))
         .sum();
-    let q: f64 = nodes
-        .iter()
-        .map(|n| n.tangent[0] * n.force[0] + n.tangent[1] * n.force[1])
-        .sum();
+    let q: f64 = nodes.iter().map(|n| n.frame.tangent(0).dot(&n.force)).sum();
     let ratio = q / (MU * load);
     let hertz = Hertz::new(load, radius, e_star);
     let centre = nodes
@@ -175,7 +172,7 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
                         direction: SlipDirection::MINUS,
                     }
                     && n.ts > 0.0
-                    && n.tangent[0] > 0.99
+                    && n.frame.tangent(0)[0] > 0.99
             }),
     }
 }

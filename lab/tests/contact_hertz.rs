@@ -325,7 +325,7 @@ fn hertz_force_control() {
     for step in 1..=3 {
         let load = p * step as f64 / 3.0;
         let control = [PlateControl::Displacement(0.0), PlateControl::Force(-load)];
-        let info = analysis.increment_with_plate(&f, &f, control).unwrap();
+        let info = analysis.increment_with_plate(&f, &f, &control).unwrap();
         let (_, force) = analysis.plate().unwrap();
         assert!(
             (force[1] + load).abs() < 1e-10 * load,
@@ -456,10 +456,10 @@ fn plate_force_control_nothing_resists() {
         let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
         let load = scene.hertz_load();
         let pressed = [PlateControl::Displacement(0.0), PlateControl::Force(-load)];
-        analysis.increment_with_plate(&f, &f, pressed).unwrap();
+        analysis.increment_with_plate(&f, &f, &pressed).unwrap();
         let before = analysis.node_results(0).unwrap();
         let sideways = [PlateControl::Force(0.1 * load), PlateControl::Force(-load)];
-        match analysis.increment_with_plate(&f, &f, sideways) {
+        match analysis.increment_with_plate(&f, &f, &sideways) {
             Err(Error::Singular(m)) => assert!(
                 m.contains("x translation is force-controlled") && m.contains("by displacement"),
                 "{m}"

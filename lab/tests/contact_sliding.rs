@@ -87,9 +87,7 @@ fn moments(v: &[(f64, f64)]) -> (f64, f64) {
 
 fn pressure(scene: &Scene, nodes: &[NodeResult]) -> Pressure {
     let p = sorted(nodes, |n| -n.tn);
-    let pf = sorted(nodes, |n| {
-        -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight
-    });
+    let pf = sorted(nodes, |n| -(n.frame.normal().dot(&n.force)) / n.weight);
     let (m0, m1) = moments(&p);
     let centre = m1 / m0;
     let hertz = Hertz::new(m0, scene.radius, scene.e_star);
@@ -113,7 +111,7 @@ fn pressure(scene: &Scene, nodes: &[NodeResult]) -> Pressure {
         load_weights: nodes.iter().map(|n| -n.tn * n.weight).sum(),
         load_forces: nodes
             .iter()
-            .map(|n| -(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]))
+            .map(|n| -(n.frame.normal().dot(&n.force)))
             .sum(),
         centre,
         peak: intercept.sqrt(),
@@ -558,7 +556,7 @@ fn frictional_sliding() {
                 "step {k} node {}",
                 n.node
             );
-            assert!(n.ts * n.tangent[0] > 0.0 && n.tangent[0] > 0.99);
+            assert!(n.ts * n.frame.tangent(0)[0] > 0.0 && n.frame.tangent(0)[0] > 0.99);
         }
         assert!(
             (deficit - 1.0).abs() < tol::TILT,

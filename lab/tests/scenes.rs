@@ -700,7 +700,7 @@ fn hertz_scene_matches_the_closed_form() {
     a.increment(&f, &qp).unwrap();
     let mut rows = a.node_results(0).unwrap();
     for r in &mut rows {
-        r.position = scene.model.mesh.nodes[r.node];
+        r.position = scene.model.mesh.nodes[r.node].into();
     }
     let c = compare_with_hertz(&rows, lab.radius, lab.e_star).unwrap();
     let per_half_width = c.hertz.half_width / (lab.half_width / 16.0);

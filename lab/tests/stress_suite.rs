@@ -349,7 +349,7 @@ fn patch(case: Patch) -> hycon::Result<PatchOutcome> {
     let forces = worst(
         &mut nodes
             .iter()
-            .map(|n| rel(-(n.normal[0] * n.force[0] + n.normal[1] * n.force[1]) / n.weight)),
+            .map(|n| rel(-(n.frame.normal().dot(&n.force)) / n.weight)),
     );
     let solution = Solution { q: q.clone() };
     let mut stress = 0.0f64;
@@ -1111,14 +1111,14 @@ fn floating_body_frictionless() {
         for q in [1e-2, 1e-8, 0.0] {
             let mut analysis = scene.plate_analysis(ContactOptions::default()).unwrap();
             if pressed {
-                analysis.increment_with_plate(&f, &f, press).unwrap();
+                analysis.increment_with_plate(&f, &f, &press).unwrap();
             }
             let records = analysis.records().to_vec();
             let field = analysis.displacement().unwrap().to_vec();
             let plate = analysis.plate();
             let nodes = analysis.node_results(0).unwrap();
             let push = [PlateControl::Force(q * p), PlateControl::Force(-p)];
-            let result = analysis.increment_with_plate(&f, &f, push);
+            let result = analysis.increment_with_plate(&f, &f, &push);
             let label = format!("{}, Q = {q:e} P", if pressed { "pressed" } else { "fresh" });
             out += &format!("{label:>22}: {result:?}\n");
             let message = match &result {
@@ -1163,7 +1163,7 @@ fn floating_body_reports_singular() {
     let f = vec![0.0; 2 * scene.model.mesh.n_nodes()];
     let mut analysis = scene.plate_analysis(ContactOptions::default()).unwrap();
     let push = [PlateControl::Force(1e-2 * p), PlateControl::Force(-p)];
-    match analysis.increment_with_plate(&f, &f, push) {
+    match analysis.increment_with_plate(&f, &f, &push) {
         Err(Error::Singular(m)) => assert!(m.contains("frictionless"), "{m}"),
         other => panic!("expected Error::Singular, got {other:?}"),
     }

@@ -12,8 +12,8 @@
 //! [`ContactAnalysis::host`]: super::iteration::ContactAnalysis::host
 
 use super::bodies::HostElements;
-use super::geometry::{self, SurfaceMeasure};
 use super::iteration::{ContactPair, in_pair};
+use super::plane::mortar::{self, SurfaceMeasure};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
 use std::collections::HashMap;
@@ -101,23 +101,19 @@ pub fn check_sections(sections: &[Section], pairs: usize) -> Result<()> {
     Ok(())
 }
 
-/// In axisymmetry, every node of a polyline (`ids`, at `points` in the same order; `side` names
-/// it) at `r = x >= 0`, within round-off of its segments' length (the rule of
-/// [`geometry::evaluate`] for A's nodes); nothing to check in plane analysis.
+/// In axisymmetry, every node of a polyline (`ids`, at `points` in the same order, 2 values
+/// `r, z` per node; `side` names it) at `r = x >= 0`, within round-off of its segments' length (the rule of
+/// [`mortar::evaluate`] for A's nodes); nothing to check in plane analysis.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the node.
-pub fn check_radii(
-    section: &Section,
-    side: &str,
-    ids: &[usize],
-    points: &[[f64; 2]],
-) -> Result<()> {
+pub fn check_radii(section: &Section, side: &str, ids: &[usize], points: &[f64]) -> Result<()> {
     if section.analysis != Analysis::Axisymmetric {
         return Ok(());
     }
+    let points = points.as_chunks::<2>().0;
     let order: Vec<usize> = (0..points.len()).collect();
-    match geometry::below_axis(&order, points) {
+    match mortar::below_axis(&order, points) {
         None => Ok(()),
         Some(k) => Err(Error::InvalidInput(format!(
             "{side} node {} has r = x = {} < 0 (axisymmetric: x is the radius)",
@@ -246,8 +242,8 @@ mod tests {
     fn radii_are_not_negative_in_axisymmetry() {
         let axi = section(Analysis::Axisymmetric, 1.0);
         let ids = [7, 8, 9];
-        check_radii(&axi, "A", &ids, &[[-1e-12, 0.0], [1.0, 0.0], [2.0, 0.0]]).unwrap();
-        let points = [[0.0, 0.0], [-0.5, 1.0], [0.0, 2.0]];
+        check_radii(&axi, "A", &ids, &[-1e-12, 0.0, 1.0, 0.0, 2.0, 0.0]).unwrap();
+        let points = [0.0, 0.0, -0.5, 1.0, 0.0, 2.0];
         let e = check_radii(&axi, "B", &ids, &points)
             .unwrap_err()
             .to_string();
@@ -260,7 +256,7 @@ mod tests {
     /// for its kind.
     #[test]
     fn elements_have_their_pairs_section() {
-        let node = |id: usize, position: [f64; 2]| HostNode {
+        let node = |id: usize, position| HostNode {
             id,
             position,
             equations: [None, None],

@@ -3,7 +3,7 @@
 //! # The equations (docs/method.md: "The mixed system with K factored once", "The contact iteration")
 //! `t` is the traction acting on body A (the multiplier side), interpolated linearly between the
 //! A nodes (quadratically, with zero slope at `r = 0`, next to an axisymmetric node on the axis:
-//! `geometry.rs`); at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
+//! `plane/mortar.rs`); at node `k`, `t_k = tn_k n_k + ts_k s_k` in the nodal frame (`tn < 0` compression).
 //! With `Gc` the coupling (its column for a normal multiplier is `+F^A n_k` at A's dofs and
 //! `-F^B n_k` at B's: the contact forces on both bodies, equal and opposite), equilibrium in the
 //! total form reads
@@ -63,13 +63,15 @@
 //! does the iteration cap. A failed increment leaves the last converged state untouched.
 
 use super::bodies::{Bodies, HostElements, HostSystem};
-use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
-use super::geometry::{self, ContactSurface, SurfaceMeasure};
+use super::geometry::{ContactGeometry, ContactSurface};
 use super::handover::{self, Section};
+use super::plane::PlaneGeometry;
+pub use super::plane::facing::check_a_inside;
+use super::plane::mortar::SurfaceMeasure;
+use super::space::{Frame, Vector};
 pub use super::tangent::{SlipDirection, Tangential, Traction};
 use crate::assembly::dof;
-use crate::element::geometry::edge_normal;
 use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;
@@ -97,9 +99,12 @@ pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use failure::Failure;
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
-use plate::{Border, Plate, plate_force};
+use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
+
+/// The dimension of the bodies' positions (plane and axisymmetric: 2).
+const DIM: usize = 2;
 
 /// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
 /// with its body on the left), and the Coulomb friction coefficient between them.
@@ -489,13 +494,12 @@ pub struct NodeResult {
     pub tn: f64,
     /// Tangential traction on A along `s` (force per area).
     pub ts: f64,
-    /// Nodal normal (A's outward): of the reference configuration under small kinematics, of
-    /// the converged one under finite kinematics.
-    pub normal: [f64; 2],
-    /// Nodal tangent `s = (n_y, -n_x)`.
-    pub tangent: [f64; 2],
+    /// Nodal frame: A's outward normal and the tangents (in the plane `s = (n_y, -n_x)`), of
+    /// the reference configuration under small kinematics, of the converged one under finite
+    /// kinematics.
+    pub frame: Frame,
     /// Current position (reference position plus the converged displacement).
-    pub position: [f64; 2],
+    pub position: Vector,
     /// Tributary measure `integral of M_k dS` (`dS = t ds` in plane, `2 pi r ds` in
     /// axisymmetry: an area), measured in the configuration the geometry lives in (reference
     /// under small kinematics, converged under finite): the tractions are per unit of it, and
@@ -505,7 +509,7 @@ pub struct NodeResult {
     /// the node's support).
     pub gap: f64,
     /// Equivalent nodal contact force on A at this node, `sum_k F^A_kj t_k` (global x, y).
-    pub force: [f64; 2],
+    pub force: Vector,
 }
 
 /// Converged contact results at one B node (see [`ContactAnalysis::b_node_results`]).
@@ -516,11 +520,11 @@ pub struct BNodeResult {
     /// `integral of L^B_j dS` over the projected overlap (A's measure `dS`).
     pub weight: f64,
     /// Equivalent nodal contact force on B (global x, y).
-    pub force: [f64; 2],
+    pub force: Vector,
     /// Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
     pub pressure: f64,
     /// Current position of the node.
-    pub position: [f64; 2],
+    pub position: Vector,
 }
 
 /// What happened in one iteration.
@@ -665,8 +669,8 @@ pub struct ContactAnalysis {
     bodies: Bodies,
     /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
     pairs: Vec<ContactPair>,
-    /// The surface measure of each pair's A side (all of one kind).
-    measures: Vec<SurfaceMeasure>,
+    /// The geometry of each pair (its A side's surface measure with it, all of one kind).
+    geometries: Vec<Box<dyn ContactGeometry>>,
     /// The friction law of each pair: all the iteration knows of its friction.
     laws: Vec<Box<dyn FrictionLaw>>,
     options: ContactOptions,
@@ -728,9 +732,6 @@ pub struct ContactAnalysis {
     /// `search_distance` mean A segment lengths, widened under small kinematics as the bodies
     /// move (see [`ContactAnalysis::widen_pairing`]).
     reach: Vec<f64>,
-    /// Under small kinematics, the B nodes inside each A segment of every pair in the
-    /// reference configuration: the candidates of the pointwise B-node check.
-    interiors: Option<Vec<geometry::SegmentInteriors>>,
     /// The contact geometry of every pair at the last converged state (the reference one
     /// before the first increment): the iteration starts from it and the result queries read
     /// it, so nothing is evaluated twice.
@@ -776,13 +777,14 @@ impl ContactAnalysis {
         let mut dofs: Vec<usize> = pairs
             .iter()
             .flat_map(|p| p.a.iter().chain(&p.b))
-            .flat_map(|&n| [dof(n, 0), dof(n, 1)])
+            .flat_map(|&n| (0..DIM).map(move |c| dof(n, c)))
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = Bodies::model(model, &dofs, options.backend, lazy, options.threads)?;
-        Self::setup(bodies, pairs, measures, dofs, options, None)
+        let geometries = plane_geometries(&pairs, measures);
+        Self::setup(bodies, pairs, geometries, dofs, options, None)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -808,11 +810,11 @@ impl ContactAnalysis {
             )));
         }
         // the host's point inside body A, or the centroid of its element on a segment of A
-        let a_inside: Vec<Option<[f64; 2]>> = (0..pairs.len())
+        let a_inside: Vec<Option<Vector>> = (0..pairs.len())
             .map(|i| {
                 let given = system.a_inside.get(i).copied().flatten();
                 let beside = || system.elements.as_ref()?.centroid_beside(&pairs[i].a);
-                given.or_else(beside)
+                given.or_else(beside).map(Vector::from)
             })
             .collect();
         let sections = std::mem::take(&mut system.sections);
@@ -835,25 +837,26 @@ impl ContactAnalysis {
             })
             .collect();
         check_host_radii(&pairs, &sections, &bodies)?;
-        let dofs = (0..2 * n_nodes).collect();
-        let mut analysis = Self::setup(bodies, pairs, measures, dofs, options, Some(a_inside))?;
+        let dofs = (0..DIM * n_nodes).collect();
+        let geometries = plane_geometries(&pairs, measures);
+        let mut analysis = Self::setup(bodies, pairs, geometries, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }
 
-    /// The common part of the constructors: slots, `F`, node data. `measures`: one per pair,
-    /// checked by the constructors (a model's come from its validated materials, a host's are
-    /// checked before its stiffness is factored). `a_inside`: a host's points inside body A per
+    /// The common part of the constructors: slots, `F`, node data. `geometries`: one per pair,
+    /// its measure checked by the constructors (a model's come from its validated materials, a
+    /// host's are checked before its stiffness is factored). `a_inside`: a host's points inside body A per
     /// pair (`None` for a model, whose element edges tell the sides).
     fn setup(
         mut bodies: Bodies,
         pairs: Vec<ContactPair>,
-        measures: Vec<SurfaceMeasure>,
+        mut geometries: Vec<Box<dyn ContactGeometry>>,
         dofs: Vec<usize>,
         options: ContactOptions,
-        a_inside: Option<Vec<Option<[f64; 2]>>>,
+        a_inside: Option<Vec<Option<Vector>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; 2 * bodies.positions().len()];
+        let mut slot = vec![None; bodies.positions().as_flattened().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
         }
@@ -866,23 +869,26 @@ impl ContactAnalysis {
             Flexibility::full(bodies.flexibility(&dofs)?)
         };
         timings.flexibility = clock.elapsed().as_secs_f64();
-        let reach: Vec<f64> = pairs
-            .iter()
-            .map(|p| options.search_distance * mean_segment(&p.a, bodies.positions()))
+        let x = bodies.positions().as_flattened();
+        let reach: Vec<f64> = (geometries.iter())
+            .map(|g| options.search_distance * g.mean_size(x))
             .collect();
-        let reference = evaluate_pairs(&pairs, &measures, bodies.positions(), &reach)?;
-        let interiors = (options.kinematics == Kinematics::Small).then(|| {
-            pairs
-                .iter()
-                .map(|p| geometry::SegmentInteriors::new(&p.a, &p.b, bodies.positions()))
-                .collect()
-        });
-        for (i, pair) in pairs.iter().enumerate() {
+        let reference = (geometries.iter().zip(&reach))
+            .map(|(g, &r)| g.evaluate(x, r))
+            .collect::<Result<Vec<_>>>()?;
+        if options.kinematics == Kinematics::Small {
+            // the candidates of the pointwise B-node check, found once in the reference
+            // configuration
+            for g in &mut geometries {
+                g.freeze_b_nodes(x);
+            }
+        }
+        for (i, geometry) in geometries.iter().enumerate() {
             let side = match &a_inside {
                 None => Side::Edges,
                 Some(points) => Side::Inside(points.get(i).copied().flatten()),
             };
-            check_facing(pair, &bodies, options.search_distance, side)
+            check_facing(&**geometry, &bodies, options.search_distance, side)
                 .map_err(|e| in_pair(i, e))?;
         }
         let laws = pairs
@@ -922,7 +928,7 @@ impl ContactAnalysis {
             loads: Vec::new(),
             bodies,
             pairs,
-            measures,
+            geometries,
             laws,
             options,
             flexibility,
@@ -932,7 +938,6 @@ impl ContactAnalysis {
             surfaces: reference.clone(),
             reference,
             reach,
-            interiors,
             increment: 0,
             records: Vec::new(),
             timings,
@@ -1092,25 +1097,22 @@ impl ContactAnalysis {
     /// Mean A segment length of pair `p` in the geometry's configuration `xg` (the length
     /// scale of the gap tolerance and the search distance).
     /// The friction law of A node `k` of pair `p`: the pair's, but none for a node on the axis
-    /// in axisymmetry (in the reference configuration, [`geometry::on_axis`]). There
+    /// in axisymmetry (in the reference configuration, [`ContactGeometry::frictionless_at`]). There
     /// `tau_rz = 0` by symmetry, and a tangential row would constrain the radial slip that
     /// `u_r = 0` on both sides already holds: with B's segment over A's axis node spanning
     /// as many of A's active nodes' radial dofs as it has rows, the field `u_r = c r` (which
     /// both sides represent with `u_r(0) = 0`) slips nowhere, so the stick rows were dependent
     /// and the small system singular. Such a node closes frictionless and keeps `ts = 0`.
     fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
-        let a = &self.pairs[p].a;
-        if self.measures[p] == SurfaceMeasure::Axisymmetric
-            && geometry::on_axis(a, k, self.bodies.positions())
-        {
+        if self.geometries[p].frictionless_at(k, self.bodies.positions().as_flattened()) {
             &Coulomb::NONE
         } else {
             &*self.laws[p]
         }
     }
 
-    fn mean_segment(&self, p: usize, xg: &[[f64; 2]]) -> f64 {
-        mean_segment(&self.pairs[p].a, xg)
+    fn mean_size(&self, p: usize, xg: &[f64]) -> f64 {
+        self.geometries[p].mean_size(xg)
     }
 
     /// How far the pairing of pair `p` reaches during an increment: `search_distance` mean A
@@ -1118,9 +1120,9 @@ impl ContactAnalysis {
     /// more. Two surfaces approach each other by at most twice that motion in an increment, so
     /// a pairing that held at its start still finds its partner, however fine the mesh (a
     /// reach tied to the element size alone breaks exactly when a user refines).
-    fn search_reach(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
-        let motion = checks::largest_node_motion(uc, startc);
-        (self.options.search_distance * self.mean_segment(p, xg)).max(2.0 * motion)
+    fn search_reach(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
+        let motion = checks::largest_node_motion(uc, startc, self.dim());
+        (self.options.search_distance * self.mean_size(p, xg)).max(2.0 * motion)
     }
 
     /// A displacement scale below which an increment's iterates cannot be told apart, the
@@ -1136,8 +1138,8 @@ impl ContactAnalysis {
         match self.options.kinematics {
             Kinematics::Small => 0.0,
             Kinematics::Finite => {
-                let x = self.bodies.positions();
-                let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d / 2][d % 2]).collect();
+                let x = self.bodies.positions().as_flattened();
+                let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d]).collect();
                 let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
                 self.largest_motion.max(round_off / self.options.tolerance)
             }
@@ -1146,19 +1148,19 @@ impl ContactAnalysis {
 
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
     /// nodes keep their reference positions: the contact geometry never reads them).
-    fn positions(&self, uc: &[f64]) -> Vec<[f64; 2]> {
-        let mut x = self.bodies.positions().to_vec();
+    fn positions(&self, uc: &[f64]) -> Vec<f64> {
+        let mut x = self.bodies.positions().as_flattened().to_vec();
         for (&d, &u) in self.dofs.iter().zip(uc) {
-            x[d / 2][d % 2] += u;
+            x[d] += u;
         }
         x
     }
 
     /// The positions the contact geometry is evaluated at, given the current ones `x`: the
     /// reference positions `X` under small kinematics, `x` itself under finite kinematics.
-    fn geometry_positions<'a>(&'a self, x: &'a [[f64; 2]]) -> &'a [[f64; 2]] {
+    fn geometry_positions<'a>(&'a self, x: &'a [f64]) -> &'a [f64] {
         match self.options.kinematics {
-            Kinematics::Small => self.bodies.positions(),
+            Kinematics::Small => self.bodies.positions().as_flattened(),
             Kinematics::Finite => x,
         }
     }
@@ -1180,21 +1182,17 @@ impl ContactAnalysis {
                 let x = self.positions(uc);
                 self.resolved(&x)?;
                 for (p, surface) in surfaces.iter_mut().enumerate() {
-                    let pair = &self.pairs[p];
                     let distance = self.search_reach(p, &x, uc, startc);
-                    let measure = self.measures[p];
-                    geometry::evaluate_into(&pair.a, &pair.b, &x, distance, measure, surface)?;
+                    self.geometries[p].evaluate_into(&x, distance, surface)?;
                 }
             }
             Kinematics::Small => {
                 for (surface, reference) in surfaces.iter_mut().zip(&self.reference) {
                     for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
                         let change = self.coupled(&r.coupling, uc);
-                        node.gap = [r.gap[0] + change[0], r.gap[1] + change[1]];
+                        node.gap = r.gap + change;
                         if r.covered_weight > 0.0 {
-                            let n = r.normal;
-                            node.normal_gap =
-                                -(n[0] * node.gap[0] + n[1] * node.gap[1]) / r.covered_weight;
+                            node.normal_gap = -r.frame.normal().dot(&node.gap) / r.covered_weight;
                             node.mean_distance = r.mean_distance + (node.normal_gap - r.normal_gap);
                         }
                     }
@@ -1228,17 +1226,14 @@ impl ContactAnalysis {
                 .a
                 .iter()
                 .chain(&pair.b)
-                .map(|&n| {
-                    let u = |c: usize| uc[self.contact_slot(dof(n, c))];
-                    u(0).hypot(u(1))
-                })
+                .map(|&n| self.node_vector(n, uc).norm())
                 .fold(0.0f64, f64::max);
             if 2.0 * motion <= self.reach[p] {
                 continue;
             }
             let reach = 4.0 * motion;
-            let x = self.bodies.positions();
-            let wider = geometry::evaluate(&pair.a, &pair.b, x, reach, self.measures[p])?;
+            let x = self.bodies.positions().as_flattened();
+            let wider = self.geometries[p].evaluate(x, reach)?;
             let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
                 .enumerate()
                 .any(|(k, (new, old))| new != old && self.node_flexibility.knows(p, k));
@@ -1262,13 +1257,24 @@ impl ContactAnalysis {
         self.slot[d].expect("a dof of a contact node")
     }
 
+    /// The dimension of the positions (2: plane and axisymmetric bodies).
+    fn dim(&self) -> usize {
+        DIM
+    }
+
+    /// Contact node `n`'s vector of `u` over the contact dofs.
+    fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
+        let mut v = Vector::zero(self.dim());
+        for (c, out) in v.components_mut().iter_mut().enumerate() {
+            *out = uc[self.contact_slot(dof(n, c))];
+        }
+        v
+    }
+
     /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
-    fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> [f64; 2] {
-        coupling.iter().fold([0.0, 0.0], |acc, &(j, c)| {
-            [
-                acc[0] + c * uc[self.contact_slot(dof(j, 0))],
-                acc[1] + c * uc[self.contact_slot(dof(j, 1))],
-            ]
+    fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
+        (coupling.iter()).fold(Vector::zero(self.dim()), |acc, &(j, c)| {
+            acc.add_scaled(c, &self.node_vector(j, uc))
         })
     }
 
@@ -1288,7 +1294,7 @@ impl ContactAnalysis {
         &mut self,
         f: &[f64],
         qp: &[f64],
-        control: Option<[PlateControl; 2]>,
+        control: Option<Controls>,
     ) -> Result<IncrementInfo> {
         let number = self.increment + 1;
         let loads::Solved {
@@ -1549,11 +1555,11 @@ struct Attempt<'a> {
     number: usize,
     f: &'a [f64],
     qp: &'a [f64],
-    control: Option<[PlateControl; 2]>,
+    control: Option<Controls>,
     /// The load solve at the contact dofs.
     u0c: &'a [f64],
     border: Option<&'a Border>,
-    force0: [f64; 2],
+    force0: Vector,
     /// The load (`f` and `q_p`) the increment's locks are kept with.
     load: &'a [f64],
     /// The converged displacement of the contact dofs the increment starts from.
@@ -1563,31 +1569,16 @@ struct Attempt<'a> {
     flexibility_before: f64,
 }
 
-/// Mean A segment length of the polyline `a` at positions `x`.
-fn mean_segment(a: &[usize], x: &[[f64; 2]]) -> f64 {
-    let total: f64 = a
-        .windows(2)
-        .map(|w| {
-            let (u, v) = (x[w[0]], x[w[1]]);
-            (v[0] - u[0]).hypot(v[1] - u[1])
-        })
-        .sum();
-    total / (a.len().max(2) - 1) as f64
-}
-
-/// The contact geometry of every pair at positions `x`, B paired with A within `reach[p]`,
-/// weighted by the pair's measure.
-fn evaluate_pairs(
+/// The plane and axisymmetric geometry of every pair: its polylines with the measure of its A
+/// side.
+fn plane_geometries(
     pairs: &[ContactPair],
-    measures: &[SurfaceMeasure],
-    x: &[[f64; 2]],
-    reach: &[f64],
-) -> Result<Vec<ContactSurface>> {
-    pairs
-        .iter()
-        .zip(measures)
-        .zip(reach)
-        .map(|((p, &m), &r)| geometry::evaluate(&p.a, &p.b, x, r, m))
+    measures: Vec<SurfaceMeasure>,
+) -> Vec<Box<dyn ContactGeometry>> {
+    (pairs.iter().zip(measures))
+        .map(|(p, m)| {
+            Box::new(PlaneGeometry::new(p.a.clone(), p.b.clone(), m)) as Box<dyn ContactGeometry>
+        })
         .collect()
 }
 
@@ -1597,7 +1588,7 @@ enum Side {
     /// A model: the element edges (checked by [`ContactPair::check_on`]).
     Edges,
     /// A host: a point inside body A, if it gave one (see [`HostSystem::a_inside`]).
-    Inside(Option<[f64; 2]>),
+    Inside(Option<Vector>),
 }
 
 /// A host's pair measures from its `sections` (one per pair, valid, of one kind), checked
@@ -1620,7 +1611,7 @@ fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies
     let x = bodies.positions();
     for (i, (pair, section)) in pairs.iter().zip(sections).enumerate() {
         for (side, ids) in [("A", &pair.a), ("B", &pair.b)] {
-            let points: Vec<[f64; 2]> = ids.iter().map(|&n| x[n]).collect();
+            let points: Vec<f64> = ids.iter().flat_map(|&n| x[n]).collect();
             let external: Vec<usize> = ids.iter().map(|&n| bodies.external(n)).collect();
             handover::check_radii(section, side, &external, &points).map_err(|e| in_pair(i, e))?;
         }
@@ -1632,25 +1623,20 @@ fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies
 /// with a B segment within the search distance, more must see B from in front (farther than
 /// half a segment) than see it running the same way (one polyline reversed) or lying behind A
 /// (back to back: two faces of one body, or both polylines reversed); see
-/// [`facing::facing`]. Where the surfaces touch (within half a segment) the geometry cannot
+/// [`ContactGeometry::facing`]. Where the surfaces touch (within half a segment) the geometry cannot
 /// tell facing surfaces from back-to-back ones: on a model the element edges tell; a host
 /// whose pair touches everywhere it is judged must say which side body A is on (a point
-/// inside it, checked by [`check_a_inside`]), and a point it gives is always checked.
+/// inside it, checked by [`ContactGeometry::check_inside`]), and a point it gives is always checked.
 fn check_facing(
-    pair: &ContactPair,
+    geometry: &dyn ContactGeometry,
     bodies: &Bodies,
     search_distance: f64,
     side: Side,
 ) -> Result<()> {
-    let x = bodies.positions();
-    let f = facing::facing(
-        &pair.a,
-        &pair.b,
-        x,
-        search_distance * mean_segment(&pair.a, x),
-    );
+    let x = bodies.positions().as_flattened();
+    let f = geometry.facing(x, search_distance * geometry.mean_size(x));
     let judged = f.facing + f.touching + f.same_way + f.behind;
-    let node = |k: Option<usize>| k.map_or(0, |k| bodies.external(pair.a[k]));
+    let node = |k: Option<usize>| k.map_or(0, |k| bodies.external(geometry.a_nodes()[k]));
     if f.same_way > f.facing + f.touching {
         return Err(Error::InvalidInput(format!(
             "A and B run the same way: at {} of the {judged} A nodes near B (A node {} first) \
@@ -1671,10 +1657,7 @@ fn check_facing(
     }
     match side {
         Side::Edges => Ok(()),
-        Side::Inside(Some(p)) => {
-            let a: Vec<[f64; 2]> = pair.a.iter().map(|&n| x[n]).collect();
-            check_a_inside(&a, p)
-        }
+        Side::Inside(Some(p)) => geometry.check_inside(x, &p),
         Side::Inside(None) if f.touching > 0 && f.facing == 0 => Err(Error::InvalidInput(format!(
             "A and B touch (at {} of the {judged} A nodes near B they lie within half a \
                  segment of each other) and face each other nowhere farther apart: the \
@@ -1684,36 +1667,6 @@ fn check_facing(
             f.touching
         ))),
         Side::Inside(None) => Ok(()),
-    }
-}
-
-/// A point `inside` body A must lie on A's body side (the left) of the A polyline, whose node
-/// positions are `a` in order, beside it rather than beyond its ends (see [`facing::side`]):
-/// then A has its body on its left, and with B facing it (checked when the analysis is
-/// created) so has B.
-///
-/// # Errors
-/// [`Error::InvalidInput`]: a non-finite point, one beyond the polyline's ends, or one on its
-/// outward side (the A polyline reversed).
-pub fn check_a_inside(a: &[[f64; 2]], inside: [f64; 2]) -> Result<()> {
-    if !(inside[0].is_finite() && inside[1].is_finite()) {
-        return Err(Error::InvalidInput(format!(
-            "the point inside body A {inside:?} is not finite"
-        )));
-    }
-    let ids: Vec<usize> = (0..a.len()).collect();
-    match facing::side(&ids, a, inside) {
-        Some(d) if d < 0.0 => Ok(()),
-        Some(_) => Err(Error::InvalidInput(format!(
-            "the point {inside:?} inside body A lies on the outward side of the A polyline: \
-             A has its body on its right, so it is reversed (and B with it, if they face each \
-             other: the pair is back to back)"
-        ))),
-        None => Err(Error::InvalidInput(format!(
-            "the point {inside:?} inside body A lies beyond an end of the A polyline, where \
-             its side is not defined: give one beside it (the centroid of the element that \
-             owns A's first segment, say)"
-        ))),
     }
 }
 
@@ -1768,7 +1721,7 @@ impl ContactAnalysis {
         let motion: Vec<f64> = uc.iter().zip(&self.qc).map(|(a, b)| a - b).collect();
         self.largest_motion = self.largest_motion.max(checks::norm2(&motion));
         self.largest_node_motion =
-            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc));
+            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc, self.dim()));
         self.qc = uc;
         self.surfaces = surfaces;
         self.previous = self.converged.replace(converged);

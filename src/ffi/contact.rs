@@ -1209,7 +1209,7 @@ pub unsafe extern "C" fn hycon_host_add_pair(
                     w[0].id, w[1].id
                 )));
             }
-            let points: Vec<[f64; 2]> = nodes.iter().map(|n| n.position).collect();
+            let points: Vec<f64> = nodes.iter().flat_map(|n| n.position).collect();
             handover::check_radii(&section, side, &ids(nodes), &points)?;
         }
         let mut pairs = h.pairs.clone();
@@ -1601,6 +1601,11 @@ pub unsafe extern "C" fn hycon_contact_free(contact: *mut HyconContact) {
     unsafe { free_handle(contact) }
 }
 
+/// The two components of a plane vector, as the C structs hold them.
+fn plane(v: crate::contact::space::Vector) -> [f64; 2] {
+    [v[0], v[1]]
+}
+
 fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo {
     HyconIncrementInfo {
         increment: i.increment,
@@ -1705,7 +1710,7 @@ pub unsafe extern "C" fn hycon_contact_increment_with_plate(
                 }
             };
         }
-        let done = c.analysis.increment_with_plate(f, qp, plate)?;
+        let done = c.analysis.increment_with_plate(f, qp, &plate)?;
         unsafe { put(info, info_to_c(done)) };
         Ok(())
     })
@@ -1732,8 +1737,8 @@ pub unsafe extern "C" fn hycon_contact_plate(
         check_pointer(force.cast_const(), "force")?;
         // SAFETY: both checked non-null and aligned, writable for 2 doubles (contract).
         unsafe {
-            write_doubles(displacement, &u);
-            write_doubles(force, &f);
+            write_doubles(displacement, u.components());
+            write_doubles(force, f.components());
         }
         Ok(())
     })
@@ -1882,12 +1887,12 @@ pub unsafe extern "C" fn hycon_contact_node_results(
                         slip_sign,
                         tn: r.tn,
                         ts: r.ts,
-                        normal: r.normal,
-                        tangent: r.tangent,
-                        position: r.position,
+                        normal: plane(r.frame.normal()),
+                        tangent: plane(r.frame.tangent(0)),
+                        position: plane(r.position),
                         weight: r.weight,
                         gap: r.gap,
-                        force: r.force,
+                        force: plane(r.force),
                     }
                 })
                 .collect())
@@ -1924,9 +1929,9 @@ pub unsafe extern "C" fn hycon_contact_b_node_results(
                 .map(|r| HyconBNodeResult {
                     node: r.node,
                     weight: r.weight,
-                    force: r.force,
+                    force: plane(r.force),
                     pressure: r.pressure,
-                    position: r.position,
+                    position: plane(r.position),
                 })
                 .collect())
         };
@@ -2079,9 +2084,9 @@ pub unsafe extern "C" fn hycon_contact_surface_nodes(
                 node: n.node,
                 weight: n.weight,
                 coverage: n.coverage,
-                normal: n.normal,
-                tangent: n.tangent,
-                gap: n.gap,
+                normal: plane(n.frame.normal()),
+                tangent: plane(n.frame.tangent(0)),
+                gap: plane(n.gap),
                 normal_gap: n.normal_gap,
             })
             .collect();

@@ -17,6 +17,7 @@ use super::{
     Border, ContactAnalysis, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
 };
 use crate::contact::bodies::Images;
+use crate::contact::space::{Vector, node};
 use crate::solver::vector_state::clean_after;
 use faer::Par;
 use faer::linalg::solvers::{PartialPivLu, Solve};
@@ -925,10 +926,10 @@ impl ContactAnalysis {
             .map(|&(p, k, row)| {
                 let node = &self.reference[p].nodes[k];
                 let d = match row {
-                    Row::Normal => node.normal,
-                    Row::Tangent => node.tangent,
+                    Row::Normal => node.frame.normal(),
+                    Row::Tangent => node.frame.tangent(0),
                 };
-                self.directed(&node.coupling, d)
+                self.directed(&node.coupling, &d)
             })
             .collect();
         if new.is_empty() {
@@ -1064,23 +1065,26 @@ impl ContactAnalysis {
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let x = self.bodies.positions();
+        let (x, dim) = (self.bodies.positions().as_flattened(), self.dim());
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
-            x[self.pairs[p].a[k]]
+            node(x, dim, self.pairs[p].a[k])
         };
         let pair = |i: usize| system.unknowns[i].0;
         let mut has_old = vec![false; self.pairs.len()];
         old.iter().for_each(|&i| has_old[pair(i)] = true);
-        let mut centroids = vec![([0.0; 2], 0usize); self.pairs.len()];
+        let mut centroids = vec![(Vector::zero(dim), 0usize); self.pairs.len()];
         for &i in old.iter().chain(new.iter().filter(|&&i| !has_old[pair(i)])) {
             let ((c, count), y) = (&mut centroids[pair(i)], position(i));
-            (c[0], c[1], *count) = (c[0] + y[0], c[1] + y[1], *count + 1);
+            (*c, *count) = (*c + y, *count + 1);
         }
         let distance = |i: usize| {
             let (c, count) = centroids[pair(i)];
-            let y = position(i);
-            (y[0] - c[0] / count as f64).hypot(y[1] - c[1] / count as f64)
+            let mut d = position(i);
+            for (d, c) in d.components_mut().iter_mut().zip(c.components()) {
+                *d -= c / count as f64;
+            }
+            d.norm()
         };
         new.sort_by(|&i, &j| {
             (pair(i), distance(i))
@@ -1345,10 +1349,10 @@ impl ContactAnalysis {
                 .min_by(|a, b| a.1.normal_gap.total_cmp(&b.1.normal_gap));
             if let Some((k, node)) = nearest {
                 rows.push((p, k, Row::Normal));
-                keys.push(self.directed(&node.coupling, node.normal));
+                keys.push(self.directed(&node.coupling, &node.frame.normal()));
                 if !self.laws[p].is_frictionless() {
                     rows.push((p, k, Row::Tangent));
-                    keys.push(self.directed(&node.coupling, node.tangent));
+                    keys.push(self.directed(&node.coupling, &node.frame.tangent(0)));
                 }
             }
         }

@@ -4,33 +4,16 @@
 
 use super::{
     BNodes, ContactAnalysis, ContactError, ContactSurface, Kinematics, NodeKey, NodeState, Result,
-    Tangential, Traction, dot, facing, geometry,
+    Tangential, Traction, dot,
 };
+use crate::contact::geometry::ContactNode;
+use crate::contact::space::Vector;
 
 /// Under small kinematics, the largest change of an active node's gap caused by sliding with
 /// the pairing frozen (slip times the angle between the surfaces), relative to the contact's
 /// normal approach (the largest change of a normal gap over the active nodes); beyond it the
 /// increment fails and names the node.
 pub const SMALL_SLIDING_LIMIT: f64 = 0.1;
-
-/// `|dg0/ds|` at A node `k` of a reference surface: the slope of the reference normal gap along
-/// A (central difference over the covered neighbours, one-sided at an end; 0 when no neighbour
-/// is covered). `x` are the reference positions.
-pub(super) fn reference_gap_slope(surface: &ContactSurface, k: usize, x: &[[f64; 2]]) -> f64 {
-    let nodes = &surface.nodes;
-    let covered = |i: usize| nodes[i].normal_gap.is_finite();
-    let lo = if k > 0 && covered(k - 1) { k - 1 } else { k };
-    let hi = if k + 1 < nodes.len() && covered(k + 1) {
-        k + 1
-    } else {
-        k
-    };
-    if lo == hi {
-        return 0.0;
-    }
-    let (p, q) = (x[nodes[lo].node], x[nodes[hi].node]);
-    ((nodes[hi].normal_gap - nodes[lo].normal_gap) / (q[0] - p[0]).hypot(q[1] - p[1])).abs()
-}
 
 /// How far a node locked open after an open/closed cycle may penetrate at convergence,
 /// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
@@ -51,10 +34,10 @@ pub(super) const ROUND_OFF: f64 = 1e4 * f64::EPSILON;
 pub(super) const POSITION_ROUND_OFF: f64 = 64.0 * f64::EPSILON;
 
 /// The largest length of a contact node's displacement from `before` to `after` (both over
-/// the contact dofs, a node's two components side by side).
-pub(super) fn largest_node_motion(after: &[f64], before: &[f64]) -> f64 {
-    (after.chunks_exact(2).zip(before.chunks_exact(2)))
-        .map(|(a, b)| (a[0] - b[0]).hypot(a[1] - b[1]))
+/// the contact dofs, a node's `dim` components side by side).
+pub(super) fn largest_node_motion(after: &[f64], before: &[f64], dim: usize) -> f64 {
+    (after.chunks_exact(dim).zip(before.chunks_exact(dim)))
+        .map(|(a, b)| (Vector::from_components(a) - Vector::from_components(b)).norm())
         .fold(0.0, f64::max)
 }
 
@@ -97,8 +80,8 @@ impl ContactAnalysis {
     /// that tiny loads still close the contact, the judgement does not depend on units, and a
     /// repeated increment accepts the gaps its predecessors accepted (judged against its own
     /// vanishing motion, a node left open a hair inside the tolerance would close and reopen).
-    pub(super) fn gap_scale(&self, p: usize, xg: &[[f64; 2]], uc: &[f64], startc: &[f64]) -> f64 {
-        let h = self.mean_segment(p, xg);
+    pub(super) fn gap_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
+        let h = self.mean_size(p, xg);
         self.motion_scale(p, xg, uc, startc).min(h)
     }
 
@@ -109,15 +92,9 @@ impl ContactAnalysis {
     /// threshold alike; a length, not a component, so that rotating the model changes no
     /// threshold (by components, a rotation by 0.6 rad changed the tractions of round 83973 of
     /// `contact_randomized 1000 1` by 1.8e-4 of their peak).
-    pub(super) fn motion_scale(
-        &self,
-        p: usize,
-        xg: &[[f64; 2]],
-        uc: &[f64],
-        startc: &[f64],
-    ) -> f64 {
-        let h = self.mean_segment(p, xg);
-        let motion = largest_node_motion(uc, startc);
+    pub(super) fn motion_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
+        let h = self.mean_size(p, xg);
+        let motion = largest_node_motion(uc, startc, self.dim());
         motion.max(self.largest_node_motion).max(1e-12 * h)
     }
 
@@ -158,11 +135,11 @@ impl ContactAnalysis {
     /// node's tangent row (its coupling along the tangent) and `w_k` its weight.
     pub(super) fn slip_since_start(
         &self,
-        node: &geometry::ContactNode,
+        node: &ContactNode,
         uc: &[f64],
         startc: &[f64],
     ) -> Tangential {
-        let row = self.directed(&node.coupling, node.tangent);
+        let row = self.directed(&node.coupling, &node.frame.tangent(0));
         Tangential::along((dot(&row, uc) - dot(&row, startc)) / node.weight)
     }
 
@@ -226,27 +203,28 @@ impl ContactAnalysis {
             self.reference
                 .iter()
                 .zip(states)
-                .flat_map(|(surface, states)| {
+                .enumerate()
+                .flat_map(|(p, (surface, states))| {
                     surface
                         .nodes
                         .iter()
                         .enumerate()
                         .zip(states)
                         .filter(|(_, s)| **s != NodeState::Open)
-                        .map(move |((k, node), _)| (surface, k, node))
+                        .map(move |((k, node), _)| (p, surface, k, node))
                 })
         };
-        let along = |node: &geometry::ContactNode, d: [f64; 2]| {
+        let along = |node: &ContactNode, d: Vector| {
             let change = self.coupled(&node.coupling, uc);
-            (d[0] * change[0] + d[1] * change[1]) / node.covered_weight
+            d.dot(&change) / node.covered_weight
         };
         let delta = active()
-            .map(|(_, _, node)| along(node, node.normal).abs())
+            .map(|(_, _, _, node)| along(node, node.frame.normal()).abs())
             .fold(0.0, f64::max);
-        let x = self.bodies.positions();
-        for (surface, k, node) in active() {
-            let slope = reference_gap_slope(surface, k, x);
-            let slip = along(node, node.tangent);
+        let x = self.bodies.positions().as_flattened();
+        for (p, surface, k, node) in active() {
+            let slope = self.geometries[p].gap_slope(surface, k, x);
+            let slip = along(node, node.frame.tangent(0));
             if (slip * slope).abs() > SMALL_SLIDING_LIMIT * delta {
                 return Err(ContactError::SmallSlidingExceeded {
                     increment: number,
@@ -284,7 +262,7 @@ impl ContactAnalysis {
     /// No node that the pairing does not see may have passed through the opposite surface. An
     /// open A node with no B segment within the search distance (an infinite gap) is tested at
     /// the current positions against every B segment, without a search window
-    /// ([`facing::behind`]): penetrating B by more than the gap tolerance fails the increment,
+    /// ([`ContactGeometry::behind`](crate::contact::geometry::ContactGeometry::behind)): penetrating B by more than the gap tolerance fails the increment,
     /// naming the node. This catches a surface pushed through the other in one increment
     /// (any depth, any coordinate magnitude) and, under small kinematics, a node that was out
     /// of reach in the reference configuration and penetrates now. (B nodes over open A
@@ -310,12 +288,11 @@ impl ContactAnalysis {
                     **state == NodeState::Open && !node.normal_gap.is_finite()
                 });
             for (k, _) in lost {
-                let n = facing::node_normal(&pair.a, k, &x);
-                if let Some((seg, depth)) = facing::behind(&pair.b, &x, x[pair.a[k]], n, limit) {
-                    let external = |i: usize| self.bodies.external(pair.b[i]);
+                if let Some((element, depth)) = self.geometries[p].behind(k, &x, limit) {
+                    let external = |i: usize| self.bodies.external(element[i]);
                     return Err(ContactError::BeyondSearchDistance {
                         node: self.bodies.external(pair.a[k]),
-                        segment: [external(seg), external(seg + 1)],
+                        segment: [external(0), external(1)],
                         depth,
                         search_distance: self.search_reach(p, xg, uc, startc),
                     }
@@ -338,30 +315,17 @@ impl ContactAnalysis {
     /// Such an iterate fails the increment ([`ContactError::Unresolved`]), at any magnitude.
     /// (Large coordinates alone, a model far from its origin, are the caller's choice and are
     /// not judged here: only the motion is.)
-    pub(super) fn resolved(&self, x: &[[f64; 2]]) -> Result<()> {
-        let reference = self.bodies.positions();
-        let moved = |n: usize| (x[n][0] - reference[n][0]).hypot(x[n][1] - reference[n][1]);
-        for pair in &self.pairs {
-            for ids in [&pair.a, &pair.b] {
-                for w in ids.windows(2) {
-                    let length =
-                        |x: &[[f64; 2]]| (x[w[1]][0] - x[w[0]][0]).hypot(x[w[1]][1] - x[w[0]][1]);
-                    let motion = moved(w[0]).max(moved(w[1]));
-                    if length(x).min(length(reference)) <= POSITION_ROUND_OFF * motion {
-                        let node = if moved(w[0]) >= moved(w[1]) {
-                            w[0]
-                        } else {
-                            w[1]
-                        };
-                        return Err(ContactError::Unresolved {
-                            increment: self.increment + 1,
-                            node: self.bodies.external(node),
-                            motion,
-                            length: length(reference),
-                        }
-                        .into());
-                    }
+    pub(super) fn resolved(&self, x: &[f64]) -> Result<()> {
+        let reference = self.bodies.positions().as_flattened();
+        for geometry in &self.geometries {
+            if let Some(u) = geometry.unresolved(x, reference, POSITION_ROUND_OFF) {
+                return Err(ContactError::Unresolved {
+                    increment: self.increment + 1,
+                    node: self.bodies.external(u.node),
+                    motion: u.motion,
+                    length: u.length,
                 }
+                .into());
             }
         }
         Ok(())
@@ -496,8 +460,8 @@ impl ContactAnalysis {
                 continue;
             }
             let open: Vec<bool> = states[p].iter().map(|s| *s == NodeState::Open).collect();
-            for (k, _, xi, g) in self.b_node_distances(p, &open, &x, xg) {
-                let node = (p, if xi < 0.5 { k } else { k + 1 });
+            for d in self.geometries[p].b_node_distances(&open, &x, xg) {
+                let (node, g) = ((p, d.nearest), d.distance);
                 if -g / gap_scale > worst.relative {
                     worst = Violation {
                         relative: -g / gap_scale,

@@ -26,9 +26,10 @@
 
 use super::failure::Failure;
 use super::{
-    ContactAnalysis, ContactSurface, Converged, Error, IncrementInfo, LoadSolve, NodeData,
-    NodeFlexibility, OnceLock, Plate, PlateControl, Result, Settled,
+    ContactAnalysis, ContactSurface, Controls, Converged, Error, IncrementInfo, LoadSolve,
+    NodeData, NodeFlexibility, OnceLock, Plate, PlateControl, Result, Settled,
 };
+use crate::contact::space::Vector;
 
 /// Whether a shorter step may remove the cause of a failed increment
 /// ([`Failure::shorter_step_may_settle`]).
@@ -69,7 +70,7 @@ struct Path<'a> {
     qp: (Vec<f64>, &'a [f64]),
     /// The plate's start values per direction (its converged displacement or force, as the
     /// target controls it) and the target controls.
-    control: Option<([f64; 2], [PlateControl; 2])>,
+    control: Option<(Vector, Controls)>,
 }
 
 /// `a + s (b - a)`, exactly `b` at `s = 1`.
@@ -79,7 +80,7 @@ fn lerp(a: f64, b: f64, s: f64) -> f64 {
 
 impl Path<'_> {
     /// Loads, prescribed values and plate controls at fraction `s` of the increment.
-    fn at(&self, s: f64) -> (Vec<f64>, Vec<f64>, Option<[PlateControl; 2]>) {
+    fn at(&self, s: f64) -> (Vec<f64>, Vec<f64>, Option<Controls>) {
         let mix = |(a, b): &(Vec<f64>, &[f64])| -> Vec<f64> {
             a.iter()
                 .zip(b.iter())
@@ -87,7 +88,7 @@ impl Path<'_> {
                 .collect()
         };
         let control = self.control.map(|(start, target)| {
-            [0, 1].map(|d| match target[d] {
+            target.map(|d, c| match c {
                 PlateControl::Displacement(u) => PlateControl::Displacement(lerp(start[d], u, s)),
                 PlateControl::Force(f) => PlateControl::Force(lerp(start[d], f, s)),
             })
@@ -162,19 +163,15 @@ impl ContactAnalysis {
     }
 
     /// The interpolation between the last converged state and the target `(f, qp, control)`.
-    fn path<'a>(
-        &self,
-        f: &'a [f64],
-        qp: &'a [f64],
-        control: Option<[PlateControl; 2]>,
-    ) -> Path<'a> {
+    fn path<'a>(&self, f: &'a [f64], qp: &'a [f64], control: Option<Controls>) -> Path<'a> {
         let (f0, qp0) = match &self.converged {
             Some(c) => (c.load.clone(), c.prescribed.clone()),
             None => (vec![0.0; f.len()], vec![0.0; qp.len()]),
         };
         let control = control.map(|target| {
-            let (u, force) = self.plate().unwrap_or_default();
-            let start = [0, 1].map(|d| match target[d] {
+            let zero = Vector::zero(self.dim());
+            let (u, force) = self.plate().unwrap_or((zero, zero));
+            let start = target.values(|d, c| match c {
                 PlateControl::Displacement(_) => u[d],
                 PlateControl::Force(_) => force[d],
             });
@@ -194,7 +191,7 @@ impl ContactAnalysis {
         &mut self,
         f: &[f64],
         qp: &[f64],
-        control: Option<[PlateControl; 2]>,
+        control: Option<Controls>,
     ) -> Result<IncrementInfo> {
         self.sub_increment = 1;
         let depth = self.options.cutback_depth;

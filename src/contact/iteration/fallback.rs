@@ -90,8 +90,8 @@ impl ContactAnalysis {
                     if !node.is_covered() {
                         return false;
                     }
-                    let row = self.directed(&node.coupling, node.normal);
-                    let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
+                    let row = self.directed(&node.coupling, &node.frame.normal());
+                    let rg = node.gap.dot(&node.frame.normal());
                     rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
                 })
                 .collect();

@@ -3,6 +3,7 @@
 //! handed over its condensed operator gives `u0` itself (its load image).
 
 use super::{ContactAnalysis, ContactError, DMatrix, DVector, Error, Result, checks, plate_force};
+use crate::contact::space::Vector;
 
 /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs for one load `(f, q_p)`.
 #[derive(Debug, Clone)]
@@ -12,7 +13,7 @@ pub(super) struct LoadSolve {
     /// `u0` at the contact dofs.
     u0c: Vec<f64>,
     /// The force the plate exerts on the body in the `u0` solution (zero without a plate).
-    pub(super) plate_force: [f64; 2],
+    pub(super) plate_force: Vector,
 }
 
 /// Coefficients `c` with `new = sum_i c_i old_i` to round-off (relative 1e-13), if the loads
@@ -50,7 +51,7 @@ pub(super) struct Solved {
     /// `u0` at the contact dofs.
     pub(super) u0c: Vec<f64>,
     /// The force the plate exerts on the body in the `u0` solution (zero without a plate).
-    pub(super) plate_force: [f64; 2],
+    pub(super) plate_force: Vector,
     /// The load as compared between increments: `f` and `q_p` at the prescribed dofs.
     pub(super) load: Vec<f64>,
 }
@@ -113,19 +114,18 @@ impl ContactAnalysis {
             // the host solved for its load: the image is u0 itself
             return Ok(Solved {
                 u0c,
-                plate_force: [0.0; 2],
+                plate_force: Vector::zero(self.dim()),
                 load,
             });
         }
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];
-            let mut force = [0.0; 2];
+            let mut force = Vector::zero(self.dim());
             for (ci, cached) in c.iter().zip(&self.loads) {
                 for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
                     *u += ci * v;
                 }
-                force[0] += ci * cached.plate_force[0];
-                force[1] += ci * cached.plate_force[1];
+                force = force.add_scaled(*ci, &cached.plate_force);
             }
             return Ok(Solved {
                 u0c,
@@ -143,8 +143,8 @@ impl ContactAnalysis {
             .into());
         }
         let plate_force = match &self.plate {
-            Some(p) => plate_force(self.model()?, &p.nodes, &u0, f)?,
-            None => [0.0; 2],
+            Some(p) => plate_force(self.model()?, &p.nodes, &u0, f, self.dim())?,
+            None => Vector::zero(self.dim()),
         };
         self.timings.load_solves += clock.elapsed().as_secs_f64();
         let u0c: Vec<f64> = self

@@ -1,25 +1,73 @@
-//! The rigid loading plate: a face tied to two translations, each displacement- or
-//! force-controlled per increment; force control borders the small system with the plate's
+//! The rigid loading plate: a face tied to the plate's translations (one per direction: two
+//! in the plane), each displacement- or force-controlled per increment; force control borders the small system with the plate's
 //! force balance (docs/method.md, "Floating bodies and the rigid plate").
 
 use super::{
-    ContactAnalysis, ContactOptions, ContactPair, ContactSurface, Error, IncrementInfo, Model,
-    NodeState, PlateControl, Result, Sparse, dof, dot, rules,
+    ContactAnalysis, ContactOptions, ContactPair, ContactSurface, DMatrix, Error, IncrementInfo,
+    Model, NodeState, PlateControl, Result, Sparse, dof, dot, rules,
 };
+use crate::contact::space::{MAX_DIM, Vector};
 
-/// A rigid loading plate: nodes of one body's face tied to two plate translations. Each
-/// direction is displacement- or force-controlled per increment.
+/// The plate's control of each of its `dim` translations.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Controls {
+    len: u8,
+    c: [PlateControl; MAX_DIM],
+}
+
+impl Controls {
+    /// The controls `c`, one per direction (at most [`MAX_DIM`]).
+    pub(super) fn new(c: &[PlateControl]) -> Self {
+        let mut out = Controls {
+            len: c.len() as u8,
+            c: [PlateControl::Displacement(0.0); MAX_DIM],
+        };
+        out.c[..c.len()].copy_from_slice(c);
+        out
+    }
+
+    /// One per direction.
+    pub(super) fn as_slice(&self) -> &[PlateControl] {
+        &self.c[..usize::from(self.len)]
+    }
+
+    /// `f(d, control)` per direction `d`.
+    pub(super) fn map(self, f: impl Fn(usize, PlateControl) -> PlateControl) -> Self {
+        let mut out = self;
+        for (d, c) in out.c[..usize::from(self.len)].iter_mut().enumerate() {
+            *c = f(d, *c);
+        }
+        out
+    }
+
+    /// The vector of `f(d, control)` per direction `d`.
+    pub(super) fn values(&self, f: impl Fn(usize, PlateControl) -> f64) -> Vector {
+        let mut v = Vector::zero(self.as_slice().len());
+        for (d, (out, &c)) in v
+            .components_mut()
+            .iter_mut()
+            .zip(self.as_slice())
+            .enumerate()
+        {
+            *out = f(d, c);
+        }
+        v
+    }
+}
+
+/// A rigid loading plate: nodes of one body's face tied to the plate's translations, one per
+/// direction. Each direction is displacement- or force-controlled per increment.
 #[derive(Debug, Clone)]
 pub(super) struct Plate {
-    /// Tied nodes (prescribed in both directions in the model).
+    /// Tied nodes (prescribed in every direction in the model).
     pub(super) nodes: Vec<usize>,
-    /// Contact-dof response to a unit plate translation in x and in y (no load, no contact).
-    pub(super) response: [Vec<f64>; 2],
+    /// Contact-dof response to a unit plate translation, per direction (no load, no contact).
+    pub(super) response: Vec<Vec<f64>>,
     /// Plate stiffness `D`: the force the plate exerts on the body per unit translation.
-    pub(super) stiffness: nalgebra::Matrix2<f64>,
+    pub(super) stiffness: DMatrix<f64>,
     /// Converged plate displacement and force.
-    pub(super) displacement: [f64; 2],
-    pub(super) force: [f64; 2],
+    pub(super) displacement: Vector,
+    pub(super) force: Vector,
 }
 
 impl Plate {
@@ -29,13 +77,13 @@ impl Plate {
     /// contact parts).
     pub(super) fn settle(
         &mut self,
-        control: [PlateControl; 2],
+        control: Controls,
         (directions, solved): (&[usize], &[f64]),
-        force0: [f64; 2],
+        force0: Vector,
         contact_forces: &[f64],
         prescribed: &mut [f64],
     ) {
-        let mut motion = control.map(|c| match c {
+        let mut motion = control.values(|_, c| match c {
             PlateControl::Displacement(u) => u,
             PlateControl::Force(_) => 0.0,
         });
@@ -43,14 +91,15 @@ impl Plate {
             motion[d] = m;
         }
         for &node in &self.nodes {
-            prescribed[dof(node, 0)] = motion[0];
-            prescribed[dof(node, 1)] = motion[1];
+            for (d, &m) in motion.components().iter().enumerate() {
+                prescribed[dof(node, d)] = m;
+            }
         }
-        let force_controlled = control.map(|c| matches!(c, PlateControl::Force(_)));
+        let force_controlled = |e: usize| matches!(control.as_slice()[e], PlateControl::Force(_));
         let mut force = force0;
-        for (d, out) in force.iter_mut().enumerate() {
-            for (e, &m) in motion.iter().enumerate() {
-                if force_controlled[e] {
+        for (d, out) in force.components_mut().iter_mut().enumerate() {
+            for (e, &m) in motion.components().iter().enumerate() {
+                if force_controlled(e) {
                     *out += self.stiffness[(d, e)] * m;
                 }
             }
@@ -66,17 +115,18 @@ pub(super) fn dot_dense(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// The force the tied nodes `plate` exert on the body in the field `q` under loads `f`: the sum
-/// of the reactions `K q - f` at their dofs.
+/// of the reactions `K q - f` at their dofs, `dim` directions.
 pub(super) fn plate_force(
     model: &Model,
     plate: &[usize],
     q: &[f64],
     f: &[f64],
-) -> Result<[f64; 2]> {
+    dim: usize,
+) -> Result<Vector> {
     let r = model.internal_forces(q)?;
-    let mut force = [0.0; 2];
+    let mut force = Vector::zero(dim);
     for &node in plate {
-        for (d, out) in force.iter_mut().enumerate() {
+        for (d, out) in force.components_mut().iter_mut().enumerate() {
             *out += r[dof(node, d)] - f[dof(node, d)];
         }
     }
@@ -85,12 +135,12 @@ pub(super) fn plate_force(
 
 /// The plate's force-controlled translations as extra unknowns of the small system.
 pub(super) struct Border {
-    /// Force-controlled directions (0 = x, 1 = y).
+    /// Force-controlled directions (0 = x, 1 = y, 2 = z).
     pub(super) directions: Vec<usize>,
     /// Contact-dof response to a unit plate translation, per direction.
-    pub(super) response: [Vec<f64>; 2],
+    pub(super) response: Vec<Vec<f64>>,
     /// Plate stiffness.
-    pub(super) stiffness: nalgebra::Matrix2<f64>,
+    pub(super) stiffness: DMatrix<f64>,
     /// `F_d - force0_d` per force-controlled direction.
     pub(super) rhs: Vec<f64>,
     /// Stiffness scale of the bodies (largest `E t`), against which `D` counts as zero.
@@ -122,7 +172,7 @@ impl Border {
                  contact set acts along it (open nodes resist nothing; frictionless and \
                  slipping nodes do not resist tangential motion): control it by \
                  displacement",
-                ["x", "y"][d]
+                ["x", "y", "z"][d]
             )));
         }
         for (a, &d) in self.directions.iter().enumerate() {
@@ -157,8 +207,8 @@ impl Border {
 }
 
 impl ContactAnalysis {
-    /// As [`ContactAnalysis::new`], with the nodes `plate` (prescribed in both directions in
-    /// the model, none of them a contact node) tied to a rigid plate whose two translations are
+    /// As [`ContactAnalysis::new`], with the nodes `plate` (prescribed in every direction in
+    /// the model, none of them a contact node) tied to a rigid plate whose translations are
     /// displacement- or force-controlled in each increment
     /// ([`increment_with_plate`](Self::increment_with_plate)). Under force control the plate
     /// translation joins the small contact system as extra unknowns with the plate's force
@@ -172,8 +222,9 @@ impl ContactAnalysis {
     ) -> Result<Self> {
         let mut analysis = Self::new(model, pairs, options)?;
         let n = analysis.bodies.field_len();
+        let dim = analysis.dim();
         for &node in &plate {
-            let held = node < n / 2 && (0..2).all(|d| !analysis.bodies.is_free(dof(node, d)));
+            let held = node < n / dim && (0..dim).all(|d| !analysis.bodies.is_free(dof(node, d)));
             if !held || analysis.slot[dof(node, 0)].is_some() {
                 return Err(Error::InvalidInput(format!(
                     "plate node {node} must exist, be prescribed in x and y, and not be a \
@@ -182,35 +233,36 @@ impl ContactAnalysis {
             }
         }
         let zero = vec![0.0; n];
-        let mut response = [Vec::new(), Vec::new()];
-        let mut stiffness = nalgebra::Matrix2::zeros();
-        for d in 0..2 {
+        let mut response = vec![Vec::new(); dim];
+        let mut stiffness = DMatrix::zeros(dim, dim);
+        for d in 0..dim {
             let mut qp = zero.clone();
             for &node in &plate {
                 qp[dof(node, d)] = 1.0;
             }
             let q = analysis.bodies.solve(&zero, &qp)?;
             response[d] = analysis.dofs.iter().map(|&i| q[i]).collect();
-            let force = plate_force(analysis.model()?, &plate, &q, &zero)?;
-            stiffness[(0, d)] = force[0];
-            stiffness[(1, d)] = force[1];
+            let force = plate_force(analysis.model()?, &plate, &q, &zero, dim)?;
+            for (e, &v) in force.components().iter().enumerate() {
+                stiffness[(e, d)] = v;
+            }
         }
         analysis.plate = Some(Plate {
             nodes: plate,
             response,
             stiffness,
-            displacement: [0.0; 2],
-            force: [0.0; 2],
+            displacement: Vector::zero(dim),
+            force: Vector::zero(dim),
         });
         Ok(analysis)
     }
 
     /// The border of the small system for the force-controlled plate directions, if any.
-    pub(super) fn border(&self, control: [PlateControl; 2], force0: [f64; 2]) -> Option<Border> {
+    pub(super) fn border(&self, control: Controls, force0: Vector) -> Option<Border> {
         let plate = self.plate.as_ref()?;
         let mut directions = Vec::new();
         let mut rhs = Vec::new();
-        for (d, c) in control.iter().enumerate() {
+        for (d, c) in control.as_slice().iter().enumerate() {
             if let PlateControl::Force(f) = c {
                 directions.push(d);
                 rhs.push(f - force0[d]);
@@ -226,7 +278,7 @@ impl ContactAnalysis {
         (!directions.is_empty()).then(|| Border {
             directions,
             response: plate.response.clone(),
-            stiffness: plate.stiffness,
+            stiffness: plate.stiffness.clone(),
             rhs,
             stiffness_scale,
         })
@@ -248,23 +300,31 @@ impl ContactAnalysis {
 
     /// The converged plate displacement and the force it exerts on the body (`None` without a
     /// plate).
-    pub fn plate(&self) -> Option<([f64; 2], [f64; 2])> {
+    pub fn plate(&self) -> Option<(Vector, Vector)> {
         self.plate.as_ref().map(|p| (p.displacement, p.force))
     }
 
     /// One load increment of an analysis built [`with_plate`](Self::with_plate): as
-    /// [`increment`](Self::increment), with the plate's x and y translations driven by
-    /// `control` (the values `qp` holds at the plate nodes are ignored).
+    /// [`increment`](Self::increment), with the plate's translations driven by `control`, one
+    /// per direction (x and y in the plane; the values `qp` holds at the plate nodes are
+    /// ignored).
     pub fn increment_with_plate(
         &mut self,
         f: &[f64],
         qp: &[f64],
-        control: [PlateControl; 2],
+        control: &[PlateControl],
     ) -> Result<IncrementInfo> {
         if self.plate.is_none() {
             return Err(Error::InvalidInput(
                 "increment_with_plate needs an analysis built with_plate".into(),
             ));
+        }
+        if control.len() != self.dim() {
+            return Err(Error::InvalidInput(format!(
+                "the plate needs {} controls (one per direction), got {}",
+                self.dim(),
+                control.len()
+            )));
         }
         if control.iter().any(|c| match c {
             PlateControl::Displacement(v) | PlateControl::Force(v) => !v.is_finite(),
@@ -280,6 +340,7 @@ impl ContactAnalysis {
                 qp.len()
             )));
         }
+        let control = Controls::new(control);
         let mut qp = qp.to_vec();
         self.drive_plate(&mut qp, control);
         self.cut_increment(f, &qp, Some(control))
@@ -288,12 +349,12 @@ impl ContactAnalysis {
     /// Write the plate's drive into the prescribed values `qp` at its nodes: the displacement
     /// of a displacement-controlled direction, 0 in a force-controlled one (whose motion is an
     /// unknown of the contact system). Nothing without a plate.
-    pub(super) fn drive_plate(&self, qp: &mut [f64], control: [PlateControl; 2]) {
+    pub(super) fn drive_plate(&self, qp: &mut [f64], control: Controls) {
         let Some(plate) = &self.plate else {
             return;
         };
         for &node in &plate.nodes {
-            for (d, c) in control.iter().enumerate() {
+            for (d, c) in control.as_slice().iter().enumerate() {
                 qp[dof(node, d)] = match c {
                     PlateControl::Displacement(u) => *u,
                     PlateControl::Force(_) => 0.0,

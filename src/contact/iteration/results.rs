@@ -2,9 +2,9 @@
 //! forces and pressures on the B side, element stresses of body A), and the contact-element
 //! matrices for hosts that assemble the mixed system themselves.
 
-use super::{BNodeResult, ContactAnalysis, NodeResult, Traction};
+use super::{BNodeResult, ContactAnalysis, NodeResult, Tangential, Traction};
 use crate::contact::geometry::ContactSurface;
-use crate::element::geometry::edge_normal;
+use crate::contact::space::{self, Vector, node};
 use crate::error::{Error, Result};
 
 /// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `2k` (normal,
@@ -72,9 +72,9 @@ impl ContactAnalysis {
             values: Vec::new(),
         };
         for node in &surface.nodes {
-            for direction in [node.normal, node.tangent] {
+            for direction in [node.frame.normal(), node.frame.tangent(0)] {
                 for &(j, c) in &node.coupling {
-                    for (d, component) in direction.iter().enumerate() {
+                    for (d, component) in direction.components().iter().enumerate() {
                         let field = self.bodies.field_index(crate::assembly::dof(j, d));
                         if let Some(i) = field.filter(|_| *component != 0.0) {
                             rows.columns.push(i);
@@ -155,8 +155,8 @@ impl ContactAnalysis {
             .map(|((t, count), r)| {
                 let t = [t[0] / count, t[1] / count];
                 (
-                    t[0] * r.normal[0] + t[1] * r.normal[1],
-                    t[0] * r.tangent[0] + t[1] * r.tangent[1],
+                    t[0] * r.frame.normal()[0] + t[1] * r.frame.normal()[1],
+                    t[0] * r.frame.tangent(0)[0] + t[1] * r.frame.tangent(0)[1],
                 )
             })
             .collect();
@@ -182,21 +182,18 @@ impl ContactAnalysis {
         let surface = self.converged_surface(p)?;
         let x = self.positions(&self.qc);
         let xg = self.geometry_positions(&x);
+        let dim = self.dim();
         let pair = &self.pairs[p];
         let index = |j: usize| pair.b.iter().position(|&b| b == j);
         let mut weight = vec![0.0; pair.b.len()];
-        let mut force = vec![[0.0; 2]; pair.b.len()];
+        let mut force = vec![Vector::zero(dim); pair.b.len()];
         for (node, r) in surface.nodes.iter().zip(&a_nodes) {
-            let t = [
-                r.tn * r.normal[0] + r.ts * r.tangent[0],
-                r.tn * r.normal[1] + r.ts * r.tangent[1],
-            ];
+            let t = r.frame.vector(r.tn, Tangential::along(r.ts));
             for &(j, c) in &node.coupling {
                 if let Some(i) = index(j) {
                     // the coupling holds -F^B at B nodes
                     weight[i] -= c;
-                    force[i][0] += c * t[0];
-                    force[i][1] += c * t[1];
+                    force[i] = force[i].add_scaled(c, &t);
                 }
             }
         }
@@ -205,13 +202,9 @@ impl ContactAnalysis {
             .iter()
             .enumerate()
             .map(|(i, &j)| {
-                let (prev, next) = (
-                    pair.b[i.saturating_sub(1)],
-                    pair.b[(i + 1).min(pair.b.len() - 1)],
-                );
-                let (n, _) = edge_normal(xg[prev], xg[next]);
+                let n = self.geometries[p].b_node_normal(i, xg);
                 let pressure = if weight[i] > 0.0 {
-                    -(force[i][0] * n[0] + force[i][1] * n[1]) / weight[i]
+                    -force[i].dot(&n) / weight[i]
                 } else {
                     0.0
                 };
@@ -220,7 +213,7 @@ impl ContactAnalysis {
                     weight: weight[i],
                     force: force[i],
                     pressure,
-                    position: x[j],
+                    position: node(&x, dim, j),
                 }
             })
             .collect())
@@ -231,20 +224,17 @@ impl ContactAnalysis {
     pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
         let surface = self.converged_surface(p)?;
         let x = self.positions(&self.qc);
+        let dim = self.dim();
         let pair = &self.pairs[p];
         let data = &self.nodes[p];
         // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
-        let mut force = vec![[0.0; 2]; pair.a.len()];
+        let mut force = vec![Vector::zero(dim); pair.a.len()];
         for (k, node) in surface.nodes.iter().enumerate() {
-            let (tn, ts) = plane_parts(&data[k].traction);
-            let t = [
-                tn * node.normal[0] + ts * node.tangent[0],
-                tn * node.normal[1] + ts * node.tangent[1],
-            ];
+            let traction = &data[k].traction;
+            let t = node.frame.vector(traction.normal, traction.tangential);
             for &(j, c) in &node.coupling {
                 if let Some(i) = pair.a.iter().position(|&a| a == j) {
-                    force[i][0] += c * t[0];
-                    force[i][1] += c * t[1];
+                    force[i] = force[i].add_scaled(c, &t);
                 }
             }
         }
@@ -257,9 +247,8 @@ impl ContactAnalysis {
                 state: data[k].state,
                 tn: plane_parts(&data[k].traction).0,
                 ts: plane_parts(&data[k].traction).1,
-                normal: node.normal,
-                tangent: node.tangent,
-                position: x[node.node],
+                frame: node.frame,
+                position: space::node(&x, dim, node.node),
                 weight: node.weight,
                 gap: node.normal_gap,
                 force: force[k],

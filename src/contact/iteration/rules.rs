@@ -26,8 +26,9 @@
 
 use super::{
     ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, FrictionLaw, NodeState,
-    Result, SlipDirection, Tangential, Traction, edge_normal, geometry,
+    Result, SlipDirection, Tangential, Traction,
 };
+use crate::contact::geometry::ContactNode;
 
 /// A run of penetrating nodes away from the contact zone closes where its penetration is at
 /// least this fraction of its deepest ([`ActiveSet::closing`]).
@@ -102,7 +103,7 @@ impl ContactAnalysis {
                 .fold(0.0f64, |m, t| m.max(t.normal.abs()));
             // a node closing while the surfaces slide past each other slides with them; one
             // closing without relative motion sticks
-            let closed = |k: usize, node: &geometry::ContactNode| {
+            let closed = |k: usize, node: &ContactNode| {
                 let slip = self.slip_since_start(node, uc, startc);
                 match SlipDirection::of(slip) {
                     _ if self.node_law(p, k).is_frictionless() => NodeState::Frictionless,
@@ -154,25 +155,26 @@ impl ContactAnalysis {
                 .map(|k| states[p][k] == NodeState::Open && depth[k].is_none())
                 .collect();
             let inside = if set.b_nodes() == BNodes::Pointwise {
-                self.b_node_distances(p, &open, &x, xg)
+                self.geometries[p].b_node_distances(&open, &x, xg)
             } else {
                 Vec::new()
             };
-            for (k, j, xi, g) in inside {
+            for d in inside {
+                let g = d.distance;
                 if g >= -gap_tolerance {
                     continue;
                 }
                 if g <= -reach {
-                    let w = [a[k], a[k + 1]];
+                    let w = [a[d.element[0]], a[d.element[1]]];
                     return Err(ContactError::BeyondSearchDistance {
-                        node: self.bodies.external(j),
+                        node: self.bodies.external(d.node),
                         segment: [self.bodies.external(w[0]), self.bodies.external(w[1])],
                         depth: -g,
                         search_distance: reach,
                     }
                     .into());
                 }
-                let node = if xi < 0.5 { k } else { k + 1 };
+                let node = d.nearest;
                 depth[node] = Some(depth[node].map_or(g, |d| d.min(g)));
             }
             // coverage is checked on the converged state only: an intermediate iterate may
@@ -182,47 +184,6 @@ impl ContactAnalysis {
             }
         }
         Ok(new)
-    }
-
-    /// The B nodes strictly inside the A segments of pair `p` whose two nodes are `open`:
-    /// `(segment k, B node j, xi, g)` with `g` the signed distance of the B node from the
-    /// segment along its normal (`< 0`: it penetrates), the segment's point `xi`, normal and
-    /// the B node's projection taken in the geometry's configuration `xg` (frozen under small
-    /// kinematics: the distance is then linear in the displacements), `x` the current
-    /// positions.
-    pub(super) fn b_node_distances(
-        &self,
-        p: usize,
-        open: &[bool],
-        x: &[[f64; 2]],
-        xg: &[[f64; 2]],
-    ) -> Vec<(usize, usize, f64, f64)> {
-        let mut out = Vec::new();
-        for (k, w) in self.pairs[p].a.windows(2).enumerate() {
-            if !(open[k] && open[k + 1]) {
-                continue;
-            }
-            let (s0, s1) = (xg[w[0]], xg[w[1]]);
-            let (n, _) = edge_normal(s0, s1);
-            // current segment end points (equal to s0, s1 under finite kinematics)
-            let (c0, c1) = (x[w[0]], x[w[1]]);
-            // under small kinematics the B nodes inside each segment were found once, in the
-            // reference configuration
-            let candidates = match &self.interiors {
-                Some(interiors) => interiors[p].segment(k),
-                None => &self.pairs[p].b[..],
-            };
-            for &j in candidates {
-                let (xi, inside) = geometry::interior_parameter(s0, s1, xg[j]);
-                if !inside {
-                    continue;
-                }
-                let hit = [c0[0] + xi * (c1[0] - c0[0]), c0[1] + xi * (c1[1] - c0[1])];
-                let g = (x[j][0] - hit[0]) * n[0] + (x[j][1] - hit[1]) * n[1];
-                out.push((k, j, xi, g));
-            }
-        }
-        out
     }
 }
 

@@ -12,6 +12,7 @@ use super::{
     ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Tangential,
     Traction, dof, rules,
 };
+use crate::contact::space::Vector;
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
 
@@ -202,15 +203,10 @@ impl SmallSystem {
 
 impl ContactAnalysis {
     /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
-    pub(super) fn directed(&self, coupling: &[(usize, f64)], d: [f64; 2]) -> Sparse {
+    pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
         coupling
             .iter()
-            .flat_map(|&(j, c)| {
-                [
-                    (self.contact_slot(dof(j, 0)), c * d[0]),
-                    (self.contact_slot(dof(j, 1)), c * d[1]),
-                ]
-            })
+            .flat_map(|&(j, c)| (0..d.dim()).map(move |i| (self.contact_slot(dof(j, i)), c * d[i])))
             .collect()
     }
 
@@ -236,10 +232,10 @@ impl ContactAnalysis {
                 if rows == rules::Rows::None {
                     continue;
                 }
-                let normal = self.directed(&node.coupling, node.normal);
-                let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
+                let normal = self.directed(&node.coupling, &node.frame.normal());
+                let rg = node.gap.dot(&node.frame.normal());
                 let b = dot(&normal, uc) - rg;
-                let tangent = || self.directed(&node.coupling, node.tangent);
+                let tangent = || self.directed(&node.coupling, &node.frame.tangent(0));
                 let (col, basis) = match rows {
                     rules::Rows::NormalSlip(c) => {
                         // one tangent: `c` has one component

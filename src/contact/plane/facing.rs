@@ -1,13 +1,15 @@
 //! How the two polylines of a contact pair face each other, judged without the search window
-//! of the contact kernels ([`super::geometry`]): the orientation check of a pair in the
+//! of the contact kernels ([`super::mortar`]): the orientation check of a pair in the
 //! reference configuration, and the check that no node the search lost has passed through the
 //! opposite surface.
 //!
-//! Conventions as in [`super::geometry`]: each polyline has its body on the left, a segment
+//! Conventions as in [`super::mortar`]: each polyline has its body on the left, a segment
 //! `p0 -> p1` has the outward normal `n = (d_y, -d_x) / |d|`, `d = p1 - p0`, and a node's
 //! normal is the length-weighted mean of its adjacent segments' normals.
 
+pub use crate::contact::geometry::Facing;
 use crate::element::geometry::edge_normal;
+use crate::error::{Error, Result};
 
 /// Outward unit normal of node `k` of the polyline `ids` at the positions `x`: the direction of
 /// `sum_e h_e n_e` over its one or two adjacent segments.
@@ -36,26 +38,6 @@ fn nearest_on_segment(ids: &[usize], seg: usize, p: [f64; 2], x: &[[f64; 2]]) ->
     let eta = ((p[0] - q0[0]) * d[0] + (p[1] - q0[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1]);
     let s = eta.clamp(0.0, 1.0);
     (eta, [q0[0] + s * d[0], q0[1] + s * d[1]])
-}
-
-/// How the A nodes of a pair see B in one configuration (counts of A nodes with a B segment
-/// within reach, classified by that nearest segment).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Facing {
-    /// B faces A from in front: normals opposed (`n_A . n_B < -1/2`), B on A's outward side by
-    /// more than half the node's tributary length.
-    pub facing: usize,
-    /// Normals opposed and B within half the node's tributary length of A, in front or behind
-    /// (touching surfaces, round-off, a discretised curve): the geometry cannot tell facing
-    /// surfaces from back-to-back ones (both polylines reversed) here.
-    pub touching: usize,
-    /// Normals pointing the same way (`n_A . n_B > 1/2`): one polyline is reversed.
-    pub same_way: usize,
-    /// Normals opposed but B behind A by more than half the tributary length: back to back
-    /// (two faces of one body, or both polylines reversed).
-    pub behind: usize,
-    /// The first A node (index into `a`) of the majority class other than `facing`, if any.
-    pub example: Option<usize>,
 }
 
 /// Classify every A node against the B segment nearest to it, if that lies within `reach`
@@ -157,6 +139,36 @@ pub fn behind(
     nearest
         .filter(|&(_, signed)| -signed > depth_limit)
         .map(|(seg, signed)| (seg, -signed))
+}
+
+/// A point `inside` body A must lie on A's body side (the left) of the A polyline, whose node
+/// positions are `a` in order, beside it rather than beyond its ends (see [`side`]):
+/// then A has its body on its left, and with B facing it (checked when the analysis is
+/// created) so has B.
+///
+/// # Errors
+/// [`Error::InvalidInput`]: a non-finite point, one beyond the polyline's ends, or one on its
+/// outward side (the A polyline reversed).
+pub fn check_a_inside(a: &[[f64; 2]], inside: [f64; 2]) -> Result<()> {
+    if !(inside[0].is_finite() && inside[1].is_finite()) {
+        return Err(Error::InvalidInput(format!(
+            "the point inside body A {inside:?} is not finite"
+        )));
+    }
+    let ids: Vec<usize> = (0..a.len()).collect();
+    match side(&ids, a, inside) {
+        Some(d) if d < 0.0 => Ok(()),
+        Some(_) => Err(Error::InvalidInput(format!(
+            "the point {inside:?} inside body A lies on the outward side of the A polyline: \
+             A has its body on its right, so it is reversed (and B with it, if they face each \
+             other: the pair is back to back)"
+        ))),
+        None => Err(Error::InvalidInput(format!(
+            "the point {inside:?} inside body A lies beyond an end of the A polyline, where \
+             its side is not defined: give one beside it (the centroid of the element that \
+             owns A's first segment, say)"
+        ))),
+    }
 }
 
 #[cfg(test)]
