@@ -90,7 +90,10 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
-use active_set::{ActiveSet, BNodes, Commit, Locks, NodeKey, count};
+use active_set::{
+    ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
+    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
+};
 use boundary::{Flexibility, NodeFlexibility};
 use checks::change_ratio;
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
@@ -1396,6 +1399,7 @@ impl ContactAnalysis {
         let mut uc = startc.clone();
         let mut surfaces = self.surfaces.clone();
         let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
+        let convergence = Convergence::new(self.options.tolerance);
         let first_record = records.len();
         // time of the refactor-every-iteration variant (feature `oracles`), counted as
         // factorization
@@ -1467,12 +1471,16 @@ impl ContactAnalysis {
                 )));
             }
             uc = uc_new;
-            if changes == 0 && r <= self.options.tolerance {
+            let iterate = Iterate {
+                changes,
+                r,
+                residual: None,
+            };
+            if convergence.reached(&iterate) {
                 let states = set.states();
                 self.uncovered(&surfaces, states)?;
                 self.passed_through(&surfaces, states, &uc, startc)?;
-                self.edge_penetration(number, &surfaces, set.locked_open(), &uc, startc)?;
-                self.slip_reversal(number, &surfaces, states, set.locked_slip(), &uc, startc)?;
+                self.locks_hold(number, &surfaces, &set, &uc, startc)?;
                 self.small_sliding(number, states, &uc)?;
                 if violation.relative > CONDITION_LIMIT {
                     return Err(ContactError::ConditionViolated {

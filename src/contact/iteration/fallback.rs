@@ -38,10 +38,9 @@
 
 use super::{
     Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, SlipDirection,
-    Tangential, column, dot, plate, rules, small_system,
+    Tangential, closed_at_rest, column, dot, linearized_state, plate, small_system,
 };
 use plate::dot_dense;
-use rules::closed_at_rest;
 
 /// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
 /// for `m` unknowns (a few seconds). Gauss-Seidel contracts by about `1 - 1/cond(S)` per
@@ -64,9 +63,6 @@ const START_SWEEPS: usize = 1000;
 
 /// The sweeps stop when no traction changes by more than this, relative to the largest.
 const FALLBACK_TOLERANCE: f64 = 1e-12;
-
-/// A node is in slip in the fallback's states when `|ts| >= (1 - FALLBACK_CONE) mu |tn|`.
-const FALLBACK_CONE: f64 = 1e-9;
 
 impl ContactAnalysis {
     /// The fallback's start states for `attempt` (module docs): the candidates' conditions
@@ -132,19 +128,9 @@ impl ContactAnalysis {
             .map(|s| vec![NodeState::Open; s.len()])
             .collect();
         for &(i, tangent, law) in &linearized.nodes {
-            if t[i] >= -FALLBACK_TOLERANCE * tn_max {
-                continue;
-            }
             let (p, k, _) = system.unknowns[i];
-            out[p][k] = match tangent.map(|j| t[j]) {
-                None => NodeState::Frictionless,
-                Some(ts) if ts.abs() >= (1.0 - FALLBACK_CONE) * law.stick_limit(t[i]) => {
-                    NodeState::Slip {
-                        direction: SlipDirection::opposing(Tangential::along(ts)),
-                    }
-                }
-                Some(_) => NodeState::Stick,
-            };
+            let ts = tangent.map(|j| Tangential::along(t[j]));
+            out[p][k] = linearized_state(t[i], ts, law, -FALLBACK_TOLERANCE * tn_max);
         }
         Ok(out)
     }

@@ -9,8 +9,8 @@ use super::DVector;
 #[cfg(feature = "oracles")]
 use super::plate::Border;
 use super::{
-    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Tangential,
-    Traction, dof, rules,
+    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
+    Tangential, Traction, dof, rows_of,
 };
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
@@ -232,8 +232,8 @@ impl ContactAnalysis {
         for (p, surface) in surfaces.iter().enumerate() {
             let law = &*self.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let rows = rules::rows_of(states[p][k], law);
-                if rows == rules::Rows::None {
+                let rows = rows_of(states[p][k], law);
+                if rows == Rows::None {
                     continue;
                 }
                 let normal = self.directed(&node.coupling, node.normal);
@@ -241,7 +241,7 @@ impl ContactAnalysis {
                 let b = dot(&normal, uc) - rg;
                 let tangent = || self.directed(&node.coupling, node.tangent);
                 let (col, basis) = match rows {
-                    rules::Rows::NormalSlip(c) => {
+                    Rows::NormalSlip(c) => {
                         // one tangent: `c` has one component
                         let w = c.components()[0];
                         let mut c = normal.clone();
@@ -255,7 +255,7 @@ impl ContactAnalysis {
                 sys.cols.push(col);
                 sys.basis.push(basis);
                 sys.b.push(b);
-                if rows == rules::Rows::NormalTangent {
+                if rows == Rows::NormalTangent {
                     let t = tangent();
                     sys.unknowns.push((p, k, Row::Tangent));
                     sys.b.push(dot(&t, startc));
