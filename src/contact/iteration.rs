@@ -53,8 +53,13 @@
 //! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
 //! stops when no state changed and `R = |dU(i+1) - dU(i)| / |dU(i+1)|` (increment displacement
 //! of the contact nodes; the denominator bounded below by round-off of the displacement, see
-//! `change_ratio`) is below `tolerance`. The states, their locks and the history belong to the
-//! increment's active set (`active_set.rs`): a state set seen before reappearing is a cycle.
+//! `change_ratio`) is below `tolerance` (the active set's `Convergence`, to which a 3D geometry
+//! adds a residual of the contact conditions). Every decision about a node's state is the
+//! increment's active set's (`active_set/`): the rules, on plain data this module gathers
+//! (`rules.rs`: per node its traction, gap, slip and law), which penetrating nodes close and in
+//! which closed state, the states of the fallback's solution, the plate's first support, the
+//! locks and their checks at convergence, and the history: a state set seen before reappearing
+//! is a cycle.
 //! Two kinds are benign and resolved (at most `lock_rounds` times per increment): a node on the
 //! edge of the friction cone alternating between stick and slip is locked in slip, and a node
 //! on the edge of the contact zone alternating between open and closed (zero traction and zero

@@ -10,7 +10,7 @@ use super::DVector;
 use super::plate::Border;
 use super::{
     ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
-    Tangential, Traction, dof, rows_of,
+    Traction, dof, rows_of,
 };
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
@@ -183,10 +183,18 @@ impl SmallSystem {
             .iter()
             .map(|s| vec![Traction::zero(1); s.len()])
             .collect();
+        // a node's tangential unknowns follow its normal one, one per tangent
+        let mut tangent = 0;
         for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
             match row {
-                Row::Normal => t[p][k].normal = v,
-                Row::Tangent => t[p][k].tangential = Tangential::along(v),
+                Row::Normal => {
+                    t[p][k].normal = v;
+                    tangent = 0;
+                }
+                Row::Tangent => {
+                    t[p][k].tangential.components_mut()[tangent] = v;
+                    tangent += 1;
+                }
             }
         }
         for (p, s) in states.iter().enumerate() {
@@ -239,29 +247,30 @@ impl ContactAnalysis {
                 let normal = self.directed(&node.coupling, node.normal);
                 let rg = node.gap[0] * node.normal[0] + node.gap[1] * node.normal[1];
                 let b = dot(&normal, uc) - rg;
-                let tangent = || self.directed(&node.coupling, node.tangent);
-                let (col, basis) = match rows {
-                    Rows::NormalSlip(c) => {
-                        // one tangent: `c` has one component
-                        let w = c.components()[0];
-                        let mut c = normal.clone();
-                        c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
-                        (c, vec![(p, k, Row::Normal, 1.0), (p, k, Row::Tangent, w)])
+                // the rows of the node's tangents (one in the plane and in axisymmetry)
+                let tangents = || [node.tangent].map(|s| self.directed(&node.coupling, s));
+                let mut col = normal.clone();
+                let mut basis = vec![(p, k, Row::Normal, 1.0)];
+                if let Rows::NormalSlip(c) = rows {
+                    // the column n + sum_i c_i s_i
+                    for (&w, s) in c.components().iter().zip(tangents()) {
+                        col.extend(s.into_iter().map(|(i, v)| (i, w * v)));
+                        basis.push((p, k, Row::Tangent, w));
                     }
-                    _ => (normal.clone(), vec![(p, k, Row::Normal, 1.0)]),
-                };
+                }
                 sys.unknowns.push((p, k, Row::Normal));
                 sys.rows.push(normal);
                 sys.cols.push(col);
                 sys.basis.push(basis);
                 sys.b.push(b);
                 if rows == Rows::NormalTangent {
-                    let t = tangent();
-                    sys.unknowns.push((p, k, Row::Tangent));
-                    sys.b.push(dot(&t, startc));
-                    sys.rows.push(t.clone());
-                    sys.cols.push(t);
-                    sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
+                    for t in tangents() {
+                        sys.unknowns.push((p, k, Row::Tangent));
+                        sys.b.push(dot(&t, startc));
+                        sys.rows.push(t.clone());
+                        sys.cols.push(t);
+                        sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
+                    }
                 }
             }
         }
