@@ -97,7 +97,8 @@ mod rules;
 mod small_system;
 use active_set::{
     ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
-    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
+    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, nearer_node,
+    rows_of,
 };
 use boundary::{Flexibility, NodeFlexibility};
 use checks::change_ratio;

@@ -4,7 +4,7 @@
 
 use super::{
     ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION, Kinematics,
-    Locks, NodeKey, NodeState, Result, Tangential, Traction, dot, facing, geometry,
+    Locks, NodeKey, NodeState, Result, Tangential, Traction, dot, facing, geometry, nearer_node,
 };
 
 /// Under small kinematics, the largest change of an active node's gap caused by sliding with
@@ -467,7 +467,7 @@ impl ContactAnalysis {
             }
             let open: Vec<bool> = states[p].iter().map(|s| *s == NodeState::Open).collect();
             for (k, _, xi, g) in self.b_node_distances(p, &open, &x, xg) {
-                let node = (p, if xi < 0.5 { k } else { k + 1 });
+                let node = (p, nearer_node(k, xi));
                 if -g / gap_scale > worst.relative {
                     worst = Violation {
                         relative: -g / gap_scale,

@@ -5,8 +5,8 @@
 //! |---|---|
 //! | the paper's rules proposing the next states (activate on penetration, drop tensile, stick -> slip past the cone, slip -> stick on reversal) | [`ActiveSet::propose`] (`rules.rs`) |
 //! | which penetrating nodes close (runs, halves, new regions) | [`ActiveSet::closing`] (`rules.rs`) |
-//! | which closed state a closing node takes (stick, slip with the surfaces, frictionless) | [`closed_state`], [`closed_at_rest`] (`rules.rs`) |
-//! | how B nodes over open A segments are judged (pointwise, or only at convergence) | [`BNodes`], [`ActiveSet::judging`], [`ActiveSet::b_node_judges`] |
+//! | which closed state a closing node takes (stick, slip with the surfaces, frictionless) | [`closed_state`](rules::closed_state), [`closed_at_rest`] (`rules.rs`) |
+//! | how B nodes over open A segments are judged (pointwise, or only at convergence) and which A node a B node closes | [`BNodes`], [`ActiveSet::judging`], [`ActiveSet::b_node_judges`], [`nearer_node`] |
 //! | what each state adds to the small system | [`rows_of`] (`rules.rs`) |
 //! | the states of the fallback's solution | [`linearized_state`] (`rules.rs`) |
 //! | the plate's first support | [`close_nearest`] (`rules.rs`) |
@@ -37,7 +37,8 @@ pub(super) use convergence::{Convergence, Iterate};
 pub(super) use locks::{EDGE_PENETRATION, Locks};
 use locks::{open_closed_flips, stick_slip_flips};
 pub(super) use rules::{
-    BNodeHit, NodeFacts, Rows, Tolerances, close_nearest, closed_at_rest, linearized_state, rows_of,
+    BNodeHit, NodeFacts, Rows, Tolerances, close_nearest, closed_at_rest, linearized_state,
+    nearer_node, rows_of,
 };
 
 /// A node of the iteration: (pair, index of the A node in the pair).

@@ -73,6 +73,12 @@ pub(in crate::contact::iteration) struct Tolerances {
 /// its signed distance `g` from the segment (`< 0`: it penetrates).
 pub(in crate::contact::iteration) type BNodeHit = (usize, f64, f64);
 
+/// The A node a B node inside segment `k` at the segment's point `xi` (in `[0, 1]`) is judged
+/// with: the nearer end, `k` or `k + 1` (the one that closes when the B node penetrates).
+pub(in crate::contact::iteration) fn nearer_node(k: usize, xi: f64) -> usize {
+    if xi < 0.5 { k } else { k + 1 }
+}
+
 /// What a state adds to the small system (`build_system`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(in crate::contact::iteration) enum Rows {
@@ -240,7 +246,7 @@ impl ActiveSet {
             if g >= -tolerances.gap {
                 continue;
             }
-            let node = if xi < 0.5 { k } else { k + 1 };
+            let node = nearer_node(k, xi);
             depth[node] = Some(depth[node].map_or(g, |d| d.min(g)));
         }
         for k in self.closing(p, &depth) {
