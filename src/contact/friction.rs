@@ -5,7 +5,9 @@
 //! whether there is any (no tangential rows at all when not), the largest tangential traction
 //! a sticking node carries (the stick -> slip rule, its cone), and the tangential traction of
 //! a node slipping in a direction of the tangent space as a multiple of its normal one (the
-//! slip node's column `n_k + sum_i c_i s_i` in the small system, and its `ts = c tn`). A new
+//! slip node's column `n_k + sum_i c_i s_i` in the small system, and its `ts = c tn`), and,
+//! from these, the closest point of the cone ([`FrictionLaw::project`]) and whether a trial
+//! traction slips ([`FrictionLaw::trial_slip`]), which the fallback's solver reads. A new
 //! law is a new type implementing the trait, chosen in
 //! [`ContactPair::friction_law`](super::iteration::ContactPair::friction_law).
 //!
@@ -34,6 +36,38 @@ pub trait FrictionLaw: std::fmt::Debug + Send + Sync {
     /// traction `tn` (`c` of [`slip_coefficients`](Self::slip_coefficients)).
     fn slip_traction(&self, direction: SlipDirection, tn: f64) -> Tangential {
         self.slip_coefficients(direction).scaled(tn)
+    }
+
+    /// The closest point to `ts` of the cone's section under the normal traction `tn`, the
+    /// set `|ts| <= stick_limit(tn)`: in the plane the clamp of `ts` to `[-l, l]`, on a face
+    /// (two tangents) the radial projection onto the disc of radius `l`. The fallback's
+    /// projected sweeps take a node's tangential traction there.
+    fn project(&self, tn: f64, ts: Tangential) -> Tangential {
+        let limit = self.stick_limit(tn);
+        match ts.components() {
+            [s] => Tangential::along(s.clamp(-limit, limit)),
+            _ => {
+                let norm = ts.norm();
+                if norm > limit {
+                    ts.scaled(limit / norm)
+                } else {
+                    ts
+                }
+            }
+        }
+    }
+
+    /// Whether a trial tangential traction `ts` under the trial normal traction `tn` slips:
+    /// `None` strictly inside the cone (`|ts| < stick_limit(tn)`: the node sticks), otherwise
+    /// the slip direction it opposes, `-ts / |ts|` (the fallback's semi-smooth Newton step
+    /// then takes `ts = c tn`, `c` the [`slip_coefficients`](Self::slip_coefficients) of that
+    /// direction).
+    fn trial_slip(&self, tn: f64, ts: Tangential) -> Option<SlipDirection> {
+        if ts.norm() < self.stick_limit(tn) {
+            None
+        } else {
+            Some(SlipDirection::opposing(ts))
+        }
     }
 }
 
@@ -99,6 +133,52 @@ mod tests {
         for bad in [-0.1, f64::NAN, f64::INFINITY] {
             assert!(Coulomb::new(bad).is_err(), "{bad}");
         }
+    }
+
+    /// The cone's closest point: in the plane a clamp (exactly), on a face the radial
+    /// projection onto the disc `|ts| <= mu |tn|`, a point inside kept as it is; a trial
+    /// traction slips on or outside the cone, opposite to its direction.
+    #[test]
+    fn the_cone_projects_and_judges_trial_tractions() {
+        let law = Coulomb::new(0.5).unwrap();
+        assert_eq!(
+            law.project(-2.0, Tangential::along(1.5)),
+            Tangential::along(1.0)
+        );
+        assert_eq!(
+            law.project(-2.0, Tangential::along(-1.5)),
+            Tangential::along(-1.0)
+        );
+        assert_eq!(
+            law.project(-2.0, Tangential::along(0.3)),
+            Tangential::along(0.3)
+        );
+        let outside = law.project(-2.0, Tangential::on_face(3.0, -4.0));
+        let [a, b] = outside.components() else {
+            panic!("two components")
+        };
+        assert!(
+            (a - 0.6).abs() < 1e-15 && (b + 0.8).abs() < 1e-15,
+            "{outside:?}"
+        );
+        let inside = Tangential::on_face(0.6, 0.7);
+        assert_eq!(law.project(-2.0, inside), inside);
+        assert_eq!(law.project(0.0, inside), Tangential::on_face(0.0, 0.0));
+        // trial tractions
+        assert_eq!(law.trial_slip(-2.0, inside), None);
+        assert_eq!(law.trial_slip(-2.0, Tangential::along(0.99)), None);
+        assert_eq!(
+            law.trial_slip(-2.0, Tangential::along(1.0)),
+            Some(SlipDirection::MINUS)
+        );
+        let slip = law
+            .trial_slip(-2.0, Tangential::on_face(3.0, -4.0))
+            .unwrap();
+        assert!(slip.same_as(&SlipDirection::of(Tangential::on_face(-3.0, 4.0)).unwrap()));
+        // its slip traction is the projection of the trial traction
+        let ts = law.slip_traction(slip, -2.0);
+        assert!((ts.components()[0] - 0.6).abs() < 1e-15);
+        assert!((ts.components()[1] + 0.8).abs() < 1e-15);
     }
 
     /// A slip on a face (two tangents) through the law: the traction opposes the slip, lies on

@@ -53,8 +53,13 @@
 //! `|ts| <= mu |tn|` into slip nodes, and slip nodes whose slip reverses back into stick. It
 //! stops when no state changed and `R = |dU(i+1) - dU(i)| / |dU(i+1)|` (increment displacement
 //! of the contact nodes; the denominator bounded below by round-off of the displacement, see
-//! `change_ratio`) is below `tolerance`. The states, their locks and the history belong to the
-//! increment's active set (`active_set.rs`): a state set seen before reappearing is a cycle.
+//! `change_ratio`) is below `tolerance` (the active set's `Convergence`, to which a 3D geometry
+//! adds a residual of the contact conditions). Every decision about a node's state is the
+//! increment's active set's (`active_set/`): the rules, on plain data this module gathers
+//! (`rules.rs`: per node its traction, gap, slip and law), which penetrating nodes close and in
+//! which closed state, the states of the fallback's solution, the plate's first support, the
+//! locks and their checks at convergence, and the history: a state set seen before reappearing
+//! is a cycle.
 //! Two kinds are benign and resolved (at most `lock_rounds` times per increment): a node on the
 //! edge of the friction cone alternating between stick and slip is locked in slip, and a node
 //! on the edge of the contact zone alternating between open and closed (zero traction and zero
@@ -92,7 +97,11 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
-use active_set::{ActiveSet, BNodes, Commit, Locks, NodeKey, count};
+use active_set::{
+    ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
+    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state,
+    rows_of,
+};
 use boundary::{Flexibility, NodeFlexibility};
 use checks::change_ratio;
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
@@ -1402,6 +1411,7 @@ impl ContactAnalysis {
         let mut uc = startc.clone();
         let mut surfaces = self.surfaces.clone();
         let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
+        let convergence = Convergence::new(self.options.tolerance);
         let first_record = records.len();
         // time of the refactor-every-iteration variant (feature `oracles`), counted as
         // factorization
@@ -1473,12 +1483,16 @@ impl ContactAnalysis {
                 )));
             }
             uc = uc_new;
-            if changes == 0 && r <= self.options.tolerance {
+            let iterate = Iterate {
+                changes,
+                r,
+                residual: None,
+            };
+            if convergence.reached(&iterate) {
                 let states = set.states();
                 self.uncovered(&surfaces, states)?;
                 self.passed_through(&surfaces, states, &uc, startc)?;
-                self.edge_penetration(number, &surfaces, set.locked_open(), &uc, startc)?;
-                self.slip_reversal(number, &surfaces, states, set.locked_slip(), &uc, startc)?;
+                self.locks_hold(number, &surfaces, &set, &uc, startc)?;
                 self.small_sliding(number, states, &uc)?;
                 if violation.relative > CONDITION_LIMIT {
                     return Err(ContactError::ConditionViolated {

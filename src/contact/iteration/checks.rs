@@ -1,10 +1,10 @@
 //! What a converged increment must also satisfy, and the convergence measure: active nodes
-//! fully covered, nodes locked open not penetrating, nodes locked in slip not sliding against
-//! their friction, small kinematics within their range.
+//! fully covered, the locks held (gathered here, judged by the active set: `active_set/locks.rs`),
+//! small kinematics within their range, the discrete contact conditions.
 
 use super::{
-    BNodes, ContactAnalysis, ContactError, ContactSurface, Kinematics, NodeKey, NodeState, Result,
-    Tangential, Traction, dot,
+    ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION, Kinematics,
+    Locks, NodeKey, NodeState, Result, Tangential, Traction, dot,
 };
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::Vector;
@@ -15,14 +15,6 @@ use crate::contact::space::Vector;
 /// increment fails and names the node.
 pub const SMALL_SLIDING_LIMIT: f64 = 0.1;
 
-/// How far a node locked open after an open/closed cycle may penetrate at convergence,
-/// relative to the increment's displacement scale (see [`ContactAnalysis::gap_scale`]).
-pub(super) const EDGE_PENETRATION: f64 = 1e-4;
-
-/// How far a node locked in slip after a stick/slip cycle may slide against its friction at
-/// convergence, relative to the increment's motion (see [`ContactAnalysis::motion_scale`]):
-/// the same hair as [`EDGE_PENETRATION`].
-pub(super) const SLIP_REVERSAL: f64 = EDGE_PENETRATION;
 
 /// Round-off level of a displacement, relative to its size: iterates that differ by less than
 /// this times `|u|` are the same to the precision the geometry can be evaluated at.
@@ -98,34 +90,51 @@ impl ContactAnalysis {
         motion.max(self.largest_node_motion).max(1e-12 * h)
     }
 
-    /// Nodes locked open after an open/closed cycle must not penetrate by more than
-    /// `EDGE_PENETRATION` of the gap scale at convergence; otherwise the cycle was not an edge
-    /// effect and the increment fails naming the node.
-    pub(super) fn edge_penetration(
+    /// The checks of the locks at convergence ([`ActiveSet::edge_penetration`],
+    /// [`ActiveSet::slip_reversal`]): a node locked open must not penetrate by more than its
+    /// hair of the gap scale, a node locked in slip must not slide against its friction by more
+    /// than its hair of the motion scale; otherwise the cycle was not an edge effect and the
+    /// increment fails naming the node.
+    pub(super) fn locks_hold(
         &self,
         number: usize,
         surfaces: &[ContactSurface],
-        locked_open: &[(usize, usize)],
+        set: &ActiveSet,
         uc: &[f64],
         startc: &[f64],
     ) -> Result<()> {
-        if locked_open.is_empty() {
+        if set.locks() == &Locks::default() {
             return Ok(());
         }
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
-        for &(p, k) in locked_open {
-            let scale = self.gap_scale(p, xg, uc, startc);
-            let gap = surfaces[p].nodes[k].normal_gap;
-            if gap < -EDGE_PENETRATION * scale {
-                return Err(ContactError::EdgePenetration {
-                    increment: number,
-                    node: self.bodies.external(self.pairs[p].a[k]),
-                    depth: -gap,
-                    relative: -gap / scale,
-                }
-                .into());
+        let gap = |(p, k): NodeKey| {
+            (
+                surfaces[p].nodes[k].normal_gap,
+                self.gap_scale(p, xg, uc, startc),
+            )
+        };
+        if let Some((node, depth, relative)) = set.edge_penetration(gap) {
+            return Err(ContactError::EdgePenetration {
+                increment: number,
+                node: self.external_a(node),
+                depth,
+                relative,
             }
+            .into());
+        }
+        let slip = |(p, k): NodeKey| {
+            let slip = self.slip_since_start(&surfaces[p].nodes[k], uc, startc);
+            (slip, self.motion_scale(p, xg, uc, startc))
+        };
+        if let Some((node, slip, relative)) = set.slip_reversal(slip) {
+            return Err(ContactError::SlipReversal {
+                increment: number,
+                node: self.external_a(node),
+                slip,
+                relative,
+            }
+            .into());
         }
         Ok(())
     }
@@ -141,44 +150,6 @@ impl ContactAnalysis {
     ) -> Tangential {
         let row = self.directed(&node.coupling, &node.frame.tangent(0));
         Tangential::along((dot(&row, uc) - dot(&row, startc)) / node.weight)
-    }
-
-    /// Nodes locked in slip after a stick/slip cycle must sit on the cone with a vanishing
-    /// slip: at convergence, one that slides against its friction (`-sign s_k`, see
-    /// [`slip_since_start`](Self::slip_since_start)) by more than `SLIP_REVERSAL` of the
-    /// motion scale was not on the cone's edge, and the increment fails naming the node.
-    pub(super) fn slip_reversal(
-        &self,
-        number: usize,
-        surfaces: &[ContactSurface],
-        states: &[Vec<NodeState>],
-        locked_slip: &[(usize, usize)],
-        uc: &[f64],
-        startc: &[f64],
-    ) -> Result<()> {
-        if locked_slip.is_empty() {
-            return Ok(());
-        }
-        let x = self.positions(uc);
-        let xg = self.geometry_positions(&x);
-        for &(p, k) in locked_slip {
-            let NodeState::Slip { direction } = states[p][k] else {
-                continue;
-            };
-            let against =
-                -direction.along(&self.slip_since_start(&surfaces[p].nodes[k], uc, startc));
-            let scale = self.motion_scale(p, xg, uc, startc);
-            if against > SLIP_REVERSAL * scale {
-                return Err(ContactError::SlipReversal {
-                    increment: number,
-                    node: self.bodies.external(self.pairs[p].a[k]),
-                    slip: against,
-                    relative: against / scale,
-                }
-                .into());
-            }
-        }
-        Ok(())
     }
 
     /// Under small kinematics the pairing of A with B is frozen in the reference configuration.

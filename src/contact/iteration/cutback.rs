@@ -26,16 +26,10 @@
 
 use super::failure::Failure;
 use super::{
-    ContactAnalysis, ContactSurface, Controls, Converged, Error, IncrementInfo, LoadSolve,
-    NodeData, NodeFlexibility, OnceLock, Plate, PlateControl, Result, Settled,
+    ContactAnalysis, ContactSurface, Controls, Converged, IncrementInfo, LoadSolve, NodeData,
+    NodeFlexibility, OnceLock, Plate, PlateControl, Result, Settled,
 };
 use crate::contact::space::Vector;
-
-/// Whether a shorter step may remove the cause of a failed increment
-/// ([`Failure::shorter_step_may_settle`]).
-fn retryable(e: &Error) -> bool {
-    Failure::of(e).shorter_step_may_settle()
-}
 
 /// What a failed try may change in the analysis besides timings and the caches of `K`'s
 /// responses (the load solves kept, and the pairing when it is widened), taken before the
@@ -207,7 +201,8 @@ impl ContactAnalysis {
         let before = self.before();
         // the whole step first: most increments end here
         let first = self.run_increment(f, qp, control);
-        let cut = matches!(&first, Err(e) if retryable(e) && smallest < 1.0);
+        let cut =
+            matches!(&first, Err(e) if Failure::of(e).shorter_step_may_settle() && smallest < 1.0);
         if !cut {
             match first {
                 Ok(_) => self.forget_before(before),
@@ -253,7 +248,7 @@ impl ContactAnalysis {
                         (step, streak) = (2.0 * step, 0);
                     }
                 }
-                Err(e) if retryable(&e) && step > smallest => {
+                Err(e) if Failure::of(&e).shorter_step_may_settle() && step > smallest => {
                     info.cutbacks += 1;
                     (step, streak) = (0.5 * step, 0);
                 }

@@ -32,16 +32,17 @@
 //! `--count 20000` the presses the fallback rescues take 23-33 ms each instead of 0.8.0's
 //! 90-144 ms, and press 15241 of seed 1, where Gauss-Seidel cycles, now settles (test
 //! `a_large_friction_press_settles_from_the_newton_fallback`). Its states (closed where
-//! `tn < 0`, slip where `|ts|` is on the cone, with the sign of `-ts`) start the paper's iteration again, which then settles in a few iterations and
+//! `tn < 0`, slip where `|ts|` is on the cone, opposing `ts`: the active set's
+//! `linearized_state`) start the paper's iteration again, which then settles in a few iterations and
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
 use super::{
-    Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, SlipDirection,
-    Tangential, column, dot, plate, rules, small_system,
+    Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
+    closed_at_rest, column, dot, linearized_state, plate, small_system,
 };
+use crate::contact::tangent::SAME_DIRECTION;
 use plate::dot_dense;
-use rules::closed_at_rest;
 
 /// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
 /// for `m` unknowns (a few seconds). Gauss-Seidel contracts by about `1 - 1/cond(S)` per
@@ -64,9 +65,6 @@ const START_SWEEPS: usize = 1000;
 
 /// The sweeps stop when no traction changes by more than this, relative to the largest.
 const FALLBACK_TOLERANCE: f64 = 1e-12;
-
-/// A node is in slip in the fallback's states when `|ts| >= (1 - FALLBACK_CONE) mu |tn|`.
-const FALLBACK_CONE: f64 = 1e-9;
 
 impl ContactAnalysis {
     /// The fallback's start states for `attempt` (module docs): the candidates' conditions
@@ -126,25 +124,16 @@ impl ContactAnalysis {
             .collect();
         let linearized = Linearized::new(&system.unknowns, &laws, s, r);
         let t = linearized.solution();
-        let tn_max = (linearized.nodes.iter()).fold(0.0f64, |m, &(i, _, _)| m.max(t[i].abs()));
+        let tn_max = (linearized.nodes.iter()).fold(0.0f64, |m, node| m.max(t[node.normal].abs()));
         let mut out: Vec<Vec<NodeState>> = states
             .iter()
             .map(|s| vec![NodeState::Open; s.len()])
             .collect();
-        for &(i, tangent, law) in &linearized.nodes {
-            if t[i] >= -FALLBACK_TOLERANCE * tn_max {
-                continue;
-            }
-            let (p, k, _) = system.unknowns[i];
-            out[p][k] = match tangent.map(|j| t[j]) {
-                None => NodeState::Frictionless,
-                Some(ts) if ts.abs() >= (1.0 - FALLBACK_CONE) * law.stick_limit(t[i]) => {
-                    NodeState::Slip {
-                        direction: SlipDirection::opposing(Tangential::along(ts)),
-                    }
-                }
-                Some(_) => NodeState::Stick,
-            };
+        for node in &linearized.nodes {
+            let (p, k, _) = system.unknowns[node.normal];
+            let ts = (node.tangents > 0).then(|| node.tangential(&t));
+            out[p][k] =
+                linearized_state(t[node.normal], ts, node.law, -FALLBACK_TOLERANCE * tn_max);
         }
         Ok(out)
     }
@@ -154,27 +143,83 @@ impl ContactAnalysis {
 struct Linearized<'a> {
     s: DMatrix<f64>,
     r: Vec<f64>,
-    /// Per candidate node: the index of its normal unknown, of its tangential one (with
-    /// friction), and its friction law.
-    nodes: Vec<(usize, Option<usize>, &'a dyn FrictionLaw)>,
+    /// The candidate nodes.
+    nodes: Vec<Candidate<'a>>,
+}
+
+/// A candidate node of the linearized conditions: its unknowns and its friction law.
+#[derive(Debug, Clone, Copy)]
+struct Candidate<'a> {
+    /// The index of its normal unknown.
+    normal: usize,
+    /// How many tangential unknowns follow it (0 without friction, one per tangent).
+    tangents: usize,
+    law: &'a dyn FrictionLaw,
+}
+
+impl Candidate<'_> {
+    /// The indices of its tangential unknowns.
+    fn tangent_unknowns(&self) -> std::ops::Range<usize> {
+        self.normal + 1..self.normal + 1 + self.tangents
+    }
+
+    /// The scale of its tangential trial tractions, `sigma = sum_i S_(t_i t_i)`, the trace
+    /// of its tangential block of `S` (at least the block's largest eigenvalue; in the plane
+    /// `S_tt`). One scale for every tangent makes the cone condition the fixed point of the
+    /// semi-smooth Newton method: on the cone `ts` is parallel to the trial
+    /// `ts - rho_t / sigma`, so it opposes `rho_t` (with a scale per tangent it would oppose
+    /// `rho_t` scaled component by component).
+    fn tangent_scale(&self, s: &DMatrix<f64>) -> f64 {
+        self.tangent_unknowns().map(|j| s[(j, j)]).sum()
+    }
+
+    /// Its tangential traction in `t`.
+    fn tangential(&self, t: &[f64]) -> Tangential {
+        self.trial(|j| t[j])
+    }
+
+    /// The tangential vector of `value` over its tangential unknowns.
+    fn trial(&self, value: impl Fn(usize) -> f64) -> Tangential {
+        let mut v = Tangential::zero(self.tangents);
+        for (c, j) in v.components_mut().iter_mut().zip(self.tangent_unknowns()) {
+            *c = value(j);
+        }
+        v
+    }
 }
 
 /// What a semi-smooth Newton step ([`Linearized::active_set`]) takes for an unknown: its own
 /// row of `S t = r` (`rho = 0`: a closed normal, a sticking tangent), zero (open), or the
-/// tangential traction on the cone (`ts = c tn`, `c` the law's slip coefficient).
+/// tangential traction on the cone (`ts_i = c_i tn`, `c` the law's slip coefficients, with
+/// the index of the node's normal unknown).
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Condition {
     Row,
     Zero,
-    Cone(f64),
+    Cone(usize, f64),
+}
+
+/// Whether a step makes the same choice as the last: the same kind of condition per unknown,
+/// and on the cone slip coefficients equal to [`SAME_DIRECTION`] of their size. In the plane
+/// the coefficients are exactly `+mu` or `-mu`, so the choice is the same or not; on a face
+/// (two tangents) the direction of the slip turns continuously from step to step, and a
+/// solution of conditions whose directions agree to round-off satisfies them to round-off.
+fn same_conditions(a: &[Condition], b: &[Condition]) -> bool {
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(x, y)| match (*x, *y) {
+            (Condition::Cone(i, c), Condition::Cone(j, d)) => {
+                i == j && (c - d).abs() <= SAME_DIRECTION * (c.abs() + d.abs())
+            }
+            _ => x == y,
+        })
 }
 
 /// The semi-smooth Newton steps of the fallback, at most.
 const ACTIVE_SET_STEPS: usize = 100;
 
 impl<'a> Linearized<'a> {
-    /// The conditions over `unknowns` (a node's tangential unknown follows its normal one),
-    /// `laws` per unknown.
+    /// The conditions over `unknowns` (a node's tangential unknowns, one per tangent, follow
+    /// its normal one), `laws` per unknown.
     fn new(
         unknowns: &[(usize, usize, small_system::Row)],
         laws: &[&'a dyn FrictionLaw],
@@ -185,10 +230,14 @@ impl<'a> Linearized<'a> {
             .filter(|&i| unknowns[i].2 == small_system::Row::Normal)
             .map(|i| {
                 let (p, k, _) = unknowns[i];
-                let tangent = unknowns
-                    .get(i + 1)
-                    .is_some_and(|u| (u.0, u.1) == (p, k) && u.2 == small_system::Row::Tangent);
-                (i, tangent.then_some(i + 1), laws[i])
+                let tangents = (unknowns[i + 1..].iter())
+                    .take_while(|u| (u.0, u.1) == (p, k) && u.2 == small_system::Row::Tangent)
+                    .count();
+                Candidate {
+                    normal: i,
+                    tangents,
+                    law: laws[i],
+                }
             })
             .collect();
         Self { s, r, nodes }
@@ -214,8 +263,10 @@ impl<'a> Linearized<'a> {
     }
 
     /// Projected block Gauss-Seidel from `t`: per node, the normal traction
-    /// `tn <- min(0, tn - rho_n / S_nn)`, then the tangential one
-    /// `ts <- clamp(ts - rho_t / S_tt, -mu |tn|, mu |tn|)`, until no traction changes by more
+    /// `tn <- min(0, tn - rho_n / S_nn)`, then the tangential ones
+    /// `ts <- P(ts - rho_t / sigma)`, `P` the law's closest point of the cone
+    /// ([`Candidate::tangent_scale`]: in the plane `sigma = S_tt`;
+    /// [`FrictionLaw::project`]: in the plane the clamp to `[-mu |tn|, mu |tn|]`), until no traction changes by more
     /// than [`FALLBACK_TOLERANCE`] of the largest, within `sweeps`, or until a window of
     /// [`FALLBACK_WINDOW`] sweeps brings the change no lower. `S` is symmetric positive
     /// definite here (every column is its row).
@@ -236,13 +287,17 @@ impl<'a> Linearized<'a> {
         let mut last_window = f64::INFINITY;
         for sweep in 1..=sweeps {
             let mut largest_change = 0.0f64;
-            for &(i, tangent, law) in &self.nodes {
+            for node in &self.nodes {
+                let i = node.normal;
                 let tn = (t[i] - rho[i] / s[(i, i)]).min(0.0);
                 largest_change = largest_change.max(update(&mut t, &mut rho, i, tn));
-                if let Some(j) = tangent {
-                    let limit = law.stick_limit(t[i]);
-                    let ts = (t[j] - rho[j] / s[(j, j)]).clamp(-limit, limit);
-                    largest_change = largest_change.max(update(&mut t, &mut rho, j, ts));
+                if node.tangents > 0 {
+                    let sigma = node.tangent_scale(s);
+                    let trial = node.trial(|j| t[j] - rho[j] / sigma);
+                    let ts = node.law.project(t[i], trial);
+                    for (j, &v) in node.tangent_unknowns().zip(ts.components()) {
+                        largest_change = largest_change.max(update(&mut t, &mut rho, j, v));
+                    }
                 }
             }
             let largest = t.iter().fold(0.0f64, |a, v| a.max(v.abs()));
@@ -262,9 +317,11 @@ impl<'a> Linearized<'a> {
 
     /// The semi-smooth Newton method (the primal-dual active set method of Hüeber, Stadler
     /// and Wohlmuth, 2008) from `t`: per node, with `an = tn - rho_n / S_nn` and
-    /// `at = ts - rho_t / S_tt`, the node is closed where `an < 0` (then `rho_n = 0`, else
-    /// `tn = 0` and `ts = 0`), and a closed node sticks where `|at| < mu |an|` (then
-    /// `rho_t = 0`) and slips otherwise (`ts = mu |tn|` with the sign of `at`). Each step
+    /// `at = ts - rho_t / sigma` ([`Candidate::tangent_scale`]), the node is closed where
+    /// `an < 0` (then `rho_n = 0`, else `tn = 0` and `ts = 0`), and a closed node sticks
+    /// where `|at| < mu |an|` (then `rho_t = 0`) and slips otherwise (`ts = c tn`, `c` the
+    /// law's slip coefficients for the slip `at` opposes: [`FrictionLaw::trial_slip`]; in
+    /// the plane `ts = mu |tn|` with the sign of `at`). Each step
     /// solves those linear conditions; the method stops when a step's solution makes the
     /// same choice again, which it then satisfies exactly. `None` when it does not settle
     /// within [`ACTIVE_SET_STEPS`] or a step's matrix is singular.
@@ -274,23 +331,31 @@ impl<'a> Linearized<'a> {
         for _ in 0..ACTIVE_SET_STEPS {
             let rho = self.residual(&t);
             let mut conditions = vec![Condition::Zero; m];
-            for &(i, tangent, law) in &self.nodes {
+            for node in &self.nodes {
+                let i = node.normal;
                 let an = t[i] - rho[i] / s[(i, i)];
                 if an >= 0.0 {
                     continue;
                 }
                 conditions[i] = Condition::Row;
-                if let Some(j) = tangent {
-                    let at = t[j] - rho[j] / s[(j, j)];
-                    conditions[j] = if at.abs() < law.stick_limit(an) {
-                        Condition::Row
-                    } else {
-                        let slip = SlipDirection::opposing(Tangential::along(at));
-                        Condition::Cone(law.slip_coefficients(slip).components()[0])
-                    };
+                if node.tangents == 0 {
+                    continue;
+                }
+                let sigma = node.tangent_scale(s);
+                let at = node.trial(|j| t[j] - rho[j] / sigma);
+                match node.law.trial_slip(an, at) {
+                    None => node
+                        .tangent_unknowns()
+                        .for_each(|j| conditions[j] = Condition::Row),
+                    Some(slip) => {
+                        let c = node.law.slip_coefficients(slip);
+                        for (j, &c) in node.tangent_unknowns().zip(c.components()) {
+                            conditions[j] = Condition::Cone(i, c);
+                        }
+                    }
                 }
             }
-            if conditions == last {
+            if same_conditions(&conditions, &last) {
                 return Some(t);
             }
             let mut a = DMatrix::zeros(m, m);
@@ -303,10 +368,9 @@ impl<'a> Linearized<'a> {
                         g[j] = self.r[j];
                     }
                     Condition::Zero => a[(j, j)] = 1.0,
-                    // the tangential unknown follows its node's normal one
-                    Condition::Cone(c) => {
+                    Condition::Cone(normal, c) => {
                         a[(j, j)] = 1.0;
-                        a[(j, j - 1)] = -c;
+                        a[(j, normal)] = -c;
                     }
                 }
             }
@@ -328,7 +392,7 @@ mod tests {
 
     /// Conditions over `nodes` nodes (every third frictionless), `S = B^T B + I / 10` from a
     /// seeded `B`, `r` of either sign: closed, open, stick and slip nodes all occur.
-    fn problem(nodes: usize, seed: u64) -> Problem {
+    fn problem(nodes: usize, seed: u64, tangents: usize) -> Problem {
         let mut x = seed;
         let mut draw = || {
             x = x
@@ -338,12 +402,10 @@ mod tests {
         };
         let unknowns: Vec<(usize, usize, Row)> = (0..nodes)
             .flat_map(|k| {
-                let rows: &[Row] = if k % 3 == 2 {
-                    &[Row::Normal]
-                } else {
-                    &[Row::Normal, Row::Tangent]
-                };
-                rows.iter().map(move |&row| (0, k, row))
+                let rows = if k % 3 == 2 { 0 } else { tangents };
+                std::iter::once(Row::Normal)
+                    .chain(std::iter::repeat_n(Row::Tangent, rows))
+                    .map(move |row| (0, k, row))
             })
             .collect();
         let m = unknowns.len();
@@ -360,18 +422,22 @@ mod tests {
         let rho = c.residual(t);
         let scale = t.iter().chain(&rho).fold(0.0f64, |a, v| a.max(v.abs()));
         let mut worst = 0.0f64;
-        for &(i, tangent, law) in &c.nodes {
+        for node in &c.nodes {
+            let i = node.normal;
             worst = worst
                 .max(t[i])
                 .max(rho[i])
                 .max((t[i] * rho[i]).abs() / scale);
-            if let Some(j) = tangent {
-                let limit = law.stick_limit(t[i]);
-                worst = worst.max(t[j].abs() - limit);
-                if t[j].abs() < limit * (1.0 - 1e-9) {
-                    worst = worst.max(rho[j].abs());
+            if node.tangents > 0 {
+                let (ts, rho_t) = (node.tangential(t), node.tangential(&rho));
+                let limit = node.law.stick_limit(t[i]);
+                worst = worst.max(ts.norm() - limit);
+                if ts.norm() < limit * (1.0 - 1e-9) {
+                    worst = worst.max(rho_t.norm());
                 } else {
-                    worst = worst.max(t[j] * rho[j] / scale);
+                    // on the cone: ts opposes rho_t, parallel to it
+                    let parallel = ts.norm() * rho_t.norm() + ts.dot(&rho_t);
+                    worst = worst.max(ts.dot(&rho_t) / scale).max(parallel / scale);
                 }
             }
         }
@@ -382,7 +448,7 @@ mod tests {
     fn the_semismooth_newton_method_solves_the_conditions_exactly() {
         let law = Coulomb::new(0.3).unwrap();
         for seed in 1..=20 {
-            let (unknowns, s, r) = problem(8, seed);
+            let (unknowns, s, r) = problem(8, seed, 1);
             let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
             let c = Linearized::new(&unknowns, &laws, s, r);
             let m = c.r.len();
@@ -398,8 +464,56 @@ mod tests {
                 );
             }
             let states =
-                |t: &[f64]| (c.nodes.iter().map(|&(i, _, _)| t[i] < 0.0)).collect::<Vec<bool>>();
+                |t: &[f64]| (c.nodes.iter().map(|n| t[n.normal] < 0.0)).collect::<Vec<bool>>();
             assert!(states(&exact).contains(&true) && states(&exact).contains(&false));
         }
+    }
+
+    /// On a face (two tangents per node, the cone a disc): the semi-smooth Newton method, its
+    /// slip coefficients from the law's `trial_slip`, settles where the slip directions agree
+    /// to round-off, and its solution satisfies the conditions; projected Gauss-Seidel, with
+    /// the law's radial projection, reaches the same solution.
+    #[test]
+    fn the_fallback_solves_the_conditions_over_a_disc() {
+        let law = Coulomb::new(0.3).unwrap();
+        let (mut slipping, mut sticking) = (0, 0);
+        for seed in 1..=10 {
+            let (unknowns, s, r) = problem(6, seed, 2);
+            let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
+            let c = Linearized::new(&unknowns, &laws, s, r);
+            assert!(c.nodes.iter().any(|n| n.tangents == 2));
+            let m = c.r.len();
+            let exact = c.active_set(vec![0.0; m]).expect("settles");
+            assert!(
+                violation(&c, &exact) < 1e-12,
+                "seed {seed}: {}",
+                violation(&c, &exact)
+            );
+            let projected = c.projected(vec![0.0; m], 1_000_000);
+            let largest = exact.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            for (a, b) in exact.iter().zip(&projected) {
+                assert!(
+                    (a - b).abs() < 1e-8 * largest,
+                    "seed {seed}: {a} against {b}"
+                );
+            }
+            for n in c
+                .nodes
+                .iter()
+                .filter(|n| n.tangents == 2 && exact[n.normal] < 0.0)
+            {
+                let on_cone =
+                    n.tangential(&exact).norm() >= (1.0 - 1e-9) * law.stick_limit(exact[n.normal]);
+                if on_cone {
+                    slipping += 1;
+                } else {
+                    sticking += 1;
+                }
+            }
+        }
+        assert!(
+            slipping > 0 && sticking > 0,
+            "{slipping} slip, {sticking} stick"
+        );
     }
 }

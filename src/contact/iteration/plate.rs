@@ -4,7 +4,7 @@
 
 use super::{
     ContactAnalysis, ContactOptions, ContactPair, ContactSurface, DMatrix, Error, IncrementInfo,
-    Model, NodeState, PlateControl, Result, Sparse, dof, dot, rules,
+    Model, NodeState, PlateControl, Result, Sparse, close_nearest, dof, dot,
 };
 use crate::contact::space::{MAX_DIM, Vector};
 
@@ -285,17 +285,13 @@ impl ContactAnalysis {
     }
 
     /// Close the covered A node with the smallest normal gap (the first support of a
-    /// force-controlled body).
+    /// force-controlled body; the decision is the active set's [`close_nearest`]).
     pub(super) fn close_nearest(&self, surfaces: &[ContactSurface], states: &mut [Vec<NodeState>]) {
-        let nearest = surfaces
-            .iter()
-            .enumerate()
-            .flat_map(|(p, s)| s.nodes.iter().enumerate().map(move |(k, n)| (p, k, n)))
-            .filter(|(_, _, n)| n.is_covered())
-            .min_by(|a, b| a.2.normal_gap.total_cmp(&b.2.normal_gap));
-        if let Some((p, k, _)) = nearest {
-            states[p][k] = rules::closed_at_rest(self.node_law(p, k));
-        }
+        let nodes = surfaces.iter().enumerate().flat_map(|(p, s)| {
+            (s.nodes.iter().enumerate())
+                .map(move |(k, n)| ((p, k), n.normal_gap, n.is_covered(), self.node_law(p, k)))
+        });
+        close_nearest(states, nodes);
     }
 
     /// The converged plate displacement and the force it exerts on the body (`None` without a

@@ -9,8 +9,8 @@ use super::DVector;
 #[cfg(feature = "oracles")]
 use super::plate::Border;
 use super::{
-    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Tangential,
-    Traction, dof, rules,
+    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
+    Traction, dof, rows_of,
 };
 use crate::contact::space::Vector;
 #[cfg(any(test, feature = "oracles"))]
@@ -184,10 +184,18 @@ impl SmallSystem {
             .iter()
             .map(|s| vec![Traction::zero(1); s.len()])
             .collect();
+        // a node's tangential unknowns follow its normal one, one per tangent
+        let mut tangent = 0;
         for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
             match row {
-                Row::Normal => t[p][k].normal = v,
-                Row::Tangent => t[p][k].tangential = Tangential::along(v),
+                Row::Normal => {
+                    t[p][k].normal = v;
+                    tangent = 0;
+                }
+                Row::Tangent => {
+                    t[p][k].tangential.components_mut()[tangent] = v;
+                    tangent += 1;
+                }
             }
         }
         for (p, s) in states.iter().enumerate() {
@@ -228,36 +236,39 @@ impl ContactAnalysis {
         for (p, surface) in surfaces.iter().enumerate() {
             let law = &*self.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let rows = rules::rows_of(states[p][k], law);
-                if rows == rules::Rows::None {
+                let rows = rows_of(states[p][k], law);
+                if rows == Rows::None {
                     continue;
                 }
                 let normal = self.directed(&node.coupling, &node.frame.normal());
                 let rg = node.gap.dot(&node.frame.normal());
                 let b = dot(&normal, uc) - rg;
-                let tangent = || self.directed(&node.coupling, &node.frame.tangent(0));
-                let (col, basis) = match rows {
-                    rules::Rows::NormalSlip(c) => {
-                        // one tangent: `c` has one component
-                        let w = c.components()[0];
-                        let mut c = normal.clone();
-                        c.extend(tangent().into_iter().map(|(i, v)| (i, w * v)));
-                        (c, vec![(p, k, Row::Normal, 1.0), (p, k, Row::Tangent, w)])
-                    }
-                    _ => (normal.clone(), vec![(p, k, Row::Normal, 1.0)]),
+                // the rows of the node's tangents (one in the plane and in axisymmetry)
+                let tangents = || {
+                    (node.frame.tangents().iter()).map(|s| self.directed(&node.coupling, s))
                 };
+                let mut col = normal.clone();
+                let mut basis = vec![(p, k, Row::Normal, 1.0)];
+                if let Rows::NormalSlip(c) = rows {
+                    // the column n + sum_i c_i s_i
+                    for (&w, s) in c.components().iter().zip(tangents()) {
+                        col.extend(s.into_iter().map(|(i, v)| (i, w * v)));
+                        basis.push((p, k, Row::Tangent, w));
+                    }
+                }
                 sys.unknowns.push((p, k, Row::Normal));
                 sys.rows.push(normal);
                 sys.cols.push(col);
                 sys.basis.push(basis);
                 sys.b.push(b);
-                if rows == rules::Rows::NormalTangent {
-                    let t = tangent();
-                    sys.unknowns.push((p, k, Row::Tangent));
-                    sys.b.push(dot(&t, startc));
-                    sys.rows.push(t.clone());
-                    sys.cols.push(t);
-                    sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
+                if rows == Rows::NormalTangent {
+                    for t in tangents() {
+                        sys.unknowns.push((p, k, Row::Tangent));
+                        sys.b.push(dot(&t, startc));
+                        sys.rows.push(t.clone());
+                        sys.cols.push(t);
+                        sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
+                    }
                 }
             }
         }

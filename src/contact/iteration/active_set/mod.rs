@@ -1,26 +1,45 @@
-//! The contact states of one increment and their one owner.
+//! The contact states of one increment and their one owner: every decision about a node's
+//! state is made here, on plain data that the iteration gathers.
 //!
-//! The paper's rules ([`ContactAnalysis::update_states`](super::ContactAnalysis)) propose the
-//! next states from the last solve; the [`ActiveSet`] holds the current states, the locks the
-//! rules must respect and the history of the increment, and decides what happens when a state
-//! set comes back. Two alternations are benign and resolved by a lock (at most `lock_rounds`
-//! times per increment):
-//! * a node on the edge of the friction cone alternating between stick (violating the cone)
-//!   and slip (whose slip reverses) sits on the cone with a vanishing slip: it is **locked in
-//!   slip** and may not return to stick (its slip is checked at convergence: one that slides
-//!   against its friction was not on the cone's edge);
-//! * a node on the edge of the contact zone alternating between closed (in tension by a hair)
-//!   and open (penetrating by a hair) has zero traction and zero gap to round-off: it is
-//!   **locked open** and may not close (its penetration is checked at convergence).
+//! | decision | where |
+//! |---|---|
+//! | the paper's rules proposing the next states (activate on penetration, drop tensile, stick -> slip past the cone, slip -> stick on reversal) | [`ActiveSet::propose`] (`rules.rs`) |
+//! | which penetrating nodes close (runs, halves, new regions) | [`ActiveSet::closing`] (`rules.rs`) |
+//! | which closed state a closing node takes (stick, slip with the surfaces, frictionless) | [`closed_state`](rules::closed_state), [`closed_at_rest`] (`rules.rs`) |
+//! | how B nodes over open A elements are judged (pointwise, or only at convergence); a penetrating one closes the A node the geometry finds nearest to it ([`BNodeHit`]) | [`BNodes`], [`ActiveSet::judging`], [`ActiveSet::b_node_judges`], [`ActiveSet::propose`] |
+//! | what each state adds to the small system | [`rows_of`] (`rules.rs`) |
+//! | the states of the fallback's solution | [`linearized_state`] (`rules.rs`) |
+//! | the plate's first support | [`close_nearest`] (`rules.rs`) |
+//! | a returning set: benign (locked) or a cycle | [`ActiveSet::commit`] (here) |
+//! | the locks and what a locked node must satisfy at convergence | [`Locks`], [`ActiveSet::edge_penetration`], [`ActiveSet::slip_reversal`] (`locks.rs`) |
+//! | whether an iterate has converged | [`Convergence`] (`convergence.rs`) |
 //!
-//! Any other returning set is a cycle, reported with a node that flips. Sets are compared
-//! node by node with [`NodeState::same_as`]: slip directions by their angle (in the plane
-//! `+s` and `-s`, equal or not; on a 3D face, the same to round-off).
+//! The rules read per node a [`NodeFacts`] (traction, weighted gap, slip since the increment
+//! began, friction law) and per pair the [`Tolerances`]; the iteration (`iteration/rules.rs`)
+//! gathers them from the geometry and the solve, so that a 3D geometry feeds the same
+//! decisions. The friction cone is the law's ([`FrictionLaw`](super::FrictionLaw)): the
+//! rules read slip directions and tangential tractions as vectors of the tangent space.
 //!
-//! Which penetrating nodes close is decided with the other rules, in `rules.rs`
-//! ([`ActiveSet::closing`]).
+//! The [`ActiveSet`] holds the current states, the locks the rules respect and the history of
+//! the increment, and decides what happens when a state set comes back. Two alternations are
+//! benign and resolved by a lock (at most `lock_rounds` times per increment, `locks.rs`): a
+//! node alternating between stick and slip is locked in slip, one alternating between open and
+//! closed is locked open. Any other returning set is a cycle, reported with a node that flips.
+//! Sets are compared node by node with [`NodeState::same_as`]: slip directions by their angle
+//! (in the plane `+s` and `-s`, equal or not; on a 3D face, the same to round-off).
 
 use super::NodeState;
+
+mod convergence;
+mod locks;
+mod rules;
+pub(super) use convergence::{Convergence, Iterate};
+pub(super) use locks::{EDGE_PENETRATION, Locks};
+use locks::{open_closed_flips, stick_slip_flips};
+pub(super) use rules::{
+    BNodeHit, NodeFacts, Rows, Tolerances, close_nearest, closed_at_rest, linearized_state,
+    rows_of,
+};
 
 /// A node of the iteration: (pair, index of the A node in the pair).
 pub(super) type NodeKey = (usize, usize);
@@ -39,15 +58,6 @@ pub(super) enum Commit {
         /// A node whose state differs between that set and the current one.
         node: NodeKey,
     },
-}
-
-/// The locks of an increment.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
-pub(super) struct Locks {
-    /// Nodes locked in slip (they may not return to stick).
-    pub(super) slip: Vec<NodeKey>,
-    /// Nodes locked open (they may not close).
-    pub(super) open: Vec<NodeKey>,
 }
 
 /// How the rules judge a B node that penetrates an A segment whose two nodes are open.
@@ -118,16 +128,6 @@ impl ActiveSet {
     /// Whether the rules may close open node `node` (not locked open).
     pub(super) fn may_close(&self, node: NodeKey) -> bool {
         !self.locks.open.contains(&node)
-    }
-
-    /// The nodes locked open in this increment (their penetration is checked at convergence).
-    pub(super) fn locked_open(&self) -> &[NodeKey] {
-        &self.locks.open
-    }
-
-    /// The nodes locked in slip in this increment (their slip is checked at convergence).
-    pub(super) fn locked_slip(&self) -> &[NodeKey] {
-        &self.locks.slip
     }
 
     /// How many nodes `proposed` changes.
@@ -204,34 +204,6 @@ pub(super) fn count(states: &[Vec<NodeState>]) -> (usize, usize, usize) {
     (active, stick, slip)
 }
 
-/// The nodes that are stick in one state set and slip in the other, with the slip state.
-fn stick_slip_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<(NodeKey, NodeState)> {
-    let mut flips = Vec::new();
-    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
-        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
-            match (x, y) {
-                (NodeState::Stick, slip @ NodeState::Slip { .. })
-                | (slip @ NodeState::Slip { .. }, NodeState::Stick) => flips.push(((p, k), slip)),
-                _ => {}
-            }
-        }
-    }
-    flips
-}
-
-/// The nodes that are open in one state set and closed in the other.
-fn open_closed_flips(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Vec<NodeKey> {
-    let mut flips = Vec::new();
-    for (p, (sa, sb)) in a.iter().zip(b).enumerate() {
-        for (k, (&x, &y)) in sa.iter().zip(sb).enumerate() {
-            if (x == NodeState::Open) != (y == NodeState::Open) {
-                flips.push((p, k));
-            }
-        }
-    }
-    flips
-}
-
 /// The first node whose state differs between two state sets.
 fn first_difference(a: &[Vec<NodeState>], b: &[Vec<NodeState>]) -> Option<NodeKey> {
     a.iter().zip(b).enumerate().find_map(|(p, (sa, sb))| {
@@ -281,7 +253,7 @@ mod tests {
         assert_eq!(edge.commit(vec![vec![Open]]), Commit::Accepted);
         assert_eq!(edge.states(), &[vec![Open]]);
         assert!(!edge.may_close((0, 0)));
-        assert_eq!(edge.locked_open(), &[(0, 0)]);
+        assert_eq!(edge.locks().open, [(0, 0)]);
         assert_eq!(edge.changes(&[vec![SLIP]]), 1);
         assert_eq!(edge.count(), (0, 0, 0));
     }
