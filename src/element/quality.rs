@@ -27,7 +27,7 @@ pub fn volume(
     coords: &[[f64; 2]],
     material: &Material,
 ) -> Result<f64, ShapeError> {
-    let info = checked_for(formulation, coords, material)?;
+    let (info, _) = checked_for(formulation, coords, material)?;
     let (area, centroid) = (info.area, area_centroid(coords).1);
     Ok(area * material.measure(centroid))
 }

@@ -71,11 +71,7 @@ impl ElementInput {
 
 /// Stress components written by `hycon_element_stress`: 3, or 4 in axisymmetry.
 pub(super) fn stress_components(material: &Material) -> usize {
-    if material.analysis == crate::material::Analysis::Axisymmetric {
-        4
-    } else {
-        3
-    }
+    material.analysis.stress_components()
 }
 
 fn check_result(values: &[f64], what: &str) -> Result<(), Fail> {
