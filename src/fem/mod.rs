@@ -19,6 +19,7 @@ pub mod boundary;
 pub mod hybrid;
 pub mod isotropic;
 pub mod quadrature;
+pub mod quality;
 
 pub use analysis::{Analysis, Measure};
 pub use isotropic::Isotropic;
