@@ -67,31 +67,11 @@ impl Isotropic {
         match analysis {
             Analysis::PlaneStrain | Analysis::Axisymmetric => {
                 let c = (1.0 + nu) / e;
-                Matrix3::new(
-                    c * (1.0 - nu),
-                    -c * nu,
-                    0.0,
-                    -c * nu,
-                    c * (1.0 - nu),
-                    0.0,
-                    0.0,
-                    0.0,
-                    2.0 * c,
-                )
+                plane_pattern(c * (1.0 - nu), -c * nu, 2.0 * c)
             }
             Analysis::PlaneStress => {
                 let c = 1.0 / e;
-                Matrix3::new(
-                    c,
-                    -c * nu,
-                    0.0,
-                    -c * nu,
-                    c,
-                    0.0,
-                    0.0,
-                    0.0,
-                    2.0 * (1.0 + nu) * c,
-                )
+                plane_pattern(c, -c * nu, 2.0 * (1.0 + nu) * c)
             }
         }
     }
@@ -110,8 +90,7 @@ impl Isotropic {
                 (c, c * nu)
             }
         };
-        let g = e / (2.0 * (1.0 + nu));
-        Matrix3::new(a, b, 0.0, b, a, 0.0, 0.0, 0.0, g)
+        plane_pattern(a, b, e / (2.0 * (1.0 + nu)))
     }
 
     /// Axisymmetric compliance `S` (4 x 4), `[eps_r, eps_z, gamma_rz, eps_theta] =
@@ -120,13 +99,7 @@ impl Isotropic {
     /// Finite as `nu -> 0.5` (singular only for the hydrostatic stress there).
     pub fn compliance_axisymmetric(&self) -> Matrix4<f64> {
         let (c, nu) = (1.0 / self.youngs, self.poisson);
-        let (d, o, g) = (c, -c * nu, 2.0 * (1.0 + nu) * c);
-        Matrix4::new(
-            d, o, 0.0, o, //
-            o, d, 0.0, o, //
-            0.0, 0.0, g, 0.0, //
-            o, o, 0.0, d,
-        )
+        axisymmetric_pattern(c, -c * nu, 2.0 * (1.0 + nu) * c)
     }
 
     /// Axisymmetric elasticity `D = S^-1` (4 x 4):
@@ -135,13 +108,7 @@ impl Isotropic {
     pub fn elasticity_axisymmetric(&self) -> Matrix4<f64> {
         let (e, nu) = (self.youngs, self.poisson);
         let c = e / ((1.0 + nu) * (1.0 - 2.0 * nu));
-        let (d, o, g) = (c * (1.0 - nu), c * nu, e / (2.0 * (1.0 + nu)));
-        Matrix4::new(
-            d, o, 0.0, o, //
-            o, d, 0.0, o, //
-            0.0, 0.0, g, 0.0, //
-            o, o, 0.0, d,
-        )
+        axisymmetric_pattern(c * (1.0 - nu), c * nu, e / (2.0 * (1.0 + nu)))
     }
 
     /// 3D compliance `S` (6 x 6, Voigt order `[xx, yy, zz, xy, yz, zx]`): `1/E` times `1` on the
@@ -184,6 +151,23 @@ impl Isotropic {
             Analysis::PlaneStress => self.youngs,
         }
     }
+}
+
+/// The isotropic plane pattern `[[d, o, 0], [o, d, 0], [0, 0, g]]` (`d` the normal diagonal,
+/// `o` the normal coupling, `g` the shear term).
+fn plane_pattern(d: f64, o: f64, g: f64) -> Matrix3<f64> {
+    Matrix3::new(d, o, 0.0, o, d, 0.0, 0.0, 0.0, g)
+}
+
+/// The isotropic axisymmetric pattern in the order `[r, z, rz, theta]`: `d` on the normal
+/// diagonal, `o` coupling the three normal components, `g` the shear term.
+fn axisymmetric_pattern(d: f64, o: f64, g: f64) -> Matrix4<f64> {
+    Matrix4::new(
+        d, o, 0.0, o, //
+        o, d, 0.0, o, //
+        0.0, 0.0, g, 0.0, //
+        o, o, 0.0, d,
+    )
 }
 
 /// Check that a positive scale (`E`, a thickness) named `name` lies within [`SCALE_RANGE`].
