@@ -6,7 +6,7 @@
 //! `m(x)` ([`Measure::at`]): the thickness `t` in plane analyses, the circumference `2 pi r` in
 //! axisymmetry (the full circle: a nodal force is the force summed over the whole circle, a
 //! stiffness is that of the whole ring; the thickness must then be 1). See docs/method.md,
-//! "Axisymmetric analysis".
+//! "Axisymmetric elements".
 
 use super::quadrature::GAUSS2_UNIT;
 

@@ -5,8 +5,8 @@
 //! vector `t` (force per area), each given at the `N` nodes of the edge or face and interpolated
 //! as the element's displacement is there. With `n` the outward unit normal the surface force is
 //! `q = t - p n`, and the consistent nodal forces are `f_a = integral of N_a q dS`
-//! (docs/method.md, "Loads"); [`crate::element::loads`] and [`crate::solid::loads`] integrate it
-//! on an edge and on a face.
+//! (docs/elements.md, "Loads and element checks"); [`crate::element::loads`] and
+//! [`crate::solid::loads`] integrate it on an edge and on a face.
 
 use super::quadrature::quad_weights;
 use crate::error::{Error, Result};

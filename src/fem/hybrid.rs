@@ -2,7 +2,7 @@
 //! parameters and `ND` of dofs: the plane, axisymmetric and brick elements differ only in how
 //! they integrate `H = integral of P^T S P dV` and `G = integral of P^T B dV` (or its boundary
 //! form); the stiffness and the stress parameters follow from them alike (docs/method.md,
-//! "The hybrid element").
+//! "Plane hybrid elements", "The hybrid brick").
 
 use crate::error::ShapeError;
 use nalgebra::{Cholesky, Const, SMatrix, SVector};
