@@ -4,7 +4,11 @@
 //! library for C and C++ finite-element codes (through [`ffi`]) and for Rust.
 //!
 //! Modules, each owning one concept:
-//! * [`material`]: isotropic plane strain / plane stress material (`S`, `D`).
+//! * [`fem`]: the shared base of the plane and solid layers: the isotropic material in every
+//!   stress state, the analysis kind and its measure, Gauss rules, the hybrid condensation
+//!   `K = G^T H^-1 G`, boundary loads and face geometry.
+//! * [`material`]: the plane or axisymmetric material (the isotropic one, the analysis kind, the
+//!   thickness).
 //! * [`element`]: pure element kernels (hybrid 4/5/6-node, Pian-Sumihara, Q4): stiffness, stress
 //!   recovery, edge tractions; edge loads, volume and quality for hosts.
 //! * [`mesh`]: mesh storage, graded 2:1 mesh generators with transition elements, quality report.
@@ -26,6 +30,7 @@ pub mod assembly;
 pub mod contact;
 pub mod element;
 pub mod error;
+pub mod fem;
 pub mod ffi;
 pub mod material;
 pub mod mesh;

@@ -476,6 +476,7 @@ fn macneal_harder_patch() -> SolidMesh {
         nodes,
         elements,
         element_material,
+        ..Default::default()
     }
 }
 

@@ -1,11 +1,14 @@
 //! Element geometry: the shape check, the centred and scaled local frame of the hybrid element,
-//! the bilinear map of the 4-node quads, and the quadrature rules the kernels share.
+//! the bilinear map of the 4-node quads. The quadrature rules the kernels share live in
+//! [`crate::fem::quadrature`] and are re-exported here.
 //!
 //! Every tolerance here is relative to the element's own size, so a shape that passes in
 //! millimetres passes in metres.
 
 use crate::error::ShapeError;
 use nalgebra::{Matrix2, Vector2};
+
+pub use crate::fem::quadrature::{DUNAVANT4, GAUSS2, GAUSS2_UNIT, GAUSS3, STRANG_FIX2};
 
 /// Sine of the angle between consecutive boundary edges below which a node counts as lying on a
 /// straight edge (a mid-side node). Generated meshes put mid-side nodes at midpoints, where the
@@ -14,52 +17,6 @@ const STRAIGHT_SINE: f64 = 1e-6;
 
 /// Relative size below which an edge or the area counts as zero.
 const DEGENERATE: f64 = 1e-10;
-
-/// Two-point Gauss rule on `[0, 1]`: `(abscissa, weight)`; exact for cubics.
-pub const GAUSS2_UNIT: [(f64, f64); 2] = [
-    (0.211_324_865_405_187_1, 0.5),
-    (0.788_675_134_594_812_9, 0.5),
-];
-
-/// Two-point Gauss rule on `[-1, 1]`: `(abscissa, weight)`; exact for cubics.
-pub const GAUSS2: [(f64, f64); 2] = [
-    (-0.577_350_269_189_625_8, 1.0),
-    (0.577_350_269_189_625_8, 1.0),
-];
-
-/// Three-point Gauss rule on `[-1, 1]`: `(abscissa, weight)`; exact for quintics.
-pub const GAUSS3: [(f64, f64); 3] = [
-    (-0.774_596_669_241_483_4, 5.0 / 9.0),
-    (0.0, 8.0 / 9.0),
-    (0.774_596_669_241_483_4, 5.0 / 9.0),
-];
-
-/// Strang and Fix's 3-point rule on a triangle, exact for polynomials of degree 2: barycentric
-/// coordinates and weights summing to 1.
-pub const STRANG_FIX2: [([f64; 3], f64); 3] = [
-    ([2.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0], 1.0 / 3.0),
-    ([1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0], 1.0 / 3.0),
-    ([1.0 / 6.0, 1.0 / 6.0, 2.0 / 3.0], 1.0 / 3.0),
-];
-
-/// Dunavant's 6-point rule on a triangle, exact for polynomials of degree 4: barycentric
-/// coordinates `(l1, l2, l3)` and weights summing to 1 (multiply by the triangle's area).
-pub const DUNAVANT4: [([f64; 3], f64); 6] = {
-    const A: f64 = 0.445_948_490_915_965;
-    const B: f64 = 0.108_103_018_168_070;
-    const C: f64 = 0.091_576_213_509_771;
-    const D: f64 = 0.816_847_572_980_459;
-    const WA: f64 = 0.223_381_589_678_011;
-    const WC: f64 = 0.109_951_743_655_322;
-    [
-        ([A, A, B], WA),
-        ([A, B, A], WA),
-        ([B, A, A], WA),
-        ([C, C, D], WC),
-        ([C, D, C], WC),
-        ([D, C, C], WC),
-    ]
-};
 
 /// What [`check_polygon`] learned about a valid element.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -21,88 +21,27 @@
 //! the closed form `f_a = m L (2 q_a + q_b) / 6`, `f_b = m L (q_a + 2 q_b) / 6`; in axisymmetry
 //! `r` is linear too, the integrand cubic, and two-point Gauss integrates it exactly.
 
-use super::geometry::{GAUSS2_UNIT, edge_normal};
+use super::geometry::edge_normal;
 use super::{ElementVector, Formulation, checked_for};
 use crate::error::{Error, Result};
-use crate::material::{Analysis, Material};
+use crate::fem::boundary::BoundaryLoad;
+use crate::material::Material;
 
-/// A distributed load on one element edge: nodal values at the edge's start node (local node
-/// `e`) and end node (`e + 1`), linear between them. The surface force is `t - p n` (`n` the
-/// outward unit normal).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct EdgeLoad {
-    /// Pressure at the start and the end node (force per area, positive pushing into the body).
-    pub pressure: [f64; 2],
-    /// Traction `[tx, ty]` (axisymmetry: `[t_r, t_z]`) at the start and the end node (force per
-    /// area).
-    pub traction: [[f64; 2]; 2],
-}
-
-impl EdgeLoad {
-    /// A uniform pressure `p` (positive pushing into the body).
-    pub fn pressure(p: f64) -> Self {
-        EdgeLoad {
-            pressure: [p, p],
-            ..Default::default()
-        }
-    }
-
-    /// A uniform traction vector `t`.
-    pub fn traction(t: [f64; 2]) -> Self {
-        EdgeLoad {
-            traction: [t, t],
-            ..Default::default()
-        }
-    }
-
-    /// Check that every value is finite.
-    pub fn validate(&self) -> Result<()> {
-        let mut values = self.pressure.iter().chain(self.traction.iter().flatten());
-        if values.all(|v| v.is_finite()) {
-            Ok(())
-        } else {
-            Err(Error::InvalidInput(format!(
-                "edge load {self:?} is not finite"
-            )))
-        }
-    }
-
-    /// The surface force `q = t - p n` at the two nodes of an edge with outward normal `n`.
-    fn nodal_forces_per_area(&self, n: [f64; 2]) -> [[f64; 2]; 2] {
-        std::array::from_fn(|k| {
-            let (t, p) = (self.traction[k], self.pressure[k]);
-            [t[0] - p * n[0], t[1] - p * n[1]]
-        })
-    }
-}
+/// A distributed load on one element edge: pressure and traction `[tx, ty]` (axisymmetry:
+/// `[t_r, t_z]`) at the edge's start node (local node `e`) and end node (`e + 1`), linear
+/// between them. The surface force is `t - p n` (`n` the outward unit normal).
+pub type EdgeLoad = BoundaryLoad<2, 2>;
 
 /// Consistent nodal forces `[f_a, f_b]` of the surface force `q`, given at the ends `a` and `b`
-/// of a straight segment (linear between them), with the measure of `material` (see the module
-/// docs for the integral and why it is exact).
+/// of a straight segment (linear between them), with the measure of `material` (see
+/// [`crate::fem::Measure::segment_forces`] for the integral and why it is exact).
 pub fn segment_forces(
     a: [f64; 2],
     b: [f64; 2],
     material: &Material,
     q: [[f64; 2]; 2],
 ) -> [[f64; 2]; 2] {
-    let len = (b[0] - a[0]).hypot(b[1] - a[1]);
-    let mut f = [[0.0; 2]; 2];
-    for dir in 0..2 {
-        let (qa, qb) = (q[0][dir], q[1][dir]);
-        if material.analysis == Analysis::Axisymmetric {
-            for (s, w) in GAUSS2_UNIT {
-                let x = [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
-                let qs = (qa + s * (qb - qa)) * material.measure(x) * w * len;
-                f[0][dir] += (1.0 - s) * qs;
-                f[1][dir] += s * qs;
-            }
-        } else {
-            let t = material.thickness;
-            f[0][dir] += t * len * (2.0 * qa + qb) / 6.0;
-            f[1][dir] += t * len * (qa + 2.0 * qb) / 6.0;
-        }
-    }
-    f
+    material.measure_kind().segment_forces(a, b, q)
 }
 
 /// Consistent nodal forces of `load` on edge `edge` of an element (see the module docs), as an
@@ -130,7 +69,8 @@ pub fn edge_load(
     let nodes = [edge, (edge + 1) % n];
     let (a, b) = (coords[nodes[0]], coords[nodes[1]]);
     let (normal, _) = edge_normal(a, b);
-    let f = segment_forces(a, b, material, load.nodal_forces_per_area(normal));
+    let q = [0, 1].map(|k| load.surface_force(k, normal));
+    let f = segment_forces(a, b, material, q);
     let mut out = ElementVector::zeros();
     for (node, force) in nodes.into_iter().zip(f) {
         out[2 * node] = force[0];
@@ -142,6 +82,7 @@ pub fn edge_load(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::material::Analysis;
 
     fn close(a: f64, b: f64, scale: f64) -> bool {
         (a - b).abs() <= 1e-14 * scale

@@ -35,9 +35,10 @@ pub mod q4;
 pub mod quality;
 
 use crate::error::{Error, ShapeError};
-use crate::material::{Analysis, Material};
+use crate::fem::{Analysis, hybrid as condense};
+use crate::material::Material;
 use geometry::{Bilinear, Frame, PolygonInfo, check_natural, is_corner};
-use nalgebra::{Cholesky, SMatrix, SVector};
+use nalgebra::{SMatrix, SVector};
 
 /// Largest number of nodes of one element.
 pub const MAX_NODES: usize = 6;
@@ -115,29 +116,14 @@ fn checked_for(
     formulation: Formulation,
     coords: &[[f64; 2]],
     material: &Material,
-) -> Result<PolygonInfo, ShapeError> {
-    if material.analysis == Analysis::Axisymmetric {
-        if formulation == Formulation::PianSumihara {
-            return Err(ShapeError::Unsupported(
-                "the Pian-Sumihara element is not available in axisymmetric analysis (use the \
-                 hybrid element or Q4)",
-            ));
-        }
-        if coords.len() != 4 {
-            return Err(ShapeError::Unsupported(
-                "axisymmetric analysis takes 4-node elements only (the 5- and 6-node transition \
-                 elements have no axisymmetric stress field): use a conforming mesh",
-            ));
-        }
-    }
+) -> Result<(PolygonInfo, StressFamily), ShapeError> {
+    let family = StressFamily::of(formulation, coords.len(), material.analysis)?;
     let info = checked(formulation, coords)?;
-    if material.analysis == Analysis::Axisymmetric {
-        let size = info.area.sqrt();
-        if let Some(node) = coords.iter().position(|p| p[0] < -1e-10 * size) {
-            return Err(ShapeError::NegativeRadius { node });
-        }
+    let size = info.area.sqrt();
+    if let Some(node) = material.analysis.node_off_half_plane(coords, size) {
+        return Err(ShapeError::NegativeRadius { node });
     }
-    Ok(info)
+    Ok((info, family))
 }
 
 fn checked(formulation: Formulation, coords: &[[f64; 2]]) -> Result<PolygonInfo, ShapeError> {
@@ -157,7 +143,9 @@ fn checked(formulation: Formulation, coords: &[[f64; 2]]) -> Result<PolygonInfo,
     geometry::check_polygon(coords, min_corners)
 }
 
-/// Which stress field a checked element uses.
+/// Which stress field a checked element uses: the formulation, the node count and the analysis
+/// kind together.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum StressFamily {
     /// Bilinear displacement, no stress parameters.
     Q4,
@@ -173,40 +161,55 @@ enum StressFamily {
     AxiHybrid,
 }
 
-fn family(formulation: Formulation, n_nodes: usize, analysis: Analysis) -> StressFamily {
-    match formulation {
-        Formulation::Q4 if analysis == Analysis::Axisymmetric => StressFamily::AxiQ4,
-        Formulation::Hybrid if analysis == Analysis::Axisymmetric => StressFamily::AxiHybrid,
-        Formulation::Q4 => StressFamily::Q4,
-        Formulation::PianSumihara => StressFamily::PianSumihara,
-        Formulation::Hybrid if hybrid::n_beta(n_nodes) == 12 => StressFamily::Hybrid12,
-        Formulation::Hybrid => StressFamily::Hybrid7,
+impl StressFamily {
+    /// The family of `formulation` on `n_nodes` nodes in `analysis`; the analysis kind's
+    /// restrictions checked (axisymmetry: 4 nodes, no Pian-Sumihara). The node count is checked
+    /// against the formulation by [`check_shape`].
+    fn of(
+        formulation: Formulation,
+        n_nodes: usize,
+        analysis: Analysis,
+    ) -> Result<Self, ShapeError> {
+        match (analysis, formulation) {
+            (Analysis::Axisymmetric, Formulation::PianSumihara) => Err(ShapeError::Unsupported(
+                "the Pian-Sumihara element is not available in axisymmetric analysis (use the \
+                 hybrid element or Q4)",
+            )),
+            (Analysis::Axisymmetric, _) if n_nodes != 4 => Err(ShapeError::Unsupported(
+                "axisymmetric analysis takes 4-node elements only (the 5- and 6-node transition \
+                 elements have no axisymmetric stress field): use a conforming mesh",
+            )),
+            (Analysis::Axisymmetric, Formulation::Q4) => Ok(StressFamily::AxiQ4),
+            (Analysis::Axisymmetric, _) => Ok(StressFamily::AxiHybrid),
+            (_, Formulation::Q4) => Ok(StressFamily::Q4),
+            (_, Formulation::PianSumihara) => Ok(StressFamily::PianSumihara),
+            (_, Formulation::Hybrid) if hybrid::n_beta(n_nodes) == 12 => Ok(StressFamily::Hybrid12),
+            (_, Formulation::Hybrid) => Ok(StressFamily::Hybrid7),
+        }
+    }
+
+    /// Whether the field lives in the element's physical frame (the plane hybrid element's
+    /// Airy field) rather than in the natural coordinates of its bilinear map.
+    fn in_physical_frame(self) -> bool {
+        matches!(self, StressFamily::Hybrid7 | StressFamily::Hybrid12)
     }
 }
 
-/// `K = G^T H^-1 G` into `out`, as `W^T W` with `W = L^-1 G` and `H = L L^T` (Cholesky): no
-/// explicit inverse, symmetric by construction. `H` is positive definite for any valid shape.
+/// `K = G^T H^-1 G` into `out` ([`condense::stiffness_into`]).
 fn hybrid_stiffness<const NB: usize>(
     (h, g): (SMatrix<f64, NB, NB>, CouplingMatrix<NB>),
     out: &mut ElementMatrix,
 ) -> Result<(), ShapeError> {
-    let chol = Cholesky::new(h).ok_or(ShapeError::Degenerate)?;
-    let w = chol
-        .l_dirty()
-        .solve_lower_triangular(&g)
-        .ok_or(ShapeError::Degenerate)?;
-    w.tr_mul_to(&w, out);
-    Ok(())
+    condense::stiffness_into(h, &g, out)
 }
 
-/// `beta = H^-1 G q` into the leading `NB` entries of `beta`.
+/// `beta = H^-1 G q` into the leading `NB` entries of `beta` ([`condense::stress_parameters`]).
 fn hybrid_beta<const NB: usize>(
     (h, g): (SMatrix<f64, NB, NB>, CouplingMatrix<NB>),
     q: &ElementVector,
     beta: &mut SVector<f64, MAX_BETA>,
 ) -> Result<usize, ShapeError> {
-    let chol = Cholesky::new(h).ok_or(ShapeError::Degenerate)?;
-    let b = chol.solve(&(g * q));
+    let b = condense::stress_parameters(h, &g, q)?;
     beta.fixed_rows_mut::<NB>(0).copy_from(&b);
     Ok(NB)
 }
@@ -223,9 +226,9 @@ pub fn stiffness_into(
     material: &Material,
     out: &mut ElementMatrix,
 ) -> Result<usize, ShapeError> {
-    let info = checked_for(formulation, coords, material)?;
+    let (info, family) = checked_for(formulation, coords, material)?;
     let map = || Bilinear::new(coords);
-    match family(formulation, coords.len(), material.analysis) {
+    match family {
         StressFamily::Q4 => q4::stiffness_into(&map(), material, out),
         StressFamily::AxiQ4 => axisymmetric::q4_stiffness_into(&map(), material, out),
         StressFamily::AxiHybrid => hybrid_stiffness(
@@ -249,7 +252,7 @@ pub fn stiffness_into(
 /// for the hybrid elements, `D B q` for Q4). Plain data: copy it freely.
 #[derive(Debug, Clone, Copy)]
 pub struct StressField {
-    formulation: Formulation,
+    family: StressFamily,
     material: Material,
     n_nodes: usize,
     coords: [[f64; 2]; MAX_NODES],
@@ -271,16 +274,12 @@ impl StressField {
     /// analyses (`sz = nu (sx + sy)` in plane strain, 0 in plane stress), `[sigma_r, sigma_z,
     /// tau_rz, sigma_theta]` in axisymmetry.
     pub fn at_full(&self, p: [f64; 2]) -> [f64; 4] {
-        if self.formulation == Formulation::Hybrid && !self.axisymmetric() {
+        if self.family.in_physical_frame() {
             return self.with_out_of_plane(hybrid::stress(&self.frame, self.beta(), p));
         }
         let map = Bilinear::new(&self.coords);
         let [xi, eta] = map.inverse(p);
         self.at_natural(&map, xi, eta)
-    }
-
-    fn axisymmetric(&self) -> bool {
-        self.material.analysis == Analysis::Axisymmetric
     }
 
     fn with_out_of_plane(&self, s: [f64; 3]) -> [f64; 4] {
@@ -296,16 +295,18 @@ impl StressField {
     /// hybrid element, whose field lives in its frame).
     fn at_natural(&self, map: &Bilinear, xi: f64, eta: f64) -> [f64; 4] {
         let q = self.q.as_slice();
-        match (self.formulation, self.axisymmetric()) {
-            (Formulation::Hybrid, true) => {
+        match self.family {
+            StressFamily::AxiHybrid => {
                 let p = map.point(xi, eta);
                 axisymmetric::stress(map, &self.frame, self.beta(), xi, eta, p)
             }
-            (Formulation::Q4, true) => axisymmetric::q4_stress(map, &self.material, q, xi, eta),
-            (Formulation::PianSumihara, _) => {
+            StressFamily::AxiQ4 => axisymmetric::q4_stress(map, &self.material, q, xi, eta),
+            StressFamily::PianSumihara => {
                 self.with_out_of_plane(pian_sumihara::stress(map, self.beta(), xi, eta))
             }
-            _ => self.with_out_of_plane(q4::stress(map, &self.material, q, xi, eta)),
+            StressFamily::Q4 | StressFamily::Hybrid7 | StressFamily::Hybrid12 => {
+                self.with_out_of_plane(q4::stress(map, &self.material, q, xi, eta))
+            }
         }
     }
 
@@ -322,7 +323,7 @@ impl StressField {
     pub fn at_natural_point(&self, xi: f64, eta: f64) -> crate::error::Result<[f64; 4]> {
         check_natural(&[xi, eta])?;
         let map = self.natural_map()?;
-        if self.formulation == Formulation::Hybrid && !self.axisymmetric() {
+        if self.family.in_physical_frame() {
             return Ok(self.at_full(map.point(xi, eta)));
         }
         Ok(self.at_natural(&map, xi, eta))
@@ -362,7 +363,7 @@ impl StressField {
 
     /// All four components at the centre (see [`StressField::at_full`], [`StressField::at_centre`]).
     pub fn at_centre_full(&self) -> [f64; 4] {
-        if self.formulation == Formulation::Hybrid && !self.axisymmetric() {
+        if self.family.in_physical_frame() {
             self.at_full(self.frame.centre)
         } else {
             self.at_natural(&Bilinear::new(&self.coords), 0.0, 0.0)
@@ -404,10 +405,10 @@ pub fn recover_stress(
     material: &Material,
     q: &[f64],
 ) -> Result<StressField, ShapeError> {
-    let info = checked_for(formulation, coords, material)?;
+    let (info, family) = checked_for(formulation, coords, material)?;
     let n = coords.len();
     let mut field = StressField {
-        formulation,
+        family,
         material: *material,
         n_nodes: n,
         coords: [[0.0; 2]; MAX_NODES],
@@ -420,7 +421,7 @@ pub fn recover_stress(
     field.q.as_mut_slice()[..2 * n].copy_from_slice(&q[..2 * n]);
     let (q, beta) = (&field.q, &mut field.beta);
     let map = || Bilinear::new(coords);
-    field.n_beta = match family(formulation, n, material.analysis) {
+    field.n_beta = match family {
         StressFamily::Q4 | StressFamily::AxiQ4 => 0,
         StressFamily::AxiHybrid => hybrid_beta(
             axisymmetric::matrices(&map(), &field.frame, material),

@@ -1,6 +1,7 @@
 //! The element routines of the C ABI: shape check, stiffness, stress recovery and edge
 //! tractions of one element (see the [parent module](super) for the conventions).
 
+use super::results::{OUTSIDE_ELEMENT, check_results, write_results};
 use super::*;
 use crate::element;
 
@@ -71,21 +72,7 @@ impl ElementInput {
 
 /// Stress components written by `hycon_element_stress`: 3, or 4 in axisymmetry.
 pub(super) fn stress_components(material: &Material) -> usize {
-    if material.analysis == crate::material::Analysis::Axisymmetric {
-        4
-    } else {
-        3
-    }
-}
-
-fn check_result(values: &[f64], what: &str) -> Result<(), Fail> {
-    if values.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(Fail::invalid(format!(
-            "{what} is not finite (is the point inside the element?)"
-        )))
-    }
+    material.analysis.stress_components()
 }
 
 // ------------------------------------------------------------------------------------------
@@ -161,10 +148,9 @@ pub unsafe extern "C" fn hycon_element_stiffness(
                 row_major[i * n_dof + j] = k[(i, j)];
             }
         }
-        check_result(&row_major[..n_dof * n_dof], "stiffness")?;
+        let k = &row_major[..n_dof * n_dof];
         // SAFETY: `k_out` was checked for `n_dof^2` values.
-        unsafe { write_doubles(k_out, &row_major[..n_dof * n_dof]) };
-        Ok(())
+        unsafe { write_results(k_out, k, "stiffness", OUTSIDE_ELEMENT) }
     })
 }
 
@@ -206,11 +192,9 @@ pub unsafe extern "C" fn hycon_element_stress(
         let field = unsafe { e.stress_field(&material, q)? };
         let s = field.at_full([px, py]);
         let s = &s[..stress_components(&material)];
-        check_result(s, "stress")?;
         // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles, 4 in
         // axisymmetry (contract).
-        unsafe { write_doubles(out, s) };
-        Ok(())
+        unsafe { write_results(out, s, "stress", OUTSIDE_ELEMENT) }
     })
 }
 
@@ -244,7 +228,7 @@ pub unsafe extern "C" fn hycon_element_stress_params(
         // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
         let field = unsafe { e.stress_field(&material, q)? };
         let beta = field.beta();
-        check_result(beta, "beta")?;
+        check_results(beta, "beta", OUTSIDE_ELEMENT)?;
         // SAFETY: the caller's contract on `out` and `needed`.
         unsafe { fill(out, len, needed, "out", beta.len(), || Ok(beta.to_vec())) }
     })
@@ -311,9 +295,7 @@ pub unsafe extern "C" fn hycon_element_edge_traction(
         // SAFETY: the caller's contract on `q` (2 n_nodes doubles).
         let field = unsafe { e.stress_field(&material, q)? };
         let t = field.edge_traction(edge, s);
-        check_result(&t, "traction")?;
         // SAFETY: `out` is non-null and aligned (checked) and holds 2 doubles (contract).
-        unsafe { write_doubles(out, &t) };
-        Ok(())
+        unsafe { write_results(out, &t, "traction", OUTSIDE_ELEMENT) }
     })
 }

@@ -5,6 +5,7 @@
 //! (see the [parent module](super) for the conventions).
 
 use super::elements::{ElementInput, stress_components};
+use super::results::{OVERFLOW, write_results};
 use super::solid::{brick_formulation, brick_stress, read_brick, shape_warning};
 use super::*;
 use crate::element::loads::{EdgeLoad, edge_load};
@@ -36,14 +37,8 @@ unsafe fn optional_doubles<const N: usize>(
 /// `out` must have been checked with [`check_output`] or [`check_pointer`] and be writable for
 /// `values.len()` doubles.
 unsafe fn write_result(out: *mut f64, values: &[f64], what: &str) -> Result<(), Fail> {
-    if !values.iter().all(|v| v.is_finite()) {
-        return Err(Fail::invalid(format!(
-            "{what} is not finite (values beyond the range of doubles)"
-        )));
-    }
     // SAFETY: the caller's contract.
-    unsafe { write_doubles(out, values) };
-    Ok(())
+    unsafe { write_results(out, values, what, OVERFLOW) }
 }
 
 // ------------------------------------------------------------------------------------------
@@ -291,16 +286,17 @@ pub unsafe extern "C" fn hycon_brick_volume(
     coords: *const f64,
     out: *mut f64,
 ) -> HyconStatus {
-    boundary_warning("hycon_brick_volume", || {
-        brick_formulation(kind)?;
-        // SAFETY: the caller's contract on `coords`.
-        let x = unsafe { read_brick(coords)? };
-        check_pointer(out.cast_const(), "out")?;
-        let v = solid::quality::volume(&x)?;
-        // SAFETY: `out` is non-null and aligned (checked), writable (contract).
-        unsafe { write_result(out, &[v], "volume")? };
-        brick_shape_warning(&x)
-    })
+    // SAFETY: the caller's contract.
+    unsafe {
+        brick_measure(
+            "hycon_brick_volume",
+            kind,
+            coords,
+            out,
+            "volume",
+            solid::quality::volume,
+        )
+    }
 }
 
 /// Jacobian quality of a brick into `*out`: the **scaled Jacobian**, the smallest over the 8
@@ -321,16 +317,17 @@ pub unsafe extern "C" fn hycon_brick_quality(
     coords: *const f64,
     out: *mut f64,
 ) -> HyconStatus {
-    boundary_warning("hycon_brick_quality", || {
-        brick_formulation(kind)?;
-        // SAFETY: the caller's contract on `coords`.
-        let x = unsafe { read_brick(coords)? };
-        check_pointer(out.cast_const(), "out")?;
-        let q = solid::quality::scaled_jacobian(&x)?;
-        // SAFETY: `out` is non-null and aligned (checked), writable (contract).
-        unsafe { write_result(out, &[q], "quality")? };
-        brick_shape_warning(&x)
-    })
+    // SAFETY: the caller's contract.
+    unsafe {
+        brick_measure(
+            "hycon_brick_quality",
+            kind,
+            coords,
+            out,
+            "quality",
+            solid::quality::scaled_jacobian,
+        )
+    }
 }
 
 /// Stress `{sxx, syy, szz, sxy, syz, szx}` at natural coordinates `(xi, eta, zeta)` in
@@ -364,6 +361,31 @@ pub unsafe extern "C" fn hycon_brick_stress_natural(
         // SAFETY: `out` is non-null and aligned (checked) and holds 6 doubles (contract).
         unsafe { write_result(out, s.as_slice(), "stress")? };
         Ok(shape_warning(field.shape()))
+    })
+}
+
+/// The body of `hycon_brick_volume` and `hycon_brick_quality`, named `function`: one number
+/// `what` of a brick, `measure(coords)`, into `*out`, with the shape warning.
+///
+/// # Safety
+/// `coords` NULL or 24 readable doubles; `out` NULL or a writable double.
+unsafe fn brick_measure(
+    function: &'static str,
+    kind: HyconBrickKind,
+    coords: *const f64,
+    out: *mut f64,
+    what: &str,
+    measure: fn(&[[f64; 3]]) -> Result<f64, ShapeError>,
+) -> HyconStatus {
+    boundary_warning(function, || {
+        brick_formulation(kind)?;
+        // SAFETY: the caller's contract on `coords`.
+        let x = unsafe { read_brick(coords)? };
+        check_pointer(out.cast_const(), "out")?;
+        let value = measure(&x)?;
+        // SAFETY: `out` is non-null and aligned (checked), writable (contract).
+        unsafe { write_result(out, &[value], what)? };
+        brick_shape_warning(&x)
     })
 }
 

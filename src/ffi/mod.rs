@@ -63,6 +63,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 mod contact;
 mod elements;
 mod loads;
+mod results;
 mod solid;
 
 pub use contact::*;

@@ -18,6 +18,7 @@
 //! and returns `HYCON_WARNING_SHAPE` (results written) for what the strict policy rejects;
 //! `hycon_brick_shape` checks under either policy and reports the measures.
 
+use super::results::{OUTSIDE_BRICK, check_results, write_results};
 use super::*;
 use crate::solid::{self, BrickFormulation, Isotropic, N_DOF, N_NODES, ShapePolicy, ShapeReport};
 
@@ -126,16 +127,6 @@ pub(super) unsafe fn brick_stress(
     // SAFETY: the caller's contract on `q`.
     unsafe { read_doubles(q, &mut dofs, "q")? };
     Ok(solid::recover_stress(formulation, &x, &material, &dofs)?)
-}
-
-fn finite(values: &[f64], what: &str) -> Result<(), Fail> {
-    if values.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(Fail::invalid(format!(
-            "{what} is not finite (is the point inside the brick?)"
-        )))
-    }
 }
 
 /// Check one brick's shape under the default policy (`HyconShapePolicy`): finite coordinates,
@@ -318,9 +309,8 @@ pub unsafe extern "C" fn hycon_brick_stiffness(
         let shape = solid::stiffness_into(formulation, &x, &material, &mut k)?;
         // row-major: the transpose's column-major storage
         let row_major = k.transpose();
-        finite(row_major.as_slice(), "stiffness")?;
         // SAFETY: `k_out` was checked for 576 values.
-        unsafe { write_doubles(k_out, row_major.as_slice()) };
+        unsafe { write_results(k_out, row_major.as_slice(), "stiffness", OUTSIDE_BRICK)? };
         Ok(shape_warning(&shape))
     })
 }
@@ -351,7 +341,7 @@ pub unsafe extern "C" fn hycon_brick_stress_params(
         // SAFETY: the caller's contract.
         let field = unsafe { brick_stress(kind, coords, material, q)? };
         let beta = field.beta();
-        finite(beta, "beta")?;
+        check_results(beta, "beta", OUTSIDE_BRICK)?;
         // SAFETY: the caller's contract on `out` and `needed`.
         unsafe { fill(out, len, needed, "out", beta.len(), || Ok(beta.to_vec()))? };
         Ok(shape_warning(field.shape()))
@@ -386,9 +376,8 @@ pub unsafe extern "C" fn hycon_brick_stress(
         // SAFETY: the caller's contract.
         let field = unsafe { brick_stress(kind, coords, material, q)? };
         let s = field.at([px, py, pz]);
-        finite(s.as_slice(), "stress")?;
         // SAFETY: `out` is non-null and aligned (checked) and holds 6 doubles (contract).
-        unsafe { write_doubles(out, s.as_slice()) };
+        unsafe { write_results(out, s.as_slice(), "stress", OUTSIDE_BRICK)? };
         Ok(shape_warning(field.shape()))
     })
 }
@@ -429,9 +418,8 @@ pub unsafe extern "C" fn hycon_brick_face_traction(
         // SAFETY: the caller's contract.
         let field = unsafe { brick_stress(kind, coords, material, q)? };
         let tr = field.face_traction(face, s, t);
-        finite(&tr, "traction")?;
         // SAFETY: `out` is non-null and aligned (checked) and holds 3 doubles (contract).
-        unsafe { write_doubles(out, &tr) };
+        unsafe { write_results(out, &tr, "traction", OUTSIDE_BRICK)? };
         Ok(shape_warning(field.shape()))
     })
 }

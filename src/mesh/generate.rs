@@ -483,12 +483,18 @@ where
         let (pa, pb) = (mesh.nodes[a], mesh.nodes[b]);
         mesh.nodes[m] = [0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1])];
     }
+    name_sides(&mut mesh, sides);
+    mesh
+}
+
+/// Name the boundary sides: each side's edges chained along the boundary as an edge set, and
+/// their nodes as a node set of the same name.
+fn name_sides(mesh: &mut Mesh, sides: BTreeMap<String, Vec<[usize; 2]>>) {
     for (name, edges) in sides {
         let edges = chain(edges);
         mesh.node_sets.insert(name.clone(), chain_nodes(&edges));
         mesh.edge_sets.insert(name, edges);
     }
-    mesh
 }
 
 /// Quad-only elements from the balanced leaves (see [`graded_layout_with`]).
@@ -540,11 +546,7 @@ where
             }
         }
     }
-    for (name, edges) in sides {
-        let edges = chain(edges);
-        mesh.node_sets.insert(name.clone(), chain_nodes(&edges));
-        mesh.edge_sets.insert(name, edges);
-    }
+    name_sides(&mut mesh, sides);
     mesh
 }
 

@@ -31,6 +31,8 @@
 //! | 5 | `zeta = +1` | 4 5 6 7 |
 
 use crate::error::{ShapeError, ShapeWarning};
+use crate::fem::boundary::FacePoint;
+use crate::fem::quadrature::{GAUSS2, quad_weights};
 use nalgebra::{Matrix3, Vector3};
 
 /// Natural coordinates of the 8 nodes.
@@ -53,12 +55,6 @@ pub const FACES: [[usize; 4]; 6] = [
     [3, 7, 6, 2],
     [0, 3, 2, 1],
     [4, 5, 6, 7],
-];
-
-/// Two-point Gauss rule on `[-1, 1]`: `(abscissa, weight)`.
-pub const GAUSS2: [(f64, f64); 2] = [
-    (-0.577_350_269_189_625_8, 1.0),
-    (0.577_350_269_189_625_8, 1.0),
 ];
 
 /// The 8 points `(xi, weight)` of the 2x2x2 Gauss rule (exact for degree 3 in each variable),
@@ -407,12 +403,7 @@ fn measure(map: &Trilinear, gauss: &[f64; 8], h3: f64) -> ShapeReport {
 
 /// Natural coordinates of the point `(s, t)` of face `face` (see the module docs).
 pub fn face_natural(face: usize, s: f64, t: f64) -> [f64; 3] {
-    let w = [
-        0.25 * (1.0 - s) * (1.0 - t),
-        0.25 * (1.0 + s) * (1.0 - t),
-        0.25 * (1.0 + s) * (1.0 + t),
-        0.25 * (1.0 - s) * (1.0 + t),
-    ];
+    let w = quad_weights(s, t);
     let mut xi = [0.0; 3];
     for (wk, &k) in w.iter().zip(&FACES[face]) {
         for a in 0..3 {
@@ -424,9 +415,5 @@ pub fn face_natural(face: usize, s: f64, t: f64) -> [f64; 3] {
 
 /// Outward unit normal of face `face` at `(s, t)`: `dx/ds x dx/dt`, normalised.
 pub fn face_normal(map: &Trilinear, face: usize, s: f64, t: f64) -> [f64; 3] {
-    let [a, b, c, d] = FACES[face].map(|k| map.x[k]);
-    let ds = (sub(b, a) * (1.0 - t) + sub(c, d) * (1.0 + t)) * 0.25;
-    let dt = (sub(d, a) * (1.0 - s) + sub(c, b) * (1.0 + s)) * 0.25;
-    let n = ds.cross(&dt).normalize();
-    [n[0], n[1], n[2]]
+    FacePoint::new(FACES[face].map(|k| map.x[k]), s, t).normal
 }

@@ -25,83 +25,31 @@
 use super::N_DOF;
 use super::geometry::{FACES, ShapePolicy, Trilinear, check_brick};
 use crate::error::{Error, Result};
+use crate::fem::boundary::BoundaryLoad;
+use crate::fem::quadrature::GAUSS2;
 use nalgebra::SVector;
+
+pub use crate::fem::boundary::FacePoint;
 
 /// The brick's element force vector (24 values, dofs `u0 v0 w0 u1 ...`).
 pub type BrickVector = SVector<f64, N_DOF>;
 
-/// A distributed load on one brick face: values at the face's 4 nodes in face order
-/// ([`FACES`]), interpolated bilinearly. The surface force is `t - p n` (`n` the outward unit
-/// normal).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct FaceLoad {
-    /// Pressure at the face's nodes (force per area, positive pushing into the body).
-    pub pressure: [f64; 4],
-    /// Traction `[tx, ty, tz]` at the face's nodes (force per area).
-    pub traction: [[f64; 3]; 4],
-}
+/// A distributed load on one brick face: pressure and traction `[tx, ty, tz]` at the face's 4
+/// nodes in face order ([`FACES`]), interpolated bilinearly. The surface force is `t - p n`
+/// (`n` the outward unit normal).
+pub type FaceLoad = BoundaryLoad<3, 4>;
 
-impl FaceLoad {
-    /// A uniform pressure `p` (positive pushing into the body).
-    pub fn pressure(p: f64) -> Self {
-        FaceLoad {
-            pressure: [p; 4],
-            ..Default::default()
+/// The surface force `t - p n` of `load` at a face point: the nodal values `t_k - p_k n`
+/// interpolated with the point's weights.
+fn surface_force(load: &FaceLoad, point: &FacePoint) -> [f64; 3] {
+    let mut q = [0.0; 3];
+    for (k, m) in point.weights.iter().enumerate() {
+        let qk = load.surface_force(k, point.normal);
+        for (qi, qki) in q.iter_mut().zip(qk) {
+            *qi += m * qki;
         }
     }
-
-    /// A uniform traction vector `t`.
-    pub fn traction(t: [f64; 3]) -> Self {
-        FaceLoad {
-            traction: [t; 4],
-            ..Default::default()
-        }
-    }
-
-    /// Check that every value is finite.
-    pub fn validate(&self) -> Result<()> {
-        let mut values = self.pressure.iter().chain(self.traction.iter().flatten());
-        if values.all(|v| v.is_finite()) {
-            Ok(())
-        } else {
-            Err(Error::InvalidInput(format!(
-                "face load {self:?} is not finite"
-            )))
-        }
-    }
-
-    /// The surface force `t - p n` at a face point.
-    fn at(&self, point: &FacePoint) -> [f64; 3] {
-        let mut q = [0.0; 3];
-        for (k, m) in point.weights.iter().enumerate() {
-            for (i, qi) in q.iter_mut().enumerate() {
-                *qi += m * (self.traction[k][i] - self.pressure[k] * point.normal[i]);
-            }
-        }
-        q
-    }
-}
-
-/// A quadrature point on a brick face, as [`face_forces`] hands it to the load.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FacePoint {
-    /// The physical point.
-    pub x: [f64; 3],
-    /// The outward unit normal there.
-    pub normal: [f64; 3],
-    /// The bilinear weights `M_k(s, t)` of the face's 4 nodes (face order).
-    pub weights: [f64; 4],
-}
-
-/// Bilinear weights of a face's 4 nodes at `(s, t)` (first node at `(-1, -1)`, second
-/// `(1, -1)`, third `(1, 1)`, fourth `(-1, 1)`).
-fn weights(s: f64, t: f64) -> [f64; 4] {
-    [
-        0.25 * (1.0 - s) * (1.0 - t),
-        0.25 * (1.0 + s) * (1.0 - t),
-        0.25 * (1.0 + s) * (1.0 + t),
-        0.25 * (1.0 - s) * (1.0 + t),
-    ]
+    q
 }
 
 /// Consistent nodal forces `f_k = integral of M_k q dA` of the surface force `q` (force per
@@ -113,29 +61,15 @@ pub fn face_forces(
     face: usize,
     q: impl Fn(&FacePoint) -> [f64; 3],
 ) -> [[f64; 3]; 4] {
-    let [a, b, c, d] = FACES[face].map(|k| map.x[k]);
+    let corners = FACES[face].map(|k| map.x[k]);
     let mut f = [[0.0; 3]; 4];
-    for (s, ws) in super::geometry::GAUSS2 {
-        for (t, wt) in super::geometry::GAUSS2 {
-            let weights = weights(s, t);
-            let (mut x, mut ds, mut dt) = ([0.0; 3], [0.0; 3], [0.0; 3]);
-            for i in 0..3 {
-                x[i] =
-                    weights[0] * a[i] + weights[1] * b[i] + weights[2] * c[i] + weights[3] * d[i];
-                ds[i] = 0.25 * ((b[i] - a[i]) * (1.0 - t) + (c[i] - d[i]) * (1.0 + t));
-                dt[i] = 0.25 * ((d[i] - a[i]) * (1.0 - s) + (c[i] - b[i]) * (1.0 + s));
-            }
-            let cross = [
-                ds[1] * dt[2] - ds[2] * dt[1],
-                ds[2] * dt[0] - ds[0] * dt[2],
-                ds[0] * dt[1] - ds[1] * dt[0],
-            ];
-            let area = (cross[0].powi(2) + cross[1].powi(2) + cross[2].powi(2)).sqrt();
-            let normal = cross.map(|v| v / area);
-            let qp = q(&FacePoint { x, normal, weights });
-            for (fk, m) in f.iter_mut().zip(weights) {
+    for (s, ws) in GAUSS2 {
+        for (t, wt) in GAUSS2 {
+            let point = FacePoint::new(corners, s, t);
+            let qp = q(&point);
+            for (fk, m) in f.iter_mut().zip(point.weights) {
                 for i in 0..3 {
-                    fk[i] += m * qp[i] * area * ws * wt;
+                    fk[i] += m * qp[i] * point.area * ws * wt;
                 }
             }
         }
@@ -158,7 +92,7 @@ pub fn face_load(coords: &[[f64; 3]], face: usize, load: &FaceLoad) -> Result<Br
         )));
     }
     load.validate()?;
-    let f = face_forces(&map, face, |p| load.at(p));
+    let f = face_forces(&map, face, |p| surface_force(load, p));
     let mut out = BrickVector::zeros();
     for (&node, fk) in FACES[face].iter().zip(f) {
         for i in 0..3 {

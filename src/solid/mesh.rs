@@ -7,13 +7,37 @@
 //! right-handed frame gives positive Jacobians). Any smooth map of the nodes keeps the
 //! connectivity: beams that twist or curve, and distorted meshes for tests, are a block plus a
 //! map.
+//!
+//! # Face sets
+//! A mesh names sets of boundary faces (what a load or a contact surface is applied to), as a
+//! plane [`crate::mesh::Mesh`] names edge sets. A face is its 4 global nodes in the order of
+//! [`FACES`]: counter-clockwise seen from outside, so `(x1 - x0) x (x3 - x0)` points out of the
+//! body. [`SolidMesh::block`] names the six sides of the block: `left` (`x = xs[0]`), `right`
+//! (`x` the last of `xs`), `front` (`y = ys[0]`), `back`, `bottom` (`z = zs[0]`) and `top`.
 
 use super::geometry::{FACES, Trilinear};
 use super::{N_NODES, ShapePolicy, check_shape};
 use crate::error::{Error, Result, ShapeWarning};
+use std::collections::{BTreeMap, HashMap};
+
+/// One face of a brick: its 4 global nodes, counter-clockwise seen from outside (the order of
+/// [`FACES`]).
+pub type Face = [usize; 4];
+
+/// The names [`SolidMesh::block`] gives its six sides, with the brick face (numbering of
+/// [`super::geometry`]) that lies on each: `left`/`right` at the least/greatest `x`,
+/// `front`/`back` at `y`, `bottom`/`top` at `z`.
+pub const BLOCK_SIDES: [(&str, usize); 6] = [
+    ("left", 0),
+    ("right", 1),
+    ("front", 2),
+    ("back", 3),
+    ("bottom", 4),
+    ("top", 5),
+];
 
 /// A mesh of 8-node bricks.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct SolidMesh {
     /// Node coordinates.
     pub nodes: Vec<[f64; 3]>,
@@ -21,6 +45,9 @@ pub struct SolidMesh {
     pub elements: Vec<[usize; N_NODES]>,
     /// Material index of each brick.
     pub element_material: Vec<usize>,
+    /// Named face sets (see the [module docs](self)): each face a face of a brick of the mesh,
+    /// its nodes counter-clockwise seen from outside.
+    pub face_sets: BTreeMap<String, Vec<Face>>,
 }
 
 /// `n` intervals from `a` to `b` whose lengths grow geometrically, the last `ratio` times the
@@ -47,7 +74,7 @@ pub fn graded(a: f64, b: f64, n: usize, ratio: f64) -> Vec<f64> {
 
 impl SolidMesh {
     /// The structured block over the coordinate lines `xs`, `ys`, `zs` (each increasing, at least
-    /// two values), material 0 everywhere.
+    /// two values), material 0 everywhere, its six sides named ([`BLOCK_SIDES`]).
     pub fn block(xs: &[f64], ys: &[f64], zs: &[f64]) -> Self {
         let (nx, ny, nz) = (xs.len() - 1, ys.len() - 1, zs.len() - 1);
         let mut nodes = Vec::with_capacity(xs.len() * ys.len() * zs.len());
@@ -77,10 +104,32 @@ impl SolidMesh {
             }
         }
         let element_material = vec![0; elements.len()];
+        let on_side = |e: usize, face: usize| {
+            let (i, j, k) = (e % nx, (e / nx) % ny, e / (nx * ny));
+            match face {
+                0 => i == 0,
+                1 => i + 1 == nx,
+                2 => j == 0,
+                3 => j + 1 == ny,
+                4 => k == 0,
+                _ => k + 1 == nz,
+            }
+        };
+        let face_sets = BLOCK_SIDES
+            .iter()
+            .map(|&(name, face)| {
+                let faces = (0..elements.len())
+                    .filter(|&e| on_side(e, face))
+                    .map(|e| FACES[face].map(|k| elements[e][k]))
+                    .collect();
+                (name.to_string(), faces)
+            })
+            .collect();
         SolidMesh {
             nodes,
             elements,
             element_material,
+            face_sets,
         }
     }
 
@@ -168,14 +217,78 @@ impl SolidMesh {
         out
     }
 
-    /// Check connectivity (node indices in range) and every brick's shape under the default
-    /// [`ShapePolicy`]; errors name the brick. [`check`](Self::check) returns the warnings.
+    /// Every brick face, keyed by its sorted nodes, with the bricks and local faces it belongs to.
+    fn face_index(&self) -> HashMap<Face, Vec<(usize, usize)>> {
+        let mut index: HashMap<Face, Vec<(usize, usize)>> = HashMap::new();
+        for (e, el) in self.elements.iter().enumerate() {
+            for (f, face) in FACES.iter().enumerate() {
+                let mut key = face.map(|k| el[k]);
+                key.sort_unstable();
+                index.entry(key).or_default().push((e, f));
+            }
+        }
+        index
+    }
+
+    /// The brick and local face (numbering of [`super::geometry`]) whose outward face is `face`
+    /// (its 4 nodes counter-clockwise seen from outside, starting at any of them).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when `face` is no face of a brick, or lists one clockwise seen
+    /// from outside (its normal would point into the body).
+    pub fn locate_face(&self, face: Face) -> Result<(usize, usize)> {
+        locate(&self.face_index(), &self.elements, face).map_err(Error::InvalidInput)
+    }
+
+    /// The faces of set `name` as `(brick, local face)` pairs ([`SolidMesh::locate_face`]), in
+    /// the set's order.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an unknown set or a face [`SolidMesh::locate_face`] rejects.
+    pub fn face_set(&self, name: &str) -> Result<Vec<(usize, usize)>> {
+        self.face_set_in(&self.face_index(), name)
+    }
+
+    /// [`SolidMesh::face_set`] with the mesh's face index.
+    fn face_set_in(
+        &self,
+        index: &HashMap<Face, Vec<(usize, usize)>>,
+        name: &str,
+    ) -> Result<Vec<(usize, usize)>> {
+        let set = self
+            .face_sets
+            .get(name)
+            .ok_or_else(|| Error::InvalidInput(format!("no face set {name:?} in the mesh")))?;
+        set.iter()
+            .map(|&face| {
+                locate(index, &self.elements, face)
+                    .map_err(|m| Error::InvalidInput(format!("face set {name:?}: {m}")))
+            })
+            .collect()
+    }
+
+    /// Check every face set: each face a face of a brick, listed outward.
+    fn check_face_sets(&self) -> Result<()> {
+        if self.face_sets.is_empty() {
+            return Ok(());
+        }
+        let index = self.face_index();
+        for name in self.face_sets.keys() {
+            self.face_set_in(&index, name)?;
+        }
+        Ok(())
+    }
+
+    /// Check connectivity (node indices in range), the face sets and every brick's shape under
+    /// the default [`ShapePolicy`]; errors name the brick. [`check`](Self::check) returns the
+    /// warnings.
     pub fn validate(&self) -> Result<()> {
         self.check(ShapePolicy::default()).map(|_| ())
     }
 
-    /// Check connectivity and every brick's shape under `policy`; errors name the brick. Returns
-    /// the shape warnings (none under [`ShapePolicy::Strict`]) with their bricks.
+    /// Check connectivity, the face sets and every brick's shape under `policy`; errors name the
+    /// brick or the set. Returns the shape warnings (none under [`ShapePolicy::Strict`]) with
+    /// their bricks.
     pub fn check(&self, policy: ShapePolicy) -> Result<Vec<(usize, ShapeWarning)>> {
         if self.element_material.len() != self.elements.len() {
             return Err(Error::InvalidInput(format!(
@@ -196,6 +309,7 @@ impl SolidMesh {
                 .map_err(|kind| Error::at_element(kind, e))?;
             warnings.extend(report.warnings().map(|w| (e, w)));
         }
+        self.check_face_sets()?;
         Ok(warnings)
     }
 
@@ -213,5 +327,115 @@ impl SolidMesh {
         let f = super::loads::face_forces(&map, face, |p| traction(p.x, p.normal));
         let ids = FACES[face].map(|k| self.elements[e][k]);
         std::array::from_fn(|k| (ids[k], f[k]))
+    }
+}
+
+/// [`SolidMesh::locate_face`] with the mesh's face index; the error says what is wrong.
+fn locate(
+    index: &HashMap<Face, Vec<(usize, usize)>>,
+    elements: &[[usize; N_NODES]],
+    face: Face,
+) -> std::result::Result<(usize, usize), String> {
+    let mut key = face;
+    key.sort_unstable();
+    let owners = index.get(&key).map_or(&[][..], Vec::as_slice);
+    let same_cycle = |a: Face, b: Face| (0..4).any(|r| (0..4).all(|k| a[k] == b[(k + r) % 4]));
+    let mut reversed = face;
+    reversed.reverse();
+    if let Some(&(e, f)) = owners
+        .iter()
+        .find(|&&(e, f)| same_cycle(face, FACES[f].map(|k| elements[e][k])))
+    {
+        return Ok((e, f));
+    }
+    Err(
+        match owners
+            .iter()
+            .find(|&&(e, f)| same_cycle(reversed, FACES[f].map(|k| elements[e][k])))
+        {
+            Some(&(e, f)) => format!(
+                "face {face:?} is face {f} of brick {e} listed clockwise seen from outside (its \
+             normal points into the body): list it as {:?}",
+                FACES[f].map(|k| elements[e][k])
+            ),
+            None => format!("face {face:?} is no face of a brick of the mesh"),
+        },
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fem::boundary::FacePoint;
+
+    /// The six sides of a block: the right number of faces, every face on its side with the
+    /// outward unit normal, the areas summing to the side's.
+    #[test]
+    fn block_names_its_six_sides_outward() {
+        let (xs, ys, zs) = (
+            [0.0, 1.0, 3.0],
+            [0.0, 2.0, 2.5, 4.0],
+            [1.0, 1.5, 2.0, 3.0, 5.0],
+        );
+        let mesh = SolidMesh::block(&xs, &ys, &zs);
+        mesh.validate().unwrap();
+        let lo = [0.0, 0.0, 1.0];
+        let hi = [3.0, 4.0, 5.0];
+        for (name, face) in BLOCK_SIDES {
+            let axis = face / 2;
+            let (value, sign) = if face % 2 == 0 {
+                (lo[axis], -1.0)
+            } else {
+                (hi[axis], 1.0)
+            };
+            let set = &mesh.face_sets[name];
+            let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+            let n_cells = [xs.len() - 1, ys.len() - 1, zs.len() - 1];
+            assert_eq!(set.len(), n_cells[a] * n_cells[b], "{name}");
+            let mut area = 0.0;
+            for f in set {
+                let corners = f.map(|n| mesh.nodes[n]);
+                assert!(
+                    corners.iter().all(|p| p[axis] == value),
+                    "{name}: {corners:?}"
+                );
+                let point = FacePoint::new(corners, 0.0, 0.0);
+                let mut want = [0.0; 3];
+                want[axis] = sign;
+                assert_eq!(point.normal, want, "{name}");
+                area += 4.0 * point.area;
+            }
+            let side = (hi[a] - lo[a]) * (hi[b] - lo[b]);
+            assert!(
+                (area - side).abs() <= 1e-14 * side,
+                "{name}: {area} vs {side}"
+            );
+            let located = mesh.face_set(name).unwrap();
+            assert!(located.iter().all(|&(_, f)| f == face), "{name}");
+        }
+    }
+
+    #[test]
+    fn face_sets_are_checked() {
+        let mesh = SolidMesh::uniform([1.0, 1.0, 1.0], [2, 1, 1]);
+        let top = mesh.face_sets["top"][1];
+        // any starting node, counter-clockwise seen from outside
+        let turned = [top[2], top[3], top[0], top[1]];
+        assert_eq!(mesh.locate_face(turned).unwrap(), (1, 5));
+        let mut bad = mesh.clone();
+        let mut inward = top;
+        inward.reverse();
+        bad.face_sets.insert("inward".into(), vec![inward]);
+        let e = bad.validate().unwrap_err().to_string();
+        assert!(e.contains("\"inward\"") && e.contains("clockwise"), "{e}");
+        let mut bad = mesh.clone();
+        bad.face_sets.insert("diagonal".into(), vec![[0, 1, 10, 9]]);
+        let e = bad.validate().unwrap_err().to_string();
+        assert!(e.contains("no face of a brick"), "{e}");
+        assert!(mesh.face_set("none").is_err());
+        // moving the nodes keeps the sets
+        let moved = mesh.clone().map(|p| [2.0 * p[0], p[1], p[2]]);
+        assert_eq!(moved.face_sets, mesh.face_sets);
+        moved.validate().unwrap();
     }
 }

@@ -17,8 +17,11 @@
 //! `[xx, yy, zz, xy, yz, zx]`, strains with engineering shear (`gamma_xy = 2 eps_xy`).
 //!
 //! Hybrid brick: `K = G^T H^-1 G` with `H = integral of P^T S P dV` and
-//! `G = integral of P^T B dV` (2x2x2 Gauss), computed as `W^T W` with `W = L^-1 G`, `H = L L^T`
-//! (Cholesky: no explicit inverse, symmetric by construction); `beta = H^-1 G q`.
+//! `G = integral of P^T B dV` (2x2x2 Gauss), condensed by the shared kernel
+//! [`crate::fem::hybrid`] (`W^T W` with `W = L^-1 G`, `H = L L^T`); `beta = H^-1 G q`.
+//!
+//! The material ([`Isotropic`]), the Gauss rules, the face geometry and the boundary loads are
+//! those of the shared base [`crate::fem`].
 
 pub mod contact_meshes;
 pub mod geometry;
@@ -29,11 +32,12 @@ pub mod mesh;
 pub mod model;
 pub mod quality;
 
-use crate::error::{Error, Result, ShapeError};
-use crate::material::SCALE_RANGE;
+use crate::error::{Result, ShapeError};
+use crate::fem::hybrid;
 use geometry::{FACES, Trilinear, check_brick, face_natural, face_normal};
-use nalgebra::{Cholesky, SMatrix, SVector};
+use nalgebra::{SMatrix, SVector};
 
+pub use crate::fem::Isotropic;
 pub use geometry::{ShapePolicy, ShapeReport, WARP_LIMIT_DEGREES};
 
 /// Nodes of a brick.
@@ -47,76 +51,6 @@ pub const MAX_BETA: usize = hybrid18::N_BETA;
 pub type Voigt = SVector<f64, 6>;
 /// Brick stiffness (24 x 24).
 pub type BrickMatrix = SMatrix<f64, N_DOF, N_DOF>;
-
-/// Isotropic linear elastic material of a 3D solid (no thickness, no plane idealisation).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Isotropic {
-    /// Young's modulus `E` (> 0, within [`SCALE_RANGE`]).
-    pub youngs: f64,
-    /// Poisson's ratio `nu` (-1 < nu < 0.5).
-    pub poisson: f64,
-}
-
-impl Isotropic {
-    /// A checked material: finite values, `E > 0` within [`SCALE_RANGE`], `-1 < nu < 0.5`.
-    pub fn new(youngs: f64, poisson: f64) -> Result<Self> {
-        let m = Isotropic { youngs, poisson };
-        m.validate()?;
-        Ok(m)
-    }
-
-    /// Check the invariants listed in [`Isotropic::new`].
-    pub fn validate(&self) -> Result<()> {
-        let (e, nu) = (self.youngs, self.poisson);
-        if !(e.is_finite() && nu.is_finite()) {
-            return Err(Error::Material(format!(
-                "non-finite value (E = {e}, nu = {nu})"
-            )));
-        }
-        if !(SCALE_RANGE[0]..=SCALE_RANGE[1]).contains(&e) {
-            return Err(Error::Material(format!(
-                "Young's modulus must lie in [{:e}, {:e}], got {e}",
-                SCALE_RANGE[0], SCALE_RANGE[1]
-            )));
-        }
-        if !(nu > -1.0 && nu < 0.5) {
-            return Err(Error::Material(format!(
-                "Poisson's ratio must lie in (-1, 0.5), got {nu}"
-            )));
-        }
-        Ok(())
-    }
-
-    /// Compliance `S` (strain = `S` stress): `1/E` times `1` on the normal diagonal, `-nu` off
-    /// it, `2 (1 + nu)` on the shear diagonal. Finite as `nu -> 0.5`.
-    pub fn compliance(&self) -> SMatrix<f64, 6, 6> {
-        let (e, nu) = (self.youngs, self.poisson);
-        let mut s = SMatrix::<f64, 6, 6>::zeros();
-        for i in 0..3 {
-            for j in 0..3 {
-                s[(i, j)] = if i == j { 1.0 / e } else { -nu / e };
-            }
-            s[(3 + i, 3 + i)] = 2.0 * (1.0 + nu) / e;
-        }
-        s
-    }
-
-    /// Elasticity `D = S^-1`: `lambda + 2 mu` / `lambda` on the normal block, `mu` on the shear
-    /// diagonal, `lambda = E nu / ((1 + nu)(1 - 2 nu))`, `mu = E / (2 (1 + nu))`.
-    pub fn elasticity(&self) -> SMatrix<f64, 6, 6> {
-        let (e, nu) = (self.youngs, self.poisson);
-        let lambda = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-        let mu = e / (2.0 * (1.0 + nu));
-        let mut d = SMatrix::<f64, 6, 6>::zeros();
-        for i in 0..3 {
-            for j in 0..3 {
-                d[(i, j)] = lambda + if i == j { 2.0 * mu } else { 0.0 };
-            }
-            d[(3 + i, 3 + i)] = mu;
-        }
-        d
-    }
-}
 
 /// Which brick formulation to use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -159,22 +93,6 @@ pub fn check_shape(
     check_brick(coords, policy).map(|(_, report)| report)
 }
 
-/// `H` and `G` of the hybrid brick, `H` factored.
-fn factored(
-    map: &Trilinear,
-    material: &Isotropic,
-) -> std::result::Result<
-    (
-        Cholesky<f64, nalgebra::Const<{ hybrid18::N_BETA }>>,
-        SMatrix<f64, { hybrid18::N_BETA }, N_DOF>,
-    ),
-    ShapeError,
-> {
-    let (h, g) = hybrid18::matrices(map, material);
-    let chol = Cholesky::new(h).ok_or(ShapeError::Degenerate)?;
-    Ok((chol, g))
-}
-
 /// Element stiffness `K` (24 x 24) into `out`; returns the shape report of the default policy
 /// (its [`warnings`](ShapeReport::warnings) are for the caller to show). Never allocates.
 ///
@@ -189,12 +107,8 @@ pub fn stiffness_into(
     match formulation {
         BrickFormulation::H8 => *out = h8::stiffness(&map, material),
         BrickFormulation::Hybrid18 => {
-            let (chol, g) = factored(&map, material)?;
-            let w = chol
-                .l_dirty()
-                .solve_lower_triangular(&g)
-                .ok_or(ShapeError::Degenerate)?;
-            w.tr_mul_to(&w, out);
+            let (h, g) = hybrid18::matrices(&map, material);
+            hybrid::stiffness_into(h, &g, out)?;
         }
     }
     Ok(report)
@@ -281,8 +195,8 @@ pub fn recover_stress(
     let q = SVector::<f64, N_DOF>::from_column_slice(&q[..N_DOF]);
     let mut beta = SVector::<f64, MAX_BETA>::zeros();
     if formulation == BrickFormulation::Hybrid18 {
-        let (chol, g) = factored(&map, material)?;
-        beta = chol.solve(&(g * q));
+        let (h, g) = hybrid18::matrices(&map, material);
+        beta = hybrid::stress_parameters(h, &g, &q)?;
     }
     Ok(BrickStress {
         formulation,
