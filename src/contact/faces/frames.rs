@@ -42,7 +42,7 @@ use super::clip::{check_face, tangents, v3};
 use super::shapes;
 use super::surface::SurfaceFaces;
 use crate::error::{Error, Result};
-use crate::solid::geometry::GAUSS2;
+use crate::fem::quadrature::GAUSS2;
 use nalgebra::Vector3;
 use std::collections::BTreeMap;
 
