@@ -99,8 +99,7 @@ mod rules;
 mod small_system;
 use active_set::{
     ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
-    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state,
-    rows_of,
+    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
 };
 use boundary::{Flexibility, NodeFlexibility};
 use checks::change_ratio;
@@ -1813,7 +1812,7 @@ mod tests {
             .to_string();
         assert!(e.contains("2 pi r"), "{e}");
         let m = Material::new(1.0, 0.3, 1.0, Analysis::Axisymmetric).unwrap();
-        assert_eq!(SurfaceMeasure::of(&m), SurfaceMeasure::Axisymmetric);
+        assert_eq!(m.measure_kind(), SurfaceMeasure::Axisymmetric);
     }
 
     /// Options and pairs are checked in the core, so a Rust caller gets the same errors as a C

@@ -8,7 +8,9 @@
 //! stiffness is that of the whole ring; the thickness must then be 1). See docs/method.md,
 //! "Axisymmetric elements".
 
+use super::isotropic::SCALE_RANGE;
 use super::quadrature::GAUSS2_UNIT;
+use crate::error::{Error, Result};
 
 /// Which two-dimensional idealisation is used. One model uses one kind
 /// ([`crate::model::Model::validate`] rejects a mix).
@@ -87,6 +89,48 @@ pub enum Measure {
 }
 
 impl Measure {
+    /// The measure of a surface or body of analysis kind `analysis` and thickness
+    /// `thickness`: `t` in plane analysis, `2 pi r` in axisymmetry (where the thickness must be
+    /// exactly 1, as for an axisymmetric [`crate::material::Material`]).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a plane thickness that is not finite, positive and within
+    /// [`SCALE_RANGE`], or an axisymmetric one other than 1.
+    pub fn new(analysis: Analysis, thickness: f64) -> Result<Self> {
+        let m = match analysis {
+            Analysis::PlaneStrain | Analysis::PlaneStress => Measure::Plane { thickness },
+            Analysis::Axisymmetric if thickness == 1.0 => Measure::Axisymmetric,
+            Analysis::Axisymmetric => {
+                return Err(Error::InvalidInput(format!(
+                    "axisymmetric thickness must be 1, got {thickness} (the measure is 2 pi r, \
+                     the full circle)"
+                )));
+            }
+        };
+        m.validate()?;
+        Ok(m)
+    }
+
+    /// Check a plane thickness: finite, positive, within [`SCALE_RANGE`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] saying what is wrong.
+    pub fn validate(&self) -> Result<()> {
+        match *self {
+            Measure::Plane { thickness: t } => {
+                if t.is_finite() && (SCALE_RANGE[0]..=SCALE_RANGE[1]).contains(&t) {
+                    Ok(())
+                } else {
+                    Err(Error::InvalidInput(format!(
+                        "contact surface thickness must be finite and in [{:e}, {:e}], got {t}",
+                        SCALE_RANGE[0], SCALE_RANGE[1]
+                    )))
+                }
+            }
+            Measure::Axisymmetric => Ok(()),
+        }
+    }
+
     /// `m(x)`: `t`, or `2 pi x[0]`.
     #[inline]
     pub fn at(&self, x: [f64; 2]) -> f64 {
@@ -163,5 +207,12 @@ mod tests {
             Analysis::PlaneStress.node_off_half_plane(&[[-1.0, 0.0]], 1.0),
             None
         );
+    }
+}
+
+impl Default for Measure {
+    /// Plane, unit thickness.
+    fn default() -> Self {
+        Measure::Plane { thickness: 1.0 }
     }
 }

@@ -15,7 +15,6 @@ use crate::contact::space::Vector;
 /// increment fails and names the node.
 pub const SMALL_SLIDING_LIMIT: f64 = 0.1;
 
-
 /// Round-off level of a displacement, relative to its size: iterates that differ by less than
 /// this times `|u|` are the same to the precision the geometry can be evaluated at.
 pub(super) const ROUND_OFF: f64 = 1e4 * f64::EPSILON;

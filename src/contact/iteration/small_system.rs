@@ -244,9 +244,8 @@ impl ContactAnalysis {
                 let rg = node.gap.dot(&node.frame.normal());
                 let b = dot(&normal, uc) - rg;
                 // the rows of the node's tangents (one in the plane and in axisymmetry)
-                let tangents = || {
-                    (node.frame.tangents().iter()).map(|s| self.directed(&node.coupling, s))
-                };
+                let tangents =
+                    || (node.frame.tangents().iter()).map(|s| self.directed(&node.coupling, s));
                 let mut col = normal.clone();
                 let mut basis = vec![(p, k, Row::Normal, 1.0)];
                 if let Rows::NormalSlip(c) = rows {

@@ -112,96 +112,13 @@ pub use crate::contact::geometry::{ContactNode, ContactSurface};
 use crate::contact::space::{Frame, Vector};
 use crate::element::geometry::{GAUSS2_UNIT, GAUSS3, edge_normal};
 use crate::error::{Error, Result};
-use crate::material::{Analysis, Material, SCALE_RANGE};
 
 /// The measure `dS = m(x) ds` of body A's contact surface (see the [module docs](self)): the
-/// contact integrals are weighted by it, so that the multipliers are pressures.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum SurfaceMeasure {
-    /// Plane strain or plane stress: `m = t`, A's thickness.
-    Plane {
-        /// The thickness `t > 0` of A's elements.
-        thickness: f64,
-    },
-    /// Axisymmetric, the full circle: `m = 2 pi r`, `r = x[0] >= 0` at the point.
-    Axisymmetric,
-}
-
-impl Default for SurfaceMeasure {
-    /// Plane, unit thickness.
-    fn default() -> Self {
-        SurfaceMeasure::Plane { thickness: 1.0 }
-    }
-}
+/// contact integrals are weighted by it, so that the multipliers are pressures. It is the
+/// shared measure of the analysis kinds, [`crate::fem::Measure`].
+pub type SurfaceMeasure = crate::fem::Measure;
 
 impl SurfaceMeasure {
-    /// The measure of a surface of analysis kind `analysis` and thickness `thickness`: `t` in
-    /// plane analysis, `2 pi r` in axisymmetry (where the thickness must be exactly 1, as for
-    /// an axisymmetric [`Material`]).
-    ///
-    /// # Errors
-    /// [`Error::InvalidInput`] for a plane thickness that is not finite, positive and within
-    /// [`SCALE_RANGE`], or an axisymmetric one other than 1.
-    pub fn new(analysis: Analysis, thickness: f64) -> Result<Self> {
-        let m = match analysis {
-            Analysis::PlaneStrain | Analysis::PlaneStress => SurfaceMeasure::Plane { thickness },
-            Analysis::Axisymmetric if thickness == 1.0 => SurfaceMeasure::Axisymmetric,
-            Analysis::Axisymmetric => {
-                return Err(Error::InvalidInput(format!(
-                    "axisymmetric thickness must be 1, got {thickness} (the measure is 2 pi r, \
-                     the full circle)"
-                )));
-            }
-        };
-        m.validate()?;
-        Ok(m)
-    }
-
-    /// The measure of a body made of `material`: its thickness in plane analysis, `2 pi r` in
-    /// axisymmetric analysis.
-    pub fn of(material: &Material) -> Self {
-        match material.analysis {
-            Analysis::PlaneStrain | Analysis::PlaneStress => SurfaceMeasure::Plane {
-                thickness: material.thickness,
-            },
-            Analysis::Axisymmetric => SurfaceMeasure::Axisymmetric,
-        }
-    }
-
-    /// `m(x)`: `t`, or `2 pi x[0]`.
-    #[inline]
-    pub fn at(&self, x: [f64; 2]) -> f64 {
-        match *self {
-            SurfaceMeasure::Plane { thickness } => thickness,
-            SurfaceMeasure::Axisymmetric => 2.0 * std::f64::consts::PI * x[0],
-        }
-    }
-
-    /// Whether two measures are of the same analysis kind (plane or axisymmetric).
-    pub fn same_kind(&self, other: &SurfaceMeasure) -> bool {
-        std::mem::discriminant(self) == std::mem::discriminant(other)
-    }
-
-    /// Check a plane thickness: finite, positive, within [`SCALE_RANGE`].
-    ///
-    /// # Errors
-    /// [`Error::InvalidInput`] saying what is wrong.
-    pub fn validate(&self) -> Result<()> {
-        match *self {
-            SurfaceMeasure::Plane { thickness: t } => {
-                if t.is_finite() && (SCALE_RANGE[0]..=SCALE_RANGE[1]).contains(&t) {
-                    Ok(())
-                } else {
-                    Err(Error::InvalidInput(format!(
-                        "contact surface thickness must be finite and in [{:e}, {:e}], got {t}",
-                        SCALE_RANGE[0], SCALE_RANGE[1]
-                    )))
-                }
-            }
-            SurfaceMeasure::Axisymmetric => Ok(()),
-        }
-    }
-
     /// The integrals of one A node over its support (the segment `left -> x_k` ending at it
     /// and the segment `x_k -> right` starting at it, each when present): `(weight, [F^A with
     /// the left node, with itself, with the right node], normal direction)`, the direction
