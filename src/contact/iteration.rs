@@ -62,7 +62,7 @@
 //! increment's motion. Any other cycle stops the increment with an error naming the node; so
 //! does the iteration cap. A failed increment leaves the last converged state untouched.
 
-use super::bodies::{Bodies, HostElements, HostSystem};
+use super::bodies::{Bodies, HostBodies, HostElements, HostSystem, ModelBodies};
 use super::facing;
 use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{self, ContactSurface, SurfaceMeasure};
@@ -662,7 +662,7 @@ struct NodeData {
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
 /// contact-boundary flexibility, and the last converged state.
 pub struct ContactAnalysis {
-    bodies: Bodies,
+    bodies: Box<dyn Bodies>,
     /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
     pairs: Vec<ContactPair>,
     /// The surface measure of each pair's A side (all of one kind).
@@ -781,8 +781,8 @@ impl ContactAnalysis {
         dofs.sort_unstable();
         dofs.dedup();
         let lazy = options.kinematics == Kinematics::Small;
-        let bodies = Bodies::model(model, &dofs, options.backend, lazy, options.threads)?;
-        Self::setup(bodies, pairs, measures, dofs, options, None)
+        let bodies = ModelBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
+        Self::setup(Box::new(bodies), pairs, measures, dofs, options, None)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -819,9 +819,9 @@ impl ContactAnalysis {
         let measures = host_measures(&sections, &pairs, system.elements.as_ref())?;
         let clock = std::time::Instant::now();
         let lazy = options.kinematics == Kinematics::Small;
-        let bodies = Bodies::host(system, options.backend, lazy, options.threads)?;
+        let bodies = HostBodies::new(system, options.backend, lazy, options.threads)?;
         let seconds = clock.elapsed().as_secs_f64();
-        let n_nodes = bodies.positions().len();
+        let n_nodes = bodies.positions().as_chunks::<2>().0.len();
         check_host_nodes(&pairs, &bodies)?;
         let pairs: Vec<ContactPair> = pairs
             .into_iter()
@@ -836,7 +836,14 @@ impl ContactAnalysis {
             .collect();
         check_host_radii(&pairs, &sections, &bodies)?;
         let dofs = (0..2 * n_nodes).collect();
-        let mut analysis = Self::setup(bodies, pairs, measures, dofs, options, Some(a_inside))?;
+        let mut analysis = Self::setup(
+            Box::new(bodies),
+            pairs,
+            measures,
+            dofs,
+            options,
+            Some(a_inside),
+        )?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }
@@ -846,14 +853,14 @@ impl ContactAnalysis {
     /// checked before its stiffness is factored). `a_inside`: a host's points inside body A per
     /// pair (`None` for a model, whose element edges tell the sides).
     fn setup(
-        mut bodies: Bodies,
+        mut bodies: Box<dyn Bodies>,
         pairs: Vec<ContactPair>,
         measures: Vec<SurfaceMeasure>,
         dofs: Vec<usize>,
         options: ContactOptions,
         a_inside: Option<Vec<Option<[f64; 2]>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; 2 * bodies.positions().len()];
+        let mut slot = vec![None; 2 * bodies.positions().as_chunks::<2>().0.len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
         }
@@ -868,13 +875,26 @@ impl ContactAnalysis {
         timings.flexibility = clock.elapsed().as_secs_f64();
         let reach: Vec<f64> = pairs
             .iter()
-            .map(|p| options.search_distance * mean_segment(&p.a, bodies.positions()))
+            .map(|p| {
+                options.search_distance * mean_segment(&p.a, bodies.positions().as_chunks::<2>().0)
+            })
             .collect();
-        let reference = evaluate_pairs(&pairs, &measures, bodies.positions(), &reach)?;
+        let reference = evaluate_pairs(
+            &pairs,
+            &measures,
+            bodies.positions().as_chunks::<2>().0,
+            &reach,
+        )?;
         let interiors = (options.kinematics == Kinematics::Small).then(|| {
             pairs
                 .iter()
-                .map(|p| geometry::SegmentInteriors::new(&p.a, &p.b, bodies.positions()))
+                .map(|p| {
+                    geometry::SegmentInteriors::new(
+                        &p.a,
+                        &p.b,
+                        bodies.positions().as_chunks::<2>().0,
+                    )
+                })
                 .collect()
         });
         for (i, pair) in pairs.iter().enumerate() {
@@ -882,7 +902,7 @@ impl ContactAnalysis {
                 None => Side::Edges,
                 Some(points) => Side::Inside(points.get(i).copied().flatten()),
             };
-            check_facing(pair, &bodies, options.search_distance, side)
+            check_facing(pair, bodies.as_ref(), options.search_distance, side)
                 .map_err(|e| in_pair(i, e))?;
         }
         let laws = pairs
@@ -1101,7 +1121,7 @@ impl ContactAnalysis {
     fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
         let a = &self.pairs[p].a;
         if self.measures[p] == SurfaceMeasure::Axisymmetric
-            && geometry::on_axis(a, k, self.bodies.positions())
+            && geometry::on_axis(a, k, self.bodies.positions().as_chunks::<2>().0)
         {
             &Coulomb::NONE
         } else {
@@ -1136,7 +1156,7 @@ impl ContactAnalysis {
         match self.options.kinematics {
             Kinematics::Small => 0.0,
             Kinematics::Finite => {
-                let x = self.bodies.positions();
+                let x = self.bodies.positions().as_chunks::<2>().0;
                 let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d / 2][d % 2]).collect();
                 let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
                 self.largest_motion.max(round_off / self.options.tolerance)
@@ -1147,7 +1167,7 @@ impl ContactAnalysis {
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
     /// nodes keep their reference positions: the contact geometry never reads them).
     fn positions(&self, uc: &[f64]) -> Vec<[f64; 2]> {
-        let mut x = self.bodies.positions().to_vec();
+        let mut x = self.bodies.positions().as_chunks::<2>().0.to_vec();
         for (&d, &u) in self.dofs.iter().zip(uc) {
             x[d / 2][d % 2] += u;
         }
@@ -1158,7 +1178,7 @@ impl ContactAnalysis {
     /// reference positions `X` under small kinematics, `x` itself under finite kinematics.
     fn geometry_positions<'a>(&'a self, x: &'a [[f64; 2]]) -> &'a [[f64; 2]] {
         match self.options.kinematics {
-            Kinematics::Small => self.bodies.positions(),
+            Kinematics::Small => self.bodies.positions().as_chunks::<2>().0,
             Kinematics::Finite => x,
         }
     }
@@ -1237,7 +1257,7 @@ impl ContactAnalysis {
                 continue;
             }
             let reach = 4.0 * motion;
-            let x = self.bodies.positions();
+            let x = self.bodies.positions().as_chunks::<2>().0;
             let wider = geometry::evaluate(&pair.a, &pair.b, x, reach, self.measures[p])?;
             let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
                 .enumerate()
@@ -1616,8 +1636,12 @@ fn host_measures(
 
 /// In axisymmetry, no node of a host's pairs (local ids) at `r < 0` (see
 /// [`handover::check_radii`]).
-fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies) -> Result<()> {
-    let x = bodies.positions();
+fn check_host_radii(
+    pairs: &[ContactPair],
+    sections: &[Section],
+    bodies: &dyn Bodies,
+) -> Result<()> {
+    let x = bodies.positions().as_chunks::<2>().0;
     for (i, (pair, section)) in pairs.iter().zip(sections).enumerate() {
         for (side, ids) in [("A", &pair.a), ("B", &pair.b)] {
             let points: Vec<[f64; 2]> = ids.iter().map(|&n| x[n]).collect();
@@ -1638,11 +1662,11 @@ fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies
 /// inside it, checked by [`check_a_inside`]), and a point it gives is always checked.
 fn check_facing(
     pair: &ContactPair,
-    bodies: &Bodies,
+    bodies: &dyn Bodies,
     search_distance: f64,
     side: Side,
 ) -> Result<()> {
-    let x = bodies.positions();
+    let x = bodies.positions().as_chunks::<2>().0;
     let f = facing::facing(
         &pair.a,
         &pair.b,
@@ -1739,7 +1763,7 @@ pub(crate) fn in_pair(i: usize, e: Error) -> Error {
 }
 
 /// Every node of a host's pairs must be one of the contact nodes it described.
-fn check_host_nodes(pairs: &[ContactPair], bodies: &Bodies) -> Result<()> {
+fn check_host_nodes(pairs: &[ContactPair], bodies: &dyn Bodies) -> Result<()> {
     for (i, p) in pairs.iter().enumerate() {
         if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| bodies.local(n).is_none()) {
             return Err(Error::InvalidInput(format!(

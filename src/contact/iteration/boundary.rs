@@ -1064,7 +1064,7 @@ impl ContactAnalysis {
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let x = self.bodies.positions();
+        let x = self.bodies.positions().as_chunks::<2>().0;
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
             x[self.pairs[p].a[k]]

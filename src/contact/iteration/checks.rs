@@ -243,7 +243,7 @@ impl ContactAnalysis {
         let delta = active()
             .map(|(_, _, node)| along(node, node.normal).abs())
             .fold(0.0, f64::max);
-        let x = self.bodies.positions();
+        let x = self.bodies.positions().as_chunks::<2>().0;
         for (surface, k, node) in active() {
             let slope = reference_gap_slope(surface, k, x);
             let slip = along(node, node.tangent);
@@ -339,7 +339,7 @@ impl ContactAnalysis {
     /// (Large coordinates alone, a model far from its origin, are the caller's choice and are
     /// not judged here: only the motion is.)
     pub(super) fn resolved(&self, x: &[[f64; 2]]) -> Result<()> {
-        let reference = self.bodies.positions();
+        let reference = self.bodies.positions().as_chunks::<2>().0;
         let moved = |n: usize| (x[n][0] - reference[n][0]).hypot(x[n][1] - reference[n][1]);
         for pair in &self.pairs {
             for ids in [&pair.a, &pair.b] {
