@@ -23,14 +23,14 @@
 mod factor;
 mod host;
 mod model;
-// mod solid;
+mod solid;
 
 pub use host::{
     Condensed, CondensedKind, Csr, HostBodies, HostElements, HostNode, HostSolve, HostStiffness,
     HostSystem, Triangle, check_elements,
 };
 pub use model::ModelBodies;
-// pub use solid::SolidBodies;
+pub use solid::SolidBodies;
 
 use crate::error::Result;
 use crate::model::Model;
@@ -292,6 +292,19 @@ fn unlocked<T>(m: &mut Mutex<T>) -> &mut T {
 /// Batch size of flexibility solves: at most this many columns, and at most about 32 MB of
 /// right-hand sides per batch.
 const CALLBACK_BATCH: usize = 64;
+
+/// The load as the reuse of load solves compares it ([`Bodies::load_key`]) for hycon's models:
+/// `f`, followed by `qp` at the prescribed dofs (those `free` rejects), zero elsewhere.
+fn load_key(f: &[f64], qp: &[f64], free: impl Fn(usize) -> bool) -> Vec<f64> {
+    f.iter()
+        .copied()
+        .chain(
+            qp.iter()
+                .enumerate()
+                .map(|(d, &v)| if free(d) { 0.0 } else { v }),
+        )
+        .collect()
+}
 
 /// Whether `F` is built lazily: asked for, and the backend is faer.
 fn lazy_on(backend: Backend, lazy: bool) -> bool {

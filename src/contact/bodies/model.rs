@@ -1,7 +1,7 @@
 //! hycon's own plane or axisymmetric [`Model`] as the bodies of a contact analysis: the field
 //! is all `2 n_nodes` dofs, node ids are the mesh's, and `K_ff` is assembled and factored here.
 
-use super::{Bodies, ElementView, Stiffness, contact_reach, lazy_on, lock, unlocked};
+use super::{Bodies, ElementView, Stiffness, contact_reach, lazy_on, load_key, lock, unlocked};
 use crate::error::Result;
 use crate::model::{LinearSystem, Model};
 use crate::solver::{Backend, Reach};
@@ -117,15 +117,7 @@ impl Bodies for ModelBodies {
 
     fn load_key(&self, f: &[f64], qp: &[f64]) -> Vec<f64> {
         let system = lock(&self.system);
-        let dofs = system.dofs();
-        f.iter()
-            .copied()
-            .chain(
-                qp.iter()
-                    .enumerate()
-                    .map(|(d, &v)| if dofs.equation(d).is_some() { 0.0 } else { v }),
-            )
-            .collect()
+        load_key(f, qp, |d| system.dofs().equation(d).is_some())
     }
 
     fn as_model(&self) -> Option<&Model> {

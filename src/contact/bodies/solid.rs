@@ -1,0 +1,249 @@
+//! hycon's own 3D brick model ([`SolidModel`]) as the bodies of a contact analysis: the field is
+//! all `3 n_nodes` dofs, node ids are the mesh's, and `K_ff` is assembled and factored here, with
+//! the contact dofs last (eager) or with `F` built lazily within their reach, as for the plane
+//! [`ModelBodies`](super::ModelBodies). What the 3D contact iteration plugs in.
+
+use super::{Bodies, Stiffness, contact_reach, lazy_on, load_key, lock, unlocked};
+use crate::error::Result;
+use crate::solid::model::{SolidModel, SolidSystem};
+use crate::solver::{Backend, Reach};
+use std::sync::Mutex;
+
+/// A brick model and its `K_ff` (see the [module docs](self)).
+pub struct SolidBodies {
+    model: Box<SolidModel>,
+    /// Locked so that solves can run from `&self` queries, one at a time.
+    system: Mutex<Box<SolidSystem>>,
+    reach: Option<Box<Reach>>,
+}
+
+impl std::fmt::Debug for SolidBodies {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "SolidBodies({:?})", lock(&self.system))
+    }
+}
+
+impl SolidBodies {
+    /// The brick model with the contact dofs `contact` (global dofs, `3 node + dir`): factored
+    /// with them eliminated last (eager), or, when `lazy` (faer only), in the plain
+    /// fill-reducing order with `F` built within their reach on up to `threads` threads
+    /// ([`ModelBodies::new`](super::ModelBodies::new)).
+    pub fn new(
+        model: SolidModel,
+        contact: &[usize],
+        backend: Backend,
+        lazy: bool,
+        threads: usize,
+    ) -> Result<Self> {
+        let lazy = lazy_on(backend, lazy);
+        let trailing = if lazy { &[][..] } else { contact };
+        let system = SolidSystem::with_trailing_on(&model, trailing, backend)?;
+        let equations: Vec<usize> = contact
+            .iter()
+            .filter_map(|&d| system.dofs().equation(d))
+            .collect();
+        let reach = contact_reach(system.cholesky(), lazy, &equations, threads);
+        Ok(SolidBodies {
+            model: Box::new(model),
+            system: Mutex::new(Box::new(system)),
+            reach,
+        })
+    }
+}
+
+impl Bodies for SolidBodies {
+    fn dim(&self) -> usize {
+        3
+    }
+
+    fn positions(&self) -> &[f64] {
+        self.model.mesh.nodes.as_flattened()
+    }
+
+    /// The identity on the mesh's nodes.
+    fn local(&self, id: usize) -> Option<usize> {
+        (id < self.model.mesh.n_nodes()).then_some(id)
+    }
+
+    fn external(&self, local: usize) -> usize {
+        local
+    }
+
+    fn field_len(&self) -> usize {
+        3 * self.model.mesh.n_nodes()
+    }
+
+    fn field_index(&self, d: usize) -> Option<usize> {
+        Some(d)
+    }
+
+    fn equation(&self, d: usize) -> Option<usize> {
+        lock(&self.system).dofs().equation(d)
+    }
+
+    fn stiffness(&mut self) -> Stiffness<'_> {
+        Stiffness::Factor {
+            cholesky: unlocked(&mut self.system).cholesky(),
+            reach: self.reach.as_deref(),
+        }
+    }
+
+    /// With a reach: the plain fill-reducing order.
+    fn lazy_flexibility(&self) -> bool {
+        self.reach.is_some()
+    }
+
+    fn factorizations(&self) -> usize {
+        lock(&self.system).cholesky().factorizations()
+    }
+
+    fn refactorize(&mut self) -> Result<()> {
+        unlocked(&mut self.system).refactorize(&self.model)
+    }
+
+    fn solve(&self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+        lock(&self.system).solve_for(&self.model, f, qp)
+    }
+
+    fn prescribed_len(&self) -> usize {
+        self.field_len()
+    }
+
+    fn load_key(&self, f: &[f64], qp: &[f64]) -> Vec<f64> {
+        let system = lock(&self.system);
+        load_key(f, qp, |d| system.dofs().equation(d).is_some())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solid::mesh::SolidMesh;
+    use crate::solid::{BrickFormulation, Isotropic};
+    use nalgebra::DMatrix;
+
+    /// A bar of 3 x 1 x 1 distorted bricks clamped at `x = 0`, one node of the free end moved
+    /// by a prescribed `w`, and its "contact" dofs: every dof of the free end `x = 3` and one
+    /// clamped dof (a fixed dof among the contact dofs, as the iteration has them).
+    fn bar() -> (SolidModel, Vec<usize>) {
+        let mesh = SolidMesh::uniform([3.0, 1.0, 1.0], [3, 1, 1])
+            .map(|[x, y, z]| [x + 0.1 * y * z, y + 0.05 * x * z, z + 0.08 * x * y]);
+        let material = Isotropic::new(1000.0, 0.3).unwrap();
+        let mut model = SolidModel::new(mesh, vec![material], BrickFormulation::Hybrid18).unwrap();
+        let clamped = model.mesh.nodes_where(|p| p[0] == 0.0);
+        for &n in &clamped {
+            for d in 0..3 {
+                model.fix(n, d, 0.0);
+            }
+        }
+        let end = model.mesh.nodes_where(|p| p[0] > 2.9);
+        model.fix(end[0], 2, 0.01);
+        let mut contact: Vec<usize> = end
+            .iter()
+            .flat_map(|&n| [3 * n, 3 * n + 1, 3 * n + 2])
+            .collect();
+        contact.push(3 * clamped[0]);
+        contact.sort_unstable();
+        (model, contact)
+    }
+
+    /// `F` by plain solves with a unit load at each contact dof (zero at fixed dofs).
+    fn solved_flexibility(bodies: &dyn Bodies, dofs: &[usize]) -> DMatrix<f64> {
+        let n = bodies.field_len();
+        let zero = vec![0.0; n];
+        let mut f = DMatrix::zeros(dofs.len(), dofs.len());
+        for (j, &dj) in dofs.iter().enumerate() {
+            if !bodies.is_free(dj) {
+                continue;
+            }
+            let mut unit = zero.clone();
+            unit[dj] = 1.0;
+            let u = bodies.solve(&unit, &zero).unwrap();
+            for (i, &di) in dofs.iter().enumerate() {
+                if bodies.is_free(di) {
+                    f[(i, j)] = u[di];
+                }
+            }
+        }
+        f
+    }
+
+    /// Through the trait, eager and lazy: 3 equations per node, flat positions, `F` against
+    /// plain solves with unit loads, `F V` against `F` times `V`, and (lazy) the images with
+    /// their back substitution against `F`; the prescribed motion in a solve.
+    #[test]
+    fn solid_bodies_give_the_flexibility_of_plain_solves() {
+        let (model, dofs) = bar();
+        let n_nodes = model.mesh.n_nodes();
+        let fixed = dofs
+            .iter()
+            .position(|&d| model.mesh.nodes[d / 3][0] == 0.0)
+            .expect("a clamped contact dof");
+        let vectors = vec![
+            vec![(0, 1.0), (3, -2.0)],
+            vec![(fixed, 5.0), (dofs.len() - 1, 0.5)],
+        ];
+        for lazy in [false, true] {
+            let mut bodies =
+                SolidBodies::new(model.clone(), &dofs, Backend::Faer, lazy, 1).unwrap();
+            assert_eq!(bodies.dim(), 3);
+            assert_eq!(bodies.positions().len(), 3 * n_nodes);
+            assert_eq!(bodies.positions()[3 * 5..3 * 6], model.mesh.nodes[5]);
+            assert_eq!(bodies.lazy_flexibility(), lazy);
+            assert!(!bodies.is_free(dofs[fixed]));
+            let reference = solved_flexibility(&bodies, &dofs);
+            let scale = reference.amax();
+            assert!(scale > 0.0);
+            let f = bodies.flexibility(&dofs).unwrap();
+            assert!((&f - &reference).amax() < 1e-12 * scale, "lazy {lazy}");
+            assert!(f.row(fixed).amax() == 0.0 && f.column(fixed).amax() == 0.0);
+            let times = bodies.flexibility_times(&dofs, &vectors).unwrap();
+            let mut v = DMatrix::zeros(dofs.len(), vectors.len());
+            for (c, column) in vectors.iter().enumerate() {
+                for &(j, w) in column {
+                    if bodies.is_free(dofs[j]) {
+                        v[(j, c)] = w;
+                    }
+                }
+            }
+            let expected = &reference * &v;
+            assert!(
+                (&times - &expected).amax() < 1e-12 * scale * 5.0,
+                "lazy {lazy}"
+            );
+            assert_eq!(bodies.has_images(), lazy);
+            if lazy {
+                let images = bodies.images(&dofs, &[vectors.clone()]).unwrap().unwrap();
+                let w = images[0].values.as_ref();
+                let gram = w.transpose() * w;
+                let vfv = v.transpose() * &expected;
+                for (i, j) in [(0, 0), (0, 1), (1, 1)] {
+                    assert!((gram[(i, j)] - vfv[(i, j)]).abs() < 1e-12 * scale * 25.0);
+                }
+                let c = [0.5, -1.0];
+                let back = bodies.back_substitute(&dofs, &[(&images[0], &c)]).unwrap();
+                for (i, b) in back.iter().enumerate() {
+                    let e = expected[(i, 0)] * c[0] + expected[(i, 1)] * c[1];
+                    assert!((b - e).abs() < 1e-12 * scale * 5.0);
+                }
+            } else {
+                assert!(bodies.images(&dofs, &[vectors.clone()]).unwrap().is_none());
+            }
+            // the prescribed motion: the solve meets it and holds the clamped dofs
+            let (f, qp) = (vec![0.0; 3 * n_nodes], model.prescribed_values());
+            let u = bodies.solve(&f, &qp).unwrap();
+            for (d, v) in model.prescribed() {
+                assert_eq!(u[d], v);
+            }
+            assert!(u.iter().any(|&x| x != 0.0 && x.abs() < 0.01));
+            assert_eq!(bodies.factorizations(), 1);
+            bodies.refactorize().unwrap();
+            assert_eq!(bodies.factorizations(), 2);
+            let f = bodies.flexibility(&dofs).unwrap();
+            assert!(
+                (&f - &reference).amax() < 1e-12 * scale,
+                "refactored, lazy {lazy}"
+            );
+        }
+    }
+}
