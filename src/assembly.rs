@@ -196,12 +196,12 @@ impl SparsePattern {
     /// Add the free-free part of an element matrix `ke(b, a)` (row `b`, column `a`, element
     /// dof order) over the global dofs `gd` of the element.
     pub fn add(&mut self, dofs: &DofMap, gd: &[usize], ke: impl Fn(usize, usize) -> f64) {
-        for a in 0..gd.len() {
-            let Some(col) = dofs.equation(gd[a]) else {
+        for (a, &da) in gd.iter().enumerate() {
+            let Some(col) = dofs.equation(da) else {
                 continue;
             };
-            for b in 0..gd.len() {
-                if let Some(row) = dofs.equation(gd[b]).filter(|&r| r >= col) {
+            for (b, &db) in gd.iter().enumerate() {
+                if let Some(row) = dofs.equation(db).filter(|&r| r >= col) {
                     let pos = self.position(row, col);
                     self.values[pos] += ke(b, a);
                 }

@@ -860,7 +860,7 @@ impl ContactAnalysis {
         options: ContactOptions,
         a_inside: Option<Vec<Option<[f64; 2]>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; 2 * bodies.positions().as_chunks::<2>().0.len()];
+        let mut slot = vec![None; bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
         }
@@ -873,28 +873,16 @@ impl ContactAnalysis {
             Flexibility::full(bodies.flexibility(&dofs)?)
         };
         timings.flexibility = clock.elapsed().as_secs_f64();
+        let x = bodies.positions().as_chunks::<2>().0;
         let reach: Vec<f64> = pairs
             .iter()
-            .map(|p| {
-                options.search_distance * mean_segment(&p.a, bodies.positions().as_chunks::<2>().0)
-            })
+            .map(|p| options.search_distance * mean_segment(&p.a, x))
             .collect();
-        let reference = evaluate_pairs(
-            &pairs,
-            &measures,
-            bodies.positions().as_chunks::<2>().0,
-            &reach,
-        )?;
+        let reference = evaluate_pairs(&pairs, &measures, x, &reach)?;
         let interiors = (options.kinematics == Kinematics::Small).then(|| {
             pairs
                 .iter()
-                .map(|p| {
-                    geometry::SegmentInteriors::new(
-                        &p.a,
-                        &p.b,
-                        bodies.positions().as_chunks::<2>().0,
-                    )
-                })
+                .map(|p| geometry::SegmentInteriors::new(&p.a, &p.b, x))
                 .collect()
         });
         for (i, pair) in pairs.iter().enumerate() {

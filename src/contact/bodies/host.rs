@@ -401,7 +401,7 @@ impl HostElements {
     }
 }
 
-/// Check host elements as [`ContactAnalysis::host`](super::iteration::ContactAnalysis::host)
+/// Check host elements as [`ContactAnalysis::host`](crate::contact::iteration::ContactAnalysis::host)
 /// will: ids, equations, element shapes.
 pub fn check_elements(elements: &HostElements, n_equations: usize) -> Result<()> {
     ElementPatch::new(elements.clone(), n_equations).map(|_| ())

@@ -178,8 +178,11 @@ pub trait Bodies: Send + Sync + std::fmt::Debug {
     /// The images `W V = L^-1 P E V` in the factor's space of the columns `V` of each batch
     /// (sparse over positions in `dofs`, as for
     /// [`flexibility_times`](Self::flexibility_times)), so that `V^T F V = (W V)^T (W V)`
-    /// (`F = E^T K^-1 E`, `K = P^T L L^T P`); see [`factor::images`]. `None` when the bodies
-    /// have no lazy faer factor (a host's callback, CHOLMOD, or an eager factor).
+    /// (`F = E^T K^-1 E`, `K = P^T L L^T P`): per batch one forward substitution within its
+    /// columns' own elimination-tree reach, the batches shared among the threads of the
+    /// contact dofs' reach ([`Reach::with_threads`]; the images do not depend on their number).
+    /// `None` when the bodies have no lazy faer factor (a host's callback, CHOLMOD, or an
+    /// eager factor).
     fn images(
         &mut self,
         dofs: &[usize],

@@ -9,7 +9,8 @@ use crate::solid::model::{SolidModel, SolidSystem};
 use crate::solver::{Backend, Reach};
 use std::sync::Mutex;
 
-/// A brick model and its `K_ff` (see the [module docs](self)).
+/// hycon's 3D brick model and its `K_ff` as contact bodies: 3 equations per node, node ids the
+/// mesh's, the field all `3 n_nodes` dofs (`f` external forces, `qp` prescribed values).
 pub struct SolidBodies {
     model: Box<SolidModel>,
     /// Locked so that solves can run from `&self` queries, one at a time.
@@ -213,7 +214,10 @@ mod tests {
             );
             assert_eq!(bodies.has_images(), lazy);
             if lazy {
-                let images = bodies.images(&dofs, &[vectors.clone()]).unwrap().unwrap();
+                let images = bodies
+                    .images(&dofs, std::slice::from_ref(&vectors))
+                    .unwrap()
+                    .unwrap();
                 let w = images[0].values.as_ref();
                 let gram = w.transpose() * w;
                 let vfv = v.transpose() * &expected;
@@ -227,7 +231,12 @@ mod tests {
                     assert!((b - e).abs() < 1e-12 * scale * 5.0);
                 }
             } else {
-                assert!(bodies.images(&dofs, &[vectors.clone()]).unwrap().is_none());
+                assert!(
+                    bodies
+                        .images(&dofs, std::slice::from_ref(&vectors))
+                        .unwrap()
+                        .is_none()
+                );
             }
             // the prescribed motion: the solve meets it and holds the clamped dofs
             let (f, qp) = (vec![0.0; 3 * n_nodes], model.prescribed_values());
