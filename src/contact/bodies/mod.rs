@@ -4,11 +4,11 @@
 //!
 //! Three implementors:
 //! * [`ModelBodies`]: hycon's own plane or axisymmetric [`Model`], assembled and factored by
-//!   hycon;
+//!   hycon ([`OwnBodies`] of a [`Model`]);
 //! * [`HostBodies`]: a host FE code's system ([`HostSystem`]): its stiffness in CSR (factored
 //!   here), a solve callback, or its condensed operator;
 //! * [`SolidBodies`]: hycon's own 3D brick model ([`SolidModel`](crate::solid::model::SolidModel)),
-//!   what the 3D contact iteration plugs in.
+//!   the same [`OwnBodies`] with 3 equations per node: what the 3D contact iteration plugs in.
 //!
 //! The iteration needs three things of any of them, all linear in the loads:
 //! * the contact-boundary flexibility `F = E^T K^-1 E` (`E` picks the contact dofs),
@@ -29,7 +29,7 @@ pub use host::{
     Condensed, CondensedKind, Csr, HostBodies, HostElements, HostNode, HostSolve, HostStiffness,
     HostSystem, Triangle, check_elements,
 };
-pub use model::ModelBodies;
+pub use model::{ModelBodies, OwnBodies, OwnModel};
 pub use solid::SolidBodies;
 
 use crate::error::Result;

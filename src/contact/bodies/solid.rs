@@ -3,122 +3,49 @@
 //! the contact dofs last (eager) or with `F` built lazily within their reach, as for the plane
 //! [`ModelBodies`](super::ModelBodies). What the 3D contact iteration plugs in.
 
-use super::{Bodies, Stiffness, contact_reach, lazy_on, load_key, lock, unlocked};
+use super::model::{OwnBodies, OwnModel};
+use crate::assembly::DofMap;
 use crate::error::Result;
 use crate::solid::model::{SolidModel, SolidSystem};
-use crate::solver::{Backend, Reach};
-use std::sync::Mutex;
+use crate::solver::{Backend, SparseCholesky};
 
 /// hycon's 3D brick model and its `K_ff` as contact bodies: 3 equations per node, node ids the
 /// mesh's, the field all `3 n_nodes` dofs (`f` external forces, `qp` prescribed values).
-pub struct SolidBodies {
-    model: Box<SolidModel>,
-    /// Locked so that solves can run from `&self` queries, one at a time.
-    system: Mutex<Box<SolidSystem>>,
-    reach: Option<Box<Reach>>,
-}
+pub type SolidBodies = OwnBodies<SolidModel>;
 
-impl std::fmt::Debug for SolidBodies {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "SolidBodies({:?})", lock(&self.system))
-    }
-}
-
-impl SolidBodies {
-    /// The brick model with the contact dofs `contact` (global dofs, `3 node + dir`): factored
-    /// with them eliminated last (eager), or, when `lazy` (faer only), in the plain
-    /// fill-reducing order with `F` built within their reach on up to `threads` threads
-    /// ([`ModelBodies::new`](super::ModelBodies::new)).
-    pub fn new(
-        model: SolidModel,
-        contact: &[usize],
-        backend: Backend,
-        lazy: bool,
-        threads: usize,
-    ) -> Result<Self> {
-        let lazy = lazy_on(backend, lazy);
-        let trailing = if lazy { &[][..] } else { contact };
-        let system = SolidSystem::with_trailing_on(&model, trailing, backend)?;
-        let equations: Vec<usize> = contact
-            .iter()
-            .filter_map(|&d| system.dofs().equation(d))
-            .collect();
-        let reach = contact_reach(system.cholesky(), lazy, &equations, threads);
-        Ok(SolidBodies {
-            model: Box::new(model),
-            system: Mutex::new(Box::new(system)),
-            reach,
-        })
-    }
-}
-
-impl Bodies for SolidBodies {
-    fn dim(&self) -> usize {
-        3
-    }
+impl OwnModel for SolidModel {
+    type System = SolidSystem;
+    const DIM: usize = 3;
 
     fn positions(&self) -> &[f64] {
-        self.model.mesh.nodes.as_flattened()
+        self.mesh.nodes.as_flattened()
     }
 
-    /// The identity on the mesh's nodes.
-    fn local(&self, id: usize) -> Option<usize> {
-        (id < self.model.mesh.n_nodes()).then_some(id)
+    fn factored(&self, trailing: &[usize], backend: Backend) -> Result<SolidSystem> {
+        SolidSystem::with_trailing_on(self, trailing, backend)
     }
 
-    fn external(&self, local: usize) -> usize {
-        local
+    fn dofs(system: &SolidSystem) -> &DofMap {
+        system.dofs()
     }
 
-    fn field_len(&self) -> usize {
-        3 * self.model.mesh.n_nodes()
+    fn cholesky(system: &mut SolidSystem) -> &SparseCholesky {
+        system.cholesky()
     }
 
-    fn field_index(&self, d: usize) -> Option<usize> {
-        Some(d)
+    fn refactorize(&self, system: &mut SolidSystem) -> Result<()> {
+        system.refactorize(self)
     }
 
-    fn equation(&self, d: usize) -> Option<usize> {
-        lock(&self.system).dofs().equation(d)
-    }
-
-    fn stiffness(&mut self) -> Stiffness<'_> {
-        Stiffness::Factor {
-            cholesky: unlocked(&mut self.system).cholesky(),
-            reach: self.reach.as_deref(),
-        }
-    }
-
-    /// With a reach: the plain fill-reducing order.
-    fn lazy_flexibility(&self) -> bool {
-        self.reach.is_some()
-    }
-
-    fn factorizations(&self) -> usize {
-        lock(&self.system).cholesky().factorizations()
-    }
-
-    fn refactorize(&mut self) -> Result<()> {
-        unlocked(&mut self.system).refactorize(&self.model)
-    }
-
-    fn solve(&self, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
-        lock(&self.system).solve_for(&self.model, f, qp)
-    }
-
-    fn prescribed_len(&self) -> usize {
-        self.field_len()
-    }
-
-    fn load_key(&self, f: &[f64], qp: &[f64]) -> Vec<f64> {
-        let system = lock(&self.system);
-        load_key(f, qp, |d| system.dofs().equation(d).is_some())
+    fn solve(&self, system: &mut SolidSystem, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+        system.solve_for(self, f, qp)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::bodies::Bodies;
     use crate::solid::mesh::SolidMesh;
     use crate::solid::{BrickFormulation, Isotropic};
     use nalgebra::DMatrix;
