@@ -7,12 +7,14 @@
 //! method, every contact iteration). Reactions and element stresses are computed only when
 //! asked for.
 
-use crate::assembly::{DofMap, SparsePattern, dof, for_each_selected_element_matrix};
+use crate::assembly::{
+    DofMap, FactoredSystem, SparsePattern, dof, for_each_selected_element_matrix,
+};
 use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
-use crate::solver::{Backend, SparseCholesky};
+use crate::solver::{Backend, OrderingRule, SparseCholesky};
 use faer::Mat;
 
 /// A prescribed displacement component.
@@ -284,8 +286,9 @@ impl Model {
     pub fn assemble_free(&self) -> Result<(DofMap, SparsePattern)> {
         let dofs = DofMap::new(
             self.mesh.n_nodes(),
+            2,
             self.prescribed.iter().map(|p| dof(p.node, p.dir)),
-        );
+        )?;
         let mut pattern = SparsePattern::new(&self.mesh, &dofs);
         pattern.assemble(&self.mesh, &self.materials, self.formulation, &dofs)?;
         Ok((dofs, pattern))
@@ -317,9 +320,7 @@ impl Model {
 /// The factored free-free stiffness of a model, reusable for many right-hand sides.
 #[derive(Debug)]
 pub struct LinearSystem {
-    dofs: DofMap,
-    pattern: SparsePattern,
-    cholesky: SparseCholesky,
+    system: FactoredSystem,
     seconds: [f64; 2],
 }
 
@@ -346,13 +347,11 @@ impl LinearSystem {
         let clock = std::time::Instant::now();
         let (dofs, pattern) = model.assemble_free()?;
         let assembly = clock.elapsed().as_secs_f64();
-        let trailing_free: Vec<usize> = trailing.iter().filter_map(|&d| dofs.equation(d)).collect();
-        let mut cholesky = SparseCholesky::analyze(pattern.symbolic(), backend, &trailing_free)?;
-        cholesky.factorize(pattern.matrix())?;
+        let mut system =
+            FactoredSystem::analyze(dofs, pattern, backend, trailing, OrderingRule::Auto)?;
+        system.factor()?;
         Ok(LinearSystem {
-            dofs,
-            pattern,
-            cholesky,
+            system,
             seconds: [assembly, clock.elapsed().as_secs_f64() - assembly],
         })
     }
@@ -361,16 +360,16 @@ impl LinearSystem {
     /// design that does not keep its factor pays per solve; the contact benchmark's
     /// refactor-every-iteration variant).
     pub fn refactorize(&mut self, model: &Model) -> Result<()> {
-        self.pattern
-            .assemble(&model.mesh, &model.materials, model.formulation, &self.dofs)?;
-        self.cholesky.factorize(self.pattern.matrix())
+        let (pattern, dofs) = self.system.pattern_mut();
+        pattern.assemble(&model.mesh, &model.materials, model.formulation, dofs)?;
+        self.system.factor()
     }
 
     /// The flexibility `(K^-1)` between the free dofs among the `trailing` dofs given to
     /// [`LinearSystem::with_trailing`] (in that order, prescribed ones skipped), read off the
     /// factor: no solves.
     pub fn condensed_flexibility(&self) -> Result<Mat<f64>> {
-        self.cholesky.condensed_inverse()
+        self.system.condensed_flexibility()
     }
 
     /// Wall-clock seconds of `[assembly, analysis + factorization]` when the system was built.
@@ -380,17 +379,20 @@ impl LinearSystem {
 
     /// The free-dof numbering.
     pub fn dofs(&self) -> &DofMap {
-        &self.dofs
+        self.system.dofs()
     }
 
     /// Number of stored entries of the lower triangle of `K_ff` and of its factor `L`.
     pub fn nnz(&self) -> (usize, usize) {
-        (self.pattern.nnz(), self.cholesky.nnz_l())
+        (
+            self.system.pattern().nnz(),
+            self.system.factorization().nnz_l(),
+        )
     }
 
     /// The factorization (for batched solves on free dofs).
     pub fn cholesky(&mut self) -> &mut SparseCholesky {
-        &mut self.cholesky
+        self.system.cholesky()
     }
 
     /// Solve for the model's loads and prescribed displacements (the model must be the one this
@@ -403,44 +405,7 @@ impl LinearSystem {
     /// Solve `K_ff q_f = f_f - K_fp q_p` for external forces `f` and prescribed values `qp`, both
     /// over all dofs (`qp` is read at the prescribed dofs only). One solve with the kept factor.
     pub fn solve_for(&mut self, model: &Model, f: &[f64], qp: &[f64]) -> Result<Solution> {
-        let n = 2 * model.mesh.n_nodes();
-        if f.len() != n || qp.len() != n {
-            return Err(Error::InvalidInput(format!(
-                "force and prescribed vectors need {n} entries, got {} and {}",
-                f.len(),
-                qp.len()
-            )));
-        }
-        let mut q: Vec<f64> = (0..n)
-            .map(|d| {
-                if self.dofs.equation(d).is_some() {
-                    0.0
-                } else {
-                    qp[d]
-                }
-            })
-            .collect();
-        // f_f - K_fp q_p: the element forces of the prescribed motion, at the free dofs.
-        let kq = if q.iter().any(|&v| v != 0.0) {
-            model.internal_forces(&q)?
-        } else {
-            vec![0.0; n]
-        };
-        let mut rhs = Mat::<f64>::zeros(self.dofs.n_free(), 1);
-        for d in 0..n {
-            if let Some(i) = self.dofs.equation(d) {
-                rhs[(i, 0)] = f[d] - kq[d];
-            }
-        }
-        self.cholesky.solve_in_place(rhs.as_mut())?;
-        for (d, v) in q.iter_mut().enumerate() {
-            if let Some(i) = self.dofs.equation(d) {
-                *v = rhs[(i, 0)];
-            }
-        }
-        if let Some(d) = q.iter().position(|v| !v.is_finite()) {
-            return Err(Error::Solver(format!("non-finite displacement at dof {d}")));
-        }
+        let q = self.system.solve_for(f, qp, |q| model.internal_forces(q))?;
         Ok(Solution { q })
     }
 }

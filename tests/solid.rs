@@ -2,9 +2,10 @@
 //! the constant-stress patch test on an irregular mesh, stress recovery and face tractions, the
 //! shape check, and the 3D model's assembly with its analysis reused.
 
+use hycon::assembly::DofMap;
 use hycon::solid::geometry::{FACES, NODE_XI};
 use hycon::solid::mesh::{SolidMesh, graded};
-use hycon::solid::model::{NodalDofs, SolidModel, SolidSystem};
+use hycon::solid::model::{SolidModel, SolidSystem};
 use hycon::solid::{
     self, BrickFormulation, BrickMatrix, Isotropic, N_DOF, ShapePolicy, ShapeReport,
     recover_stress, stiffness_into,
@@ -449,7 +450,7 @@ fn system_reuses_its_analysis() {
         .into_iter()
         .flat_map(|n| [3 * n, 3 * n + 1, 3 * n + 2])
         .collect();
-    let dofs = NodalDofs::new(mesh.n_nodes(), 3, clamped.iter().copied()).unwrap();
+    let dofs = DofMap::new(mesh.n_nodes(), 3, clamped.iter().copied()).unwrap();
     assert_eq!(dofs.n_free(), 3 * (125 - 25));
     let mut system = SolidSystem::new(&mesh, dofs, Backend::Faer).unwrap();
     for f in BrickFormulation::ALL {
@@ -459,7 +460,7 @@ fn system_reuses_its_analysis() {
         }
     }
     assert_eq!(system.cholesky().factorizations(), 4);
-    assert!(NodalDofs::new(2, 3, [6]).is_err());
+    assert!(DofMap::new(2, 3, [6]).is_err());
 }
 
 proptest::proptest! {
@@ -493,4 +494,90 @@ proptest::proptest! {
             proptest::prop_assert_eq!(zero, 6, "{:?} nu {}: {:?}", f, nu, ev);
         }
     }
+}
+
+/// A cantilever of distorted bricks (interior nodes moved), clamped at `x = 0`, one node of
+/// the free end moved by a prescribed `v = 1e-3` and the end loaded in `-z`: what the trailing
+/// and condensed solves are checked on. Also the contact body's test subject
+/// (`contact::bodies::solid`).
+fn distorted_cantilever() -> SolidModel {
+    let mesh = SolidMesh::uniform([2.0, 1.0, 1.0], [4, 2, 2])
+        .distort(0.2, 11, |p| p[0] > 0.0 && p[0] < 2.0);
+    let mut model = SolidModel::new(mesh, vec![steel()], BrickFormulation::Hybrid18).unwrap();
+    for n in model.mesh.nodes_where(|p| p[0] == 0.0) {
+        for d in 0..3 {
+            model.fix(n, d, 0.0);
+        }
+    }
+    let end = model.mesh.nodes_where(|p| p[0] == 2.0);
+    model.fix(end[0], 1, 1e-3);
+    for &n in &end {
+        model.load(n, [0.0, 0.0, -100.0]);
+    }
+    model
+}
+
+/// The dofs of the top face `z = 1`, sorted: those at `x = 0` are clamped (skipped by the
+/// trailing unknowns).
+fn top_dofs(model: &SolidModel) -> Vec<usize> {
+    let mut dofs: Vec<usize> = model
+        .mesh
+        .nodes_where(|p| p[2] == 1.0)
+        .into_iter()
+        .flat_map(|n| [3 * n, 3 * n + 1, 3 * n + 2])
+        .collect();
+    dofs.sort_unstable();
+    dofs
+}
+
+/// The solid system with trailing unknowns solves as the plain one does (the prescribed motion
+/// through `K_fp u_p` from element forces, against the plain solve's assembled correction), and
+/// the flexibility read off its factor's trailing block is `K^-1` between those dofs: each
+/// column equals a plain solve with a unit load, to round-off of the flexibility's scale.
+#[test]
+fn trailing_and_condensed_solves_match_the_plain_solve() {
+    let model = distorted_cantilever();
+    let plain = model.solve().unwrap().displacements;
+    let trailing = top_dofs(&model);
+    assert!(
+        trailing
+            .iter()
+            .any(|&d| model.prescribed().any(|(p, _)| p == d))
+    );
+    let mut system = SolidSystem::with_trailing_on(&model, &trailing, Backend::Faer).unwrap();
+    let (f, qp) = (model.external_forces().to_vec(), model.prescribed_values());
+    let u = system.solve_for(&model, &f, &qp).unwrap();
+    let scale = plain.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let worst = u
+        .iter()
+        .zip(&plain)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(
+        scale > 1e-4 && worst < 1e-12 * scale,
+        "{worst:e} of {scale:e}"
+    );
+
+    let free: Vec<usize> = trailing
+        .iter()
+        .copied()
+        .filter(|&d| system.dofs().equation(d).is_some())
+        .collect();
+    let flexibility = system.condensed_flexibility().unwrap();
+    assert_eq!(
+        (flexibility.nrows(), flexibility.ncols()),
+        (free.len(), free.len())
+    );
+    let mut reference = SolidSystem::with_trailing_on(&model, &[], Backend::Faer).unwrap();
+    let zero = vec![0.0; f.len()];
+    let largest = (0..free.len()).fold(0.0f64, |m, i| m.max(flexibility[(i, i)].abs()));
+    for (j, &dj) in free.iter().enumerate() {
+        let mut unit = zero.clone();
+        unit[dj] = 1.0;
+        let column = reference.solve_for(&model, &unit, &zero).unwrap();
+        for (i, &di) in free.iter().enumerate() {
+            let d = (flexibility[(i, j)] - column[di]).abs();
+            assert!(d < 1e-12 * largest, "F[{i}][{j}]: {d:e} of {largest:e}");
+        }
+    }
+    assert_eq!(reference.cholesky().factorizations(), 1);
 }

@@ -5,8 +5,9 @@
 //! bricks needs more than twice that for `L` alone, so its analysis fits and its factorization
 //! cannot.
 
+use hycon::assembly::DofMap;
 use hycon::solid::mesh::SolidMesh;
-use hycon::solid::model::{NodalDofs, SolidSystem};
+use hycon::solid::model::SolidSystem;
 use hycon::solid::{BrickFormulation, Isotropic};
 use hycon::solver::Backend;
 
@@ -26,7 +27,7 @@ fn a_factor_beyond_memory_is_an_error() {
         .nodes_where(|p| p[0] == 0.0)
         .into_iter()
         .flat_map(|k| [3 * k, 3 * k + 1, 3 * k + 2]);
-    let dofs = NodalDofs::new(mesh.n_nodes(), 3, fixed).unwrap();
+    let dofs = DofMap::new(mesh.n_nodes(), 3, fixed).unwrap();
     let mut system = SolidSystem::new(&mesh, dofs, Backend::Faer).unwrap();
     let factor_bytes = system.cholesky().nnz_l() as u64 * 8;
     let headroom = 256 << 20;

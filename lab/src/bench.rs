@@ -96,8 +96,9 @@ pub fn scale_run(n: usize) -> Result<ScaleRun> {
     let clamped = &mesh.node_sets["left"];
     let dofs = DofMap::new(
         mesh.n_nodes(),
+        2,
         clamped.iter().flat_map(|&n| [dof(n, 0), dof(n, 1)]),
-    );
+    )?;
     let mut pattern = SparsePattern::new(&mesh, &dofs);
     pattern.assemble(&mesh, &[material], Formulation::Hybrid, &dofs)?;
     run.assembly = t.elapsed().as_secs_f64();
@@ -172,7 +173,7 @@ pub fn brick_scale_run(
     cholmod: &[bool],
 ) -> Result<(usize, usize, Vec<BrickOrderingRun>)> {
     use hycon::solid::mesh::SolidMesh;
-    use hycon::solid::model::{NodalDofs, SolidSystem};
+    use hycon::solid::model::SolidSystem;
     use hycon::solid::{BrickFormulation, Isotropic};
     let mesh = SolidMesh::uniform([1.0, 1.0, 1.0], [n, n, n]);
     let fixed: Vec<usize> = mesh
@@ -180,7 +181,7 @@ pub fn brick_scale_run(
         .into_iter()
         .flat_map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
         .collect();
-    let dofs = NodalDofs::new(mesh.n_nodes(), 3, fixed)?;
+    let dofs = DofMap::new(mesh.n_nodes(), 3, fixed)?;
     let material = Isotropic::new(1000.0, 0.3)?;
     let mut runs = Vec::new();
     let (mut n_free, mut nnz_k) = (0, 0);

@@ -67,7 +67,7 @@
 //! increment's motion. Any other cycle stops the increment with an error naming the node; so
 //! does the iteration cap. A failed increment leaves the last converged state untouched.
 
-use super::bodies::{Bodies, HostElements, HostSystem};
+use super::bodies::{Bodies, HostBodies, HostElements, HostSystem, ModelBodies};
 use super::friction::{Coulomb, FrictionLaw};
 use super::geometry::{ContactGeometry, ContactSurface};
 use super::handover::{self, Section};
@@ -111,8 +111,9 @@ use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
 
-/// The dimension of the bodies' positions (plane and axisymmetric: 2).
-const DIM: usize = 2;
+/// Equations per node of the bodies the plane and axisymmetric constructors
+/// ([`ContactAnalysis::new`], [`ContactAnalysis::host`]) build.
+const PLANE_DIM: usize = 2;
 
 /// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
 /// with its body on the left), and the Coulomb friction coefficient between them.
@@ -674,7 +675,7 @@ struct NodeData {
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
 /// contact-boundary flexibility, and the last converged state.
 pub struct ContactAnalysis {
-    bodies: Bodies,
+    bodies: Box<dyn Bodies>,
     /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
     pairs: Vec<ContactPair>,
     /// The geometry of each pair (its A side's surface measure with it, all of one kind).
@@ -785,14 +786,14 @@ impl ContactAnalysis {
         let mut dofs: Vec<usize> = pairs
             .iter()
             .flat_map(|p| p.a.iter().chain(&p.b))
-            .flat_map(|&n| (0..DIM).map(move |c| dof(n, c)))
+            .flat_map(|&n| (0..PLANE_DIM).map(move |c| dof(n, c)))
             .collect();
         dofs.sort_unstable();
         dofs.dedup();
         let lazy = options.kinematics == Kinematics::Small;
-        let bodies = Bodies::model(model, &dofs, options.backend, lazy, options.threads)?;
+        let bodies = ModelBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
         let geometries = plane_geometries(&pairs, measures);
-        Self::setup(bodies, pairs, geometries, dofs, options, None)
+        Self::setup(Box::new(bodies), pairs, geometries, dofs, options, None)
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -829,9 +830,9 @@ impl ContactAnalysis {
         let measures = host_measures(&sections, &pairs, system.elements.as_ref())?;
         let clock = std::time::Instant::now();
         let lazy = options.kinematics == Kinematics::Small;
-        let bodies = Bodies::host(system, options.backend, lazy, options.threads)?;
+        let bodies = HostBodies::new(system, options.backend, lazy, options.threads)?;
         let seconds = clock.elapsed().as_secs_f64();
-        let n_nodes = bodies.positions().len();
+        let n_nodes = bodies.positions().as_chunks::<2>().0.len();
         check_host_nodes(&pairs, &bodies)?;
         let pairs: Vec<ContactPair> = pairs
             .into_iter()
@@ -845,9 +846,10 @@ impl ContactAnalysis {
             })
             .collect();
         check_host_radii(&pairs, &sections, &bodies)?;
-        let dofs = (0..DIM * n_nodes).collect();
+        let dofs = (0..PLANE_DIM * n_nodes).collect();
         let geometries = plane_geometries(&pairs, measures);
-        let mut analysis = Self::setup(bodies, pairs, geometries, dofs, options, Some(a_inside))?;
+        let mut analysis =
+            Self::setup(Box::new(bodies), pairs, geometries, dofs, options, Some(a_inside))?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }
@@ -857,14 +859,14 @@ impl ContactAnalysis {
     /// host's are checked before its stiffness is factored). `a_inside`: a host's points inside body A per
     /// pair (`None` for a model, whose element edges tell the sides).
     fn setup(
-        mut bodies: Bodies,
+        mut bodies: Box<dyn Bodies>,
         pairs: Vec<ContactPair>,
         mut geometries: Vec<Box<dyn ContactGeometry>>,
         dofs: Vec<usize>,
         options: ContactOptions,
         a_inside: Option<Vec<Option<Vector>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; bodies.positions().as_flattened().len()];
+        let mut slot = vec![None; bodies.positions().len()];
         for (i, &d) in dofs.iter().enumerate() {
             slot[d] = Some(i);
         }
@@ -877,7 +879,7 @@ impl ContactAnalysis {
             Flexibility::full(bodies.flexibility(&dofs)?)
         };
         timings.flexibility = clock.elapsed().as_secs_f64();
-        let x = bodies.positions().as_flattened();
+        let x = bodies.positions();
         let reach: Vec<f64> = (geometries.iter())
             .map(|g| options.search_distance * g.mean_size(x))
             .collect();
@@ -896,7 +898,7 @@ impl ContactAnalysis {
                 None => Side::Edges,
                 Some(points) => Side::Inside(points.get(i).copied().flatten()),
             };
-            check_facing(&**geometry, &bodies, options.search_distance, side)
+            check_facing(&**geometry, bodies.as_ref(), options.search_distance, side)
                 .map_err(|e| in_pair(i, e))?;
         }
         let laws = pairs
@@ -1112,7 +1114,7 @@ impl ContactAnalysis {
     /// both sides represent with `u_r(0) = 0`) slips nowhere, so the stick rows were dependent
     /// and the small system singular. Such a node closes frictionless and keeps `ts = 0`.
     fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
-        if self.geometries[p].frictionless_at(k, self.bodies.positions().as_flattened()) {
+        if self.geometries[p].frictionless_at(k, self.bodies.positions()) {
             &Coulomb::NONE
         } else {
             &*self.laws[p]
@@ -1146,7 +1148,7 @@ impl ContactAnalysis {
         match self.options.kinematics {
             Kinematics::Small => 0.0,
             Kinematics::Finite => {
-                let x = self.bodies.positions().as_flattened();
+                let x = self.bodies.positions();
                 let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d]).collect();
                 let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
                 self.largest_motion.max(round_off / self.options.tolerance)
@@ -1157,7 +1159,7 @@ impl ContactAnalysis {
     /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
     /// nodes keep their reference positions: the contact geometry never reads them).
     fn positions(&self, uc: &[f64]) -> Vec<f64> {
-        let mut x = self.bodies.positions().as_flattened().to_vec();
+        let mut x = self.bodies.positions().to_vec();
         for (&d, &u) in self.dofs.iter().zip(uc) {
             x[d] += u;
         }
@@ -1168,7 +1170,7 @@ impl ContactAnalysis {
     /// reference positions `X` under small kinematics, `x` itself under finite kinematics.
     fn geometry_positions<'a>(&'a self, x: &'a [f64]) -> &'a [f64] {
         match self.options.kinematics {
-            Kinematics::Small => self.bodies.positions().as_flattened(),
+            Kinematics::Small => self.bodies.positions(),
             Kinematics::Finite => x,
         }
     }
@@ -1240,7 +1242,7 @@ impl ContactAnalysis {
                 continue;
             }
             let reach = 4.0 * motion;
-            let x = self.bodies.positions().as_flattened();
+            let x = self.bodies.positions();
             let wider = self.geometries[p].evaluate(x, reach)?;
             let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
                 .enumerate()
@@ -1265,9 +1267,9 @@ impl ContactAnalysis {
         self.slot[d].expect("a dof of a contact node")
     }
 
-    /// The dimension of the positions (2: plane and axisymmetric bodies).
+    /// The dimension of the positions: the bodies' equations per node.
     fn dim(&self) -> usize {
-        DIM
+        self.bodies.dim()
     }
 
     /// Contact node `n`'s vector of `u` over the contact dofs.
@@ -1620,8 +1622,12 @@ fn host_measures(
 
 /// In axisymmetry, no node of a host's pairs (local ids) at `r < 0` (see
 /// [`handover::check_radii`]).
-fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies) -> Result<()> {
-    let x = bodies.positions();
+fn check_host_radii(
+    pairs: &[ContactPair],
+    sections: &[Section],
+    bodies: &dyn Bodies,
+) -> Result<()> {
+    let x = bodies.positions().as_chunks::<2>().0;
     for (i, (pair, section)) in pairs.iter().zip(sections).enumerate() {
         for (side, ids) in [("A", &pair.a), ("B", &pair.b)] {
             let points: Vec<f64> = ids.iter().flat_map(|&n| x[n]).collect();
@@ -1642,11 +1648,11 @@ fn check_host_radii(pairs: &[ContactPair], sections: &[Section], bodies: &Bodies
 /// inside it, checked by [`ContactGeometry::check_inside`]), and a point it gives is always checked.
 fn check_facing(
     geometry: &dyn ContactGeometry,
-    bodies: &Bodies,
+    bodies: &dyn Bodies,
     search_distance: f64,
     side: Side,
 ) -> Result<()> {
-    let x = bodies.positions().as_flattened();
+    let x = bodies.positions();
     let f = geometry.facing(x, search_distance * geometry.mean_size(x));
     let judged = f.facing + f.touching + f.same_way + f.behind;
     let node = |k: Option<usize>| k.map_or(0, |k| bodies.external(geometry.a_nodes()[k]));
@@ -1705,7 +1711,7 @@ pub(crate) fn in_pair(i: usize, e: Error) -> Error {
 }
 
 /// Every node of a host's pairs must be one of the contact nodes it described.
-fn check_host_nodes(pairs: &[ContactPair], bodies: &Bodies) -> Result<()> {
+fn check_host_nodes(pairs: &[ContactPair], bodies: &dyn Bodies) -> Result<()> {
     for (i, p) in pairs.iter().enumerate() {
         if let Some(&n) = p.a.iter().chain(&p.b).find(|&&n| bodies.local(n).is_none()) {
             return Err(Error::InvalidInput(format!(

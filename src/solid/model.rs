@@ -1,173 +1,94 @@
 //! A linear static 3D model of bricks: dof numbering (3 dofs per node), sparse assembly into the
 //! sparse Cholesky with its symbolic analysis kept and reused, solve, stresses.
 //!
-//! # Why a parallel layer, and what is shared
-//! The dof map here ([`NodalDofs`]) is the plane [`crate::assembly::DofMap`] with the number of
-//! dofs per node as a value instead of the constant 2: one concept, written once, generic over
-//! the dimension, so the plane map can become `NodalDofs` with `per_node = 2` at a later
-//! refactor. The element loop stays parallel (plane elements have 4 to 6 nodes, a 2D material
-//! with thickness and analysis kind, `MAX_DOF = 12` storage; bricks have 8 nodes, an
-//! [`Isotropic`] material and 24 x 24 storage): merging the two loops would put a dimension
-//! switch into every kernel call for no shared mathematics. The solver is shared unchanged:
-//! [`SolidSystem`] analyses the pattern once with [`SparseCholesky::analyze`] and refactors
-//! into the same symbolic structure whenever the values change (new materials, another
-//! formulation), then solves any number of load cases.
+//! # What is shared with the plane model
+//! The dof map ([`DofMap`]), the lower-triangle pattern ([`SparsePattern`]) and the factored
+//! free-free system with its trailing unknowns and solves ([`FactoredSystem`]) are the plane
+//! model's, with 3 dofs per node. The element loop stays parallel (plane elements have 4 to 6
+//! nodes, a 2D material with thickness and analysis kind, `MAX_DOF = 12` storage; bricks have 8
+//! nodes, an [`Isotropic`] material and 24 x 24 storage): merging the two loops would put a
+//! dimension switch into every kernel call for no shared mathematics. [`SolidSystem`] analyses
+//! the pattern once and refactors into the same symbolic structure whenever the values change
+//! (new materials, another formulation), then solves any number of load cases; with trailing
+//! unknowns its factor gives their flexibility (what contact needs of the bodies, see
+//! [`SolidBodies`](crate::contact::bodies::SolidBodies)).
 
 use super::mesh::SolidMesh;
 use super::{BrickFormulation, BrickMatrix, BrickStress, Isotropic, N_DOF, N_NODES};
+use crate::assembly::{DofMap, FactoredSystem, SparsePattern, element_dofs};
 use crate::error::{Error, Result};
 use crate::solver::{Backend, FillOrdering, OrderingRule, SparseCholesky};
 use faer::Mat;
-use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::sparse::SparseColMatRef;
 
-/// Marker for a prescribed (eliminated) dof.
-const PRESCRIBED: usize = usize::MAX;
-
-/// Free-dof numbering for `per_node` dofs per node: global dof `per_node * node + dir`;
-/// `equation(d)` is its free index, or `None` when prescribed.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct NodalDofs {
-    per_node: usize,
-    equation: Vec<usize>,
-    n_free: usize,
-}
-
-impl NodalDofs {
-    /// Number the dofs of `n_nodes` nodes with `per_node` dofs each, leaving out the global dofs
-    /// in `prescribed` (out-of-range indices are an error).
-    pub fn new(
-        n_nodes: usize,
-        per_node: usize,
-        prescribed: impl IntoIterator<Item = usize>,
-    ) -> Result<Self> {
-        let mut equation = vec![0; per_node * n_nodes];
-        for d in prescribed {
-            let len = equation.len();
-            *equation.get_mut(d).ok_or_else(|| {
-                Error::InvalidInput(format!("prescribed dof {d} out of range ({len} dofs)"))
-            })? = PRESCRIBED;
-        }
-        let mut n_free = 0;
-        for e in equation.iter_mut().filter(|e| **e != PRESCRIBED) {
-            *e = n_free;
-            n_free += 1;
-        }
-        Ok(NodalDofs {
-            per_node,
-            equation,
-            n_free,
-        })
-    }
-
-    /// Global dof of `node` in direction `dir`.
-    #[inline]
-    pub fn dof(&self, node: usize, dir: usize) -> usize {
-        self.per_node * node + dir
-    }
-
-    /// Free index of global dof `d`, `None` if it is prescribed.
-    #[inline]
-    pub fn equation(&self, d: usize) -> Option<usize> {
-        let e = self.equation[d];
-        (e != PRESCRIBED).then_some(e)
-    }
-
-    /// Number of free dofs.
-    pub fn n_free(&self) -> usize {
-        self.n_free
-    }
-
-    /// Total number of dofs.
-    pub fn n_dofs(&self) -> usize {
-        self.equation.len()
-    }
-
-    /// Global dofs of an element's nodes in element dof order (`per_node` per node) into `out`.
-    pub fn element_dofs(&self, nodes: &[usize], out: &mut [usize]) {
-        for (i, &n) in nodes.iter().enumerate() {
-            for d in 0..self.per_node {
-                out[self.per_node * i + d] = self.dof(n, d);
-            }
-        }
-    }
-}
-
-/// The free-free stiffness (lower triangle, compressed columns), its analysed factorization and
-/// the dof map: built once per mesh and set of prescribed dofs, refactored for new values.
+/// The free-free stiffness of a brick mesh over its dof map (3 dofs per node), its analysed
+/// factorization: built once per mesh and set of prescribed dofs, refactored for new values.
 #[derive(Debug)]
 pub struct SolidSystem {
-    dofs: NodalDofs,
-    col_ptr: Vec<usize>,
-    row_idx: Vec<usize>,
-    values: Vec<f64>,
-    cholesky: SparseCholesky,
+    system: FactoredSystem,
 }
 
 impl SolidSystem {
     /// Pattern from the node adjacency of `mesh` expanded to the free dofs, and its symbolic
     /// analysis with `backend` (the ordering chosen by [`OrderingRule::Auto`]).
-    pub fn new(mesh: &SolidMesh, dofs: NodalDofs, backend: Backend) -> Result<Self> {
+    pub fn new(mesh: &SolidMesh, dofs: DofMap, backend: Backend) -> Result<Self> {
         Self::with_ordering(mesh, dofs, backend, OrderingRule::Auto)
     }
 
     /// [`new`](Self::new) with the fill-reducing ordering chosen by `rule`.
     pub fn with_ordering(
         mesh: &SolidMesh,
-        dofs: NodalDofs,
+        dofs: DofMap,
         backend: Backend,
         rule: OrderingRule<'_>,
     ) -> Result<Self> {
-        let mut adjacency = vec![Vec::new(); mesh.n_nodes()];
-        for el in &mesh.elements {
-            for &a in el {
-                adjacency[a].extend_from_slice(el);
-            }
-        }
-        let mut col_ptr = vec![0];
-        let mut row_idx = Vec::new();
-        for (node, list) in adjacency.iter_mut().enumerate() {
-            list.sort_unstable();
-            list.dedup();
-            for dir in 0..3 {
-                let Some(col) = dofs.equation(dofs.dof(node, dir)) else {
-                    continue;
-                };
-                for &other in list.iter() {
-                    for d in 0..3 {
-                        if let Some(row) = dofs.equation(dofs.dof(other, d)).filter(|&r| r >= col) {
-                            row_idx.push(row);
-                        }
-                    }
-                }
-                col_ptr.push(row_idx.len());
-            }
-        }
-        let n = dofs.n_free();
-        let symbolic = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
-        let cholesky = SparseCholesky::analyze_ordered(symbolic, backend, &[], rule)?;
-        let values = vec![0.0; row_idx.len()];
+        Self::analyze(mesh, dofs, backend, &[], rule)
+    }
+
+    /// The system of `model` (its prescribed dofs left out), assembled and factored with
+    /// `backend`, the free ones among the global dofs `trailing` eliminated last so that
+    /// [`condensed_flexibility`](Self::condensed_flexibility) reads their flexibility off the
+    /// factor (as the plane [`LinearSystem::with_trailing_on`](crate::model::LinearSystem::with_trailing_on)).
+    /// Loads then go through [`solve_for`](Self::solve_for).
+    pub fn with_trailing_on(
+        model: &SolidModel,
+        trailing: &[usize],
+        backend: Backend,
+    ) -> Result<Self> {
+        backend.check_available()?;
+        let dofs = model.dof_map()?;
+        let mut system = Self::analyze(&model.mesh, dofs, backend, trailing, OrderingRule::Auto)?;
+        system.refactorize(model)?;
+        Ok(system)
+    }
+
+    fn analyze(
+        mesh: &SolidMesh,
+        dofs: DofMap,
+        backend: Backend,
+        trailing: &[usize],
+        rule: OrderingRule<'_>,
+    ) -> Result<Self> {
+        let elements = mesh.elements.iter().map(|e| &e[..]);
+        let pattern = SparsePattern::from_elements(mesh.n_nodes(), elements, &dofs);
         Ok(SolidSystem {
-            dofs,
-            col_ptr,
-            row_idx,
-            values,
-            cholesky,
+            system: FactoredSystem::analyze(dofs, pattern, backend, trailing, rule)?,
         })
     }
 
     /// The dof map.
-    pub fn dofs(&self) -> &NodalDofs {
-        &self.dofs
+    pub fn dofs(&self) -> &DofMap {
+        self.system.dofs()
     }
 
     /// Stored entries of the lower triangle of `K_ff`.
     pub fn nnz(&self) -> usize {
-        self.row_idx.len()
+        self.system.pattern().nnz()
     }
 
     /// The factorization (for its statistics: order, `nnz(L)`, factorization count).
     pub fn cholesky(&self) -> &SparseCholesky {
-        &self.cholesky
+        self.system.factorization()
     }
 
     /// Assemble `K_ff` from every brick and factor it (reusing the analysis). Returns the
@@ -193,43 +114,29 @@ impl SolidSystem {
         formulation: BrickFormulation,
         prescribed: &[(usize, f64)],
     ) -> Result<Vec<f64>> {
-        let mut u_p = vec![0.0; self.dofs.n_dofs()];
+        let (pattern, dofs) = self.system.pattern_mut();
+        let mut u_p = vec![0.0; dofs.n_dofs()];
         for &(d, v) in prescribed {
             u_p[d] = v;
         }
-        let mut correction = vec![0.0; self.dofs.n_free()];
-        self.values.fill(0.0);
+        let mut correction = vec![0.0; dofs.n_free()];
+        pattern.clear();
         let mut ke = BrickMatrix::zeros();
         let mut gd = [0; N_DOF];
         for (e, el) in mesh.elements.iter().enumerate() {
-            let material = materials.get(mesh.element_material[e]).ok_or_else(|| {
-                Error::InvalidInput(format!(
-                    "brick {e} uses material {} but only {} are defined",
-                    mesh.element_material[e],
-                    materials.len()
-                ))
-            })?;
+            let material = brick_material(mesh, materials, e)?;
             super::stiffness_into(formulation, &mesh.element_coords(e), material, &mut ke)
                 .map_err(|kind| Error::at_element(kind, e))?;
-            self.dofs.element_dofs(el, &mut gd);
+            dofs.element_dofs(el, &mut gd);
+            pattern.add(dofs, &gd, |b, a| ke[(b, a)]);
             for a in 0..N_DOF {
-                match self.dofs.equation(gd[a]) {
-                    Some(col) => {
-                        for b in 0..N_DOF {
-                            if let Some(row) = self.dofs.equation(gd[b]).filter(|&r| r >= col) {
-                                let pos = self.position(row, col);
-                                self.values[pos] += ke[(b, a)];
-                            }
-                        }
+                if dofs.equation(gd[a]).is_some() || u_p[gd[a]] == 0.0 {
+                    continue;
+                }
+                for b in 0..N_DOF {
+                    if let Some(row) = dofs.equation(gd[b]) {
+                        correction[row] -= ke[(b, a)] * u_p[gd[a]];
                     }
-                    None if u_p[gd[a]] != 0.0 => {
-                        for b in 0..N_DOF {
-                            if let Some(row) = self.dofs.equation(gd[b]) {
-                                correction[row] -= ke[(b, a)] * u_p[gd[a]];
-                            }
-                        }
-                    }
-                    None => {}
                 }
             }
         }
@@ -238,32 +145,54 @@ impl SolidSystem {
 
     /// Factor the assembled `K_ff` (reusing the analysis).
     pub fn factor(&mut self) -> Result<()> {
-        let n = self.dofs.n_free();
-        let symbolic =
-            SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
-        let matrix = SparseColMatRef::new(symbolic, &self.values);
-        self.cholesky.factorize(matrix)
+        self.system.factor()
+    }
+
+    /// Assemble `K_ff` of `model` (the one the system was built from) and factor it again,
+    /// reusing the analysis.
+    pub fn refactorize(&mut self, model: &SolidModel) -> Result<()> {
+        self.assemble(&model.mesh, &model.materials, model.formulation, &[])?;
+        self.factor()
     }
 
     /// The assembled lower triangle of `K_ff`.
     pub fn matrix(&self) -> SparseColMatRef<'_, usize, f64> {
-        let n = self.dofs.n_free();
-        let symbolic =
-            SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
-        SparseColMatRef::new(symbolic, &self.values)
+        self.system.pattern().matrix()
     }
 
     /// Solve `K_ff u_f = f_f` for each column of `rhs` (free equations), in place.
     pub fn solve_in_place(&mut self, rhs: &mut Mat<f64>) -> Result<()> {
-        self.cholesky.solve_in_place(rhs.as_mut())
+        self.system.cholesky().solve_in_place(rhs.as_mut())
     }
 
-    fn position(&self, row: usize, col: usize) -> usize {
-        let (lo, hi) = (self.col_ptr[col], self.col_ptr[col + 1]);
-        lo + self.row_idx[lo..hi]
-            .binary_search(&row)
-            .expect("entry outside the assembled pattern")
+    /// The flexibility `(K^-1)` between the free dofs among the `trailing` dofs given to
+    /// [`with_trailing_on`](Self::with_trailing_on) (in that order, prescribed ones skipped),
+    /// read off the factor: no solves.
+    pub fn condensed_flexibility(&self) -> Result<Mat<f64>> {
+        self.system.condensed_flexibility()
     }
+
+    /// Solve `K_ff u_f = f_f - K_fp u_p` for external forces `f` and prescribed values `qp`,
+    /// both over all `3 n_nodes` dofs (`qp` read at the prescribed dofs only), with the kept
+    /// factor of `model` (the one the system was built from): the displacement over all dofs.
+    pub fn solve_for(&mut self, model: &SolidModel, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
+        self.system.solve_for(f, qp, |q| model.internal_forces(q))
+    }
+}
+
+/// The material of brick `e`, or an error naming it.
+fn brick_material<'a>(
+    mesh: &SolidMesh,
+    materials: &'a [Isotropic],
+    e: usize,
+) -> Result<&'a Isotropic> {
+    materials.get(mesh.element_material[e]).ok_or_else(|| {
+        Error::InvalidInput(format!(
+            "brick {e} uses material {} but only {} are defined",
+            mesh.element_material[e],
+            materials.len()
+        ))
+    })
 }
 
 /// A linear static problem on a brick mesh: prescribed displacements, nodal loads, one
@@ -353,40 +282,79 @@ impl SolidModel {
         }
     }
 
+    /// Displacement components prescribed: global dof (`3 node + dir`) and value, in dof order.
+    pub fn prescribed(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        self.prescribed.iter().map(|(&d, &v)| (d, v))
+    }
+
+    /// Prescribed values over all dofs (zero where free).
+    pub fn prescribed_values(&self) -> Vec<f64> {
+        let mut q = vec![0.0; self.loads.len()];
+        for (d, v) in self.prescribed() {
+            q[d] = v;
+        }
+        q
+    }
+
+    /// The nodal loads over all dofs (`3 n_nodes`).
+    pub fn external_forces(&self) -> &[f64] {
+        &self.loads
+    }
+
+    /// The free-dof numbering: the prescribed dofs left out.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a prescribed node beyond the mesh.
+    pub fn dof_map(&self) -> Result<DofMap> {
+        DofMap::new(self.mesh.n_nodes(), 3, self.prescribed.keys().copied())
+    }
+
+    /// Element forces `K q` summed over all bricks (length `3 n_nodes`); a brick whose
+    /// displacements are all zero adds nothing and is skipped.
+    pub fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
+        let mut r = vec![0.0; q.len()];
+        let mut ke = BrickMatrix::zeros();
+        let mut gd = [0; N_DOF];
+        for (e, el) in self.mesh.elements.iter().enumerate() {
+            element_dofs(3, el, &mut gd);
+            if gd.iter().all(|&d| q[d] == 0.0) {
+                continue;
+            }
+            let material = brick_material(&self.mesh, &self.materials, e)?;
+            super::stiffness_into(
+                self.formulation,
+                &self.mesh.element_coords(e),
+                material,
+                &mut ke,
+            )
+            .map_err(|kind| Error::at_element(kind, e))?;
+            for a in 0..N_DOF {
+                r[gd[a]] += (0..N_DOF).map(|b| ke[(a, b)] * q[gd[b]]).sum::<f64>();
+            }
+        }
+        Ok(r)
+    }
+
     /// Assemble, factor (faer backend) and solve.
     pub fn solve(&self) -> Result<SolidSolution> {
-        let dofs = NodalDofs::new(self.mesh.n_nodes(), 3, self.prescribed.keys().copied())?;
-        let mut system = SolidSystem::new(&self.mesh, dofs, Backend::Faer)?;
+        let mut system = SolidSystem::new(&self.mesh, self.dof_map()?, Backend::Faer)?;
+        let prescribed: Vec<(usize, f64)> = self.prescribed().collect();
         let correction = system.assemble_and_factor(
             &self.mesh,
             &self.materials,
             self.formulation,
-            &self
-                .prescribed
-                .iter()
-                .map(|(&d, &v)| (d, v))
-                .collect::<Vec<_>>(),
+            &prescribed,
         )?;
-        let dofs = system.dofs().clone();
-        let mut rhs = Mat::<f64>::zeros(dofs.n_free(), 1);
-        for (d, &f) in self.loads.iter().enumerate() {
-            if let Some(e) = dofs.equation(d) {
-                rhs[(e, 0)] = f + correction[e];
-            }
-        }
-        system.solve_in_place(&mut rhs)?;
-        let mut displacements = vec![0.0; dofs.n_dofs()];
-        for (d, u) in displacements.iter_mut().enumerate() {
-            if let Some(e) = dofs.equation(d) {
-                *u = rhs[(e, 0)];
-            }
-        }
-        for (&d, &v) in &self.prescribed {
+        let mut displacements = vec![0.0; system.dofs().n_dofs()];
+        system
+            .system
+            .solve_into(|d, e| self.loads[d] + correction[e], &mut displacements)?;
+        for (d, v) in prescribed {
             displacements[d] = v;
         }
         Ok(SolidSolution {
             displacements,
-            n_free: dofs.n_free(),
+            n_free: system.dofs().n_free(),
             nnz_l: system.cholesky().nnz_l(),
             ordering: system.cholesky().ordering(),
         })

@@ -1065,7 +1065,7 @@ impl ContactAnalysis {
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let (x, dim) = (self.bodies.positions().as_flattened(), self.dim());
+        let (x, dim) = (self.bodies.positions(), self.dim());
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
             node(x, dim, self.pairs[p].a[k])

@@ -191,7 +191,7 @@ impl ContactAnalysis {
         let delta = active()
             .map(|(_, _, _, node)| along(node, node.frame.normal()).abs())
             .fold(0.0, f64::max);
-        let x = self.bodies.positions().as_flattened();
+        let x = self.bodies.positions();
         for (p, surface, k, node) in active() {
             let slope = self.geometries[p].gap_slope(surface, k, x);
             let slip = along(node, node.frame.tangent(0));
@@ -286,7 +286,7 @@ impl ContactAnalysis {
     /// (Large coordinates alone, a model far from its origin, are the caller's choice and are
     /// not judged here: only the motion is.)
     pub(super) fn resolved(&self, x: &[f64]) -> Result<()> {
-        let reference = self.bodies.positions().as_flattened();
+        let reference = self.bodies.positions();
         for geometry in &self.geometries {
             if let Some(u) = geometry.unresolved(x, reference, POSITION_ROUND_OFF) {
                 return Err(ContactError::Unresolved {

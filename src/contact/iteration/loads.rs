@@ -70,11 +70,7 @@ impl ContactAnalysis {
     /// superposed on a fixed approach, costs one or two solves in all).
     pub(super) fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Solved> {
         let n = self.bodies.load_len();
-        let n_qp = if self.bodies.as_model().is_some() {
-            n
-        } else {
-            0
-        };
+        let n_qp = self.bodies.prescribed_len();
         if f.len() != n || qp.len() != n_qp {
             let image = if n == self.bodies.field_len() {
                 ""
