@@ -9,6 +9,8 @@
 //! * [`scene`]: the disk-on-block contact scene of the paper and its comparison with Hertz.
 //! * [`axisymmetric`]: axisymmetric contact scenes with closed forms (shrink fit, push-out,
 //!   cylinders stacked on the axis).
+//! * [`closed3d`]: the closed forms of the 3D contact validation (Hertz's sphere, its approach,
+//!   Cattaneo-Mindlin's partial slip of a sphere).
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 //! * [`bench`](mod@bench): the measurements behind the performance figures of docs/performance.md.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
@@ -20,6 +22,7 @@
 pub mod axisymmetric;
 pub mod bench;
 pub mod cases;
+pub mod closed3d;
 pub mod examples;
 pub mod gmsh;
 pub mod presses;

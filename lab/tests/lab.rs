@@ -6,6 +6,7 @@ mod common;
 
 mod backends;
 mod cli;
+mod closed3d;
 mod contact_algebra;
 mod contact_axisymmetric;
 mod contact_cattaneo;

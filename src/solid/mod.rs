@@ -20,6 +20,7 @@
 //! `G = integral of P^T B dV` (2x2x2 Gauss), computed as `W^T W` with `W = L^-1 G`, `H = L L^T`
 //! (Cholesky: no explicit inverse, symmetric by construction); `beta = H^-1 G q`.
 
+pub mod contact_meshes;
 pub mod geometry;
 pub mod h8;
 pub mod hybrid18;

@@ -44,6 +44,8 @@
 //!
 //! # Modules
 //! * [`clip`]: checks of a face, the auxiliary plane, projection, convex clipping.
+//! * [`frames`]: nodal normals and tangent frames from one reference direction per surface,
+//!   symmetry planes.
 //! * [`mortar`]: triangulation, the triangle rule, inverse bilinear maps, the integrals of one
 //!   face pair and of one face.
 //! * [`pairing`]: the candidate (A face, B face) pairs by a bounding-box grid.
@@ -54,11 +56,13 @@
 //! deformation solid mechanics", CMAME 193 (2004) 601-629.
 
 pub mod clip;
+pub mod frames;
 pub mod mortar;
 pub mod pairing;
 pub mod surface;
 
 pub use clip::{AuxPlane, Overlap, overlap};
+pub use frames::{NodeFrame, SurfaceFrames, SymmetryPlane};
 pub use mortar::{FaceMass, FacePair, face_mass, face_pair};
 pub use pairing::pair_faces;
 pub use surface::{SurfaceFaces, SurfaceMortar};

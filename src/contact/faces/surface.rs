@@ -18,7 +18,8 @@ pub struct SurfaceFaces<'a> {
 }
 
 impl SurfaceFaces<'_> {
-    fn corners(&self, side: &str) -> Result<Vec<Quad>> {
+    /// The corners of every face; an error names a face using a node id out of range.
+    pub(super) fn corners(&self, side: &str) -> Result<Vec<Quad>> {
         let n = self.x.len();
         self.faces
             .iter()
@@ -107,20 +108,29 @@ impl SurfaceMortar {
         }
     }
 
-    /// Check that every node of `nodes` (active A nodes) is fully covered, to [`COVERED`]: an
-    /// active node only partly over B would transmit its pressure over part of its support
-    /// (a silent hole in the contact zone).
+    /// Check that every node of `nodes` (active A nodes) is covered exactly once, to
+    /// [`COVERED`]: an active node only partly over B would transmit its pressure over part of
+    /// its support (a silent hole in the contact zone), one covered more than once (B's faces
+    /// overlapping each other over it, seen along A's normal) would transmit it twice.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming the first node that is not.
     pub fn require_covered(&self, nodes: &[usize]) -> Result<()> {
-        match nodes.iter().find(|&&k| self.coverage(k) < 1.0 - COVERED) {
-            Some(&k) => Err(Error::InvalidInput(format!(
-                "A node {k} is active but only {:.6} of its support is over B",
-                self.coverage(k)
-            ))),
-            None => Ok(()),
+        for &k in nodes {
+            let c = self.coverage(k);
+            if c < 1.0 - COVERED {
+                return Err(Error::InvalidInput(format!(
+                    "A node {k} is active but only {c:.6} of its support is over B"
+                )));
+            }
+            if c > 1.0 + COVERED {
+                return Err(Error::InvalidInput(format!(
+                    "A node {k} is covered {c:.6} times over: B's faces overlap each other \
+                     over its support"
+                )));
+            }
         }
+        Ok(())
     }
 }
 
@@ -282,6 +292,44 @@ mod tests {
         let err = out.require_covered(&[covered[0], half]).unwrap_err();
         assert!(
             err.to_string().contains(&format!("A node {half} ")),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn nodes_covered_twice_are_reported() {
+        // B's faces listed twice: every A node is covered twice over
+        let m = meshes(3, 2, |p| [1.2 * p[0] - 0.1, 1.2 * p[1] - 0.1]);
+        let fb = faces_at(&m[1], 1.01);
+        let twice: Vec<[usize; 4]> = fb.iter().chain(&fb).copied().collect();
+        let fa = faces_at(&m[0], 1.0);
+        let sa = SurfaceFaces {
+            x: &m[0].nodes,
+            faces: &fa,
+        };
+        let once = SurfaceFaces {
+            x: &m[1].nodes,
+            faces: &fb,
+        };
+        let nodes = m[0].nodes_where(|p| p[2] == 1.0);
+        SurfaceMortar::new(sa, once, 0.05)
+            .unwrap()
+            .require_covered(&nodes)
+            .unwrap();
+        let out = SurfaceMortar::new(
+            sa,
+            SurfaceFaces {
+                x: &m[1].nodes,
+                faces: &twice,
+            },
+            0.05,
+        )
+        .unwrap();
+        assert!((out.coverage(nodes[0]) - 2.0).abs() < 1e-12);
+        let err = out.require_covered(&nodes).unwrap_err();
+        assert!(
+            err.to_string()
+                .contains(&format!("A node {} is covered 2.000000 times", nodes[0])),
             "{err}"
         );
     }
