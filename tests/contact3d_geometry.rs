@@ -1,6 +1,8 @@
 //! The 3D contact geometry on the validation meshes: the nodal frames of the cap's contact
 //! surface with its symmetry planes, and the mortar integrals of the cap against the block
-//! (coverage, the initial weighted gap against the paraboloid's height).
+//! (coverage, the initial weighted gap against the paraboloid's height); and the pair geometry
+//! behind the contact core's seam, `FaceGeometry` (flat patches, the quarter cap, rigid-motion
+//! invariance, the orientation checks, bad input).
 
 use hycon::contact::faces::{SurfaceFaces, SurfaceFrames, SurfaceMortar};
 use hycon::solid::contact_meshes::ContactMesh;
@@ -303,6 +305,40 @@ mod face_geometry {
         let (_, depth) = geo.behind(k, &x, 0.1).unwrap();
         assert!((depth - (0.5 - g)).abs() < 1e-12, "{depth}");
         assert_eq!(geo.behind(k, &p.x, 0.0), None);
+    }
+
+    /// B tilted to `z = 1 + g + alpha (x + 2 y)`: at an A node whose neighbours are all
+    /// inside A the hat-weighted gaps are the plane's values, and the slope is
+    /// `alpha sqrt(5)`; a B node moved by 1 makes its faces (of size 0.32 in `x, y`)
+    /// unresolvable at a round-off of 0.5, not at 0.1.
+    #[test]
+    fn gap_slope_and_unresolved_faces() {
+        let (g, alpha) = (0.01, 0.02);
+        let mut p = blocks(6, 5, g, placed(0.0, 0.0, 5));
+        for i in p.a_nodes..p.x.len() / 3 {
+            p.x[3 * i + 2] += alpha * (p.x[3 * i] + 2.0 * p.x[3 * i + 1]);
+        }
+        let geo = geometry(&p);
+        let s = geo.evaluate(&p.x, 0.2).unwrap();
+        let k = (0..s.nodes.len())
+            .find(|&k| {
+                let i = 3 * s.nodes[k].node;
+                (p.x[i] - 0.5).abs() < 1e-12 && (p.x[i + 1] - 0.5).abs() < 1e-12
+            })
+            .unwrap();
+        let slope = geo.gap_slope(&s, k, &p.x);
+        let exact = alpha * 5f64.sqrt();
+        eprintln!("gap slope {slope} against {exact}");
+        assert!((slope - exact).abs() <= 1e-12 * exact, "{slope}");
+        let j = p.a_nodes + 7;
+        let mut x = p.x.clone();
+        x[3 * j + 2] += 1.0;
+        let u = geo.unresolved(&x, &p.x, 0.5).unwrap();
+        assert_eq!((u.node, u.motion), (j, 1.0));
+        // its face's shortest edge, along x on the tilted plane
+        let edge = 0.32 * (1.0 + alpha * alpha).sqrt();
+        assert!((u.length - edge).abs() < 1e-12, "{u:?}");
+        assert_eq!(geo.unresolved(&x, &p.x, 0.1), None);
     }
 
     #[test]
