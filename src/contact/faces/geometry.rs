@@ -131,6 +131,67 @@ impl OnFace {
     }
 }
 
+/// The checks of [`FaceGeometry::new`] on the faces at `x`: each side has a face, node ids in
+/// range, no node on both sides, every face passing [`check_face`].
+fn check_pair(a_faces: &[[usize; 4]], b_faces: &[[usize; 4]], x: &[[f64; 3]]) -> Result<()> {
+    let sides = [("A", a_faces), ("B", b_faces)];
+    let mut corners = Vec::new();
+    for (side, faces) in sides {
+        if faces.is_empty() {
+            return Err(Error::InvalidInput(format!(
+                "contact side {side} has no face"
+            )));
+        }
+        corners.push(SurfaceFaces { x, faces }.corners(side)?);
+    }
+    let b = nodes_of(b_faces);
+    if let Some(&k) = a_faces
+        .iter()
+        .flatten()
+        .find(|k| b.binary_search(k).is_ok())
+    {
+        let face = |faces: &[[usize; 4]]| faces.iter().position(|f| f.contains(&k));
+        return Err(Error::InvalidInput(format!(
+            "node {k} belongs to both sides of the pair (A face {}, B face {}): A and B must \
+             be surfaces of different bodies",
+            face(a_faces).unwrap_or(0),
+            face(b_faces).unwrap_or(0)
+        )));
+    }
+    for ((side, _), quads) in sides.iter().zip(&corners) {
+        for (i, quad) in quads.iter().enumerate() {
+            check_face(quad, &format!("{side} face {i}"))?;
+        }
+    }
+    Ok(())
+}
+
+/// A's neighbours (per A node, the A nodes it shares a face edge with, indices into the sorted
+/// node ids `a`) and A's free edges (edges of one A face only).
+fn topology(a: &[usize], faces: &[[usize; 4]]) -> (Vec<Vec<usize>>, BTreeSet<(usize, usize)>) {
+    let index = |k: usize| a.binary_search(&k).expect("a node of A's faces");
+    let mut neighbours = vec![BTreeSet::new(); a.len()];
+    let mut count: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+    for f in faces {
+        for (p, q) in edges(f) {
+            neighbours[index(p)].insert(index(q));
+            neighbours[index(q)].insert(index(p));
+            *count.entry((p, q)).or_default() += 1;
+        }
+    }
+    (
+        neighbours
+            .into_iter()
+            .map(|s| s.into_iter().collect())
+            .collect(),
+        count
+            .into_iter()
+            .filter(|&(_, n)| n == 1)
+            .map(|(e, _)| e)
+            .collect(),
+    )
+}
+
 impl FaceGeometry {
     /// The pair of A faces `a_faces` and B faces `b_faces` (node ids into the flat positions
     /// `x`, 3 per node, in [`crate::solid::geometry::FACES`] order, outward), checked at `x`
@@ -157,31 +218,8 @@ impl FaceGeometry {
             )));
         }
         let pts = points(x);
-        let sides = [("A", &a_faces), ("B", &b_faces)];
-        let mut corners = Vec::new();
-        for (side, faces) in sides {
-            if faces.is_empty() {
-                return Err(Error::InvalidInput(format!(
-                    "contact side {side} has no face"
-                )));
-            }
-            corners.push(SurfaceFaces { x: pts, faces }.corners(side)?);
-        }
+        check_pair(&a_faces, &b_faces, pts)?;
         let (a, b) = (nodes_of(&a_faces), nodes_of(&b_faces));
-        if let Some(&k) = a.iter().find(|k| b.binary_search(k).is_ok()) {
-            let face = |faces: &[[usize; 4]]| faces.iter().position(|f| f.contains(&k));
-            return Err(Error::InvalidInput(format!(
-                "node {k} belongs to both sides of the pair (A face {}, B face {}): A and B \
-                 must be surfaces of different bodies",
-                face(&a_faces).unwrap_or(0),
-                face(&b_faces).unwrap_or(0)
-            )));
-        }
-        for ((side, _), quads) in sides.iter().zip(&corners) {
-            for (i, quad) in quads.iter().enumerate() {
-                check_face(quad, &format!("{side} face {i}"))?;
-            }
-        }
         let frames = SurfaceFrames::new(
             SurfaceFaces {
                 x: pts,
@@ -191,16 +229,7 @@ impl FaceGeometry {
             symmetry,
         )?;
         let dropped = a.iter().map(|k| frames.frames[k].dropped).collect();
-        let index = |k: usize| a.binary_search(&k).expect("a node of A's faces");
-        let mut neighbours = vec![BTreeSet::new(); a.len()];
-        let mut edge_count: BTreeMap<(usize, usize), usize> = BTreeMap::new();
-        for f in &a_faces {
-            for (p, q) in edges(f) {
-                neighbours[index(p)].insert(index(q));
-                neighbours[index(q)].insert(index(p));
-                *edge_count.entry((p, q)).or_default() += 1;
-            }
-        }
+        let (neighbours, free_edges) = topology(&a, &a_faces);
         let symmetry = symmetry
             .iter()
             .map(|p| SymmetryPlane::new(p.point, p.normal))
@@ -213,15 +242,8 @@ impl FaceGeometry {
             reference: frames.reference,
             symmetry,
             dropped,
-            neighbours: neighbours
-                .into_iter()
-                .map(|s| s.into_iter().collect())
-                .collect(),
-            free_edges: edge_count
-                .into_iter()
-                .filter(|&(_, n)| n == 1)
-                .map(|(e, _)| e)
-                .collect(),
+            neighbours,
+            free_edges,
             interiors: None,
         })
     }
@@ -307,9 +329,13 @@ impl ContactGeometry for FaceGeometry {
     }
 
     /// The [module docs](self)' quantities from [`SurfaceMortar`] over the face pairs within
-    /// `reach` (bounding boxes, [`super::pair_faces`]: unlike the plane code, a covered point
-    /// is not re-checked for `|g| <= reach`) and [`SurfaceFrames`] with the pair's reference
-    /// direction and symmetry planes.
+    /// `reach` and [`SurfaceFrames`] with the pair's reference direction and symmetry planes.
+    ///
+    /// `reach` only selects the candidate face pairs, by bounding boxes
+    /// ([`super::pair_faces`]): unlike the plane code, a covered point is not re-checked for
+    /// `|g| <= reach`, so with a `reach` below the gap a pair's coverage can depend on its
+    /// orientation (axis-aligned boxes of flat faces are thin, turned ones are not). The maps
+    /// of [`SurfaceMortar`] are built anew on every call (`out`'s node rows are reused).
     ///
     /// # Errors
     /// Those of [`SurfaceMortar::new`] and [`SurfaceFrames::new`] at `x` (naming the face or
