@@ -387,6 +387,19 @@ mod face_geometry {
                 worst = worst.max((nd.frame.normal() - exact).norm());
             }
         }
+        // the cap's body lies above its curved contact surface, the block below it
+        let a = spec.contact_radius();
+        let (h, d) = (c.h, 2.0 * c.h);
+        geo.check_inside(&x, &Vector::solid(d, d, a)).unwrap();
+        let err = geo.check_inside(&x, &Vector::solid(d, d, -a)).unwrap_err();
+        assert!(err.to_string().contains("outward side"), "{err}");
+        // A touches B at the centre: within half a face of it there, facing it farther out
+        let f = geo.facing(&x, a);
+        assert_eq!((f.same_way, f.behind), (0, 0));
+        assert!(
+            f.touching > 0 && f.touching + f.facing == s.nodes.len(),
+            "{f:?}, h = {h}"
+        );
         eprintln!("quarter cap a/h = 4: worst nodal normal error inside A {worst:.1e}");
         assert!(worst <= 1e-14, "{worst}");
         assert_eq!(

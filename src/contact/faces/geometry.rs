@@ -51,10 +51,8 @@ pub struct FaceGeometry {
     symmetry: Vec<SymmetryPlane>,
     /// Per A node (index into A): its tangents dropped by symmetry at the reference positions.
     dropped: Vec<[bool; 2]>,
-    /// Per A node: the A nodes (indices into A) it shares a face edge with, sorted.
-    neighbours: Vec<Vec<usize>>,
-    /// A's free edges (node-id pairs, smaller first): edges of one A face only.
-    free_edges: BTreeSet<(usize, usize)>,
+    /// A's faces around its nodes, neighbours and free edges.
+    topology: Topology,
     /// Under small kinematics: per A face, the B nodes projecting inside it at the reference.
     interiors: Option<Vec<Vec<usize>>>,
 }
@@ -166,30 +164,48 @@ fn check_pair(a_faces: &[[usize; 4]], b_faces: &[[usize; 4]], x: &[[f64; 3]]) ->
     Ok(())
 }
 
-/// A's neighbours (per A node, the A nodes it shares a face edge with, indices into the sorted
-/// node ids `a`) and A's free edges (edges of one A face only).
-fn topology(a: &[usize], faces: &[[usize; 4]]) -> (Vec<Vec<usize>>, BTreeSet<(usize, usize)>) {
-    let index = |k: usize| a.binary_search(&k).expect("a node of A's faces");
-    let mut neighbours = vec![BTreeSet::new(); a.len()];
-    let mut count: BTreeMap<(usize, usize), usize> = BTreeMap::new();
-    for f in faces {
-        for (p, q) in edges(f) {
-            neighbours[index(p)].insert(index(q));
-            neighbours[index(q)].insert(index(p));
-            *count.entry((p, q)).or_default() += 1;
+/// How A's faces connect.
+#[derive(Debug, Clone)]
+struct Topology {
+    /// Per A node (index into A): its faces (indices into A's faces).
+    faces: Vec<Vec<usize>>,
+    /// Per A node: the A nodes (indices into A) it shares a face edge with, sorted.
+    neighbours: Vec<Vec<usize>>,
+    /// A's free edges (node-id pairs, smaller first): edges of one A face only.
+    free_edges: BTreeSet<(usize, usize)>,
+}
+
+impl Topology {
+    /// The topology of `faces` whose sorted distinct node ids are `a`.
+    fn new(a: &[usize], faces: &[[usize; 4]]) -> Self {
+        let index = |k: usize| a.binary_search(&k).expect("a node of A's faces");
+        let mut out = Topology {
+            faces: vec![Vec::new(); a.len()],
+            neighbours: vec![Vec::new(); a.len()],
+            free_edges: BTreeSet::new(),
+        };
+        let mut count: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+        for (i, f) in faces.iter().enumerate() {
+            for &k in f {
+                out.faces[index(k)].push(i);
+            }
+            for (p, q) in edges(f) {
+                out.neighbours[index(p)].push(index(q));
+                out.neighbours[index(q)].push(index(p));
+                *count.entry((p, q)).or_default() += 1;
+            }
         }
-    }
-    (
-        neighbours
-            .into_iter()
-            .map(|s| s.into_iter().collect())
-            .collect(),
-        count
+        for list in &mut out.neighbours {
+            list.sort_unstable();
+            list.dedup();
+        }
+        out.free_edges = count
             .into_iter()
             .filter(|&(_, n)| n == 1)
             .map(|(e, _)| e)
-            .collect(),
-    )
+            .collect();
+        out
+    }
 }
 
 impl FaceGeometry {
@@ -229,7 +245,7 @@ impl FaceGeometry {
             symmetry,
         )?;
         let dropped = a.iter().map(|k| frames.frames[k].dropped).collect();
-        let (neighbours, free_edges) = topology(&a, &a_faces);
+        let topology = Topology::new(&a, &a_faces);
         let symmetry = symmetry
             .iter()
             .map(|p| SymmetryPlane::new(p.point, p.normal))
@@ -242,8 +258,7 @@ impl FaceGeometry {
             reference: frames.reference,
             symmetry,
             dropped,
-            neighbours,
-            free_edges,
+            topology,
             interiors: None,
         })
     }
@@ -272,22 +287,15 @@ impl FaceGeometry {
         f.map(|k| x[k])
     }
 
-    /// Per A node (index into A): the unit normal along the sum of its faces' vector areas
+    /// A node `k` (index into A): the unit normal along the sum of its faces' vector areas
     /// ([`vector_area`]) and its tributary size, the square root of its faces' mean area.
-    fn node_normals(&self, x: &[[f64; 3]]) -> Vec<(Vector3<f64>, f64)> {
-        let mut sums = vec![(Vector3::zeros(), 0.0, 0usize); self.a.len()];
-        for f in &self.a_faces {
-            let area = vector_area(&Self::quad(f, x));
-            for k in f {
-                let s = &mut sums[self.a.binary_search(k).expect("an A node")];
-                s.0 += area;
-                s.1 += area.norm();
-                s.2 += 1;
-            }
-        }
-        sums.into_iter()
-            .map(|(n, area, count)| (n.normalize(), (area / count as f64).sqrt()))
-            .collect()
+    fn node_normal(&self, k: usize, x: &[[f64; 3]]) -> (Vector3<f64>, f64) {
+        let faces = &self.topology.faces[k];
+        let (n, area) = faces.iter().fold((Vector3::zeros(), 0.0), |(n, area), &i| {
+            let v = vector_area(&Self::quad(&self.a_faces[i], x));
+            (n + v, area + v.norm())
+        });
+        (n.normalize(), (area / faces.len() as f64).sqrt())
     }
 
     /// The B faces facing the unit normal `n` (an A normal: `n_B . n < 0` at B's centre) at
@@ -434,7 +442,8 @@ impl ContactGeometry for FaceGeometry {
                 .enumerate()
                 .map(|(i, f)| (i, Self::quad(f, pts)))
         };
-        for (k, (na, size)) in self.node_normals(pts).into_iter().enumerate() {
+        for k in 0..self.a.len() {
+            let (na, size) = self.node_normal(k, pts);
             let p = pts[self.a[k]];
             let Some((_, near)) =
                 nearest_face(b_quads(), p).filter(|(_, o)| (o.point - v3(p)).norm() <= reach)
@@ -492,7 +501,7 @@ impl ContactGeometry for FaceGeometry {
         let f = &self.a_faces[i];
         let free = on.beyond().find(|&e| {
             let (u, v) = (f[e], f[(e + 1) % 4]);
-            self.free_edges.contains(&(u.min(v), u.max(v)))
+            self.topology.free_edges.contains(&(u.min(v), u.max(v)))
         });
         if let Some(e) = free {
             return Err(Error::InvalidInput(format!(
@@ -524,7 +533,7 @@ impl ContactGeometry for FaceGeometry {
         let nodes = &surface.nodes;
         let n = v3(nodes[k].frame.normal().components().try_into().expect("3D"));
         let at = |i: usize| v3(pts[nodes[i].node]);
-        let steps: Vec<(Vector3<f64>, f64)> = self.neighbours[k]
+        let steps: Vec<(Vector3<f64>, f64)> = self.topology.neighbours[k]
             .iter()
             .filter(|&&j| nodes[j].normal_gap.is_finite())
             .map(|&j| {
@@ -615,7 +624,7 @@ impl ContactGeometry for FaceGeometry {
     /// nearest to it decides: depth `-(x_k - q) . n_0 > limit`.
     fn behind(&self, k: usize, x: &[f64], limit: f64) -> Option<(Vec<usize>, f64)> {
         let pts = points(x);
-        let (n, _) = self.node_normals(pts)[k];
+        let (n, _) = self.node_normal(k, pts);
         let p = pts[self.a[k]];
         let mut nearest: Option<(usize, f64)> = None;
         for (i, q) in self.facing_b(pts, &n) {
