@@ -22,6 +22,12 @@
 //!   unchanged (the patch test). For a fully covered node (the only kind the active set may
 //!   activate) it is the plane code's whole-support `F^A` up to the triangle rule's error
 //!   (none on flat parallelograms); for a partly covered node it is the covered part only.
+//!
+//! A node on a symmetry plane has the normal of the mirrored model (in the plane) and the
+//! tangent along the plane's normal dropped; on two planes both are dropped and the node is
+//! frictionless ([`ContactGeometry::frictionless_at`]). The contact iteration does not build
+//! a `FaceGeometry` yet: it still reads one tangent per node (issue #43, the active set with
+//! two tangents).
 
 use super::clip::{AuxPlane, check_face, point, v3};
 use super::mortar::inverse_bilinear;
