@@ -1,6 +1,8 @@
 //! The 3D contact geometry on the validation meshes: the nodal frames of the cap's contact
 //! surface with its symmetry planes, and the mortar integrals of the cap against the block
-//! (coverage, the initial weighted gap against the paraboloid's height).
+//! (coverage, the initial weighted gap against the paraboloid's height); and the pair geometry
+//! behind the contact core's seam, `FaceGeometry` (flat patches, the quarter cap, rigid-motion
+//! invariance, the orientation checks, bad input).
 
 use hycon::contact::faces::{SurfaceFaces, SurfaceFrames, SurfaceMortar};
 use hycon::solid::contact_meshes::ContactMesh;
@@ -108,4 +110,463 @@ fn the_cap_is_covered_by_the_block_and_its_gap_is_the_paraboloid() {
     }
     eprintln!("weighted gap / weight against f + h^2/3: worst relative error {worst:.2e}");
     assert!(worst < 1e-3, "{worst}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pair geometry behind the contact core's seam: `FaceGeometry`.
+
+mod face_geometry {
+    use super::inside;
+    use hycon::contact::faces::{FaceGeometry, SymmetryPlane};
+    use hycon::contact::geometry::{ContactGeometry, ContactSurface};
+    use hycon::contact::space::Vector;
+    use hycon::solid::contact_meshes::{CapModel, CapOnBlock};
+    use hycon::solid::geometry::FACES;
+    use hycon::solid::mesh::SolidMesh;
+    use nalgebra::{Rotation3, Vector3};
+
+    /// Two bodies' contact faces and all positions, flat.
+    struct Pair {
+        x: Vec<f64>,
+        a: Vec<[usize; 4]>,
+        b: Vec<[usize; 4]>,
+        /// The number of A's body's nodes (B's ids follow).
+        a_nodes: usize,
+    }
+
+    /// A: the top `z = 1` of the block `[0, 1]^2 x [0, 1]` of `na x na x 1` bricks; B: the
+    /// bottom of a one-layer block of `nb x nb` bricks over `[0, 1]^2` mapped by `place`,
+    /// at `z = 1 + g`.
+    fn blocks(na: usize, nb: usize, g: f64, place: impl Fn([f64; 2]) -> [f64; 2]) -> Pair {
+        let a = SolidMesh::uniform([1.0, 1.0, 1.0], [na, na, 1]);
+        let b = SolidMesh::uniform([1.0, 1.0, 1.0], [nb, nb, 1]).map(|p| {
+            let q = place([p[0], p[1]]);
+            [q[0], q[1], p[2] + 1.0 + g]
+        });
+        let faces = |m: &SolidMesh, z: f64, offset: usize| -> Vec<[usize; 4]> {
+            m.faces_where(|p| (p[2] - z).abs() < 1e-12)
+                .into_iter()
+                .map(|(e, f)| FACES[f].map(|k| m.elements[e][k] + offset))
+                .collect()
+        };
+        let n = a.n_nodes();
+        Pair {
+            x: a.nodes.iter().chain(&b.nodes).flatten().copied().collect(),
+            a: faces(&a, 1.0, 0),
+            b: faces(&b, 1.0 + g, n),
+            a_nodes: n,
+        }
+    }
+
+    /// B 1.6 times A's size (so that it covers A), turned by `deg` about the vertical through
+    /// A's centre and offset by `shift` (in B faces of size `1.6 / nb`) in both directions.
+    fn placed(deg: f64, shift: f64, nb: usize) -> impl Fn([f64; 2]) -> [f64; 2] {
+        move |p| {
+            let (sn, cs) = deg.to_radians().sin_cos();
+            let d = shift * 1.6 / nb as f64;
+            let (u, v) = (1.6 * (p[0] - 0.5) + d, 1.6 * (p[1] - 0.5) + d);
+            [0.5 + cs * u - sn * v, 0.5 + sn * u + cs * v]
+        }
+    }
+
+    fn geometry(p: &Pair) -> FaceGeometry {
+        FaceGeometry::new(p.a.clone(), p.b.clone(), &p.x, None, &[]).unwrap()
+    }
+
+    /// `u` at every node of B (ids from `p.a_nodes`), zero at A's.
+    fn move_b(p: &Pair, u: [f64; 3]) -> Vec<f64> {
+        (0..p.x.len() / 3)
+            .flat_map(|i| if i >= p.a_nodes { u } else { [0.0; 3] })
+            .collect()
+    }
+
+    fn add(x: &[f64], du: &[f64]) -> Vec<f64> {
+        x.iter().zip(du).map(|(a, b)| a + b).collect()
+    }
+
+    /// Flat conforming or non-conforming faces at the uniform gap `g`: every A node fully
+    /// covered with `normal_gap = mean_distance = g` and `R_k` along `n_k`; the patch-test
+    /// condition `sum_j c_kj = 0`; a translation `t n` of B changes `n . sum_j c_kj du_j` by
+    /// `-t covered_weight` (the normal gap by `t`), as re-evaluating at the moved positions
+    /// does. Returns the worst relative errors seen (gap, patch test).
+    fn check_flat(what: &str, p: &Pair, g: f64) -> (f64, f64) {
+        let geo = geometry(p);
+        let s = geo.evaluate(&p.x, 0.1).unwrap();
+        assert_eq!(s.nodes.len(), geo.a_nodes().len());
+        assert!(s.all_covered(), "{what}");
+        let t = 0.3 * g;
+        let du = move_b(p, [0.0, 0.0, t]);
+        let moved = geo.evaluate(&add(&p.x, &du), 0.1).unwrap();
+        let (mut worst_gap, mut worst_patch): (f64, f64) = (0.0, 0.0);
+        for (nd, after) in s.nodes.iter().zip(&moved.nodes) {
+            let n = nd.frame.normal();
+            let up = Vector::solid(0.0, 0.0, 1.0);
+            assert!((n - up).norm() <= 1e-15, "{what}: node {}: {n:?}", nd.node);
+            assert_eq!(nd.coverage, 1.0);
+            let err = [
+                nd.normal_gap - g,
+                nd.mean_distance - g,
+                after.normal_gap - (g + t),
+            ]
+            .map(f64::abs)
+            .into_iter()
+            .fold(0.0, f64::max)
+                / g;
+            worst_gap = worst_gap.max(err);
+            // R_k parallel to n_k
+            let along = nd.gap.add_scaled(-n.dot(&nd.gap), &n);
+            assert!(
+                along.norm() <= 1e-12 * nd.gap.norm(),
+                "{what}: node {}",
+                nd.node
+            );
+            // the coupling row times B's translation: the normal gap changes by t
+            let dn = -n.dot(&nd.coupling_times(&du)) / nd.covered_weight;
+            worst_gap = worst_gap.max((dn - t).abs() / t);
+            let sum: f64 = nd.coupling.iter().map(|(_, c)| c).sum();
+            worst_patch = worst_patch.max(sum.abs() / nd.weight);
+            assert!(nd.coupling.windows(2).all(|w| w[0].0 < w[1].0), "sorted");
+            assert!(nd.coupling.iter().all(|&(_, c)| c != 0.0));
+        }
+        eprintln!(
+            "{what}: worst gap error {worst_gap:.1e}, worst |sum_j c_kj| / w {worst_patch:.1e}"
+        );
+        assert!(worst_gap <= 1e-12, "{what}: {worst_gap}");
+        assert!(worst_patch <= 1e-12, "{what}: {worst_patch}");
+        (worst_gap, worst_patch)
+    }
+
+    #[test]
+    fn a_conforming_patch_has_the_uniform_gap() {
+        let g = 0.01;
+        let p = blocks(4, 4, g, |q| q);
+        check_flat("conforming", &p, g);
+        // the whole weight is A's area, and the frames are the reference direction's
+        let geo = geometry(&p);
+        let s = geo.evaluate(&p.x, 0.1).unwrap();
+        let area: f64 = s.nodes.iter().map(|n| n.weight).sum();
+        assert!((area - 1.0).abs() < 1e-14, "{area}");
+        assert_eq!(geo.mean_size(&p.x), 0.25);
+        for nd in &s.nodes {
+            assert!(!nd.frame.is_dropped(0) && !nd.frame.is_dropped(1));
+        }
+    }
+
+    #[test]
+    fn offset_and_turned_patches_pass_the_patch_test() {
+        let g = 0.01;
+        for (na, nb) in [(4, 5), (6, 3)] {
+            check_flat(
+                "offset a third",
+                &blocks(na, nb, g, placed(0.0, 1.0 / 3.0, nb)),
+                g,
+            );
+            for deg in [15.0, 45.0] {
+                let what = format!("turned {deg}");
+                check_flat(&what, &blocks(na, nb, g, placed(deg, 0.0, nb)), g);
+            }
+        }
+    }
+
+    /// B's nodes over open A faces lie at the gap; the pair faces and its orientation checks
+    /// see B in front, A's body below A.
+    #[test]
+    fn orientation_checks_and_b_node_distances() {
+        let g = 0.01;
+        let p = blocks(4, 5, g, placed(15.0, 1.0 / 3.0, 5));
+        let mut geo = geometry(&p);
+        let f = geo.facing(&p.x, 0.1);
+        assert_eq!((f.touching, f.facing, f.same_way, f.behind), (25, 0, 0, 0));
+        let far = blocks(4, 5, 0.2, placed(15.0, 1.0 / 3.0, 5));
+        assert_eq!(geometry(&far).facing(&far.x, 1.0).facing, 25);
+        geo.check_inside(&p.x, &Vector::solid(0.5, 0.5, 0.5))
+            .unwrap();
+        let err = geo
+            .check_inside(&p.x, &Vector::solid(0.5, 0.5, 1.5))
+            .unwrap_err();
+        assert!(err.to_string().contains("outward side"), "{err}");
+        let err = geo
+            .check_inside(&p.x, &Vector::solid(2.0, 0.5, 0.5))
+            .unwrap_err();
+        assert!(err.to_string().contains("free edge"), "{err}");
+        let open = vec![true; geo.a_nodes().len()];
+        let all = geo.b_node_distances(&open, &p.x, &p.x);
+        geo.freeze_b_nodes(&p.x);
+        assert_eq!(geo.b_node_distances(&open, &p.x, &p.x), all);
+        // B's nodes over A's interior: each inside exactly one face
+        assert!(all.len() >= 9, "{}", all.len());
+        for d in &all {
+            assert!((d.distance - g).abs() <= 1e-12 * g, "{d:?}");
+        }
+        // an A node pushed 0.5 up through B is behind it
+        let k = geo.a_nodes().len() / 2;
+        let mut x = p.x.clone();
+        x[3 * geo.a_nodes()[k] + 2] += 0.5;
+        let (_, depth) = geo.behind(k, &x, 0.1).unwrap();
+        assert!((depth - (0.5 - g)).abs() < 1e-12, "{depth}");
+        assert_eq!(geo.behind(k, &p.x, 0.0), None);
+    }
+
+    /// B tilted to `z = 1 + g + alpha (x + 2 y)`: at an A node whose neighbours are all
+    /// inside A the hat-weighted gaps are the plane's values, and the slope is
+    /// `alpha sqrt(5)`; a B node moved by 1 makes its faces (of size 0.32 in `x, y`)
+    /// unresolvable at a round-off of 0.5, not at 0.1.
+    #[test]
+    fn gap_slope_and_unresolved_faces() {
+        let (g, alpha) = (0.01, 0.02);
+        let mut p = blocks(6, 5, g, placed(0.0, 0.0, 5));
+        for i in p.a_nodes..p.x.len() / 3 {
+            p.x[3 * i + 2] += alpha * (p.x[3 * i] + 2.0 * p.x[3 * i + 1]);
+        }
+        let geo = geometry(&p);
+        let s = geo.evaluate(&p.x, 0.2).unwrap();
+        let k = (0..s.nodes.len())
+            .find(|&k| {
+                let i = 3 * s.nodes[k].node;
+                (p.x[i] - 0.5).abs() < 1e-12 && (p.x[i + 1] - 0.5).abs() < 1e-12
+            })
+            .unwrap();
+        let slope = geo.gap_slope(&s, k, &p.x);
+        let exact = alpha * 5f64.sqrt();
+        eprintln!("gap slope {slope} against {exact}");
+        assert!((slope - exact).abs() <= 1e-12 * exact, "{slope}");
+        let j = p.a_nodes + 7;
+        let mut x = p.x.clone();
+        x[3 * j + 2] += 1.0;
+        let u = geo.unresolved(&x, &p.x, 0.5).unwrap();
+        assert_eq!((u.node, u.motion), (j, 1.0));
+        // its face's shortest edge, along x on the tilted plane
+        let edge = 0.32 * (1.0 + alpha * alpha).sqrt();
+        assert!((u.length - edge).abs() < 1e-12, "{u:?}");
+        assert_eq!(geo.unresolved(&x, &p.x, 0.1), None);
+    }
+
+    #[test]
+    fn the_quarter_caps_nodes_carry_their_symmetry() {
+        let spec = CapOnBlock::new(CapModel::Quarter, 4);
+        let c = spec.build().unwrap();
+        let planes: Vec<SymmetryPlane> = c.symmetry.iter().map(|(p, _)| *p).collect();
+        let x: Vec<f64> = c.mesh.nodes.iter().flatten().copied().collect();
+        let geo =
+            FaceGeometry::new(c.a_faces.clone(), c.b_faces.clone(), &x, None, &planes).unwrap();
+        let s = geo.evaluate(&x, 0.1 * spec.contact_radius()).unwrap();
+        assert!(s.all_covered());
+        let inner = inside(&c);
+        let mut worst: f64 = 0.0;
+        for (k, nd) in s.nodes.iter().enumerate() {
+            let on = c
+                .symmetry
+                .iter()
+                .filter(|(_, nodes)| nodes.contains(&nd.node))
+                .count();
+            let dropped = (0..2).filter(|&i| nd.frame.is_dropped(i)).count();
+            assert_eq!(dropped, on, "node {}", nd.node);
+            assert_eq!(geo.frictionless_at(k, &x), on == 2, "node {}", nd.node);
+            for (plane, nodes) in &c.symmetry {
+                if nodes.contains(&nd.node) {
+                    // the kept tangent and the normal lie in the plane
+                    let m = Vector::from(plane.normal);
+                    assert!(nd.frame.normal().dot(&m).abs() < 1e-15);
+                    for s in nd.frame.tangents() {
+                        assert!(s.dot(&m).abs() < 1e-15);
+                    }
+                    // a traction along the plane's normal has no component left
+                    assert!(
+                        nd.frame
+                            .tangential(&m)
+                            .components()
+                            .iter()
+                            .all(|&t| t.abs() < 1e-15)
+                    );
+                }
+            }
+            if inner.contains(&nd.node) {
+                let [px, py, _] = c.mesh.nodes[nd.node];
+                let exact =
+                    Vector::solid(px, py, -1.0).scaled(1.0 / (1.0 + px * px + py * py).sqrt());
+                worst = worst.max((nd.frame.normal() - exact).norm());
+            }
+        }
+        // the cap's body lies above its curved contact surface, the block below it
+        let a = spec.contact_radius();
+        let (h, d) = (c.h, 2.0 * c.h);
+        geo.check_inside(&x, &Vector::solid(d, d, a)).unwrap();
+        let err = geo.check_inside(&x, &Vector::solid(d, d, -a)).unwrap_err();
+        assert!(err.to_string().contains("outward side"), "{err}");
+        // A touches B at the centre: within half a face of it there, facing it farther out
+        let f = geo.facing(&x, a);
+        assert_eq!((f.same_way, f.behind), (0, 0));
+        assert!(
+            f.touching > 0 && f.touching + f.facing == s.nodes.len(),
+            "{f:?}, h = {h}"
+        );
+        eprintln!("quarter cap a/h = 4: worst nodal normal error inside A {worst:.1e}");
+        assert!(worst <= 1e-14, "{worst}");
+        assert_eq!(
+            (0..s.nodes.len())
+                .filter(|&k| geo.frictionless_at(k, &x))
+                .count(),
+            1,
+            "the corner on both planes"
+        );
+    }
+
+    /// Rotate and translate `x` (flat) rigidly.
+    fn moved(x: &[f64], q: &Rotation3<f64>, shift: Vector3<f64>) -> Vec<f64> {
+        x.chunks(3)
+            .flat_map(|p| {
+                let v = q * Vector3::new(p[0], p[1], p[2]) + shift;
+                [v[0], v[1], v[2]]
+            })
+            .collect()
+    }
+
+    fn turn(q: &Rotation3<f64>, v: &Vector) -> Vector {
+        let r = q * Vector3::new(v[0], v[1], v[2]);
+        Vector::solid(r[0], r[1], r[2])
+    }
+
+    /// The half cap on its block (curved A, one symmetry plane) and a turned flat patch: a
+    /// rigid motion of everything (with the reference direction and the symmetry plane) turns
+    /// the normals, tangents and gaps and leaves the weights, gaps and coupling rows.
+    #[test]
+    fn a_rigid_motion_turns_frames_and_gaps_and_leaves_the_rest() {
+        let q = Rotation3::from_axis_angle(
+            &nalgebra::Unit::new_normalize(Vector3::new(1.0, 2.0, 3.0)),
+            0.7,
+        );
+        let shift = Vector3::new(0.3, -1.2, 2.5);
+        let r = [1.0, 0.2, 0.1];
+        let rq = turn(&q, &Vector::from(r));
+        let spec = CapOnBlock::new(CapModel::Half, 4);
+        let c = spec.build().unwrap();
+        let cap = Pair {
+            x: c.mesh.nodes.iter().flatten().copied().collect(),
+            a: c.a_faces.clone(),
+            b: c.b_faces.clone(),
+            a_nodes: c.a_nodes,
+        };
+        let plane = c.symmetry[0].0;
+        let pq = turn(&q, &Vector::from(plane.point));
+        let plane_q = SymmetryPlane::new(
+            [pq[0] + shift[0], pq[1] + shift[1], pq[2] + shift[2]],
+            turn(&q, &Vector::from(plane.normal))
+                .components()
+                .try_into()
+                .unwrap(),
+        )
+        .unwrap();
+        let patch = blocks(4, 5, 0.01, placed(15.0, 1.0 / 3.0, 5));
+        // reaches covering each pair's gaps (pairing is by bounding boxes, which turn with the
+        // pair: see `FaceGeometry::evaluate_into`)
+        for (what, p, planes, planes_q, reach) in [
+            (
+                "half cap",
+                &cap,
+                vec![plane],
+                vec![plane_q],
+                spec.contact_radius(),
+            ),
+            ("turned patch", &patch, vec![], vec![], 0.1),
+        ] {
+            let y = moved(&p.x, &q, shift);
+            let geo = FaceGeometry::new(p.a.clone(), p.b.clone(), &p.x, Some(r), &planes).unwrap();
+            let geo_q = FaceGeometry::new(
+                p.a.clone(),
+                p.b.clone(),
+                &y,
+                Some(rq.components().try_into().unwrap()),
+                &planes_q,
+            )
+            .unwrap();
+            let (s, sq): (ContactSurface, ContactSurface) = (
+                geo.evaluate(&p.x, reach).unwrap(),
+                geo_q.evaluate(&y, reach).unwrap(),
+            );
+            // the scales: the largest gap and weighted gap of the pair
+            let gap = s
+                .nodes
+                .iter()
+                .map(|n| n.normal_gap.abs())
+                .fold(0.0, f64::max);
+            let r = s.nodes.iter().map(|n| n.gap.norm()).fold(0.0, f64::max);
+            let mut worst: f64 = 0.0;
+            for (u, v) in s.nodes.iter().zip(&sq.nodes) {
+                assert_eq!(u.node, v.node);
+                let w = u.weight;
+                let mut errs = vec![
+                    (turn(&q, &u.frame.normal()) - v.frame.normal()).norm(),
+                    (turn(&q, &u.gap) - v.gap).norm() / r,
+                    (u.weight - v.weight).abs() / w,
+                    (u.covered_weight - v.covered_weight).abs() / w,
+                    (u.coverage - v.coverage).abs(),
+                    (u.normal_gap - v.normal_gap).abs() / gap,
+                    (u.mean_distance - v.mean_distance).abs() / gap,
+                ];
+                for i in 0..2 {
+                    assert_eq!(u.frame.is_dropped(i), v.frame.is_dropped(i));
+                    errs.push((turn(&q, &u.frame.tangent(i)) - v.frame.tangent(i)).norm());
+                }
+                assert_eq!(
+                    u.coupling.len(),
+                    v.coupling.len(),
+                    "{what}: node {}",
+                    u.node
+                );
+                for (a, b) in u.coupling.iter().zip(&v.coupling) {
+                    assert_eq!(a.0, b.0);
+                    errs.push((a.1 - b.1).abs() / w);
+                }
+                let e = errs.into_iter().fold(0.0, f64::max);
+                assert!(e <= 1e-12, "{what}: node {}: {e}", u.node);
+                worst = worst.max(e);
+            }
+            eprintln!(
+                "{what}: worst relative change under the rigid motion {worst:.1e} (largest \
+                 gap {gap:.3e})"
+            );
+        }
+    }
+
+    #[test]
+    fn bad_faces_are_named() {
+        let p = blocks(2, 2, 0.01, |q| q);
+        let n = p.x.len() / 3;
+        let new = |a: Vec<[usize; 4]>, b: Vec<[usize; 4]>, x: &[f64]| {
+            FaceGeometry::new(a, b, x, None, &[])
+                .unwrap_err()
+                .to_string()
+        };
+        let mut a = p.a.clone();
+        a[1][2] = n + 7;
+        let err = new(a, p.b.clone(), &p.x);
+        assert!(
+            err.contains(&format!("A face 1 uses node {}", n + 7)),
+            "{err}"
+        );
+        let mut b = p.b.clone();
+        b[3][0] = n;
+        let err = new(p.a.clone(), b, &p.x);
+        assert!(err.contains(&format!("B face 3 uses node {n}")), "{err}");
+        // a face with a corner collapsed onto its neighbour
+        let mut x = p.x.clone();
+        let [k0, k1, ..] = p.a[0];
+        for c in 0..3 {
+            x[3 * k1 + c] = x[3 * k0 + c];
+        }
+        let err = new(p.a.clone(), p.b.clone(), &x);
+        assert!(err.contains("A face 0: corners 0 and 1 coincide"), "{err}");
+        let mut b = p.b.clone();
+        b[0][1] = p.a[3][2];
+        let err = new(p.a.clone(), b, &p.x);
+        assert!(
+            err.contains(&format!("node {} belongs to both sides", p.a[3][2]))
+                && err.contains("B face 0"),
+            "{err}"
+        );
+        let err = new(p.a.clone(), p.b.clone(), &p.x[1..]);
+        assert!(err.contains("3 values per node"), "{err}");
+        let err = new(vec![], p.b.clone(), &p.x);
+        assert!(err.contains("side A has no face"), "{err}");
+    }
 }

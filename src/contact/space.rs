@@ -168,7 +168,8 @@ pub fn node(x: &[f64], dim: usize, i: usize) -> Vector {
 }
 
 /// A contact node's frame: its unit normal `n` and `dim - 1` unit tangents (in the plane and
-/// in axisymmetry the one tangent `s = (n_y, -n_x)`; on a 3D face two, orthonormal with `n`).
+/// in axisymmetry the one tangent `s = (n_y, -n_x)`; on a 3D face two, orthonormal with `n`,
+/// or zero where a symmetry plane drops that component: [`Frame::is_dropped`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {
     normal: Vector,
@@ -193,7 +194,8 @@ impl Frame {
     }
 
     /// The frame of a 3D face node: unit normal `n`, unit tangents `s1`, `s2` (the caller
-    /// makes them orthonormal).
+    /// makes them orthonormal), or a zero tangent for a component dropped by symmetry
+    /// ([`is_dropped`](Self::is_dropped)).
     pub fn face(n: [f64; 3], s1: [f64; 3], s2: [f64; 3]) -> Self {
         Frame {
             normal: n.into(),
@@ -219,6 +221,14 @@ impl Frame {
     /// The tangent `s_i` (`i < dim - 1`).
     pub fn tangent(&self, i: usize) -> Vector {
         self.tangents()[i]
+    }
+
+    /// Whether tangent `s_i` is dropped: zero, the tangential component of a node on a
+    /// symmetry plane that vanishes by symmetry (its multiplier is zero and it gets no stick
+    /// row; [`tangential`](Self::tangential) gives 0 for it and [`vector`](Self::vector) adds
+    /// nothing along it).
+    pub fn is_dropped(&self, i: usize) -> bool {
+        self.tangent(i) == Vector::zero(self.dim())
     }
 
     /// The tangential components `s_i . v` of `v`.

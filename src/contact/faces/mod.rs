@@ -44,6 +44,8 @@
 //!
 //! # Modules
 //! * [`clip`]: checks of a face, the auxiliary plane, projection, convex clipping.
+//! * [`geometry`]: [`FaceGeometry`], the pair's geometry behind the contact core's
+//!   [`ContactGeometry`](crate::contact::geometry::ContactGeometry) seam.
 //! * [`frames`]: nodal normals and tangent frames from one reference direction per surface,
 //!   symmetry planes.
 //! * [`mortar`]: triangulation, the triangle rule, inverse bilinear maps, the integrals of one
@@ -57,12 +59,14 @@
 
 pub mod clip;
 pub mod frames;
+pub mod geometry;
 pub mod mortar;
 pub mod pairing;
 pub mod surface;
 
 pub use clip::{AuxPlane, Overlap, overlap};
 pub use frames::{NodeFrame, SurfaceFrames, SymmetryPlane};
+pub use geometry::FaceGeometry;
 pub use mortar::{FaceMass, FacePair, face_mass, face_pair};
 pub use pairing::pair_faces;
 pub use surface::{SurfaceFaces, SurfaceMortar};

@@ -51,6 +51,9 @@ pub struct SurfaceMortar {
     pub m: BTreeMap<(usize, usize), f64>,
     /// `R_k = integral N_k (x^A - x^B) dA` per A node (covered parts).
     pub mismatch: BTreeMap<usize, [f64; 3]>,
+    /// `g~_k = integral N_k g dA` per A node (covered parts), each face pair's gap `g` measured
+    /// along its A face's auxiliary normal `n_0` ([`super::FacePair::gap`]).
+    pub distance: BTreeMap<usize, f64>,
     /// `integral N_k dA` over the whole support of A node `k`.
     pub weight: BTreeMap<usize, f64>,
     /// `integral N_k dA` over the covered part of its support.
@@ -86,6 +89,7 @@ impl SurfaceMortar {
             let (ia, ib) = (a.faces[i], b.faces[j]);
             for (k, &row) in ia.iter().enumerate() {
                 *out.covered.entry(row).or_default() += pair.weight[k];
+                *out.distance.entry(row).or_default() += pair.gap[k];
                 let r = out.mismatch.entry(row).or_default();
                 for (rc, pc) in r.iter_mut().zip(pair.mismatch[k]) {
                     *rc += pc;
