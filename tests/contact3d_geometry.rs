@@ -289,6 +289,14 @@ mod face_geometry {
             .check_inside(&p.x, &Vector::solid(2.0, 0.5, 0.5))
             .unwrap_err();
         assert!(err.to_string().contains("free edge"), "{err}");
+        // B is the bottom of its block: its outward normal points down, at every node
+        for i in 0..geo.b_nodes().len() {
+            let n = geo.b_node_normal(i, &p.x);
+            assert!(
+                (n[2] + 1.0).abs() <= 1e-14 && n[0].hypot(n[1]) <= 1e-14,
+                "{n:?}"
+            );
+        }
         let open = vec![true; geo.a_nodes().len()];
         let all = geo.b_node_distances(&open, &p.x, &p.x);
         geo.freeze_b_nodes(&p.x);

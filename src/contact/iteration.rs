@@ -848,8 +848,14 @@ impl ContactAnalysis {
         check_host_radii(&pairs, &sections, &bodies)?;
         let dofs = (0..PLANE_DIM * n_nodes).collect();
         let geometries = plane_geometries(&pairs, measures);
-        let mut analysis =
-            Self::setup(Box::new(bodies), pairs, geometries, dofs, options, Some(a_inside))?;
+        let mut analysis = Self::setup(
+            Box::new(bodies),
+            pairs,
+            geometries,
+            dofs,
+            options,
+            Some(a_inside),
+        )?;
         analysis.timings.factorization = seconds;
         Ok(analysis)
     }

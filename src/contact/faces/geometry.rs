@@ -284,6 +284,11 @@ impl FaceGeometry {
         &self.b_faces
     }
 
+    /// B's nodes, sorted (the index `i` of [`ContactGeometry::b_node_normal`] is into these).
+    pub fn b_nodes(&self) -> &[usize] {
+        &self.b
+    }
+
     fn surface<'a>(faces: &'a [[usize; 4]], x: &'a [[f64; 3]]) -> SurfaceFaces<'a> {
         SurfaceFaces { x, faces }
     }
@@ -336,10 +341,6 @@ impl ContactGeometry for FaceGeometry {
 
     fn a_nodes(&self) -> &[usize] {
         &self.a
-    }
-
-    fn b_nodes(&self) -> &[usize] {
-        &self.b
     }
 
     /// The [module docs](self)' quantities from [`SurfaceMortar`] over the face pairs within
@@ -628,6 +629,21 @@ impl ContactGeometry for FaceGeometry {
     /// Over B's faces facing A node `k`'s normal (the direction of its faces' summed vector
     /// areas) onto which the node projects (along the B face's auxiliary normal), the one
     /// nearest to it decides: depth `-(x_k - q) . n_0 > limit`.
+    /// The direction of the sum of the vector areas of B's faces at B node `i` (index into
+    /// [`b_nodes`](FaceGeometry::b_nodes)): B's outward normal there, each face weighted by its
+    /// area, the 3D twin of the plane's rotated chord.
+    fn b_node_normal(&self, i: usize, x: &[f64]) -> Vector {
+        let pts = points(x);
+        let node = self.b[i];
+        let sum = (self.b_faces.iter())
+            .filter(|f| f.contains(&node))
+            .fold(Vector3::zeros(), |s, f| {
+                s + vector_area(&Self::quad(f, pts))
+            });
+        let n = sum / sum.norm();
+        Vector::solid(n.x, n.y, n.z)
+    }
+
     fn behind(&self, k: usize, x: &[f64], limit: f64) -> Option<(Vec<usize>, f64)> {
         let pts = points(x);
         let (n, _) = self.node_normal(k, pts);
