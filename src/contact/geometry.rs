@@ -158,6 +158,47 @@ pub struct Facing {
     pub example: Option<usize>,
 }
 
+/// [`Facing`] counted node by node: what a geometry's [`ContactGeometry::facing`] fills.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FacingTally {
+    out: Facing,
+    first_same: Option<usize>,
+    first_behind: Option<usize>,
+}
+
+impl FacingTally {
+    /// Count A node `k` (index into A) whose normal makes the cosine `cos` with the normal of
+    /// its nearest B element, that element's point lying `ahead` along A's normal, against half
+    /// the node's tributary length `size` (the classes of [`Facing`]).
+    pub fn add(&mut self, k: usize, cos: f64, ahead: f64, size: f64) {
+        let out = &mut self.out;
+        if cos > 0.5 {
+            out.same_way += 1;
+            self.first_same.get_or_insert(k);
+        } else if cos < -0.5 && ahead < -0.5 * size {
+            out.behind += 1;
+            self.first_behind.get_or_insert(k);
+        } else if cos < -0.5 && ahead <= 0.5 * size {
+            out.touching += 1;
+        } else if cos < -0.5 {
+            out.facing += 1;
+        }
+    }
+
+    /// The counts, with the first node of the larger class of reversed surfaces as the example.
+    pub fn finish(self) -> Facing {
+        let example = if self.out.same_way >= self.out.behind {
+            self.first_same
+        } else {
+            self.first_behind
+        };
+        Facing {
+            example,
+            ..self.out
+        }
+    }
+}
+
 /// A B node that lies over an A element whose nodes are all open (the pointwise B-node check):
 /// its signed distance from the element along the element's normal.
 #[derive(Debug, Clone, PartialEq)]

@@ -174,6 +174,13 @@ impl Measure {
     }
 }
 
+impl Default for Measure {
+    /// Plane, unit thickness.
+    fn default() -> Self {
+        Measure::Plane { thickness: 1.0 }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -207,12 +214,5 @@ mod tests {
             Analysis::PlaneStress.node_off_half_plane(&[[-1.0, 0.0]], 1.0),
             None
         );
-    }
-}
-
-impl Default for Measure {
-    /// Plane, unit thickness.
-    fn default() -> Self {
-        Measure::Plane { thickness: 1.0 }
     }
 }

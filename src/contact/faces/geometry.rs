@@ -34,7 +34,7 @@ use super::mortar::inverse_bilinear;
 use super::surface::{COVERED, SurfaceFaces, SurfaceMortar};
 use super::{CORNERS, Quad, SurfaceFrames, SymmetryPlane};
 use crate::contact::geometry::{
-    BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, Unresolved,
+    BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally, Unresolved,
 };
 use crate::contact::space::{Frame, Vector};
 use crate::error::{Error, Result};
@@ -441,8 +441,7 @@ impl ContactGeometry for FaceGeometry {
     /// root of their mean area. `O(|A| |B|)`, for the reference configuration.
     fn facing(&self, x: &[f64], reach: f64) -> Facing {
         let pts = points(x);
-        let mut out = Facing::default();
-        let (mut first_same, mut first_behind) = (None, None);
+        let mut tally = FacingTally::default();
         let b_quads = || {
             self.b_faces
                 .iter()
@@ -459,24 +458,9 @@ impl ContactGeometry for FaceGeometry {
             };
             let cos = na.dot(&near.normal);
             let ahead = (near.point - v3(p)).dot(&na);
-            if cos > 0.5 {
-                out.same_way += 1;
-                first_same.get_or_insert(k);
-            } else if cos < -0.5 && ahead < -0.5 * size {
-                out.behind += 1;
-                first_behind.get_or_insert(k);
-            } else if cos < -0.5 && ahead <= 0.5 * size {
-                out.touching += 1;
-            } else if cos < -0.5 {
-                out.facing += 1;
-            }
+            tally.add(k, cos, ahead, size);
         }
-        out.example = if out.same_way >= out.behind {
-            first_same
-        } else {
-            first_behind
-        };
-        out
+        tally.finish()
     }
 
     /// `point` must lie on A's body side of A's nearest face: `(p - q) . n_0 < 0`, `q` the

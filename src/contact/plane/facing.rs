@@ -8,6 +8,7 @@
 //! normal is the length-weighted mean of its adjacent segments' normals.
 
 pub use crate::contact::geometry::Facing;
+use crate::contact::geometry::FacingTally;
 use crate::element::geometry::edge_normal;
 use crate::error::{Error, Result};
 
@@ -43,8 +44,7 @@ fn nearest_on_segment(ids: &[usize], seg: usize, p: [f64; 2], x: &[[f64; 2]]) ->
 /// Classify every A node against the B segment nearest to it, if that lies within `reach`
 /// (see [`Facing`]). `O(|A| |B|)`, meant for the reference configuration, once per analysis.
 pub fn facing(a: &[usize], b: &[usize], x: &[[f64; 2]], reach: f64) -> Facing {
-    let mut out = Facing::default();
-    let (mut first_same, mut first_behind) = (None, None);
+    let mut tally = FacingTally::default();
     for k in 0..a.len() {
         let p = x[a[k]];
         let nearest = (0..b.len() - 1)
@@ -60,24 +60,9 @@ pub fn facing(a: &[usize], b: &[usize], x: &[[f64; 2]], reach: f64) -> Facing {
         let nb = edge_normal(x[b[seg]], x[b[seg + 1]]).0;
         let cos = na[0] * nb[0] + na[1] * nb[1];
         let ahead = (q[0] - p[0]) * na[0] + (q[1] - p[1]) * na[1];
-        if cos > 0.5 {
-            out.same_way += 1;
-            first_same.get_or_insert(k);
-        } else if cos < -0.5 && ahead < -0.5 * support(a, k, x) {
-            out.behind += 1;
-            first_behind.get_or_insert(k);
-        } else if cos < -0.5 && ahead <= 0.5 * support(a, k, x) {
-            out.touching += 1;
-        } else if cos < -0.5 {
-            out.facing += 1;
-        }
+        tally.add(k, cos, ahead, support(a, k, x));
     }
-    out.example = if out.same_way >= out.behind {
-        first_same
-    } else {
-        first_behind
-    };
-    out
+    tally.finish()
 }
 
 /// On which side of the polyline `ids` the point `p` lies: the signed distance `(p - q) . n`
