@@ -698,8 +698,8 @@ fn host_pair_with_element(gap: f64, reversed: bool) -> hycon::Result<ContactAnal
     use hycon::contact::bodies::{HostElements, HostNode};
     let node = |id: usize, position: [f64; 2], equations: [Option<usize>; 2]| HostNode {
         id,
-        position,
-        equations,
+        position: position.into(),
+        equations: equations.into(),
     };
     let elements = HostElements {
         formulation: Formulation::Hybrid,
@@ -739,8 +739,8 @@ fn host_pair_with(
             .enumerate()
             .map(|(i, &position)| HostNode {
                 id: i,
-                position,
-                equations: [Some(2 * i), Some(2 * i + 1)],
+                position: position.into(),
+                equations: [Some(2 * i), Some(2 * i + 1)].into(),
             })
             .collect(),
         stiffness: HostStiffness::Csr(Csr {
@@ -751,7 +751,7 @@ fn host_pair_with(
             triangle: Triangle::Full,
         }),
         elements,
-        a_inside,
+        a_inside: a_inside.into_iter().map(|p| p.map(Into::into)).collect(),
         sections: vec![hycon::contact::handover::Section::new(
             Analysis::PlaneStrain,
             1.0,

@@ -197,8 +197,8 @@ fn callback_path_matches_the_reference_with_fewer_solves() {
             .iter()
             .map(|&n| HostNode {
                 id: n,
-                position: model.mesh.nodes[n],
-                equations: [dofs.equation(dof(n, 0)), dofs.equation(dof(n, 1))],
+                position: model.mesh.nodes[n].into(),
+                equations: [dofs.equation(dof(n, 0)), dofs.equation(dof(n, 1))].into(),
             })
             .collect();
         let system = HostSystem {

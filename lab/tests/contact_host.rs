@@ -61,8 +61,9 @@ impl HostSide {
             node_table: (0..mesh.n_nodes())
                 .map(|n| HostNode {
                     id: n + SHIFT,
-                    position: mesh.nodes[n],
-                    equations: [self.dofs.equation(dof(n, 0)), self.dofs.equation(dof(n, 1))],
+                    position: mesh.nodes[n].into(),
+                    equations: [self.dofs.equation(dof(n, 0)), self.dofs.equation(dof(n, 1))]
+                        .into(),
                 })
                 .collect(),
         }
@@ -108,8 +109,8 @@ impl HostSide {
             .iter()
             .map(|&n| HostNode {
                 id: n + SHIFT,
-                position: model.mesh.nodes[n],
-                equations: [self.dofs.equation(dof(n, 0)), self.dofs.equation(dof(n, 1))],
+                position: model.mesh.nodes[n].into(),
+                equations: [self.dofs.equation(dof(n, 0)), self.dofs.equation(dof(n, 1))].into(),
             })
             .collect();
         HostSystem {
@@ -456,7 +457,7 @@ fn condensed_host_matches_the_csr_path() {
     let mut contact: Vec<usize> = system
         .nodes
         .iter()
-        .flat_map(|n| n.equations.into_iter().flatten())
+        .flat_map(|n| n.equations.given())
         .collect();
     contact.sort_unstable();
     // the contact equations and, as a host may condense more, a few others
@@ -564,7 +565,7 @@ fn condensed_errors_name_the_problem() {
     let mut contact: Vec<usize> = system
         .nodes
         .iter()
-        .flat_map(|n| n.equations.into_iter().flatten())
+        .flat_map(|n| n.equations.given())
         .collect();
     contact.sort_unstable();
     let good = condensed(&host, &contact, CondensedKind::Stiffness);

@@ -201,6 +201,7 @@ fn undirected(p: usize, q: usize) -> (usize, usize) {
 mod tests {
     use super::*;
     use crate::contact::bodies::HostNode;
+    use crate::contact::space::Vector;
     use crate::element::Formulation;
 
     fn section(analysis: Analysis, thickness: f64) -> Section {
@@ -256,10 +257,10 @@ mod tests {
     /// for its kind.
     #[test]
     fn elements_have_their_pairs_section() {
-        let node = |id: usize, position| HostNode {
+        let node = |id: usize, position: Vector| HostNode {
             id,
             position,
-            equations: [None, None],
+            equations: [None, None].into(),
         };
         let elements = |materials: Vec<Material>| HostElements {
             formulation: Formulation::Hybrid,
@@ -268,12 +269,12 @@ mod tests {
             offsets: vec![0, 4, 8],
             nodes: vec![0, 1, 4, 5, 1, 2, 3, 4],
             node_table: vec![
-                node(0, [0.0, 0.0]),
-                node(1, [1.0, 0.0]),
-                node(2, [2.0, 0.0]),
-                node(3, [2.0, 1.0]),
-                node(4, [1.0, 1.0]),
-                node(5, [0.0, 1.0]),
+                node(0, Vector::plane(0.0, 0.0)),
+                node(1, Vector::plane(1.0, 0.0)),
+                node(2, Vector::plane(2.0, 0.0)),
+                node(3, Vector::plane(2.0, 1.0)),
+                node(4, Vector::plane(1.0, 1.0)),
+                node(5, Vector::plane(0.0, 1.0)),
             ],
         };
         let material = |t: f64, a: Analysis| Material::new(1.0, 0.3, t, a).unwrap();

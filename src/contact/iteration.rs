@@ -823,7 +823,7 @@ impl ContactAnalysis {
             .map(|i| {
                 let given = system.a_inside.get(i).copied().flatten();
                 let beside = || system.elements.as_ref()?.centroid_beside(&pairs[i].a);
-                given.or_else(beside).map(Vector::from)
+                given.or_else(beside)
             })
             .collect();
         let sections = std::mem::take(&mut system.sections);
@@ -832,6 +832,7 @@ impl ContactAnalysis {
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = HostBodies::new(system, options.backend, lazy, options.threads)?;
         let seconds = clock.elapsed().as_secs_f64();
+        check_host_dimension(&bodies, &a_inside)?;
         let n_nodes = bodies.positions().as_chunks::<2>().0.len();
         check_host_nodes(&pairs, &bodies)?;
         let pairs: Vec<ContactPair> = pairs
@@ -877,7 +878,8 @@ impl ContactAnalysis {
             slot[d] = Some(i);
         }
         let mut timings = Timings::default();
-        [timings.assembly, timings.factorization] = bodies.setup_seconds();
+        let setup = bodies.setup_seconds();
+        (timings.assembly, timings.factorization) = (setup.assembly, setup.factorization);
         let clock = std::time::Instant::now();
         let flexibility = if bodies.lazy_flexibility() {
             Flexibility::lazy(dofs.len())
@@ -1610,6 +1612,30 @@ enum Side {
     Edges,
     /// A host: a point inside body A, if it gave one (see [`HostSystem::a_inside`]).
     Inside(Option<Vector>),
+}
+
+/// A host's contact analysis is plane or axisymmetric: its nodes and its points inside body A
+/// of 2 components.
+fn check_host_dimension(bodies: &HostBodies, a_inside: &[Option<Vector>]) -> Result<()> {
+    if bodies.dim() != PLANE_DIM {
+        return Err(Error::InvalidInput(format!(
+            "a host's contact analysis is plane or axisymmetric (2 components per contact \
+             node); its contact nodes have {}",
+            bodies.dim()
+        )));
+    }
+    for (i, point) in a_inside.iter().enumerate() {
+        if let Some(p) = point.filter(|p| p.dim() != PLANE_DIM) {
+            return Err(in_pair(
+                i,
+                Error::InvalidInput(format!(
+                    "the point inside body A has {} components, the host's nodes {PLANE_DIM}",
+                    p.dim()
+                )),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// A host's pair measures from its `sections` (one per pair, valid, of one kind), checked

@@ -28,6 +28,7 @@ use crate::contact::iteration::{
     ContactAnalysis, ContactOptions, ContactPair, IterationRecord, Kinematics, Monitor, NodeState,
     PlateControl,
 };
+use crate::contact::space::Vector;
 use crate::mesh::Mesh;
 use crate::model::Model;
 use crate::solver::Backend;
@@ -503,7 +504,7 @@ pub struct HyconHost {
     nodes: Vec<HostNode>,
     pairs: Vec<ContactPair>,
     /// Per pair, a point inside body A (`hycon_host_set_pair_inside`).
-    a_inside: Vec<Option<[f64; 2]>>,
+    a_inside: Vec<Option<Vector>>,
     /// The section (analysis kind, thickness) of each pair's A side.
     sections: Vec<Section>,
     stiffness: Option<HostSource>,
@@ -763,8 +764,8 @@ unsafe fn read_host_nodes(
             }
             Ok(HostNode {
                 id,
-                position: [xy[2 * i], xy[2 * i + 1]],
-                equations,
+                position: Vector::plane(xy[2 * i], xy[2 * i + 1]),
+                equations: equations.into(),
             })
         })
         .collect()
@@ -1129,9 +1130,8 @@ impl HyconHost {
                 None => {
                     if let Some(other) = self.nodes.iter().find(|n| {
                         n.equations
-                            .iter()
-                            .flatten()
-                            .any(|e| node.equations.contains(&Some(*e)))
+                            .given()
+                            .any(|e| node.equations.given().any(|f| f == e))
                     }) {
                         return Err(Fail::invalid(format!(
                             "{side} node {id} shares an equation with node {}",
@@ -1209,7 +1209,10 @@ pub unsafe extern "C" fn hycon_host_add_pair(
                     w[0].id, w[1].id
                 )));
             }
-            let points: Vec<f64> = nodes.iter().flat_map(|n| n.position).collect();
+            let points: Vec<f64> = nodes
+                .iter()
+                .flat_map(|n| n.position.components().iter().copied())
+                .collect();
             handover::check_radii(&section, side, &ids(nodes), &points)?;
         }
         let mut pairs = h.pairs.clone();
@@ -1273,11 +1276,12 @@ pub unsafe extern "C" fn hycon_host_set_pair_inside(
         };
         let positions: Vec<[f64; 2]> = ids
             .iter()
-            .filter_map(|&id| h.nodes.iter().find(|n| n.id == id).map(|n| n.position))
+            .filter_map(|&id| h.nodes.iter().find(|n| n.id == id))
+            .map(|n| [n.position[0], n.position[1]])
             .collect();
         crate::contact::iteration::check_a_inside(&positions, point)
             .map_err(|e| Fail::invalid(format!("pair {pair}: {e}")))?;
-        h.a_inside[pair] = Some(point);
+        h.a_inside[pair] = Some(point.into());
         Ok(())
     })
 }
@@ -1464,7 +1468,7 @@ pub unsafe extern "C" fn hycon_host_contact_equations(
         let equations: Vec<i64> = h
             .nodes
             .iter()
-            .flat_map(|n| n.equations.into_iter().flatten())
+            .flat_map(|n| n.equations.given())
             .map(|e| e as i64)
             .collect();
         unsafe { fill(out, len, needed, "out", equations.len(), || Ok(equations)) }

@@ -11,6 +11,7 @@
 use super::{
     Bodies, CALLBACK_BATCH, ElementView, Stiffness, contact_reach, lazy_on, lock, unlocked,
 };
+use crate::contact::space::{MAX_DIM, Vector};
 use crate::element::Formulation;
 use crate::error::{Error, Result};
 use crate::material::Material;
@@ -306,14 +307,71 @@ impl std::fmt::Debug for HostStiffness {
 
 /// One contact node of a host: its id in the host's numbering, reference position, and the
 /// host equation of each displacement component (`None`: held fixed at zero by the host).
+/// Plane and axisymmetric hosts give 2 components, a 3D host 3; all nodes of one host have
+/// one dimension (checked by [`HostBodies::new`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HostNode {
     /// Node id in the host's numbering (as used in the contact pairs).
     pub id: usize,
-    /// Reference position.
-    pub position: [f64; 2],
-    /// Host equations of `u_x`, `u_y`.
-    pub equations: [Option<usize>; 2],
+    /// Reference position (2 or 3 components).
+    pub position: Vector,
+    /// Host equations of the displacement components, one per component of `position`.
+    pub equations: NodeEquations,
+}
+
+/// The host equations of a node's displacement components in order (`u_x, u_y [, u_z]`), 2 or
+/// 3 of them (`None`: held fixed at zero by the host). Its own length, as a [`Vector`]'s, so
+/// that a node cannot carry an equation for a component its position lacks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct NodeEquations {
+    len: u8,
+    e: [Option<usize>; MAX_DIM],
+}
+
+impl NodeEquations {
+    /// The equations `e` of the components in order.
+    ///
+    /// # Panics
+    /// When `e` has not 2 or 3 entries (a programming error: the host's dimension fixes it).
+    pub fn new(e: &[Option<usize>]) -> Self {
+        assert!((2..=MAX_DIM).contains(&e.len()), "{} equations", e.len());
+        let mut out = NodeEquations {
+            len: e.len() as u8,
+            e: [None; MAX_DIM],
+        };
+        out.e[..e.len()].copy_from_slice(e);
+        out
+    }
+
+    /// The number of components (2 or 3).
+    pub fn dim(&self) -> usize {
+        usize::from(self.len)
+    }
+
+    /// The equation of each component.
+    pub fn as_slice(&self) -> &[Option<usize>] {
+        &self.e[..self.dim()]
+    }
+
+    /// The equation of component `i` (`None` when held fixed, or past the last component).
+    pub fn get(&self, i: usize) -> Option<usize> {
+        self.as_slice().get(i).copied().flatten()
+    }
+
+    /// The equations given (fixed components left out), in component order.
+    pub fn given(&self) -> impl Iterator<Item = usize> + '_ {
+        self.as_slice().iter().copied().flatten()
+    }
+}
+
+/// The equations `e` in order.
+///
+/// # Panics
+/// When `N` is not 2 or 3.
+impl<const N: usize> From<[Option<usize>; N]> for NodeEquations {
+    fn from(e: [Option<usize>; N]) -> Self {
+        NodeEquations::new(&e)
+    }
 }
 
 /// A host's linear system as the contact iteration needs it.
@@ -333,7 +391,7 @@ pub struct HostSystem {
     /// needs it, unless [`elements`](Self::elements) has an element on a segment of A (its
     /// centroid is then taken). A point given is checked to lie on A's body side of its
     /// polyline (see [`check_a_inside`](crate::contact::iteration::check_a_inside)).
-    pub a_inside: Vec<Option<[f64; 2]>>,
+    pub a_inside: Vec<Option<Vector>>,
     /// The section of each contact pair's A side, in the order of the pairs: its analysis kind
     /// (all pairs of one kind) and thickness. The contact integrals are weighted by its
     /// measure (the thickness in plane analysis, `2 pi r` in axisymmetry), so that the
@@ -345,7 +403,8 @@ pub struct HostSystem {
 
 /// Elements of a host along its A polylines (those owning the A segments), with hycon's element
 /// formulations, so that hycon can recover the tractions from the element stresses (the
-/// paper's way (a)) from the host's displacements.
+/// paper's way (a)) from the host's displacements. Host elements are plane (or axisymmetric)
+/// elements: every node of `node_table` has 2 components and 2 equations (checked).
 #[derive(Debug, Clone, PartialEq)]
 pub struct HostElements {
     /// The elements' formulation.
@@ -367,7 +426,7 @@ impl HostElements {
     /// The centroid of the first element that has a segment of the polyline `ids` (host ids)
     /// as an edge, either way round, if one does: a point inside that element's body, the
     /// nodes' mean position of a convex element. One pass over the elements.
-    pub fn centroid_beside(&self, ids: &[usize]) -> Option<[f64; 2]> {
+    pub fn centroid_beside(&self, ids: &[usize]) -> Option<Vector> {
         let segments: std::collections::HashSet<(usize, usize)> = ids
             .windows(2)
             .map(|w| (w[0].min(w[1]), w[0].max(w[1])))
@@ -388,16 +447,18 @@ impl HostElements {
                 .find(|n| n.id == id)
                 .map(|n| n.position)
         };
-        let points: Vec<[f64; 2]> = element
+        let points: Vec<Vector> = element
             .iter()
             .map(|&n| position(n))
             .collect::<Option<_>>()?;
         let k = points.len() as f64;
-        Some(
-            points
-                .iter()
-                .fold([0.0, 0.0], |c, x| [c[0] + x[0] / k, c[1] + x[1] / k]),
-        )
+        let mut centroid = Vector::zero(points.first()?.dim());
+        for x in &points {
+            for (c, x) in centroid.components_mut().iter_mut().zip(x.components()) {
+                *c += x / k;
+            }
+        }
+        Some(centroid)
     }
 }
 
@@ -427,14 +488,24 @@ impl ElementPatch {
                     node.id
                 )));
             }
-            if let Some(eq) = node.equations.iter().flatten().find(|&&q| q >= n_equations) {
+            let (&[x, y], &[ex, ey]) = (node.position.components(), node.equations.as_slice())
+            else {
+                return Err(Error::InvalidInput(format!(
+                    "element node {}: host elements are plane elements (2 components and 2 \
+                     equations per node), it has {} and {}",
+                    node.id,
+                    node.position.dim(),
+                    node.equations.dim()
+                )));
+            };
+            if let Some(eq) = node.equations.given().find(|&q| q >= n_equations) {
                 return Err(Error::InvalidInput(format!(
                     "element node {}: equation {eq} is out of range (n = {n_equations})",
                     node.id
                 )));
             }
-            mesh.push_node(node.position);
-            equations.push(node.equations);
+            mesh.push_node([x, y]);
+            equations.push([ex, ey]);
         }
         mesh.element_offsets = e.offsets;
         mesh.element_nodes = e
@@ -461,8 +532,10 @@ impl ElementPatch {
 /// (local ids) in `nodes` order.
 pub struct HostBodies {
     equations: usize,
+    /// The nodes' number of components (all alike).
+    dim: usize,
     nodes: Vec<HostNode>,
-    /// The nodes' reference positions, flat (2 per node).
+    /// The nodes' reference positions, flat (`dim` per node).
     positions: Vec<f64>,
     /// Locked so that solves (displacement recovery) can run from `&self` queries, one at a
     /// time: a host's callback is never entered concurrently.
@@ -502,8 +575,9 @@ impl std::fmt::Debug for HostBodies {
 }
 
 impl HostBodies {
-    /// A host's system: checks the nodes (unique ids, finite positions, equations in range and
-    /// used once) and factors a CSR stiffness: the contact equations last (eager), or, when
+    /// A host's system: checks the nodes (unique ids, finite positions, one equation (or
+    /// `None`) per component, all nodes of one dimension, equations in range and used once)
+    /// and factors a CSR stiffness: the contact equations last (eager), or, when
     /// `lazy` (faer only), in the plain fill-reducing order with `F` built lazily as for
     /// [`ModelBodies::new`](super::ModelBodies::new) (on up to `threads` threads).
     pub fn new(system: HostSystem, backend: Backend, lazy: bool, threads: usize) -> Result<Self> {
@@ -517,6 +591,7 @@ impl HostBodies {
         let elements = elements
             .map(|e| ElementPatch::new(e, equations))
             .transpose()?;
+        let dim = check_dimension(&nodes)?;
         let mut seen_ids = std::collections::HashSet::new();
         let mut seen_eqs = std::collections::HashSet::new();
         for node in &nodes {
@@ -526,14 +601,15 @@ impl HostBodies {
                     node.id
                 )));
             }
-            if !node.position.iter().all(|v| v.is_finite()) {
+            if !node.position.components().iter().all(|v| v.is_finite()) {
                 return Err(Error::InvalidInput(format!(
                     "contact node {}: position {:?} is not finite",
-                    node.id, node.position
+                    node.id,
+                    node.position.components()
                 )));
             }
-            for e in node.equations.iter().flatten() {
-                if *e >= equations || !seen_eqs.insert(*e) {
+            for e in node.equations.given() {
+                if e >= equations || !seen_eqs.insert(e) {
                     return Err(Error::InvalidInput(format!(
                         "contact node {}: equation {e} is out of range (n = {equations}) or \
                          used by another contact dof",
@@ -551,10 +627,7 @@ impl HostBodies {
                     )));
                 }
                 let lower = csr.lower()?;
-                let contact: Vec<usize> = nodes
-                    .iter()
-                    .flat_map(|n| n.equations.into_iter().flatten())
-                    .collect();
+                let contact: Vec<usize> = nodes.iter().flat_map(|n| n.equations.given()).collect();
                 let lazy = lazy_on(backend, lazy);
                 let trailing = if lazy { &[][..] } else { &contact[..] };
                 let mut factor = SparseCholesky::analyze(lower.symbolic(), backend, trailing)?;
@@ -569,9 +642,13 @@ impl HostBodies {
             HostStiffness::Solver(s) => HostSolver::Callback(s),
             HostStiffness::Condensed(c) => condensed_solver(&c, &nodes, equations)?,
         };
-        let positions = nodes.iter().flat_map(|n| n.position).collect();
+        let positions = nodes
+            .iter()
+            .flat_map(|n| n.position.components().iter().copied())
+            .collect();
         Ok(HostBodies {
             equations,
+            dim,
             nodes,
             positions,
             solver: Mutex::new(solver),
@@ -580,9 +657,39 @@ impl HostBodies {
     }
 }
 
+/// The dimension of a host's contact nodes (2 for none): each node's position and equations
+/// of one length, and all nodes alike.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming the first node that differs.
+fn check_dimension(nodes: &[HostNode]) -> Result<usize> {
+    let Some(first) = nodes.first() else {
+        return Ok(2);
+    };
+    let dim = first.position.dim();
+    for node in nodes {
+        let (p, e) = (node.position.dim(), node.equations.dim());
+        if p != e {
+            return Err(Error::InvalidInput(format!(
+                "contact node {}: its position has {p} components but {e} equations are given",
+                node.id
+            )));
+        }
+        if p != dim {
+            return Err(Error::InvalidInput(format!(
+                "contact node {} has {p} components, contact node {} {dim}: all contact nodes \
+                 of a host have one dimension",
+                node.id, first.id
+            )));
+        }
+    }
+    Ok(dim)
+}
+
 impl Bodies for HostBodies {
+    /// The nodes' number of components.
     fn dim(&self) -> usize {
-        2
+        self.dim
     }
 
     fn positions(&self) -> &[f64] {
@@ -605,7 +712,8 @@ impl Bodies for HostBodies {
 
     /// The host's equation (`None`: held fixed at zero by the host).
     fn field_index(&self, d: usize) -> Option<usize> {
-        self.nodes.get(d / 2).and_then(|n| n.equations[d % 2])
+        let node = self.nodes.get(d / self.dim)?;
+        node.equations.get(d % self.dim)
     }
 
     fn equation(&self, d: usize) -> Option<usize> {
@@ -783,7 +891,7 @@ fn condensed_solver(c: &Condensed, nodes: &[HostNode], n_equations: usize) -> Re
     c.check(n_equations)?;
     let contact: Vec<(usize, usize)> = nodes
         .iter()
-        .flat_map(|n| n.equations.into_iter().flatten().map(move |e| (n.id, e)))
+        .flat_map(|n| n.equations.given().map(move |e| (n.id, e)))
         .collect();
     let flexibility = c.flexibility(&contact)?;
     let mut position = vec![None; n_equations];
@@ -792,7 +900,12 @@ fn condensed_solver(c: &Condensed, nodes: &[HostNode], n_equations: usize) -> Re
     }
     let candidate = nodes
         .iter()
-        .flat_map(|n| n.equations.map(|e| e.and_then(|e| position[e])))
+        .flat_map(|n| {
+            n.equations
+                .as_slice()
+                .iter()
+                .map(|e| e.and_then(|e| position[e]))
+        })
         .collect();
     Ok(HostSolver::Condensed {
         flexibility,
@@ -819,5 +932,173 @@ fn checked_solve(s: &mut dyn HostSolve, nrhs: usize, rhs: &[f64], x: &mut [f64])
             "the solve callback returned a non-finite value at entry {i} of {nrhs} right-hand \
              side(s)"
         ))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::bodies::Bodies;
+
+    /// A host of `n` equations, tridiagonal `K` (4 on the diagonal, -1 beside it: SPD by
+    /// diagonal dominance), as a lower-triangle CSR.
+    fn tridiagonal(n: usize) -> Csr {
+        let (mut row_ptr, mut columns, mut values) = (vec![0], Vec::new(), Vec::new());
+        for i in 0..n {
+            if i > 0 {
+                columns.push(i - 1);
+                values.push(-1.0);
+            }
+            columns.push(i);
+            values.push(4.0);
+            row_ptr.push(columns.len());
+        }
+        Csr {
+            n,
+            row_ptr,
+            columns,
+            values,
+            triangle: Triangle::Lower,
+        }
+    }
+
+    /// Two 3D contact nodes, ids 10 and 11, their equations interleaved with an interior one
+    /// (3) and one component of node 11 held fixed.
+    fn solid_nodes() -> Vec<HostNode> {
+        vec![
+            HostNode {
+                id: 10,
+                position: Vector::solid(0.0, 0.0, 0.0),
+                equations: [Some(0), Some(2), Some(4)].into(),
+            },
+            HostNode {
+                id: 11,
+                position: Vector::solid(1.0, 0.0, 0.5),
+                equations: [Some(1), None, Some(5)].into(),
+            },
+        ]
+    }
+
+    fn system(nodes: Vec<HostNode>) -> HostSystem {
+        HostSystem {
+            equations: 6,
+            nodes,
+            stiffness: HostStiffness::Csr(tridiagonal(6)),
+            elements: None,
+            a_inside: Vec::new(),
+            sections: Vec::new(),
+        }
+    }
+
+    /// With 3 equations per node, `dim` is 3 and `F` between the contact dofs (`3 node +
+    /// component`) is `K^-1` between their equations, zero at the fixed one; eager (the
+    /// factor's trailing block) and lazy (unit solves) alike.
+    #[test]
+    fn solid_host_flexibility_is_the_inverse() {
+        let inverse = nalgebra::DMatrix::from_fn(6, 6, |i, j| match i.abs_diff(j) {
+            0 => 4.0,
+            1 => -1.0,
+            _ => 0.0,
+        })
+        .try_inverse()
+        .unwrap();
+        let equation = [Some(0), Some(2), Some(4), Some(1), None, Some(5)];
+        let dofs: Vec<usize> = (0..6).collect();
+        for lazy in [false, true] {
+            let mut bodies =
+                HostBodies::new(system(solid_nodes()), Backend::Faer, lazy, 1).unwrap();
+            assert_eq!(bodies.dim(), 3);
+            assert_eq!(bodies.positions(), &[0.0, 0.0, 0.0, 1.0, 0.0, 0.5]);
+            assert_eq!((bodies.equation(4), bodies.equation(5)), (None, Some(5)));
+            let flexibility = bodies.flexibility(&dofs).unwrap();
+            let largest = inverse.amax();
+            for (i, j) in dofs.iter().flat_map(|&i| dofs.iter().map(move |&j| (i, j))) {
+                let expected = match (equation[i], equation[j]) {
+                    (Some(a), Some(b)) => inverse[(a, b)],
+                    _ => 0.0,
+                };
+                let error = (flexibility[(i, j)] - expected).abs();
+                assert!(
+                    error <= 1e-12 * largest,
+                    "lazy {lazy}: F[{i}][{j}] = {} against {expected}",
+                    flexibility[(i, j)]
+                );
+            }
+        }
+    }
+
+    /// A host's nodes are of one dimension, each with one equation per component: a plane
+    /// node among solid ones, or a position and equations of different lengths, is named.
+    #[test]
+    fn mixed_dimensions_are_named() {
+        let message = |nodes| {
+            HostBodies::new(system(nodes), Backend::Faer, false, 1)
+                .unwrap_err()
+                .to_string()
+        };
+        let mut mixed = solid_nodes();
+        mixed[1].position = Vector::plane(1.0, 0.0);
+        mixed[1].equations = [Some(1), Some(5)].into();
+        let e = message(mixed);
+        assert!(e.contains("contact node 11 has 2 components"), "{e}");
+        let mut unequal = solid_nodes();
+        unequal[0].equations = [Some(0), Some(2)].into();
+        let e = message(unequal);
+        assert!(
+            e.contains("contact node 10: its position has 3 components but 2 equations"),
+            "{e}"
+        );
+    }
+
+    /// Host elements are plane elements, and a host's contact analysis is plane or
+    /// axisymmetric: a 3D element node, or 3D contact nodes, are refused by name.
+    #[test]
+    fn plane_only_beyond_the_bodies() {
+        use crate::contact::handover::Section;
+        use crate::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair};
+        use crate::material::Analysis;
+        let mut elements = HostElements {
+            formulation: Formulation::Hybrid,
+            materials: vec![Material::new(1.0, 0.3, 1.0, Analysis::PlaneStrain).unwrap()],
+            element_material: vec![0],
+            offsets: vec![0, 4],
+            nodes: vec![0, 1, 2, 3],
+            node_table: [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+                .iter()
+                .enumerate()
+                .map(|(id, &p)| HostNode {
+                    id,
+                    position: p.into(),
+                    equations: [None, None].into(),
+                })
+                .collect(),
+        };
+        check_elements(&elements, 6).unwrap();
+        elements.node_table[2].position = Vector::solid(1.0, 1.0, 0.0);
+        let e = check_elements(&elements, 6).unwrap_err().to_string();
+        assert!(
+            e.contains("element node 2: host elements are plane elements"),
+            "{e}"
+        );
+
+        let mut nodes = solid_nodes();
+        for (id, x) in [(12, 1.0), (13, 0.0)] {
+            nodes.push(HostNode {
+                id,
+                position: Vector::solid(x, 0.0, -0.1),
+                equations: [None, None, None].into(),
+            });
+        }
+        let mut host = system(nodes);
+        host.sections = vec![Section::new(Analysis::PlaneStrain, 1.0).unwrap()];
+        let pair = ContactPair {
+            a: vec![10, 11],
+            b: vec![12, 13],
+            friction: 0.0,
+        };
+        let e = ContactAnalysis::host(host, vec![pair], ContactOptions::default())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("2 components per contact node"), "{e}");
     }
 }

@@ -27,7 +27,7 @@ mod solid;
 
 pub use host::{
     Condensed, CondensedKind, Csr, HostBodies, HostElements, HostNode, HostSolve, HostStiffness,
-    HostSystem, Triangle, check_elements,
+    HostSystem, NodeEquations, Triangle, check_elements,
 };
 pub use model::{ModelBodies, OwnBodies, OwnModel};
 pub use solid::SolidBodies;
@@ -46,6 +46,15 @@ pub type ElementView<'a> = (
     Vec<f64>,
     Box<dyn Fn(usize) -> Option<usize> + 'a>,
 );
+
+/// Seconds the bodies' setup took ([`Bodies::setup_seconds`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SetupSeconds {
+    /// Assembling `K`.
+    pub assembly: f64,
+    /// Its symbolic analysis and numeric factorization.
+    pub factorization: f64,
+}
 
 /// How the bodies solve with their stiffness `K` when the iteration builds `F`.
 pub enum Stiffness<'a> {
@@ -222,10 +231,10 @@ pub trait Bodies: Send + Sync + std::fmt::Debug {
     /// its factor. Only the benchmark's refactor-every-iteration variant does this.
     fn refactorize(&mut self) -> Result<()>;
 
-    /// Seconds spent on `[assembly, analysis + factorization]` when the bodies were set up
+    /// Seconds spent on assembly and on analysis + factorization when the bodies were set up
     /// (zero where hycon did not assemble).
-    fn setup_seconds(&self) -> [f64; 2] {
-        [0.0; 2]
+    fn setup_seconds(&self) -> SetupSeconds {
+        SetupSeconds::default()
     }
 
     /// The displacement field for loads `f` (and, for hycon's models, prescribed values `qp`,

@@ -4,7 +4,9 @@
 //! assembled and factored here, with the contact dofs last (eager) or with `F` built lazily
 //! within their reach.
 
-use super::{Bodies, ElementView, Stiffness, contact_reach, lazy_on, load_key, lock, unlocked};
+use super::{
+    Bodies, ElementView, SetupSeconds, Stiffness, contact_reach, lazy_on, load_key, lock, unlocked,
+};
 use crate::assembly::DofMap;
 use crate::error::Result;
 use crate::model::{LinearSystem, Model};
@@ -31,9 +33,9 @@ pub trait OwnModel: Send + Sync + 'static {
     fn refactorize(&self, system: &mut Self::System) -> Result<()>;
     /// `K_ff q_f = f_f - K_fp q_p` solved with the kept factor: the displacement over all dofs.
     fn solve(&self, system: &mut Self::System, f: &[f64], qp: &[f64]) -> Result<Vec<f64>>;
-    /// Seconds of `[assembly, analysis + factorization]` of the system (zero if not timed).
-    fn setup_seconds(_system: &Self::System) -> [f64; 2] {
-        [0.0; 2]
+    /// Seconds of assembly and of analysis + factorization of the system (zero if not timed).
+    fn setup_seconds(_system: &Self::System) -> SetupSeconds {
+        SetupSeconds::default()
     }
     /// The plane model, for what stays plane-specific ([`Bodies::as_model`]).
     fn as_plane(&self) -> Option<&Model> {
@@ -141,7 +143,7 @@ impl<M: OwnModel> Bodies for OwnBodies<M> {
         self.model.refactorize(unlocked(&mut self.system).as_mut())
     }
 
-    fn setup_seconds(&self) -> [f64; 2] {
+    fn setup_seconds(&self) -> SetupSeconds {
         M::setup_seconds(&lock(&self.system))
     }
 
@@ -201,8 +203,12 @@ impl OwnModel for Model {
         Ok(system.solve_for(self, f, qp)?.q)
     }
 
-    fn setup_seconds(system: &LinearSystem) -> [f64; 2] {
-        system.setup_seconds()
+    fn setup_seconds(system: &LinearSystem) -> SetupSeconds {
+        let [assembly, factorization] = system.setup_seconds();
+        SetupSeconds {
+            assembly,
+            factorization,
+        }
     }
 
     fn as_plane(&self) -> Option<&Model> {
