@@ -911,16 +911,15 @@ impl ContactAnalysis {
             .iter()
             .map(ContactPair::friction_law)
             .collect::<Result<_>>()?;
-        let nodes = pairs
+        let nodes = reference
             .iter()
-            .map(|p| {
-                vec![
-                    NodeData {
+            .map(|surface| {
+                (surface.nodes.iter())
+                    .map(|node| NodeData {
                         state: NodeState::Open,
-                        traction: Traction::zero(1),
-                    };
-                    p.a.len()
-                ]
+                        traction: Traction::zero(node.frame.tangents().len()),
+                    })
+                    .collect()
             })
             .collect();
         let node_flexibility = NodeFlexibility::new(pairs.iter().map(|p| p.a.len()));
@@ -1445,7 +1444,7 @@ impl ContactAnalysis {
             finite(&uc_new, number, iteration)?;
             self.widen_pairing(&uc_new, &mut surfaces)?;
             self.update_geometry(&mut surfaces, &uc_new, startc)?;
-            let tractions = system.tractions(&tau, states, &self.laws);
+            let tractions = system.tractions(&tau, &surfaces, states, &self.laws);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
             let changes = set.changes(&proposed);
             let r = change_ratio(&uc_new, &uc, startc, resolution, self.options.tolerance);

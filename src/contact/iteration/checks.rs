@@ -6,6 +6,7 @@ use super::{
     ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION, Kinematics,
     Locks, NodeKey, NodeState, Result, Tangential, Traction, dot,
 };
+use super::small_system::kept_tangents;
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::Vector;
 
@@ -139,24 +140,29 @@ impl ContactAnalysis {
     }
 
     /// The tangential slip of A relative to B at `node` since the increment began, per unit
-    /// length, in the node's tangent space: `s_k = (r_k . (u - u_start)) / w_k`, `r_k` the
-    /// node's tangent row (its coupling along the tangent) and `w_k` its weight.
+    /// length, in the node's tangent space: `s_ki = (r_ki . (u - u_start)) / w_k` along each
+    /// frame tangent `s_i`, `r_ki` the node's row along it (its coupling along `s_i`) and
+    /// `w_k` its weight; 0 along a dropped tangent.
     pub(super) fn slip_since_start(
         &self,
         node: &ContactNode,
         uc: &[f64],
         startc: &[f64],
     ) -> Tangential {
-        let row = self.directed(&node.coupling, &node.frame.tangent(0));
-        Tangential::along((dot(&row, uc) - dot(&row, startc)) / node.weight)
+        let mut slip = Tangential::zero(node.frame.tangents().len());
+        for (i, s) in kept_tangents(&node.frame) {
+            let row = self.directed(&node.coupling, &s);
+            slip.components_mut()[i] = (dot(&row, uc) - dot(&row, startc)) / node.weight;
+        }
+        slip
     }
 
     /// Under small kinematics the pairing of A with B is frozen in the reference configuration.
-    /// When the surfaces slide along each other by `slip_k = s_k . sum_j c_kj u_j / covered
-    /// weight` at node `k` (the mean tangential displacement of A relative to B over the node's
-    /// support), the frozen pairing misplaces B by `slip_k`, which changes the gap by about
-    /// `|slip_k| |dg0/ds|_k`, `dg0/ds` the slope of the reference gap along A (the angle between
-    /// the surfaces). That is the linearization that Hertz theory makes too, harmless while it
+    /// When the surfaces slide along each other by `slip_ki = s_ki . sum_j c_kj u_j / covered
+    /// weight` along each kept tangent `s_ki` at node `k` (the mean tangential displacement of
+    /// A relative to B over the node's support), the frozen pairing misplaces B by `slip_k`,
+    /// which changes the gap by about `|slip_k| |dg0/ds|_k`, `|dg0/ds|` the slope of the
+    /// reference gap along A (the angle between the surfaces). That is the linearization that Hertz theory makes too, harmless while it
     /// is small against the contact's normal approach `delta` (the largest change of a normal
     /// gap over the active nodes); an active node whose error exceeds [`SMALL_SLIDING_LIMIT`]
     /// `delta` fails the increment, naming the node and pointing to finite kinematics.
@@ -194,13 +200,22 @@ impl ContactAnalysis {
         let x = self.bodies.positions();
         for (p, surface, k, node) in active() {
             let slope = self.geometries[p].gap_slope(surface, k, x);
-            let slip = along(node, node.frame.tangent(0));
-            if (slip * slope).abs() > SMALL_SLIDING_LIMIT * delta {
+            let mut slip = Tangential::zero(node.frame.tangents().len());
+            for (i, s) in kept_tangents(&node.frame) {
+                slip.components_mut()[i] = along(node, s);
+            }
+            // |slip| |dg0/ds| (in the plane |slip_k| is the component's magnitude: the
+            // product's magnitude to the bit)
+            let error = slip.norm() * slope;
+            if error > SMALL_SLIDING_LIMIT * delta {
                 return Err(ContactError::SmallSlidingExceeded {
                     increment: number,
                     node: self.bodies.external(node.node),
-                    slip,
-                    relative: (slip * slope).abs() / delta,
+                    slip: match slip.components() {
+                        [s] => *s,
+                        _ => slip.norm(),
+                    },
+                    relative: error / delta,
                 }
                 .into());
             }

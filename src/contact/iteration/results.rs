@@ -7,13 +7,14 @@ use crate::contact::geometry::ContactSurface;
 use crate::contact::space::{self, Vector, node};
 use crate::error::{Error, Result};
 
-/// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `2k` (normal,
-/// `n_k . sum_j c_kj u_j`) and `2k + 1` (tangential, `s_k . sum_j c_kj u_j`) for the A nodes
-/// `k`, columns over the field (model dofs or host equations; a host's fixed dofs are
-/// dropped).
+/// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `D k` (normal,
+/// `n_k . sum_j c_kj u_j`) and `D k + i` (tangential, `s_ki . sum_j c_kj u_j`, one per frame
+/// tangent `s_ki`, `i = 1 .. D - 1`; empty for a tangent dropped by symmetry) for the A nodes
+/// `k`, `D` the dimension (in the plane and in axisymmetry rows `2k` and `2k + 1`), columns
+/// over the field (model dofs or host equations; a host's fixed dofs are dropped).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConstraintRows {
-    /// `2 n_A + 1` row starts.
+    /// `D n_A + 1` row starts.
     pub row_ptr: Vec<usize>,
     /// Column (field index) of each entry.
     pub columns: Vec<usize>,
@@ -72,7 +73,8 @@ impl ContactAnalysis {
             values: Vec::new(),
         };
         for node in &surface.nodes {
-            for direction in [node.frame.normal(), node.frame.tangent(0)] {
+            let tangents = node.frame.tangents().iter().copied();
+            for direction in std::iter::once(node.frame.normal()).chain(tangents) {
                 for &(j, c) in &node.coupling {
                     for (d, component) in direction.components().iter().enumerate() {
                         let field = self.bodies.field_index(crate::assembly::dof(j, d));

@@ -12,7 +12,7 @@ use super::{
     ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
     Traction, dof, rows_of,
 };
-use crate::contact::space::Vector;
+use crate::contact::space::{Frame, Vector};
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
 
@@ -65,11 +65,28 @@ pub(super) fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<
     condition.is_finite().then_some(condition)
 }
 
-/// Which row of a node an unknown belongs to.
+/// Which row of a node an unknown belongs to: its normal, or its tangent `s_i` (the index
+/// into the node's frame tangents, one in the plane and in axisymmetry, two on a 3D face).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Row {
-    Normal = 0,
-    Tangent = 1,
+    Normal,
+    Tangent(usize),
+}
+
+impl Row {
+    /// The direction `d` of the row at a node with frame `frame`: `n` or `s_i`.
+    pub(super) fn direction(self, frame: &Frame) -> Vector {
+        match self {
+            Row::Normal => frame.normal(),
+            Row::Tangent(i) => frame.tangent(i),
+        }
+    }
+}
+
+/// The tangents of `frame` that get rows, with their indices: all but the dropped ones
+/// ([`Frame::is_dropped`]: a component that vanishes by symmetry has no row and no unknown).
+pub(super) fn kept_tangents(frame: &Frame) -> impl Iterator<Item = (usize, Vector)> + '_ {
+    (frame.tangents().iter().copied().enumerate()).filter(|&(i, _)| !frame.is_dropped(i))
 }
 
 /// A sparse vector over the contact dofs: `(slot, value)`.
@@ -88,7 +105,7 @@ pub(super) struct SmallSystem {
     pub(super) b: Vec<f64>,
     /// Each force column as a combination of node directions:
     /// `col_j = sum coefficient * (d . c_k)` over `(pair, A node, direction, coefficient)`,
-    /// `d` the node's normal (`Row::Normal`) or tangent (`Row::Tangent`).
+    /// `d` the node's normal (`Row::Normal`) or tangent `s_i` (`Row::Tangent(i)`).
     pub(super) basis: Vec<Vec<(usize, usize, Row, f64)>>,
 }
 
@@ -172,30 +189,28 @@ impl SmallSystem {
         f
     }
 
-    /// The traction of every A node from the unknowns (zero at open nodes; `ts` of the law,
-    /// [`FrictionLaw::slip_traction`], at slip nodes).
+    /// The traction of every A node of `surfaces` from the unknowns, with one tangential
+    /// component per frame tangent (zero at open nodes and along dropped tangents; `ts` of
+    /// the law, [`FrictionLaw::slip_traction`], at slip nodes).
     pub(super) fn tractions(
         &self,
         tau: &[f64],
+        surfaces: &[ContactSurface],
         states: &[Vec<NodeState>],
         laws: &[Box<dyn FrictionLaw>],
     ) -> Vec<Vec<Traction>> {
-        let mut t: Vec<Vec<Traction>> = states
+        let mut t: Vec<Vec<Traction>> = surfaces
             .iter()
-            .map(|s| vec![Traction::zero(1); s.len()])
+            .map(|s| {
+                (s.nodes.iter())
+                    .map(|node| Traction::zero(node.frame.tangents().len()))
+                    .collect()
+            })
             .collect();
-        // a node's tangential unknowns follow its normal one, one per tangent
-        let mut tangent = 0;
         for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
             match row {
-                Row::Normal => {
-                    t[p][k].normal = v;
-                    tangent = 0;
-                }
-                Row::Tangent => {
-                    t[p][k].tangential.components_mut()[tangent] = v;
-                    tangent += 1;
-                }
+                Row::Normal => t[p][k].normal = v,
+                Row::Tangent(i) => t[p][k].tangential.components_mut()[i] = v,
             }
         }
         for (p, s) in states.iter().enumerate() {
@@ -243,16 +258,19 @@ impl ContactAnalysis {
                 let normal = self.directed(&node.coupling, &node.frame.normal());
                 let rg = node.gap.dot(&node.frame.normal());
                 let b = dot(&normal, uc) - rg;
-                // the rows of the node's tangents (one in the plane and in axisymmetry)
-                let tangents =
-                    || (node.frame.tangents().iter()).map(|s| self.directed(&node.coupling, s));
+                // the rows of the node's kept tangents (one in the plane and in axisymmetry)
+                let tangents = || {
+                    kept_tangents(&node.frame)
+                        .map(|(i, s)| (i, self.directed(&node.coupling, &s)))
+                };
                 let mut col = normal.clone();
                 let mut basis = vec![(p, k, Row::Normal, 1.0)];
                 if let Rows::NormalSlip(c) = rows {
                     // the column n + sum_i c_i s_i
-                    for (&w, s) in c.components().iter().zip(tangents()) {
-                        col.extend(s.into_iter().map(|(i, v)| (i, w * v)));
-                        basis.push((p, k, Row::Tangent, w));
+                    for (i, s) in tangents() {
+                        let w = c.components()[i];
+                        col.extend(s.into_iter().map(|(j, v)| (j, w * v)));
+                        basis.push((p, k, Row::Tangent(i), w));
                     }
                 }
                 sys.unknowns.push((p, k, Row::Normal));
@@ -261,12 +279,13 @@ impl ContactAnalysis {
                 sys.basis.push(basis);
                 sys.b.push(b);
                 if rows == Rows::NormalTangent {
-                    for t in tangents() {
-                        sys.unknowns.push((p, k, Row::Tangent));
+                    for (i, t) in tangents() {
+                        let row = Row::Tangent(i);
+                        sys.unknowns.push((p, k, row));
                         sys.b.push(dot(&t, startc));
                         sys.rows.push(t.clone());
                         sys.cols.push(t);
-                        sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
+                        sys.basis.push(vec![(p, k, row, 1.0)]);
                     }
                 }
             }
