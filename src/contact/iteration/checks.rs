@@ -2,11 +2,11 @@
 //! fully covered, the locks held (gathered here, judged by the active set: `active_set/locks.rs`),
 //! small kinematics within their range, the discrete contact conditions.
 
+use super::small_system::kept_tangents;
 use super::{
     ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION, Kinematics,
     Locks, NodeKey, NodeState, Result, Tangential, Traction, dot,
 };
-use super::small_system::kept_tangents;
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::Vector;
 
@@ -64,6 +64,16 @@ pub(super) fn norm2(v: &[f64]) -> f64 {
         return scale;
     }
     scale * v.iter().map(|x| (x / scale).powi(2)).sum::<f64>().sqrt()
+}
+
+/// The tangential vector of `node` whose component along each kept frame tangent `s_i` is
+/// `along(s_i)` (0 along a dropped tangent: [`kept_tangents`]), one component per tangent.
+fn tangential_parts(node: &ContactNode, along: impl Fn(&Vector) -> f64) -> Tangential {
+    let mut v = Tangential::zero(node.frame.tangents().len());
+    for (i, s) in kept_tangents(&node.frame) {
+        v.components_mut()[i] = along(&s);
+    }
+    v
 }
 
 impl ContactAnalysis {
@@ -149,12 +159,10 @@ impl ContactAnalysis {
         uc: &[f64],
         startc: &[f64],
     ) -> Tangential {
-        let mut slip = Tangential::zero(node.frame.tangents().len());
-        for (i, s) in kept_tangents(&node.frame) {
-            let row = self.directed(&node.coupling, &s);
-            slip.components_mut()[i] = (dot(&row, uc) - dot(&row, startc)) / node.weight;
-        }
-        slip
+        tangential_parts(node, |s| {
+            let row = self.directed(&node.coupling, s);
+            (dot(&row, uc) - dot(&row, startc)) / node.weight
+        })
     }
 
     /// Under small kinematics the pairing of A with B is frozen in the reference configuration.
@@ -200,10 +208,7 @@ impl ContactAnalysis {
         let x = self.bodies.positions();
         for (p, surface, k, node) in active() {
             let slope = self.geometries[p].gap_slope(surface, k, x);
-            let mut slip = Tangential::zero(node.frame.tangents().len());
-            for (i, s) in kept_tangents(&node.frame) {
-                slip.components_mut()[i] = along(node, s);
-            }
+            let slip = tangential_parts(node, |s| along(node, *s));
             // |slip| |dg0/ds| (in the plane |slip_k| is the component's magnitude: the
             // product's magnitude to the bit)
             let error = slip.norm() * slope;
@@ -457,5 +462,37 @@ impl ContactAnalysis {
             }
         }
         worst
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::space::Frame;
+
+    /// A slip has one component per frame tangent: two on a 3D face (0 along a dropped
+    /// tangent), one in the plane.
+    #[test]
+    fn tangential_parts_follow_the_frame() {
+        let motion = Vector::solid(3.0, 4.0, 12.0);
+        let along = |s: &Vector| s.dot(&motion);
+        let mut node = ContactNode::empty(3);
+        node.frame = Frame::face([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        assert_eq!(
+            tangential_parts(&node, along),
+            Tangential::on_face(3.0, 4.0)
+        );
+        node.frame = Frame::face([0.0, 0.0, 1.0], [0.0; 3], [0.0, 1.0, 0.0]);
+        assert_eq!(
+            tangential_parts(&node, along),
+            Tangential::on_face(0.0, 4.0)
+        );
+        let mut plane = ContactNode::empty(2);
+        plane.frame = Frame::plane(Vector::plane(0.0, 1.0));
+        let planar = Vector::plane(3.0, 4.0);
+        assert_eq!(
+            tangential_parts(&plane, |s| s.dot(&planar)),
+            Tangential::along(3.0)
+        );
     }
 }

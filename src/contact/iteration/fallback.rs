@@ -37,11 +37,11 @@
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
+use super::small_system::Row;
 use super::{
     Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
     closed_at_rest, column, dot, linearized_state, plate,
 };
-use super::small_system::Row;
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use plate::dot_dense;
 
@@ -486,6 +486,28 @@ mod tests {
                 |t: &[f64]| (c.nodes.iter().map(|n| t[n.normal] < 0.0)).collect::<Vec<bool>>();
             assert!(states(&exact).contains(&true) && states(&exact).contains(&false));
         }
+    }
+
+    /// A face node whose first tangent is dropped by symmetry has one tangential unknown,
+    /// its traction's second component; with `S = I` the solution is `t = r` where closed
+    /// and sticking, 0 where open.
+    #[test]
+    fn a_dropped_tangent_has_no_unknown() {
+        let law = Coulomb::new(0.3).unwrap();
+        let unknowns = [
+            (0, 0, Row::Normal),
+            (0, 0, Row::Tangent(1)),
+            (0, 1, Row::Normal),
+        ];
+        let laws: Vec<&dyn FrictionLaw> = vec![&law; 3];
+        let (s, r) = (DMatrix::identity(3, 3), vec![-1.0, 0.2, 0.5]);
+        let c = Linearized::new(&unknowns, &laws, |_, _| 2, s, r);
+        assert_eq!((c.nodes.len(), c.nodes[0].tangents), (2, 1));
+        assert_eq!(
+            c.nodes[0].tangential(&[-1.0, 0.25, 0.0]),
+            Tangential::on_face(0.0, 0.25)
+        );
+        assert_eq!(c.active_set(vec![0.0; 3]).unwrap(), [-1.0, 0.2, 0.0]);
     }
 
     /// On a face (two tangents per node, the cone a disc): the semi-smooth Newton method, its
