@@ -501,8 +501,10 @@ pub struct NodeResult {
     /// Normal traction on A (multiplier, force per area for every analysis kind and
     /// thickness; `< 0` compression, pressure `p = -tn`).
     pub tn: f64,
-    /// Tangential traction on A along `s` (force per area).
-    pub ts: f64,
+    /// Tangential traction on A along the frame's tangents (force per area; one component,
+    /// along `s`, in the plane and in axisymmetry, two on a 3D face, 0 along a tangent
+    /// dropped by symmetry).
+    pub ts: Tangential,
     /// Nodal frame: A's outward normal and the tangents (in the plane `s = (n_y, -n_x)`), of
     /// the reference configuration under small kinematics, of the converged one under finite
     /// kinematics.

@@ -2,7 +2,7 @@
 //! forces and pressures on the B side, element stresses of body A), and the contact-element
 //! matrices for hosts that assemble the mixed system themselves.
 
-use super::{BNodeResult, ContactAnalysis, NodeResult, Tangential, Traction};
+use super::{BNodeResult, ContactAnalysis, NodeResult};
 use crate::contact::geometry::ContactSurface;
 use crate::contact::space::{self, Vector, node};
 use crate::error::{Error, Result};
@@ -190,7 +190,7 @@ impl ContactAnalysis {
         let mut weight = vec![0.0; pair.b.len()];
         let mut force = vec![Vector::zero(dim); pair.b.len()];
         for (node, r) in surface.nodes.iter().zip(&a_nodes) {
-            let t = r.frame.vector(r.tn, Tangential::along(r.ts));
+            let t = r.frame.vector(r.tn, r.ts);
             for &(j, c) in &node.coupling {
                 if let Some(i) = index(j) {
                     // the coupling holds -F^B at B nodes
@@ -247,8 +247,8 @@ impl ContactAnalysis {
             .map(|(k, node)| NodeResult {
                 node: self.bodies.external(node.node),
                 state: data[k].state,
-                tn: plane_parts(&data[k].traction).0,
-                ts: plane_parts(&data[k].traction).1,
+                tn: data[k].traction.normal,
+                ts: data[k].traction.tangential,
                 frame: node.frame,
                 position: space::node(&x, dim, node.node),
                 weight: node.weight,
@@ -257,9 +257,4 @@ impl ContactAnalysis {
             })
             .collect())
     }
-}
-
-/// `(tn, ts)` of a traction at a node with one tangent (the plane's and axisymmetry's results).
-fn plane_parts(t: &Traction) -> (f64, f64) {
-    (t.normal, t.tangential.components()[0])
 }
