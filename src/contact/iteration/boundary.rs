@@ -1340,9 +1340,9 @@ impl ContactAnalysis {
 
     /// Build the part of a lazy `F` that the first increment certainly needs: under small
     /// kinematics the directions of each pair's A node with the smallest reference gap (the
-    /// first to close; normal, and the kept tangents with friction), under finite kinematics the columns
-    /// its coupling touches. A failing host solver is thus reported when the analysis is
-    /// created, as with an eager `F`.
+    /// first to close; normal, and the kept tangents with friction), under finite kinematics
+    /// the columns its coupling touches. A failing host solver is thus reported when the
+    /// analysis is created, as with an eager `F`.
     pub(super) fn prime(&mut self) -> Result<()> {
         let mut rows = Vec::new();
         let mut keys = Vec::new();

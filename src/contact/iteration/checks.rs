@@ -170,10 +170,11 @@ impl ContactAnalysis {
     /// weight` along each kept tangent `s_ki` at node `k` (the mean tangential displacement of
     /// A relative to B over the node's support), the frozen pairing misplaces B by `slip_k`,
     /// which changes the gap by about `|slip_k| |dg0/ds|_k`, `|dg0/ds|` the slope of the
-    /// reference gap along A (the angle between the surfaces). That is the linearization that Hertz theory makes too, harmless while it
-    /// is small against the contact's normal approach `delta` (the largest change of a normal
-    /// gap over the active nodes); an active node whose error exceeds [`SMALL_SLIDING_LIMIT`]
-    /// `delta` fails the increment, naming the node and pointing to finite kinematics.
+    /// reference gap along A (the angle between the surfaces). That is the linearization that
+    /// Hertz theory makes too, harmless while it is small against the contact's normal
+    /// approach `delta` (the largest change of a normal gap over the active nodes); an active
+    /// node whose error exceeds [`SMALL_SLIDING_LIMIT`] `delta` fails the increment, naming
+    /// the node and pointing to finite kinematics.
     pub(super) fn small_sliding(
         &self,
         number: usize,
