@@ -312,7 +312,8 @@ pub enum ContactError {
         increment: usize,
         /// The A node.
         node: usize,
-        /// Its tangential slip relative to B since the reference configuration.
+        /// Its tangential slip relative to B since the reference configuration (in the plane
+        /// and in axisymmetry its component along `s`, on a 3D face its length).
         slip: f64,
         /// The gap change it causes over the normal approach.
         relative: f64,

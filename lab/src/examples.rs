@@ -656,7 +656,7 @@ fn evaluate(
             x: n.position[0],
             p: -n.tn,
             p_forces: -(n.frame.normal().dot(&n.force)) / n.weight,
-            q: n.ts,
+            q: n.ts.components()[0],
             state: n.state,
             p_exact: closed_form.pressure(n.position[0]),
             q_exact: closed_form.shear(n.position[0]),
@@ -1055,7 +1055,7 @@ pub fn sphere(case: &SphereCase, mut progress: Progress<'_>) -> Result<Example> 
                 peak_error: c.peak / c.hertz.peak - 1.0,
                 l2_error: c.l2_error,
                 l2_error_forces: c.l2_error_forces,
-                tangential_ratio: results.iter().map(|n| n.ts.abs()).sum::<f64>() / tn,
+                tangential_ratio: results.iter().map(|n| n.ts.norm()).sum::<f64>() / tn,
             };
             let displacement = match case.fields {
                 Fields::Every => analysis.displacement()?.to_vec(),

@@ -517,7 +517,7 @@ pub fn compare_with_hertz(
             &hertz,
         ),
         active,
-        tangential_ratio: nodes.iter().map(|n| n.ts.abs()).sum::<f64>()
+        tangential_ratio: nodes.iter().map(|n| n.ts.norm()).sum::<f64>()
             / nodes.iter().map(|n| n.tn.abs()).sum::<f64>(),
     })
 }

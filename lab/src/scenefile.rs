@@ -1800,7 +1800,7 @@ pub fn run(scene: &Scene, out: &mut dyn std::io::Write) -> Result<RunSummary> {
                     r.position[1],
                     r.state.name(),
                     r.tn,
-                    r.ts,
+                    r.ts.components()[0],
                     -r.tn,
                     r.gap,
                     r.force[0],
@@ -1896,7 +1896,7 @@ fn plot_pair(
             step[p]
                 .iter()
                 .zip(&s)
-                .map(|(r, &si)| (si, -r.tn, r.ts))
+                .map(|(r, &si)| (si, -r.tn, r.ts.components()[0]))
                 .collect()
         })
         .collect();

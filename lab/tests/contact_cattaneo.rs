@@ -135,7 +135,10 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
         }
         _ => None,
     };
-    let shear: Vec<(f64, f64)> = by_x.iter().map(|n| (n.position[0], n.ts)).collect();
+    let shear: Vec<(f64, f64)> = by_x
+        .iter()
+        .map(|n| (n.position[0], n.ts.components()[0]))
+        .collect();
     let pressure: Vec<(f64, f64)> = by_x.iter().map(|n| (n.position[0], -n.tn)).collect();
     let (shear_distance, shear_norm) =
         l2::distance_and_norm(&shear, |x| cattaneo(&hertz, c_theory, x - centre));
@@ -155,12 +158,12 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
         stick_ratio: nodes
             .iter()
             .filter(|n| n.state == NodeState::Stick)
-            .map(|n| n.ts.abs() / (MU * n.tn.abs()))
+            .map(|n| n.ts.norm() / (MU * n.tn.abs()))
             .fold(0.0, f64::max),
         slip_residual: nodes
             .iter()
             .filter(|n| matches!(n.state, NodeState::Slip { .. }))
-            .map(|n| (n.ts.abs() - MU * n.tn.abs()).abs() / (MU * p0))
+            .map(|n| (n.ts.norm() - MU * n.tn.abs()).abs() / (MU * p0))
             .fold(0.0, f64::max),
         active: nodes.iter().filter(|n| n.state != NodeState::Open).count(),
         slip_signs_ok: nodes
@@ -171,7 +174,7 @@ fn measure(nodes: &[NodeResult], radius: f64, e_star: f64) -> State {
                     == NodeState::Slip {
                         direction: SlipDirection::MINUS,
                     }
-                    && n.ts > 0.0
+                    && n.ts.components()[0] > 0.0
                     && n.frame.tangent(0)[0] > 0.99
             }),
     }

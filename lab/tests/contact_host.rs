@@ -152,8 +152,8 @@ fn assert_same(reference: &[NodeResult], other: &[NodeResult], scale: f64, what:
         assert_eq!(r.node + SHIFT, o.node, "{what}: node ids");
         assert_eq!(r.state, o.state, "{what}: state of node {}", r.node);
         assert!(
-            (r.tn - o.tn).abs() <= 1e-9 * peak && (r.ts - o.ts).abs() <= 1e-9 * peak,
-            "{what}: node {}: ({}, {}) vs ({}, {})",
+            (r.tn - o.tn).abs() <= 1e-9 * peak && (r.ts - o.ts).norm() <= 1e-9 * peak,
+            "{what}: node {}: ({}, {:?}) vs ({}, {:?})",
             r.node,
             r.tn,
             r.ts,
@@ -617,8 +617,8 @@ fn assert_same_to(
         assert_eq!(r.node, o.node, "{what}: node ids");
         assert_eq!(r.state, o.state, "{what}: state of node {}", r.node);
         assert!(
-            (r.tn - o.tn).abs() <= tolerance * peak && (r.ts - o.ts).abs() <= tolerance * peak,
-            "{what}: node {}: ({}, {}) vs ({}, {})",
+            (r.tn - o.tn).abs() <= tolerance * peak && (r.ts - o.ts).norm() <= tolerance * peak,
+            "{what}: node {}: ({}, {:?}) vs ({}, {:?})",
             r.node,
             r.tn,
             r.ts,

@@ -32,12 +32,12 @@ fn frictional_pressing_on_a_fine_mesh_converges() {
         match n.state {
             NodeState::Slip { .. } => {
                 assert!(
-                    (n.ts.abs() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max,
+                    (n.ts.norm() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max,
                     "{n:?}"
                 )
             }
-            NodeState::Stick => assert!(n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9), "{n:?}"),
-            NodeState::Open => assert_eq!((n.tn, n.ts), (0.0, 0.0)),
+            NodeState::Stick => assert!(n.ts.norm() <= mu * n.tn.abs() * (1.0 + 1e-9), "{n:?}"),
+            NodeState::Open => assert_eq!((n.tn, n.ts.norm()), (0.0, 0.0)),
             NodeState::Frictionless => panic!("a frictional pair has no frictionless node"),
         }
     }
@@ -89,9 +89,9 @@ fn frictional_sliding_in_small_steps_converges() {
                 match n.state {
                     NodeState::Open => assert!(n.gap >= -1e-4 * step, "{k}: {n:?}"),
                     NodeState::Slip { .. } => {
-                        assert!((n.ts.abs() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max)
+                        assert!((n.ts.norm() - mu * n.tn.abs()).abs() <= 1e-12 * tn_max)
                     }
-                    NodeState::Stick => assert!(n.ts.abs() <= mu * n.tn.abs() * (1.0 + 1e-9)),
+                    NodeState::Stick => assert!(n.ts.norm() <= mu * n.tn.abs() * (1.0 + 1e-9)),
                     NodeState::Frictionless => {
                         panic!("{k}: a frictional pair has no frictionless node")
                     }

@@ -356,7 +356,7 @@ fn frictionless_sliding() {
         assert!(
             s.nodes
                 .iter()
-                .all(|n| n.ts == 0.0 && n.state != NodeState::Stick)
+                .all(|n| n.ts.norm() == 0.0 && n.state != NodeState::Stick)
         );
     }
     print_iterations(&analysis, STEPS + 2);
@@ -481,12 +481,12 @@ fn frictional_sliding() {
             .collect();
         let slipdev = slip
             .iter()
-            .map(|n| (n.ts.abs() - mu * n.tn.abs()).abs())
+            .map(|n| (n.ts.norm() - mu * n.tn.abs()).abs())
             .fold(0.0, f64::max)
             / (mu * p.hertz.peak);
         let stickmax = stick
             .iter()
-            .map(|n| n.ts.abs() / (mu * n.tn.abs()))
+            .map(|n| n.ts.norm() / (mu * n.tn.abs()))
             .fold(0.0, f64::max);
         let top = [
             (p.force[0] - s.reaction[0]) / p.load,
@@ -556,7 +556,9 @@ fn frictional_sliding() {
                 "step {k} node {}",
                 n.node
             );
-            assert!(n.ts * n.frame.tangent(0)[0] > 0.0 && n.frame.tangent(0)[0] > 0.99);
+            assert!(
+                n.ts.components()[0] * n.frame.tangent(0)[0] > 0.0 && n.frame.tangent(0)[0] > 0.99
+            );
         }
         assert!(
             (deficit - 1.0).abs() < tol::TILT,

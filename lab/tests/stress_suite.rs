@@ -1040,7 +1040,7 @@ fn pulled_off() {
             .iter()
             .map(|n| {
                 n.tn.abs()
-                    .max(n.ts.abs())
+                    .max(n.ts.norm())
                     .max(n.force[0].abs())
                     .max(n.force[1].abs())
             })

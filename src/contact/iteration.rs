@@ -501,8 +501,10 @@ pub struct NodeResult {
     /// Normal traction on A (multiplier, force per area for every analysis kind and
     /// thickness; `< 0` compression, pressure `p = -tn`).
     pub tn: f64,
-    /// Tangential traction on A along `s` (force per area).
-    pub ts: f64,
+    /// Tangential traction on A along the frame's tangents (force per area; one component,
+    /// along `s`, in the plane and in axisymmetry, two on a 3D face, 0 along a tangent
+    /// dropped by symmetry).
+    pub ts: Tangential,
     /// Nodal frame: A's outward normal and the tangents (in the plane `s = (n_y, -n_x)`), of
     /// the reference configuration under small kinematics, of the converged one under finite
     /// kinematics.
@@ -913,16 +915,15 @@ impl ContactAnalysis {
             .iter()
             .map(ContactPair::friction_law)
             .collect::<Result<_>>()?;
-        let nodes = pairs
+        let nodes = reference
             .iter()
-            .map(|p| {
-                vec![
-                    NodeData {
+            .map(|surface| {
+                (surface.nodes.iter())
+                    .map(|node| NodeData {
                         state: NodeState::Open,
-                        traction: Traction::zero(1),
-                    };
-                    p.a.len()
-                ]
+                        traction: Traction::zero(node.frame.tangents().len()),
+                    })
+                    .collect()
             })
             .collect();
         let node_flexibility = NodeFlexibility::new(pairs.iter().map(|p| p.a.len()));
@@ -1447,7 +1448,7 @@ impl ContactAnalysis {
             finite(&uc_new, number, iteration)?;
             self.widen_pairing(&uc_new, &mut surfaces)?;
             self.update_geometry(&mut surfaces, &uc_new, startc)?;
-            let tractions = system.tractions(&tau, states, &self.laws);
+            let tractions = system.tractions(&tau, &surfaces, states, &self.laws);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
             let changes = set.changes(&proposed);
             let r = change_ratio(&uc_new, &uc, startc, resolution, self.options.tolerance);

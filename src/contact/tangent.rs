@@ -90,6 +90,18 @@ impl Tangential {
     }
 }
 
+impl std::ops::Sub for Tangential {
+    type Output = Tangential;
+    /// `v - w`, component by component (the same number of components).
+    fn sub(self, w: Tangential) -> Tangential {
+        let mut out = self;
+        for (o, x) in out.components_mut().iter_mut().zip(w.components()) {
+            *o -= x;
+        }
+        out
+    }
+}
+
 /// A traction on A at a contact node: `t = normal n + sum_i tangential_i s_i` (`normal < 0`
 /// compression, pressure `p = -normal`).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1890,7 +1890,8 @@ pub unsafe extern "C" fn hycon_contact_node_results(
                         state,
                         slip_sign,
                         tn: r.tn,
-                        ts: r.ts,
+                        // the plane's one tangent, as `tangent` below
+                        ts: r.ts.components()[0],
                         normal: plane(r.frame.normal()),
                         tangent: plane(r.frame.tangent(0)),
                         position: plane(r.position),

@@ -18,10 +18,11 @@ use super::{
 };
 use crate::contact::bodies::Images;
 use crate::contact::space::{Vector, node};
+use crate::contact::tangent::MAX_TANGENTS;
 use crate::solver::vector_state::clean_after;
 use faer::Par;
 use faer::linalg::solvers::{PartialPivLu, Solve};
-use small_system::{Row, SmallSystem, singular};
+use small_system::{Row, SmallSystem, kept_tangents, singular};
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -86,7 +87,7 @@ impl Flexibility {
 }
 
 /// Under small kinematics, the node directions that have been active and their flexibility:
-/// `v_a = d . c_k` for direction `a = (pair, A node k, d)` (`d` the node's normal or tangent,
+/// `v_a = d . c_k` for direction `a = (pair, A node k, d)` (`d` the node's normal or a tangent,
 /// `c_k` its coupling row) and the node flexibility `N_ab = v_a^T F v_b`. The frames and the
 /// coupling never change under small kinematics, so a direction is added once, when its node
 /// first becomes active, and the small system of every iteration is read off `N`. What is
@@ -99,8 +100,9 @@ impl Flexibility {
 ///   `y_a = F v_a` over the contact dofs; then `N_ab = v_a . y_b`.
 #[derive(Debug, Clone, Default)]
 pub(super) struct NodeFlexibility {
-    /// Index of each direction, per pair, per A node, `[normal, tangent]`.
-    index: Vec<Vec<[Option<usize>; 2]>>,
+    /// Index of each direction, per pair, per A node, `[normal, tangents..]`
+    /// ([`NodeFlexibility::slot`]).
+    index: Vec<Vec<[Option<usize>; 1 + MAX_TANGENTS]>>,
     /// `v_a`.
     vectors: Vec<Sparse>,
     /// What is kept of each direction.
@@ -130,13 +132,21 @@ impl NodeFlexibility {
     /// No direction known, for pairs with `a_nodes[p]` A nodes.
     pub(super) fn new(a_nodes: impl Iterator<Item = usize>) -> Self {
         NodeFlexibility {
-            index: a_nodes.map(|n| vec![[None, None]; n]).collect(),
+            index: a_nodes.map(|n| vec![[None; 1 + MAX_TANGENTS]; n]).collect(),
             ..Default::default()
         }
     }
 
+    /// The place of `row` in a node's `index`: 0 for the normal, `1 + i` for tangent `s_i`.
+    fn slot(row: Row) -> usize {
+        match row {
+            Row::Normal => 0,
+            Row::Tangent(i) => 1 + i,
+        }
+    }
+
     fn get(&self, (p, k, row): (usize, usize, Row)) -> Option<usize> {
-        self.index[p][k][row as usize]
+        self.index[p][k][Self::slot(row)]
     }
 
     /// Whether a direction of A node `k` of pair `p` is known (it has been active).
@@ -146,7 +156,7 @@ impl NodeFlexibility {
 
     /// Register direction `key` with vector `v` as number `vectors.len()`.
     fn register(&mut self, (p, k, row): (usize, usize, Row), v: Sparse, kept: Kept) {
-        self.index[p][k][row as usize] = Some(self.vectors.len());
+        self.index[p][k][Self::slot(row)] = Some(self.vectors.len());
         self.vectors.push(v);
         self.kept.push(kept);
     }
@@ -925,11 +935,7 @@ impl ContactAnalysis {
             .iter()
             .map(|&(p, k, row)| {
                 let node = &self.reference[p].nodes[k];
-                let d = match row {
-                    Row::Normal => node.frame.normal(),
-                    Row::Tangent => node.frame.tangent(0),
-                };
-                self.directed(&node.coupling, &d)
+                self.directed(&node.coupling, &row.direction(&node.frame))
             })
             .collect();
         if new.is_empty() {
@@ -1334,9 +1340,9 @@ impl ContactAnalysis {
 
     /// Build the part of a lazy `F` that the first increment certainly needs: under small
     /// kinematics the directions of each pair's A node with the smallest reference gap (the
-    /// first to close; normal, and tangent with friction), under finite kinematics the columns
-    /// its coupling touches. A failing host solver is thus reported when the analysis is
-    /// created, as with an eager `F`.
+    /// first to close; normal, and the kept tangents with friction), under finite kinematics
+    /// the columns its coupling touches. A failing host solver is thus reported when the
+    /// analysis is created, as with an eager `F`.
     pub(super) fn prime(&mut self) -> Result<()> {
         let mut rows = Vec::new();
         let mut keys = Vec::new();
@@ -1351,8 +1357,10 @@ impl ContactAnalysis {
                 rows.push((p, k, Row::Normal));
                 keys.push(self.directed(&node.coupling, &node.frame.normal()));
                 if !self.laws[p].is_frictionless() {
-                    rows.push((p, k, Row::Tangent));
-                    keys.push(self.directed(&node.coupling, &node.frame.tangent(0)));
+                    for (i, s) in kept_tangents(&node.frame) {
+                        rows.push((p, k, Row::Tangent(i)));
+                        keys.push(self.directed(&node.coupling, &s));
+                    }
                 }
             }
         }

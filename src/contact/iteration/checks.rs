@@ -2,6 +2,7 @@
 //! fully covered, the locks held (gathered here, judged by the active set: `active_set/locks.rs`),
 //! small kinematics within their range, the discrete contact conditions.
 
+use super::small_system::kept_tangents;
 use super::{
     ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION, Kinematics,
     Locks, NodeKey, NodeState, Result, Tangential, Traction, dot,
@@ -63,6 +64,16 @@ pub(super) fn norm2(v: &[f64]) -> f64 {
         return scale;
     }
     scale * v.iter().map(|x| (x / scale).powi(2)).sum::<f64>().sqrt()
+}
+
+/// The tangential vector of `node` whose component along each kept frame tangent `s_i` is
+/// `along(s_i)` (0 along a dropped tangent: [`kept_tangents`]), one component per tangent.
+fn tangential_parts(node: &ContactNode, along: impl Fn(&Vector) -> f64) -> Tangential {
+    let mut v = Tangential::zero(node.frame.tangents().len());
+    for (i, s) in kept_tangents(&node.frame) {
+        v.components_mut()[i] = along(&s);
+    }
+    v
 }
 
 impl ContactAnalysis {
@@ -139,27 +150,31 @@ impl ContactAnalysis {
     }
 
     /// The tangential slip of A relative to B at `node` since the increment began, per unit
-    /// length, in the node's tangent space: `s_k = (r_k . (u - u_start)) / w_k`, `r_k` the
-    /// node's tangent row (its coupling along the tangent) and `w_k` its weight.
+    /// length, in the node's tangent space: `s_ki = (r_ki . (u - u_start)) / w_k` along each
+    /// frame tangent `s_i`, `r_ki` the node's row along it (its coupling along `s_i`) and
+    /// `w_k` its weight; 0 along a dropped tangent.
     pub(super) fn slip_since_start(
         &self,
         node: &ContactNode,
         uc: &[f64],
         startc: &[f64],
     ) -> Tangential {
-        let row = self.directed(&node.coupling, &node.frame.tangent(0));
-        Tangential::along((dot(&row, uc) - dot(&row, startc)) / node.weight)
+        tangential_parts(node, |s| {
+            let row = self.directed(&node.coupling, s);
+            (dot(&row, uc) - dot(&row, startc)) / node.weight
+        })
     }
 
     /// Under small kinematics the pairing of A with B is frozen in the reference configuration.
-    /// When the surfaces slide along each other by `slip_k = s_k . sum_j c_kj u_j / covered
-    /// weight` at node `k` (the mean tangential displacement of A relative to B over the node's
-    /// support), the frozen pairing misplaces B by `slip_k`, which changes the gap by about
-    /// `|slip_k| |dg0/ds|_k`, `dg0/ds` the slope of the reference gap along A (the angle between
-    /// the surfaces). That is the linearization that Hertz theory makes too, harmless while it
-    /// is small against the contact's normal approach `delta` (the largest change of a normal
-    /// gap over the active nodes); an active node whose error exceeds [`SMALL_SLIDING_LIMIT`]
-    /// `delta` fails the increment, naming the node and pointing to finite kinematics.
+    /// When the surfaces slide along each other by `slip_ki = s_ki . sum_j c_kj u_j / covered
+    /// weight` along each kept tangent `s_ki` at node `k` (the mean tangential displacement of
+    /// A relative to B over the node's support), the frozen pairing misplaces B by `slip_k`,
+    /// which changes the gap by about `|slip_k| |dg0/ds|_k`, `|dg0/ds|` the slope of the
+    /// reference gap along A (the angle between the surfaces). That is the linearization that
+    /// Hertz theory makes too, harmless while it is small against the contact's normal
+    /// approach `delta` (the largest change of a normal gap over the active nodes); an active
+    /// node whose error exceeds [`SMALL_SLIDING_LIMIT`] `delta` fails the increment, naming
+    /// the node and pointing to finite kinematics.
     pub(super) fn small_sliding(
         &self,
         number: usize,
@@ -194,13 +209,19 @@ impl ContactAnalysis {
         let x = self.bodies.positions();
         for (p, surface, k, node) in active() {
             let slope = self.geometries[p].gap_slope(surface, k, x);
-            let slip = along(node, node.frame.tangent(0));
-            if (slip * slope).abs() > SMALL_SLIDING_LIMIT * delta {
+            let slip = tangential_parts(node, |s| along(node, *s));
+            // |slip| |dg0/ds| (in the plane |slip_k| is the component's magnitude: the
+            // product's magnitude to the bit)
+            let error = slip.norm() * slope;
+            if error > SMALL_SLIDING_LIMIT * delta {
                 return Err(ContactError::SmallSlidingExceeded {
                     increment: number,
                     node: self.bodies.external(node.node),
-                    slip,
-                    relative: (slip * slope).abs() / delta,
+                    slip: match slip.components() {
+                        [s] => *s,
+                        _ => slip.norm(),
+                    },
+                    relative: error / delta,
                 }
                 .into());
             }
@@ -442,5 +463,37 @@ impl ContactAnalysis {
             }
         }
         worst
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::space::Frame;
+
+    /// A slip has one component per frame tangent: two on a 3D face (0 along a dropped
+    /// tangent), one in the plane.
+    #[test]
+    fn tangential_parts_follow_the_frame() {
+        let motion = Vector::solid(3.0, 4.0, 12.0);
+        let along = |s: &Vector| s.dot(&motion);
+        let mut node = ContactNode::empty(3);
+        node.frame = Frame::face([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        assert_eq!(
+            tangential_parts(&node, along),
+            Tangential::on_face(3.0, 4.0)
+        );
+        node.frame = Frame::face([0.0, 0.0, 1.0], [0.0; 3], [0.0, 1.0, 0.0]);
+        assert_eq!(
+            tangential_parts(&node, along),
+            Tangential::on_face(0.0, 4.0)
+        );
+        let mut plane = ContactNode::empty(2);
+        plane.frame = Frame::plane(Vector::plane(0.0, 1.0));
+        let planar = Vector::plane(3.0, 4.0);
+        assert_eq!(
+            tangential_parts(&plane, |s| s.dot(&planar)),
+            Tangential::along(3.0)
+        );
     }
 }

@@ -37,11 +37,12 @@
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
+use super::small_system::Row;
 use super::{
     Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
-    closed_at_rest, column, dot, linearized_state, plate, small_system,
+    closed_at_rest, column, dot, linearized_state, plate,
 };
-use crate::contact::tangent::SAME_DIRECTION;
+use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use plate::dot_dense;
 
 /// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
@@ -122,7 +123,8 @@ impl ContactAnalysis {
         let laws: Vec<&dyn FrictionLaw> = (system.unknowns.iter())
             .map(|&(p, k, _)| self.node_law(p, k))
             .collect();
-        let linearized = Linearized::new(&system.unknowns, &laws, s, r);
+        let frame_tangents = |p: usize, k: usize| surfaces[p].nodes[k].frame.tangents().len();
+        let linearized = Linearized::new(&system.unknowns, &laws, frame_tangents, s, r);
         let t = linearized.solution();
         let tn_max = (linearized.nodes.iter()).fold(0.0f64, |m, node| m.max(t[node.normal].abs()));
         let mut out: Vec<Vec<NodeState>> = states
@@ -152,15 +154,20 @@ struct Linearized<'a> {
 struct Candidate<'a> {
     /// The index of its normal unknown.
     normal: usize,
-    /// How many tangential unknowns follow it (0 without friction, one per tangent).
+    /// How many tangential unknowns follow it (0 without friction, one per kept tangent).
     tangents: usize,
+    /// The frame tangent `s_i` of each tangential unknown (`i` of `Row::Tangent(i)`: a
+    /// tangent dropped by symmetry has no unknown).
+    components: [usize; MAX_TANGENTS],
+    /// How many tangents its frame has (the length of its tangential vectors).
+    frame_tangents: usize,
     law: &'a dyn FrictionLaw,
 }
 
 impl Candidate<'_> {
-    /// The indices of its tangential unknowns.
-    fn tangent_unknowns(&self) -> std::ops::Range<usize> {
-        self.normal + 1..self.normal + 1 + self.tangents
+    /// Its tangential unknowns `j` with the frame tangent `i` of each.
+    fn tangent_unknowns(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        (self.normal + 1..self.normal + 1 + self.tangents).zip(self.components)
     }
 
     /// The scale of its tangential trial tractions, `sigma = sum_i S_(t_i t_i)`, the trace
@@ -170,7 +177,7 @@ impl Candidate<'_> {
     /// `ts - rho_t / sigma`, so it opposes `rho_t` (with a scale per tangent it would oppose
     /// `rho_t` scaled component by component).
     fn tangent_scale(&self, s: &DMatrix<f64>) -> f64 {
-        self.tangent_unknowns().map(|j| s[(j, j)]).sum()
+        self.tangent_unknowns().map(|(j, _)| s[(j, j)]).sum()
     }
 
     /// Its tangential traction in `t`.
@@ -178,11 +185,12 @@ impl Candidate<'_> {
         self.trial(|j| t[j])
     }
 
-    /// The tangential vector of `value` over its tangential unknowns.
+    /// The tangential vector of `value` over its tangential unknowns, one component per
+    /// frame tangent (zero along a dropped one).
     fn trial(&self, value: impl Fn(usize) -> f64) -> Tangential {
-        let mut v = Tangential::zero(self.tangents);
-        for (c, j) in v.components_mut().iter_mut().zip(self.tangent_unknowns()) {
-            *c = value(j);
+        let mut v = Tangential::zero(self.frame_tangents);
+        for (j, i) in self.tangent_unknowns() {
+            v.components_mut()[i] = value(j);
         }
         v
     }
@@ -218,26 +226,37 @@ fn same_conditions(a: &[Condition], b: &[Condition]) -> bool {
 const ACTIVE_SET_STEPS: usize = 100;
 
 impl<'a> Linearized<'a> {
-    /// The conditions over `unknowns` (a node's tangential unknowns, one per tangent, follow
-    /// its normal one), `laws` per unknown.
+    /// The conditions over `unknowns` (a node's tangential unknowns, one per kept tangent,
+    /// follow its normal one), `laws` per unknown, `frame_tangents(p, k)` the number of
+    /// tangents of node `k` of pair `p`.
     fn new(
-        unknowns: &[(usize, usize, small_system::Row)],
+        unknowns: &[(usize, usize, Row)],
         laws: &[&'a dyn FrictionLaw],
+        frame_tangents: impl Fn(usize, usize) -> usize,
         s: DMatrix<f64>,
         r: Vec<f64>,
     ) -> Self {
         let nodes = (0..unknowns.len())
-            .filter(|&i| unknowns[i].2 == small_system::Row::Normal)
+            .filter(|&i| unknowns[i].2 == Row::Normal)
             .map(|i| {
                 let (p, k, _) = unknowns[i];
-                let tangents = (unknowns[i + 1..].iter())
-                    .take_while(|u| (u.0, u.1) == (p, k) && u.2 == small_system::Row::Tangent)
-                    .count();
-                Candidate {
+                let mut node = Candidate {
                     normal: i,
-                    tangents,
+                    tangents: 0,
+                    components: [0; MAX_TANGENTS],
+                    frame_tangents: frame_tangents(p, k),
                     law: laws[i],
+                };
+                for u in unknowns[i + 1..].iter() {
+                    match *u {
+                        (q, l, Row::Tangent(c)) if (q, l) == (p, k) => {
+                            node.components[node.tangents] = c;
+                            node.tangents += 1;
+                        }
+                        _ => break,
+                    }
                 }
+                node
             })
             .collect();
         Self { s, r, nodes }
@@ -295,7 +314,8 @@ impl<'a> Linearized<'a> {
                     let sigma = node.tangent_scale(s);
                     let trial = node.trial(|j| t[j] - rho[j] / sigma);
                     let ts = node.law.project(t[i], trial);
-                    for (j, &v) in node.tangent_unknowns().zip(ts.components()) {
+                    for (j, c) in node.tangent_unknowns() {
+                        let v = ts.components()[c];
                         largest_change = largest_change.max(update(&mut t, &mut rho, j, v));
                     }
                 }
@@ -346,11 +366,11 @@ impl<'a> Linearized<'a> {
                 match node.law.trial_slip(an, at) {
                     None => node
                         .tangent_unknowns()
-                        .for_each(|j| conditions[j] = Condition::Row),
+                        .for_each(|(j, _)| conditions[j] = Condition::Row),
                     Some(slip) => {
                         let c = node.law.slip_coefficients(slip);
-                        for (j, &c) in node.tangent_unknowns().zip(c.components()) {
-                            conditions[j] = Condition::Cone(i, c);
+                        for (j, ci) in node.tangent_unknowns() {
+                            conditions[j] = Condition::Cone(i, c.components()[ci]);
                         }
                     }
                 }
@@ -385,7 +405,6 @@ impl<'a> Linearized<'a> {
 mod tests {
     use super::*;
     use crate::contact::friction::Coulomb;
-    use small_system::Row;
 
     /// The unknowns, `S` and `r` of a test problem.
     type Problem = (Vec<(usize, usize, Row)>, DMatrix<f64>, Vec<f64>);
@@ -404,7 +423,7 @@ mod tests {
             .flat_map(|k| {
                 let rows = if k % 3 == 2 { 0 } else { tangents };
                 std::iter::once(Row::Normal)
-                    .chain(std::iter::repeat_n(Row::Tangent, rows))
+                    .chain((0..rows).map(Row::Tangent))
                     .map(move |row| (0, k, row))
             })
             .collect();
@@ -450,7 +469,7 @@ mod tests {
         for seed in 1..=20 {
             let (unknowns, s, r) = problem(8, seed, 1);
             let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
-            let c = Linearized::new(&unknowns, &laws, s, r);
+            let c = Linearized::new(&unknowns, &laws, |_, _| 1, s, r);
             let m = c.r.len();
             let exact = c.active_set(vec![0.0; m]).expect("settles");
             assert!(violation(&c, &exact) < 1e-13, "seed {seed}");
@@ -469,6 +488,28 @@ mod tests {
         }
     }
 
+    /// A face node whose first tangent is dropped by symmetry has one tangential unknown,
+    /// its traction's second component; with `S = I` the solution is `t = r` where closed
+    /// and sticking, 0 where open.
+    #[test]
+    fn a_dropped_tangent_has_no_unknown() {
+        let law = Coulomb::new(0.3).unwrap();
+        let unknowns = [
+            (0, 0, Row::Normal),
+            (0, 0, Row::Tangent(1)),
+            (0, 1, Row::Normal),
+        ];
+        let laws: Vec<&dyn FrictionLaw> = vec![&law; 3];
+        let (s, r) = (DMatrix::identity(3, 3), vec![-1.0, 0.2, 0.5]);
+        let c = Linearized::new(&unknowns, &laws, |_, _| 2, s, r);
+        assert_eq!((c.nodes.len(), c.nodes[0].tangents), (2, 1));
+        assert_eq!(
+            c.nodes[0].tangential(&[-1.0, 0.25, 0.0]),
+            Tangential::on_face(0.0, 0.25)
+        );
+        assert_eq!(c.active_set(vec![0.0; 3]).unwrap(), [-1.0, 0.2, 0.0]);
+    }
+
     /// On a face (two tangents per node, the cone a disc): the semi-smooth Newton method, its
     /// slip coefficients from the law's `trial_slip`, settles where the slip directions agree
     /// to round-off, and its solution satisfies the conditions; projected Gauss-Seidel, with
@@ -480,7 +521,7 @@ mod tests {
         for seed in 1..=10 {
             let (unknowns, s, r) = problem(6, seed, 2);
             let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
-            let c = Linearized::new(&unknowns, &laws, s, r);
+            let c = Linearized::new(&unknowns, &laws, |_, _| 2, s, r);
             assert!(c.nodes.iter().any(|n| n.tangents == 2));
             let m = c.r.len();
             let exact = c.active_set(vec![0.0; m]).expect("settles");

@@ -2,18 +2,19 @@
 //! forces and pressures on the B side, element stresses of body A), and the contact-element
 //! matrices for hosts that assemble the mixed system themselves.
 
-use super::{BNodeResult, ContactAnalysis, NodeResult, Tangential, Traction};
+use super::{BNodeResult, ContactAnalysis, NodeResult};
 use crate::contact::geometry::ContactSurface;
 use crate::contact::space::{self, Vector, node};
 use crate::error::{Error, Result};
 
-/// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `2k` (normal,
-/// `n_k . sum_j c_kj u_j`) and `2k + 1` (tangential, `s_k . sum_j c_kj u_j`) for the A nodes
-/// `k`, columns over the field (model dofs or host equations; a host's fixed dofs are
-/// dropped).
+/// The constraint matrix `Kc` of one pair in compressed sparse row form: rows `D k` (normal,
+/// `n_k . sum_j c_kj u_j`) and `D k + i` (tangential, `s_ki . sum_j c_kj u_j`, one per frame
+/// tangent `s_ki`, `i = 1 .. D - 1`; empty for a tangent dropped by symmetry) for the A nodes
+/// `k`, `D` the dimension (in the plane and in axisymmetry rows `2k` and `2k + 1`), columns
+/// over the field (model dofs or host equations; a host's fixed dofs are dropped).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConstraintRows {
-    /// `2 n_A + 1` row starts.
+    /// `D n_A + 1` row starts.
     pub row_ptr: Vec<usize>,
     /// Column (field index) of each entry.
     pub columns: Vec<usize>,
@@ -72,7 +73,8 @@ impl ContactAnalysis {
             values: Vec::new(),
         };
         for node in &surface.nodes {
-            for direction in [node.frame.normal(), node.frame.tangent(0)] {
+            let tangents = node.frame.tangents().iter().copied();
+            for direction in std::iter::once(node.frame.normal()).chain(tangents) {
                 for &(j, c) in &node.coupling {
                     for (d, component) in direction.components().iter().enumerate() {
                         let field = self.bodies.field_index(crate::assembly::dof(j, d));
@@ -188,7 +190,7 @@ impl ContactAnalysis {
         let mut weight = vec![0.0; pair.b.len()];
         let mut force = vec![Vector::zero(dim); pair.b.len()];
         for (node, r) in surface.nodes.iter().zip(&a_nodes) {
-            let t = r.frame.vector(r.tn, Tangential::along(r.ts));
+            let t = r.frame.vector(r.tn, r.ts);
             for &(j, c) in &node.coupling {
                 if let Some(i) = index(j) {
                     // the coupling holds -F^B at B nodes
@@ -245,8 +247,8 @@ impl ContactAnalysis {
             .map(|(k, node)| NodeResult {
                 node: self.bodies.external(node.node),
                 state: data[k].state,
-                tn: plane_parts(&data[k].traction).0,
-                ts: plane_parts(&data[k].traction).1,
+                tn: data[k].traction.normal,
+                ts: data[k].traction.tangential,
                 frame: node.frame,
                 position: space::node(&x, dim, node.node),
                 weight: node.weight,
@@ -255,9 +257,4 @@ impl ContactAnalysis {
             })
             .collect())
     }
-}
-
-/// `(tn, ts)` of a traction at a node with one tangent (the plane's and axisymmetry's results).
-fn plane_parts(t: &Traction) -> (f64, f64) {
-    (t.normal, t.tangential.components()[0])
 }

@@ -12,7 +12,8 @@ use super::{
     ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
     Traction, dof, rows_of,
 };
-use crate::contact::space::Vector;
+use crate::contact::geometry::ContactNode;
+use crate::contact::space::{Frame, Vector};
 #[cfg(any(test, feature = "oracles"))]
 use nalgebra::{Dyn, LU};
 
@@ -65,11 +66,28 @@ pub(super) fn condition_estimate(a_norm: f64, lu: &LU<f64, Dyn, Dyn>) -> Option<
     condition.is_finite().then_some(condition)
 }
 
-/// Which row of a node an unknown belongs to.
+/// Which row of a node an unknown belongs to: its normal, or its tangent `s_i` (the index
+/// into the node's frame tangents, one in the plane and in axisymmetry, two on a 3D face).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Row {
-    Normal = 0,
-    Tangent = 1,
+    Normal,
+    Tangent(usize),
+}
+
+impl Row {
+    /// The direction `d` of the row at a node with frame `frame`: `n` or `s_i`.
+    pub(super) fn direction(self, frame: &Frame) -> Vector {
+        match self {
+            Row::Normal => frame.normal(),
+            Row::Tangent(i) => frame.tangent(i),
+        }
+    }
+}
+
+/// The tangents of `frame` that get rows, with their indices: all but the dropped ones
+/// ([`Frame::is_dropped`]: a component that vanishes by symmetry has no row and no unknown).
+pub(super) fn kept_tangents(frame: &Frame) -> impl Iterator<Item = (usize, Vector)> + '_ {
+    (frame.tangents().iter().copied().enumerate()).filter(|&(i, _)| !frame.is_dropped(i))
 }
 
 /// A sparse vector over the contact dofs: `(slot, value)`.
@@ -88,7 +106,7 @@ pub(super) struct SmallSystem {
     pub(super) b: Vec<f64>,
     /// Each force column as a combination of node directions:
     /// `col_j = sum coefficient * (d . c_k)` over `(pair, A node, direction, coefficient)`,
-    /// `d` the node's normal (`Row::Normal`) or tangent (`Row::Tangent`).
+    /// `d` the node's normal (`Row::Normal`) or tangent `s_i` (`Row::Tangent(i)`).
     pub(super) basis: Vec<Vec<(usize, usize, Row, f64)>>,
 }
 
@@ -161,6 +179,55 @@ impl SmallSystem {
         ))
     }
 
+    /// Append the unknowns of A node `(p, k)` with rows `rows` (its state's, `rows_of`),
+    /// `directed(d)` its row along direction `d` (`d . sum_j c_kj u_j` over the contact dofs):
+    /// the normal row `n . u = n . u_c - R_C . n` with column `n`, or `n + sum_i c_i s_i` at a
+    /// slip node; at a stick node also one row `s_i . u = s_i . u_start` with column `s_i` per
+    /// kept tangent ([`kept_tangents`]; a dropped tangent has neither).
+    fn push_node(
+        &mut self,
+        (p, k): (usize, usize),
+        node: &ContactNode,
+        rows: Rows,
+        directed: impl Fn(&Vector) -> Sparse,
+        uc: &[f64],
+        startc: &[f64],
+    ) {
+        if rows == Rows::None {
+            return;
+        }
+        let normal = directed(&node.frame.normal());
+        let rg = node.gap.dot(&node.frame.normal());
+        let b = dot(&normal, uc) - rg;
+        // the rows of the node's kept tangents (one in the plane and in axisymmetry)
+        let tangents = || kept_tangents(&node.frame).map(|(i, s)| (i, directed(&s)));
+        let mut col = normal.clone();
+        let mut basis = vec![(p, k, Row::Normal, 1.0)];
+        if let Rows::NormalSlip(c) = rows {
+            // the column n + sum_i c_i s_i
+            for (i, s) in tangents() {
+                let w = c.components()[i];
+                col.extend(s.into_iter().map(|(j, v)| (j, w * v)));
+                basis.push((p, k, Row::Tangent(i), w));
+            }
+        }
+        self.unknowns.push((p, k, Row::Normal));
+        self.rows.push(normal);
+        self.cols.push(col);
+        self.basis.push(basis);
+        self.b.push(b);
+        if rows == Rows::NormalTangent {
+            for (i, t) in tangents() {
+                let row = Row::Tangent(i);
+                self.unknowns.push((p, k, row));
+                self.b.push(dot(&t, startc));
+                self.rows.push(t.clone());
+                self.cols.push(t);
+                self.basis.push(vec![(p, k, row, 1.0)]);
+            }
+        }
+    }
+
     /// Contact forces on the contact dofs: `sum_j tau_j col_j`.
     pub(super) fn forces(&self, tau: &[f64], n: usize) -> Vec<f64> {
         let mut f = vec![0.0; n];
@@ -172,30 +239,28 @@ impl SmallSystem {
         f
     }
 
-    /// The traction of every A node from the unknowns (zero at open nodes; `ts` of the law,
-    /// [`FrictionLaw::slip_traction`], at slip nodes).
+    /// The traction of every A node of `surfaces` from the unknowns, with one tangential
+    /// component per frame tangent (zero at open nodes and along dropped tangents; `ts` of
+    /// the law, [`FrictionLaw::slip_traction`], at slip nodes).
     pub(super) fn tractions(
         &self,
         tau: &[f64],
+        surfaces: &[ContactSurface],
         states: &[Vec<NodeState>],
         laws: &[Box<dyn FrictionLaw>],
     ) -> Vec<Vec<Traction>> {
-        let mut t: Vec<Vec<Traction>> = states
+        let mut t: Vec<Vec<Traction>> = surfaces
             .iter()
-            .map(|s| vec![Traction::zero(1); s.len()])
+            .map(|s| {
+                (s.nodes.iter())
+                    .map(|node| Traction::zero(node.frame.tangents().len()))
+                    .collect()
+            })
             .collect();
-        // a node's tangential unknowns follow its normal one, one per tangent
-        let mut tangent = 0;
         for (&(p, k, row), &v) in self.unknowns.iter().zip(tau) {
             match row {
-                Row::Normal => {
-                    t[p][k].normal = v;
-                    tangent = 0;
-                }
-                Row::Tangent => {
-                    t[p][k].tangential.components_mut()[tangent] = v;
-                    tangent += 1;
-                }
+                Row::Normal => t[p][k].normal = v,
+                Row::Tangent(i) => t[p][k].tangential.components_mut()[i] = v,
             }
         }
         for (p, s) in states.iter().enumerate() {
@@ -236,39 +301,15 @@ impl ContactAnalysis {
         for (p, surface) in surfaces.iter().enumerate() {
             let law = &*self.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let rows = rows_of(states[p][k], law);
-                if rows == Rows::None {
-                    continue;
-                }
-                let normal = self.directed(&node.coupling, &node.frame.normal());
-                let rg = node.gap.dot(&node.frame.normal());
-                let b = dot(&normal, uc) - rg;
-                // the rows of the node's tangents (one in the plane and in axisymmetry)
-                let tangents =
-                    || (node.frame.tangents().iter()).map(|s| self.directed(&node.coupling, s));
-                let mut col = normal.clone();
-                let mut basis = vec![(p, k, Row::Normal, 1.0)];
-                if let Rows::NormalSlip(c) = rows {
-                    // the column n + sum_i c_i s_i
-                    for (&w, s) in c.components().iter().zip(tangents()) {
-                        col.extend(s.into_iter().map(|(i, v)| (i, w * v)));
-                        basis.push((p, k, Row::Tangent, w));
-                    }
-                }
-                sys.unknowns.push((p, k, Row::Normal));
-                sys.rows.push(normal);
-                sys.cols.push(col);
-                sys.basis.push(basis);
-                sys.b.push(b);
-                if rows == Rows::NormalTangent {
-                    for t in tangents() {
-                        sys.unknowns.push((p, k, Row::Tangent));
-                        sys.b.push(dot(&t, startc));
-                        sys.rows.push(t.clone());
-                        sys.cols.push(t);
-                        sys.basis.push(vec![(p, k, Row::Tangent, 1.0)]);
-                    }
-                }
+                let directed = |d: &Vector| self.directed(&node.coupling, d);
+                sys.push_node(
+                    (p, k),
+                    node,
+                    rows_of(states[p][k], law),
+                    directed,
+                    uc,
+                    startc,
+                );
             }
         }
         Ok(sys)
@@ -287,6 +328,163 @@ pub(super) fn singular() -> Error {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::friction::Coulomb;
+    use crate::contact::tangent::Tangential;
+
+    /// A 3D face node: normal `n = z`, tangents in the `xy` plane, `s2` alone when `s1` is
+    /// dropped by symmetry.
+    fn face_node(dropped: bool) -> ContactNode {
+        let mut node = ContactNode::empty(3);
+        let s1 = if dropped { [0.0; 3] } else { [0.6, 0.8, 0.0] };
+        node.frame = Frame::face([0.0, 0.0, 1.0], s1, [-0.8, 0.6, 0.0]);
+        node.gap = Vector::solid(0.0, 0.0, -0.5);
+        node
+    }
+
+    /// A row along `d` with a unit coupling to one node whose contact dofs are slots 0..3.
+    fn unit(d: &Vector) -> Sparse {
+        d.components().iter().copied().enumerate().collect()
+    }
+
+    fn empty() -> SmallSystem {
+        SmallSystem {
+            unknowns: Vec::new(),
+            rows: Vec::new(),
+            cols: Vec::new(),
+            b: Vec::new(),
+            basis: Vec::new(),
+        }
+    }
+
+    /// A sparse vector over slots 0..3, its entries summed.
+    fn dense(v: &Sparse) -> [f64; 3] {
+        let mut out = [0.0; 3];
+        for &(i, x) in v {
+            out[i] += x;
+        }
+        out
+    }
+
+    /// A stick node with two tangents has three rows (normal, `s1`, `s2`), each its own
+    /// column, with `b = n . u_c - n . R_C` and `s_i . u_start`; a dropped tangent has no row.
+    #[test]
+    fn a_stick_face_node_has_a_row_per_kept_tangent() {
+        let (uc, startc) = ([0.1, 0.2, 0.3], [1.0, 2.0, 4.0]);
+        let mut sys = empty();
+        sys.push_node(
+            (0, 0),
+            &face_node(false),
+            Rows::NormalTangent,
+            unit,
+            &uc,
+            &startc,
+        );
+        let rows = [Row::Normal, Row::Tangent(0), Row::Tangent(1)];
+        assert_eq!(sys.unknowns, rows.map(|r| (0, 0, r)));
+        assert_eq!(sys.rows, sys.cols);
+        assert_eq!(dense(&sys.rows[1]), [0.6, 0.8, 0.0]);
+        assert_eq!(dense(&sys.rows[2]), [-0.8, 0.6, 0.0]);
+        assert_eq!(
+            sys.b,
+            [0.3 + 0.5, 0.6 * 1.0 + 0.8 * 2.0, -0.8 * 1.0 + 0.6 * 2.0]
+        );
+        let mut dropped = empty();
+        dropped.push_node(
+            (0, 1),
+            &face_node(true),
+            Rows::NormalTangent,
+            unit,
+            &uc,
+            &startc,
+        );
+        assert_eq!(
+            dropped.unknowns,
+            [(0, 1, Row::Normal), (0, 1, Row::Tangent(1))]
+        );
+        assert_eq!(dense(&dropped.rows[1]), [-0.8, 0.6, 0.0]);
+        let mut open = empty();
+        open.push_node((0, 2), &face_node(false), Rows::None, unit, &uc, &startc);
+        assert!(open.unknowns.is_empty() && open.b.is_empty());
+    }
+
+    /// A slip node with two tangents has one unknown, its column `n + c1 s1 + c2 s2`; with
+    /// `s1` dropped the column is `n + c2 s2`.
+    #[test]
+    fn a_slip_face_node_has_one_column_along_its_slip() {
+        let (uc, startc) = ([0.0; 3], [0.0; 3]);
+        let c = Tangential::on_face(0.3, -0.4);
+        let mut sys = empty();
+        sys.push_node(
+            (0, 0),
+            &face_node(false),
+            Rows::NormalSlip(c),
+            unit,
+            &uc,
+            &startc,
+        );
+        assert_eq!(sys.unknowns, [(0, 0, Row::Normal)]);
+        assert_eq!(dense(&sys.rows[0]), [0.0, 0.0, 1.0]);
+        let col = dense(&sys.cols[0]);
+        let expected = [0.3 * 0.6 + 0.4 * 0.8, 0.3 * 0.8 - 0.4 * 0.6, 1.0];
+        for (a, b) in col.iter().zip(expected) {
+            assert!((a - b).abs() <= 1e-15, "{col:?}");
+        }
+        let basis = [
+            (Row::Normal, 1.0),
+            (Row::Tangent(0), 0.3),
+            (Row::Tangent(1), -0.4),
+        ];
+        assert_eq!(sys.basis, [basis.map(|(r, w)| (0, 0, r, w))]);
+        let mut dropped = empty();
+        dropped.push_node(
+            (0, 0),
+            &face_node(true),
+            Rows::NormalSlip(c),
+            unit,
+            &uc,
+            &startc,
+        );
+        assert_eq!(dense(&dropped.cols[0]), [0.4 * 0.8, -0.4 * 0.6, 1.0]);
+        assert_eq!(dropped.basis[0].len(), 2);
+    }
+
+    /// The tractions put each unknown on its tangent and have the frame's two components:
+    /// zero along a dropped tangent and at an open node.
+    #[test]
+    fn face_tractions_have_a_component_per_frame_tangent() {
+        let (uc, startc) = ([0.0; 3], [0.0; 3]);
+        let mut sys = empty();
+        sys.push_node(
+            (0, 0),
+            &face_node(false),
+            Rows::NormalTangent,
+            unit,
+            &uc,
+            &startc,
+        );
+        sys.push_node(
+            (0, 1),
+            &face_node(true),
+            Rows::NormalTangent,
+            unit,
+            &uc,
+            &startc,
+        );
+        let mut surface = ContactSurface::new();
+        surface.nodes = vec![face_node(false), face_node(true), face_node(false)];
+        let states = vec![vec![NodeState::Stick, NodeState::Stick, NodeState::Open]];
+        let laws: Vec<Box<dyn FrictionLaw>> = vec![Box::new(Coulomb::new(0.5).unwrap())];
+        let t = sys.tractions(&[-1.0, 0.2, 0.3, -2.0, 0.5], &[surface], &states, &laws);
+        let traction = |normal, tangential| Traction { normal, tangential };
+        assert_eq!(
+            t[0],
+            [
+                traction(-1.0, Tangential::on_face(0.2, 0.3)),
+                traction(-2.0, Tangential::on_face(0.0, 0.5)),
+                Traction::zero(2),
+            ]
+        );
+    }
 
     /// Hager's estimate is a lower bound of the exact 1-norm condition number and, on these
     /// matrices, within a factor 3 of it (the estimator is usually exact or within a small
