@@ -1281,11 +1281,17 @@ impl ContactAnalysis {
         self.bodies.dim()
     }
 
+    /// The global dof of component `dir` of node `node`: `dim node + dir`, the bodies'
+    /// numbering of their positions and displacements.
+    fn node_dof(&self, node: usize, dir: usize) -> usize {
+        self.dim() * node + dir
+    }
+
     /// Contact node `n`'s vector of `u` over the contact dofs.
     fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
         let mut v = Vector::zero(self.dim());
         for (c, out) in v.components_mut().iter_mut().enumerate() {
-            *out = uc[self.contact_slot(dof(n, c))];
+            *out = uc[self.contact_slot(self.node_dof(n, c))];
         }
         v
     }

@@ -10,7 +10,7 @@ use super::DVector;
 use super::plate::Border;
 use super::{
     ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
-    Traction, dof, rows_of,
+    Traction, rows_of,
 };
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::{Frame, Vector};
@@ -279,7 +279,9 @@ impl ContactAnalysis {
     pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
         coupling
             .iter()
-            .flat_map(|&(j, c)| (0..d.dim()).map(move |i| (self.contact_slot(dof(j, i)), c * d[i])))
+            .flat_map(|&(j, c)| {
+                (0..d.dim()).map(move |i| (self.contact_slot(self.node_dof(j, i)), c * d[i]))
+            })
             .collect()
     }
 
