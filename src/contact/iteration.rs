@@ -17,9 +17,11 @@
 //!
 //! ```text
 //! normal row:   n_k . sum_j c_kj q_j = n_k . sum_j c_kj q_i,j - n_k . R_C,k(q_i)
-//! stick row:    s_k . sum_j c_kj (q_j - q_start,j) = 0     (no slip since the increment began)
-//! slip node:    only the normal row; its force column is n_k + mu sign_k s_k,
-//!               ts_k = mu sign_k tn_k
+//! stick rows:   s_ki . sum_j c_kj (q_j - q_start,j) = 0   per kept tangent s_ki of the frame
+//!               (no slip since the increment began)
+//! slip node:    only the normal row; its force column is n_k + sum_i c_i s_ki with
+//!               c = mu d_k the law's slip coefficients for the slip direction d_k,
+//!               ts_k = c tn_k
 //! ```
 //!
 //! Columns of `Gc` live on the contact nodes' dofs only, so `K^-1` is needed only there: the
