@@ -15,6 +15,7 @@
 use super::clip::{Overlap, check_face, overlap, point, tangents};
 use super::{Quad, shapes};
 use crate::error::{Error, Result};
+use crate::fem::quadrature::GAUSS3;
 use nalgebra::{Matrix2, Vector2};
 
 const SQRT15: f64 = 3.872_983_346_207_417;
@@ -40,13 +41,6 @@ pub const TRIANGLE_RULE: [([f64; 3], f64); 7] = {
         ([b2, a2, a2], w2),
     ]
 };
-
-/// The 3-point Gauss rule on `[-1, 1]`: `(abscissa, weight)`.
-const GAUSS3: [(f64, f64); 3] = [
-    (-0.774_596_669_241_483_4, 5.0 / 9.0),
-    (0.0, 8.0 / 9.0),
-    (0.774_596_669_241_483_4, 5.0 / 9.0),
-];
 
 /// Natural coordinates `(s, t)` of the point `y` of a projected face `q` (corners in face
 /// order): Newton's method on `sum_k N_k(s, t) q_k = y` from the centre, as

@@ -28,8 +28,12 @@ pub(super) const POSITION_ROUND_OFF: f64 = 64.0 * f64::EPSILON;
 /// The largest length of a contact node's displacement from `before` to `after` (both over
 /// the contact dofs, a node's `dim` components side by side).
 pub(super) fn largest_node_motion(after: &[f64], before: &[f64], dim: usize) -> f64 {
+    let length = |a: &[f64], b: &[f64]| match (a, b) {
+        ([a0, a1], [b0, b1]) => (a0 - b0).hypot(a1 - b1),
+        _ => (a.iter().zip(b)).fold(0.0, |h: f64, (x, y)| h.hypot(x - y)),
+    };
     (after.chunks_exact(dim).zip(before.chunks_exact(dim)))
-        .map(|(a, b)| (Vector::from_components(a) - Vector::from_components(b)).norm())
+        .map(|(a, b)| length(a, b))
         .fold(0.0, f64::max)
 }
 

@@ -277,12 +277,14 @@ impl SmallSystem {
 impl ContactAnalysis {
     /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
     pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
-        coupling
-            .iter()
-            .flat_map(|&(j, c)| {
-                (0..d.dim()).map(move |i| (self.contact_slot(self.node_dof(j, i)), c * d[i]))
-            })
-            .collect()
+        let (dim, d) = (self.dim(), d.components());
+        let mut row = Vec::with_capacity(coupling.len() * dim);
+        for &(j, c) in coupling {
+            for (i, &di) in d.iter().enumerate() {
+                row.push((self.contact_slot(dim * j + i), c * di));
+            }
+        }
+        row
     }
 
     /// Assemble the rows, columns and right-hand sides for the active nodes.
