@@ -8,13 +8,18 @@
 //! sums element matrices into its values, so the pattern and the symbolic factorization built
 //! on it are reused whenever values change. [`FactoredSystem`] holds the three with the sparse
 //! Cholesky factor: one factorization for any number of load cases, and the flexibility of
-//! trailing unknowns read off the factor.
+//! trailing unknowns read off the factor. The loops over the elements (assembly, element
+//! forces) are in [`elements`], generic over the element kind.
 
-use crate::element::{self, ElementMatrix, Formulation, MAX_NODES};
+pub mod elements;
+
+use crate::element::{ElementMatrix, Formulation, MAX_NODES};
 use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::mesh::Mesh;
+use crate::model::PlaneElements;
 use crate::solver::{Backend, OrderingRule, SparseCholesky};
+use elements::ElementSet;
 use faer::Mat;
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 
@@ -109,6 +114,16 @@ pub(crate) fn element_dofs(per_node: usize, nodes: &[usize], out: &mut [usize]) 
         }
     }
     per_node * nodes.len()
+}
+
+/// A vector of `n` zeros with `v` at dof `d` for every `(d, v)` of `values` (a later value at
+/// the same dof replaces an earlier one): prescribed values over all dofs.
+pub fn scatter(n: usize, values: impl IntoIterator<Item = (usize, f64)>) -> Vec<f64> {
+    let mut q = vec![0.0; n];
+    for (d, v) in values {
+        q[d] = v;
+    }
+    q
 }
 
 /// Lower-triangle CSC pattern of the free-free stiffness block, with its values.
@@ -209,8 +224,9 @@ impl SparsePattern {
         }
     }
 
-    /// Refill the values from a plane mesh: `K_ff = sum over elements of the free-free part of
-    /// the element `K``. Element shape errors carry the element index.
+    /// Refill the values from a plane mesh: `K_ff`, the free-free block of
+    /// `K = sum_e A_e^T K_e A_e` ([`elements::assemble`]). Element shape errors carry the
+    /// element index.
     pub fn assemble(
         &mut self,
         mesh: &Mesh,
@@ -218,11 +234,8 @@ impl SparsePattern {
         formulation: Formulation,
         dofs: &DofMap,
     ) -> Result<()> {
-        self.clear();
-        let mut ke = ElementMatrix::zeros();
-        for_each_element_matrix(mesh, materials, formulation, &mut ke, |_, gd, nd, ke| {
-            self.add(dofs, &gd[..nd], |b, a| ke[(b, a)]);
-        })
+        let set = PlaneElements::new(mesh, materials, formulation);
+        elements::assemble(&set, self, dofs, |_, _| ())
     }
 
     /// Storage position of entry `(row, col)`, `row >= col`, which must be in the pattern.
@@ -315,6 +328,13 @@ impl FactoredSystem {
         self.cholesky.factorize(self.pattern.matrix())
     }
 
+    /// Assemble `K_ff` of `set` (the elements the pattern was built from) and factor it again,
+    /// reusing the analysis.
+    pub fn refactor<const ND: usize>(&mut self, set: &impl ElementSet<ND>) -> Result<()> {
+        elements::assemble(set, &mut self.pattern, &self.dofs, |_, _| ())?;
+        self.factor()
+    }
+
     /// The flexibility `(K^-1)` between the free dofs among the `trailing` dofs given to
     /// [`analyze`](Self::analyze) (in that order, prescribed ones skipped), read off the
     /// factor: no solves.
@@ -384,8 +404,10 @@ impl FactoredSystem {
         Ok(q)
     }
 }
-/// Compute every element's stiffness in turn and hand it to `visit(element, global dofs, n_dof,
-/// K_e)`. Stops at the first bad element, reported with its index.
+
+/// Compute every plane element's stiffness in turn and hand it to `visit(element, global dofs,
+/// n_dof, K_e)` ([`elements::for_each_selected`] over every element). Stops at the first bad
+/// element, reported with its index.
 pub fn for_each_element_matrix(
     mesh: &Mesh,
     materials: &[Material],
@@ -393,37 +415,6 @@ pub fn for_each_element_matrix(
     ke: &mut ElementMatrix,
     visit: impl FnMut(usize, &[usize; 2 * MAX_NODES], usize, &ElementMatrix),
 ) -> Result<()> {
-    for_each_selected_element_matrix(mesh, materials, formulation, ke, |_| true, visit)
-}
-
-/// [`for_each_element_matrix`] over the elements whose global dofs `wanted` accepts; the
-/// others' stiffness is not computed (nor checked).
-pub(crate) fn for_each_selected_element_matrix(
-    mesh: &Mesh,
-    materials: &[Material],
-    formulation: Formulation,
-    ke: &mut ElementMatrix,
-    mut wanted: impl FnMut(&[usize]) -> bool,
-    mut visit: impl FnMut(usize, &[usize; 2 * MAX_NODES], usize, &ElementMatrix),
-) -> Result<()> {
-    let mut coords = [[0.0; 2]; MAX_NODES];
-    let mut gd = [0; 2 * MAX_NODES];
-    for e in 0..mesh.n_elements() {
-        let element_dofs = element_dofs(2, mesh.element(e), &mut gd);
-        if !wanted(&gd[..element_dofs]) {
-            continue;
-        }
-        let n = mesh.element_coords(e, &mut coords);
-        let material = materials.get(mesh.element_material[e]).ok_or_else(|| {
-            Error::InvalidInput(format!(
-                "element {e} uses material {} but only {} are defined",
-                mesh.element_material[e],
-                materials.len()
-            ))
-        })?;
-        let nd = element::stiffness_into(formulation, &coords[..n], material, ke)
-            .map_err(|kind| Error::at_element(kind, e))?;
-        visit(e, &gd, nd, ke);
-    }
-    Ok(())
+    let set = PlaneElements::new(mesh, materials, formulation);
+    elements::for_each_selected(&set, ke, |_| true, visit)
 }

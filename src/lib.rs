@@ -12,7 +12,8 @@
 //! * [`element`]: pure element kernels (hybrid 4/5/6-node, Pian-Sumihara, Q4): stiffness, stress
 //!   recovery, edge tractions; edge loads, volume and quality for hosts.
 //! * [`mesh`]: mesh storage, graded 2:1 mesh generators with transition elements, quality report.
-//! * [`assembly`]: dof numbering and sparse assembly (pattern built once, values refilled).
+//! * [`assembly`]: dof numbering and sparse assembly (pattern built once, values refilled), the
+//!   element loops of the plane and the solid models written once ([`assembly::elements`]).
 //! * [`solver`]: sparse Cholesky with the symbolic analysis kept and reused.
 //! * [`model`]: a linear static problem: prescribed displacements, loads, solve, reactions,
 //!   stresses.

@@ -7,10 +7,9 @@
 //! method, every contact iteration). Reactions and element stresses are computed only when
 //! asked for.
 
-use crate::assembly::{
-    DofMap, FactoredSystem, SparsePattern, dof, for_each_selected_element_matrix,
-};
-use crate::element::{self, ElementMatrix, Formulation, MAX_NODES, StressField};
+use crate::assembly::elements::{self, ElementSet, element_material, gather};
+use crate::assembly::{DofMap, FactoredSystem, SparsePattern, dof, scatter};
+use crate::element::{self, ElementMatrix, Formulation, MAX_DOF, MAX_NODES, StressField};
 use crate::error::{Error, Result};
 use crate::material::{Analysis, Material};
 use crate::mesh::Mesh;
@@ -267,11 +266,11 @@ impl Model {
 
     /// Prescribed displacement values over all dofs (zero where free).
     pub fn prescribed_values(&self) -> Vec<f64> {
-        let mut q = vec![0.0; 2 * self.mesh.n_nodes()];
-        for p in &self.prescribed {
-            q[dof(p.node, p.dir)] = p.value;
-        }
-        q
+        let values = self
+            .prescribed
+            .iter()
+            .map(|p| (dof(p.node, p.dir), p.value));
+        scatter(2 * self.mesh.n_nodes(), values)
     }
 
     /// Assemble, factor and solve in one call.
@@ -294,26 +293,71 @@ impl Model {
         Ok((dofs, pattern))
     }
 
-    /// Element forces `K q` summed over all elements (length `2 n_nodes`): the equivalent nodal
-    /// forces the elements exert; at prescribed dofs minus external forces this is the reaction.
-    /// An element whose displacements `q_e` are all zero adds nothing and is skipped (the
-    /// prescribed motion alone, `K_fp q_p`, touches only the elements at moved supports).
+    /// Element forces `K q = sum_e A_e^T K_e q_e` over all dofs (length `2 n_nodes`,
+    /// [`elements::internal_forces`]): the equivalent nodal forces the elements exert; at
+    /// prescribed dofs minus external forces this is the reaction. An element whose
+    /// displacements `q_e` are all zero adds nothing and is skipped (the prescribed motion alone,
+    /// `K_fp q_p`, touches only the elements at moved supports).
     pub fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
-        let mut r = vec![0.0; q.len()];
-        let mut ke = ElementMatrix::zeros();
-        for_each_selected_element_matrix(
-            &self.mesh,
-            &self.materials,
-            self.formulation,
-            &mut ke,
-            |gd| gd.iter().any(|&d| q[d] != 0.0),
-            |_, gd, nd, ke| {
-                for a in 0..nd {
-                    r[gd[a]] += (0..nd).map(|b| ke[(a, b)] * q[gd[b]]).sum::<f64>();
-                }
-            },
-        )?;
-        Ok(r)
+        elements::internal_forces(&self.elements(), q)
+    }
+
+    /// The model's elements with their materials and formulation, for the element loops.
+    pub fn elements(&self) -> PlaneElements<'_> {
+        PlaneElements::new(&self.mesh, &self.materials, self.formulation)
+    }
+}
+
+/// The elements of a plane mesh with their materials and one formulation: the plane case of the
+/// element loops ([`ElementSet`]; 2 dofs per node, at most [`MAX_DOF`] per element).
+#[derive(Debug, Clone, Copy)]
+pub struct PlaneElements<'a> {
+    /// The mesh.
+    pub mesh: &'a Mesh,
+    /// Materials, indexed by `mesh.element_material`.
+    pub materials: &'a [Material],
+    /// The formulation of every element.
+    pub formulation: Formulation,
+}
+
+impl ElementSet<MAX_DOF> for PlaneElements<'_> {
+    const PER_NODE: usize = 2;
+
+    fn n_nodes(&self) -> usize {
+        self.mesh.n_nodes()
+    }
+
+    fn n_elements(&self) -> usize {
+        self.mesh.n_elements()
+    }
+
+    fn nodes(&self, e: usize) -> &[usize] {
+        self.mesh.element(e)
+    }
+
+    fn stiffness_into(&self, e: usize, ke: &mut ElementMatrix) -> Result<usize> {
+        let mut coords = [[0.0; 2]; MAX_NODES];
+        let n = self.mesh.element_coords(e, &mut coords);
+        let material = self.material(e)?;
+        element::stiffness_into(self.formulation, &coords[..n], material, ke)
+            .map_err(|kind| Error::at_element(kind, e))
+    }
+}
+
+impl<'a> PlaneElements<'a> {
+    /// The elements of `mesh`, with `materials` and `formulation`.
+    pub fn new(mesh: &'a Mesh, materials: &'a [Material], formulation: Formulation) -> Self {
+        PlaneElements {
+            mesh,
+            materials,
+            formulation,
+        }
+    }
+
+    /// The material of element `e`, or an error naming it.
+    pub fn material(&self, e: usize) -> Result<&'a Material> {
+        let index = self.mesh.element_material[e];
+        element_material(self.materials, index, "element", e)
     }
 }
 
@@ -360,9 +404,7 @@ impl LinearSystem {
     /// design that does not keep its factor pays per solve; the contact benchmark's
     /// refactor-every-iteration variant).
     pub fn refactorize(&mut self, model: &Model) -> Result<()> {
-        let (pattern, dofs) = self.system.pattern_mut();
-        pattern.assemble(&model.mesh, &model.materials, model.formulation, dofs)?;
-        self.system.factor()
+        self.system.refactor(&model.elements())
     }
 
     /// The flexibility `(K^-1)` between the free dofs among the `trailing` dofs given to
@@ -436,12 +478,10 @@ impl Solution {
     pub fn stress_field(&self, model: &Model, e: usize) -> Result<StressField> {
         let mut coords = [[0.0; 2]; MAX_NODES];
         let n = model.mesh.element_coords(e, &mut coords);
-        let mut qe = [0.0; 2 * MAX_NODES];
-        for (i, &node) in model.mesh.element(e).iter().enumerate() {
-            qe[2 * i..2 * i + 2].copy_from_slice(&self.displacement(node));
-        }
-        let material = &model.materials[model.mesh.element_material[e]];
-        element::recover_stress(model.formulation, &coords[..n], material, &qe[..2 * n])
+        let mut qe = [0.0; MAX_DOF];
+        let n_dof = gather(2, model.mesh.element(e), &self.q, &mut qe);
+        let material = model.elements().material(e)?;
+        element::recover_stress(model.formulation, &coords[..n], material, &qe[..n_dof])
             .map_err(|kind| Error::at_element(kind, e))
     }
 }

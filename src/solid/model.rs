@@ -2,20 +2,21 @@
 //! sparse Cholesky with its symbolic analysis kept and reused, solve, stresses.
 //!
 //! # What is shared with the plane model
-//! The dof map ([`DofMap`]), the lower-triangle pattern ([`SparsePattern`]) and the factored
-//! free-free system with its trailing unknowns and solves ([`FactoredSystem`]) are the plane
-//! model's, with 3 dofs per node. The element loop stays parallel (plane elements have 4 to 6
-//! nodes, a 2D material with thickness and analysis kind, `MAX_DOF = 12` storage; bricks have 8
-//! nodes, an [`Isotropic`] material and 24 x 24 storage): merging the two loops would put a
-//! dimension switch into every kernel call for no shared mathematics. [`SolidSystem`] analyses
-//! the pattern once and refactors into the same symbolic structure whenever the values change
-//! (new materials, another formulation), then solves any number of load cases; with trailing
-//! unknowns its factor gives their flexibility (what contact needs of the bodies, see
+//! The dof map ([`DofMap`]), the lower-triangle pattern ([`SparsePattern`]), the factored
+//! free-free system with its trailing unknowns and solves ([`FactoredSystem`]) and the loops
+//! over the elements (assembly `K = sum_e A_e^T K_e A_e` and element forces
+//! `K q = sum_e A_e^T K_e q_e`, [`elements`]) are the plane model's, with 3 dofs per node: what
+//! differs, the brick kernel, its 8 nodes, its [`Isotropic`] material and its 24 x 24 storage,
+//! is [`Bricks`], the solid [`ElementSet`]. [`SolidSystem`] analyses the pattern once and
+//! refactors into the same symbolic structure whenever the values change (new materials, another
+//! formulation), then solves any number of load cases; with trailing unknowns its factor gives
+//! their flexibility (what contact needs of the bodies, see
 //! [`SolidBodies`](crate::contact::bodies::SolidBodies)).
 
 use super::mesh::SolidMesh;
-use super::{BrickFormulation, BrickMatrix, BrickStress, Isotropic, N_DOF, N_NODES};
-use crate::assembly::{DofMap, FactoredSystem, SparsePattern, element_dofs};
+use super::{BrickFormulation, BrickMatrix, BrickStress, Isotropic, N_DOF};
+use crate::assembly::elements::{self, ElementSet, element_material, gather};
+use crate::assembly::{DofMap, FactoredSystem, SparsePattern, scatter};
 use crate::error::{Error, Result};
 use crate::solver::{Backend, FillOrdering, OrderingRule, SparseCholesky};
 use faer::Mat;
@@ -106,7 +107,8 @@ impl SolidSystem {
         Ok(correction)
     }
 
-    /// The assembly half of [`assemble_and_factor`](Self::assemble_and_factor).
+    /// The assembly half of [`assemble_and_factor`](Self::assemble_and_factor):
+    /// [`elements::assemble`] over the bricks, and the load correction of the prescribed values.
     pub fn assemble(
         &mut self,
         mesh: &SolidMesh,
@@ -114,32 +116,13 @@ impl SolidSystem {
         formulation: BrickFormulation,
         prescribed: &[(usize, f64)],
     ) -> Result<Vec<f64>> {
+        let bricks = Bricks::new(mesh, materials, formulation);
         let (pattern, dofs) = self.system.pattern_mut();
-        let mut u_p = vec![0.0; dofs.n_dofs()];
-        for &(d, v) in prescribed {
-            u_p[d] = v;
-        }
+        let u_p = scatter(dofs.n_dofs(), prescribed.iter().copied());
         let mut correction = vec![0.0; dofs.n_free()];
-        pattern.clear();
-        let mut ke = BrickMatrix::zeros();
-        let mut gd = [0; N_DOF];
-        for (e, el) in mesh.elements.iter().enumerate() {
-            let material = brick_material(mesh, materials, e)?;
-            super::stiffness_into(formulation, &mesh.element_coords(e), material, &mut ke)
-                .map_err(|kind| Error::at_element(kind, e))?;
-            dofs.element_dofs(el, &mut gd);
-            pattern.add(dofs, &gd, |b, a| ke[(b, a)]);
-            for a in 0..N_DOF {
-                if dofs.equation(gd[a]).is_some() || u_p[gd[a]] == 0.0 {
-                    continue;
-                }
-                for b in 0..N_DOF {
-                    if let Some(row) = dofs.equation(gd[b]) {
-                        correction[row] -= ke[(b, a)] * u_p[gd[a]];
-                    }
-                }
-            }
-        }
+        elements::assemble(&bricks, pattern, dofs, |gd, ke| {
+            subtract_prescribed_motion(dofs, gd, ke, &u_p, &mut correction);
+        })?;
         Ok(correction)
     }
 
@@ -151,8 +134,7 @@ impl SolidSystem {
     /// Assemble `K_ff` of `model` (the one the system was built from) and factor it again,
     /// reusing the analysis.
     pub fn refactorize(&mut self, model: &SolidModel) -> Result<()> {
-        self.assemble(&model.mesh, &model.materials, model.formulation, &[])?;
-        self.factor()
+        self.system.refactor(&model.elements())
     }
 
     /// The assembled lower triangle of `K_ff`.
@@ -180,19 +162,82 @@ impl SolidSystem {
     }
 }
 
-/// The material of brick `e`, or an error naming it.
-fn brick_material<'a>(
-    mesh: &SolidMesh,
-    materials: &'a [Isotropic],
-    e: usize,
-) -> Result<&'a Isotropic> {
-    materials.get(mesh.element_material[e]).ok_or_else(|| {
-        Error::InvalidInput(format!(
-            "brick {e} uses material {} but only {} are defined",
-            mesh.element_material[e],
-            materials.len()
-        ))
-    })
+/// `correction_f -= K_e,fp u_p,e`: the load of the prescribed values `u_p` (over all dofs) at the
+/// free dofs of one brick with global dofs `gd` and stiffness `ke`, summed over its prescribed,
+/// non-zero columns.
+fn subtract_prescribed_motion(
+    dofs: &DofMap,
+    gd: &[usize],
+    ke: &BrickMatrix,
+    u_p: &[f64],
+    correction: &mut [f64],
+) {
+    for (a, &da) in gd.iter().enumerate() {
+        if dofs.equation(da).is_some() || u_p[da] == 0.0 {
+            continue;
+        }
+        for (b, &db) in gd.iter().enumerate() {
+            if let Some(row) = dofs.equation(db) {
+                correction[row] -= ke[(b, a)] * u_p[da];
+            }
+        }
+    }
+}
+
+/// The bricks of a mesh with their materials and one formulation: the solid case of the element
+/// loops ([`ElementSet`]; 3 dofs per node, [`N_DOF`] per brick).
+#[derive(Debug, Clone, Copy)]
+pub struct Bricks<'a> {
+    /// The mesh.
+    pub mesh: &'a SolidMesh,
+    /// Materials, indexed by `mesh.element_material`.
+    pub materials: &'a [Isotropic],
+    /// The formulation of every brick.
+    pub formulation: BrickFormulation,
+}
+
+impl ElementSet<N_DOF> for Bricks<'_> {
+    const PER_NODE: usize = 3;
+
+    fn n_nodes(&self) -> usize {
+        self.mesh.n_nodes()
+    }
+
+    fn n_elements(&self) -> usize {
+        self.mesh.n_elements()
+    }
+
+    fn nodes(&self, e: usize) -> &[usize] {
+        &self.mesh.elements[e]
+    }
+
+    fn stiffness_into(&self, e: usize, ke: &mut BrickMatrix) -> Result<usize> {
+        let material = self.material(e)?;
+        super::stiffness_into(self.formulation, &self.mesh.element_coords(e), material, ke)
+            .map_err(|kind| Error::at_element(kind, e))?;
+        Ok(N_DOF)
+    }
+}
+
+impl<'a> Bricks<'a> {
+    /// The bricks of `mesh`, with `materials` and `formulation`.
+    pub fn new(
+        mesh: &'a SolidMesh,
+        materials: &'a [Isotropic],
+        formulation: BrickFormulation,
+    ) -> Self {
+        Bricks {
+            mesh,
+            materials,
+            formulation,
+        }
+    }
+
+    /// The material of brick `e`, or an error naming it.
+    pub fn material(&self, e: usize) -> Result<&'a Isotropic> {
+        let index = self.mesh.element_material[e];
+        element_material(self.materials, index, "brick", e)
+    }
 }
 
 /// A linear static problem on a brick mesh: prescribed displacements, nodal loads, one
@@ -289,11 +334,7 @@ impl SolidModel {
 
     /// Prescribed values over all dofs (zero where free).
     pub fn prescribed_values(&self) -> Vec<f64> {
-        let mut q = vec![0.0; self.loads.len()];
-        for (d, v) in self.prescribed() {
-            q[d] = v;
-        }
-        q
+        scatter(self.loads.len(), self.prescribed())
     }
 
     /// The nodal loads over all dofs (`3 n_nodes`).
@@ -309,30 +350,16 @@ impl SolidModel {
         DofMap::new(self.mesh.n_nodes(), 3, self.prescribed.keys().copied())
     }
 
-    /// Element forces `K q` summed over all bricks (length `3 n_nodes`); a brick whose
-    /// displacements are all zero adds nothing and is skipped.
+    /// Element forces `K q = sum_e A_e^T K_e q_e` over all dofs (length `3 n_nodes`,
+    /// [`elements::internal_forces`]); a brick whose displacements are all zero adds nothing and
+    /// is skipped.
     pub fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
-        let mut r = vec![0.0; q.len()];
-        let mut ke = BrickMatrix::zeros();
-        let mut gd = [0; N_DOF];
-        for (e, el) in self.mesh.elements.iter().enumerate() {
-            element_dofs(3, el, &mut gd);
-            if gd.iter().all(|&d| q[d] == 0.0) {
-                continue;
-            }
-            let material = brick_material(&self.mesh, &self.materials, e)?;
-            super::stiffness_into(
-                self.formulation,
-                &self.mesh.element_coords(e),
-                material,
-                &mut ke,
-            )
-            .map_err(|kind| Error::at_element(kind, e))?;
-            for a in 0..N_DOF {
-                r[gd[a]] += (0..N_DOF).map(|b| ke[(a, b)] * q[gd[b]]).sum::<f64>();
-            }
-        }
-        Ok(r)
+        elements::internal_forces(&self.elements(), q)
+    }
+
+    /// The model's bricks with their materials and formulation, for the element loops.
+    pub fn elements(&self) -> Bricks<'_> {
+        Bricks::new(&self.mesh, &self.materials, self.formulation)
     }
 
     /// Assemble, factor (faer backend) and solve.
@@ -362,15 +389,12 @@ impl SolidModel {
 
     /// The stress field of brick `e` from a solution.
     pub fn element_stress(&self, solution: &SolidSolution, e: usize) -> Result<BrickStress> {
-        let el = self.mesh.elements[e];
         let mut q = [0.0; N_DOF];
-        for k in 0..N_NODES {
-            q[3 * k..3 * k + 3].copy_from_slice(&solution.displacements[3 * el[k]..3 * el[k] + 3]);
-        }
+        gather(3, &self.mesh.elements[e], &solution.displacements, &mut q);
         super::recover_stress(
             self.formulation,
             &self.mesh.element_coords(e),
-            &self.materials[self.mesh.element_material[e]],
+            self.elements().material(e)?,
             &q,
         )
         .map_err(|kind| Error::at_element(kind, e))
