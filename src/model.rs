@@ -323,10 +323,6 @@ pub struct PlaneElements<'a> {
 impl ElementSet<MAX_DOF> for PlaneElements<'_> {
     const PER_NODE: usize = 2;
 
-    fn n_nodes(&self) -> usize {
-        self.mesh.n_nodes()
-    }
-
     fn n_elements(&self) -> usize {
         self.mesh.n_elements()
     }

@@ -26,9 +26,6 @@ pub trait ElementSet<const ND: usize> {
     /// Dofs per node: 2 in the plane, 3 in a solid.
     const PER_NODE: usize;
 
-    /// Number of nodes of the mesh.
-    fn n_nodes(&self) -> usize;
-
     /// Number of elements.
     fn n_elements(&self) -> usize;
 
@@ -127,4 +124,123 @@ pub fn gather(per_node: usize, nodes: &[usize], q: &[f64], out: &mut [f64]) -> u
             .copy_from_slice(&q[per_node * node..per_node * (node + 1)]);
     }
     per_node * nodes.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::element::Formulation;
+    use crate::material::{Analysis, Material};
+    use crate::mesh::generate::{Grading, graded_rectangle};
+    use crate::model::Model;
+    use crate::solid::mesh::SolidMesh;
+    use crate::solid::model::SolidModel;
+    use crate::solid::{BrickFormulation, Isotropic};
+
+    /// `K q` from the assembled lower triangle of `K` (no dof prescribed, so `K_ff = K`).
+    fn assembled_times<const ND: usize>(
+        set: &impl ElementSet<ND>,
+        dofs: &DofMap,
+        q: &[f64],
+    ) -> Vec<f64> {
+        let n_nodes = dofs.n_dofs() / dofs.per_node();
+        let nodes = (0..set.n_elements()).map(|e| set.nodes(e));
+        let mut pattern = SparsePattern::from_elements(n_nodes, nodes, dofs);
+        assemble(set, &mut pattern, dofs, |_, _| ()).unwrap();
+        let k = pattern.matrix();
+        let mut kq = vec![0.0; q.len()];
+        for col in 0..k.ncols() {
+            for (row, v) in k.row_idx_of_col(col).zip(k.val_of_col(col)) {
+                kq[row] += v * q[col];
+                if row != col {
+                    kq[col] += v * q[row];
+                }
+            }
+        }
+        kq
+    }
+
+    /// `max |a - b| / max |b|`.
+    fn relative_gap(a: &[f64], b: &[f64]) -> f64 {
+        let scale = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let gap = a
+            .iter()
+            .zip(b)
+            .fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
+        gap / scale
+    }
+
+    /// A displacement with every component different, over `n` dofs.
+    fn displacement(n: usize) -> Vec<f64> {
+        (0..n)
+            .map(|d| ((d * 7 + 3) % 11) as f64 * 0.01 - 0.05)
+            .collect()
+    }
+
+    #[test]
+    fn element_forces_are_the_assembled_stiffness_times_q() {
+        // plane: a graded mesh with 5- and 6-node transition elements
+        let grading = Grading::toward_point([0.0, 1.0], 0.1, 1);
+        let mesh = graded_rectangle(0.0, 0.0, 2.0, 1.0, 4, 2, &grading);
+        let material = Material::new(1000.0, 0.3, 0.5, Analysis::PlaneStrain).unwrap();
+        let plane = Model::new(mesh, vec![material], Formulation::Hybrid);
+        assert!((0..plane.mesh.n_elements()).any(|e| plane.mesh.element(e).len() > 4));
+        let dofs = DofMap::new(plane.mesh.n_nodes(), 2, []).unwrap();
+        let q = displacement(dofs.n_dofs());
+        let f = plane.internal_forces(&q).unwrap();
+        assert!(relative_gap(&f, &assembled_times(&plane.elements(), &dofs, &q)) < 1e-13);
+
+        let mesh = SolidMesh::uniform([2.0, 1.0, 1.0], [2, 1, 2]);
+        let iso = Isotropic::new(200.0, 0.25).unwrap();
+        let solid = SolidModel::new(mesh, vec![iso], BrickFormulation::Hybrid18).unwrap();
+        let dofs = solid.dof_map().unwrap();
+        let q = displacement(dofs.n_dofs());
+        let f = solid.internal_forces(&q).unwrap();
+        assert!(relative_gap(&f, &assembled_times(&solid.elements(), &dofs, &q)) < 1e-13);
+    }
+
+    #[test]
+    fn an_element_without_its_material_is_named() {
+        let mesh = graded_rectangle(
+            0.0,
+            0.0,
+            2.0,
+            1.0,
+            2,
+            1,
+            &Grading::toward_point([0.0; 2], 1.0, 1),
+        );
+        let material = Material::new(1000.0, 0.3, 1.0, Analysis::PlaneStress).unwrap();
+        let mut plane = Model::new(mesh, vec![material], Formulation::Q4);
+        plane.mesh.element_material[1] = 1;
+        let q = vec![1.0; 2 * plane.mesh.n_nodes()];
+        let message = plane.internal_forces(&q).unwrap_err().to_string();
+        assert!(
+            message.contains("element 1 uses material 1 but only 1 are defined"),
+            "{message}"
+        );
+
+        let mut mesh = SolidMesh::uniform([1.0; 3], [2, 1, 1]);
+        mesh.element_material[1] = 3;
+        let solid = SolidModel::new(
+            mesh,
+            vec![Isotropic::new(1.0, 0.0).unwrap()],
+            BrickFormulation::H8,
+        )
+        .unwrap();
+        let q = vec![1.0; 3 * solid.mesh.n_nodes()];
+        let message = solid.internal_forces(&q).unwrap_err().to_string();
+        assert!(
+            message.contains("brick 1 uses material 3 but only 1 are defined"),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn gather_reads_the_element_dofs_in_element_order() {
+        let q: Vec<f64> = (0..12).map(|d| d as f64).collect();
+        let mut out = [0.0; 6];
+        assert_eq!(gather(3, &[3, 1], &q, &mut out), 6);
+        assert_eq!(out, [9.0, 10.0, 11.0, 3.0, 4.0, 5.0]);
+    }
 }

@@ -199,10 +199,6 @@ pub struct Bricks<'a> {
 impl ElementSet<N_DOF> for Bricks<'_> {
     const PER_NODE: usize = 3;
 
-    fn n_nodes(&self) -> usize {
-        self.mesh.n_nodes()
-    }
-
     fn n_elements(&self) -> usize {
         self.mesh.n_elements()
     }
