@@ -359,6 +359,123 @@ fn coverage_is_the_exact_covered_fraction() {
     );
 }
 
+/// A partly covered node (B ends inside its support: the flat side of a contact taken as A
+/// under a smaller B, or a search window cutting a support). Its normal gap is the mean of `g`
+/// over the covered part, `integral_cov M_k g dS / integral_cov M_k dS`, and its coupling row
+/// is the change of `R_C,k` over that same part: `F^A` over the covered part as `F^B` is, so
+/// `sum_j c_kj = 0` (a rigid translation leaves `R_C,k` unchanged) and the linearised gap
+/// `-n_k . (R_C,k + sum_j c_kj du_j) / covered weight` (the iteration's gap under small
+/// kinematics) equals the gap evaluated at the moved positions. With A's whole-support `F^A`
+/// in the row, an approach `delta` of A closed a partly covered node's gap by
+/// `delta * weight / covered weight` (4 times `delta` here) and a translation changed it. A
+/// node with nothing covered has an infinite gap and A's whole-support `F^A` as its row.
+#[test]
+fn partly_covered_node_gap_and_row_agree() {
+    let cases = [
+        (UNIT, 0.0),
+        (SurfaceMeasure::Plane { thickness: 0.3 }, 0.0),
+        (SurfaceMeasure::Axisymmetric, 1.0),
+    ];
+    for (measure, x0) in cases {
+        // A on y = 0, nodes at x0 + 0..=4; B on y = g(x) from x0 + 1.3 to beyond A's end: the
+        // node at x0 + 1 is covered over [x0 + 1.3, x0 + 2] of its support, the one at x0 not
+        let m = |v: f64| match measure {
+            SurfaceMeasure::Plane { thickness } => thickness,
+            SurfaceMeasure::Axisymmetric => 2.0 * PI * v,
+        };
+        let start = x0 + 1.3;
+        for (g0, slope) in [(0.02, 0.0), (-0.01, 0.0), (0.02, 0.05)] {
+            let tag = format!("{measure:?} g0 {g0} slope {slope}");
+            let g = |v: f64| g0 + slope * v;
+            let xa = uniform(x0, x0 + 4.0, 4);
+            let (a, b, x) = flat(&xa, &[start, x0 + 2.6, x0 + 5.0], g0, slope);
+            let s = evaluate(&a, &b, &x, 1.0, measure).unwrap();
+            let scale = s.nodes.iter().map(|n| n.weight).fold(0.0, f64::max);
+            // integral of f over the part of node k's support from `from` on (a cubic at most:
+            // M_k, L_j, g and m are affine), by Simpson's rule on each piece
+            let over = |k: usize, from: f64, f: &dyn Fn(f64) -> f64| -> f64 {
+                let xk = x[a[k]][0];
+                [k.wrapping_sub(1), k + 1]
+                    .iter()
+                    .filter_map(|&j| a.get(j))
+                    .map(|&j| {
+                        let xo = x[j][0];
+                        let hat = |v: f64| 1.0 - (v - xk).abs() / (xo - xk).abs();
+                        let (l, u) = (xk.min(xo).max(from), xk.max(xo));
+                        if l >= u {
+                            return 0.0;
+                        }
+                        let h = |v: f64| hat(v) * f(v) * m(v);
+                        (u - l) / 6.0 * (h(l) + 4.0 * h(0.5 * (l + u)) + h(u))
+                    })
+                    .sum()
+            };
+            let approach = 0.005;
+            let mut du = vec![0.0; 2 * x.len()];
+            let mut moved = x.clone();
+            for &i in &a {
+                du[2 * i + 1] = approach;
+                moved[i][1] += approach;
+            }
+            let after = evaluate(&a, &b, &moved, 1.0, measure).unwrap();
+            let translation: Vec<f64> = x.iter().flat_map(|_| [0.7, -1.9]).collect();
+            let mut partly = 0;
+            for (k, nd) in s.nodes.iter().enumerate() {
+                let tag = format!("{tag} node at x = {}", x[nd.node][0]);
+                if nd.covered_weight == 0.0 {
+                    assert_eq!(nd.normal_gap, f64::INFINITY, "{tag}");
+                } else {
+                    partly += usize::from(!nd.is_covered());
+                    // the gap: the covered mean of g
+                    let mean = over(k, start, &g) / over(k, start, &|_| 1.0);
+                    assert!(
+                        close(nd.normal_gap, mean, EXACT),
+                        "{tag}: {} vs {mean}",
+                        nd.normal_gap
+                    );
+                    // linearised and evaluated after A's approach along n = +y: both close
+                    // by it
+                    let n = nd.frame.normal();
+                    let linear = -n.dot(&(nd.gap + nd.coupling_times(&du))) / nd.covered_weight;
+                    let evaluated = after.nodes[k].normal_gap;
+                    assert!(
+                        close(evaluated, mean - approach, EXACT),
+                        "{tag}: {evaluated}"
+                    );
+                    assert!(
+                        close(linear, evaluated, EXACT),
+                        "{tag}: linearised {linear} vs evaluated {evaluated}"
+                    );
+                }
+                // F^A over the covered part, entry by entry, and the row sums to zero; a node
+                // with nothing covered keeps the whole support's F^A (a regular row)
+                let from = if nd.covered_weight == 0.0 {
+                    f64::NEG_INFINITY
+                } else {
+                    start
+                };
+                let (fa, _) = split(nd, &a);
+                for &j in &a {
+                    let xj = x[j][0];
+                    let lj = |v: f64| (1.0 - (v - xj).abs()).max(0.0);
+                    let exact = over(k, from, &lj);
+                    let got = fa.get(&j).copied().unwrap_or(0.0);
+                    assert!(
+                        close(got, exact, EXACT * scale),
+                        "{tag}: F^A at {xj}: {got} vs {exact}"
+                    );
+                }
+                let rigid = nd.coupling_times(&translation);
+                assert!(
+                    nd.covered_weight == 0.0 || rigid.norm() <= EXACT * scale,
+                    "{tag}: a translation changes R_C by {rigid:?}"
+                );
+            }
+            assert_eq!(partly, 2, "{tag}: two partly covered nodes");
+        }
+    }
+}
+
 /// B folding back: several hits along the normal; the facing one with the smallest |g| wins,
 /// a nearer non-facing (back side) hit is ignored, penetration counts by |g|.
 #[test]

@@ -46,9 +46,15 @@
 //! With `ds = h dxi` on each of the one or two A segments adjacent to `k` (its *support*):
 //! * `weight_k = integral M_k dS` (the tributary measure: `t (h_left + h_right) / 2` in plane,
 //!   `sum_e 2 pi h_e (2 r_k + r_other) / 6` in axisymmetry with linear hats);
-//! * `F^A_kj = integral M_k L^A_j dS` over the whole support (plane: `t h/3` on the diagonal,
-//!   `t h/6` off it, summed over the two segments; with `m` linear on a segment from `m_k` to
-//!   `m_j`: `h (3 m_k + m_j) / 12` on the diagonal and `h (m_k + m_j) / 12` off it);
+//! * `F^A_kj = integral M_k L^A_j dS` over the covered part of the support, as `F^B` and `R_C`
+//!   are. For a fully covered node that is the whole support, in closed form (plane: `t h/3` on
+//!   the diagonal, `t h/6` off it, summed over the two segments; with `m` linear on a segment
+//!   from `m_k` to `m_j`: `h (3 m_k + m_j) / 12` on the diagonal and `h (m_k + m_j) / 12` off
+//!   it); for a partly covered node it is integrated piece by piece with the rest. A node of
+//!   which nothing is covered has no gap (it is infinite) and keeps the whole support's
+//!   `F^A`, a regular row: under finite kinematics an iterate that carries B out of reach of a
+//!   node the iteration still holds active must not leave it an empty row (a singular small
+//!   system); the coverage check refuses such a node at convergence;
 //! * `F^B_kj = integral M_k(xi) L^B_j(x^B(xi)) dS` over the covered part of the support,
 //!   `L^B_j` the hat functions of B's polyline at the hit point;
 //! * `R_C,k = integral M_k (x^A - x^B) dS = -integral M_k g n dS` (a 2-vector, the weighted
@@ -69,7 +75,12 @@
 //!   differs by a tangential term of relative size `sin(theta / 2)`). The tangential row
 //!   `s_k . sum_j c_kj du_j` measures relative slip at the frozen pairing; it is *not* the
 //!   derivative of `s_k . R_C,k`, which stays about zero by construction because the projection
-//!   follows a tangential motion.
+//!   follows a tangential motion. `F^A` and `F^B` cover the same part of the support, so
+//!   `sum_j c_kj = covered_weight - covered_weight = 0` for every node with any coverage (a
+//!   rigid translation leaves `R_C,k` unchanged), and the gap linearised from the row,
+//!   `-n_k . (R_C,k + sum_j c_kj du_j) / covered_weight` (the gap of small kinematics), is
+//!   the covered mean of `g` at the moved positions with the pairing frozen, as
+//!   `normal_gap` is, for a partly covered node too.
 //!
 //! Column sums of the B part give B's nodal weights over the projected overlap:
 //! `sum_k F^B_kj = integral L^B_j dS` (the hats `M_k` sum to one), for turning B's nodal
@@ -364,6 +375,10 @@ struct Workspace {
     support: Vec<f64>,
     uncovered: Vec<f64>,
     distance: Vec<f64>,
+    /// Per A node: `F^A` with its left neighbour, itself and its right neighbour, over the
+    /// whole support (closed form) and over the covered part (accumulated piece by piece).
+    mass: Vec<[f64; 3]>,
+    covered_mass: Vec<[f64; 3]>,
     sorted: Vec<(usize, u8)>,
 }
 
@@ -672,6 +687,7 @@ fn evaluate_impl(
     // nodes: frame, weight, F^A
     out.nodes.resize_with(na, || ContactNode::empty(2));
     w.support.clear();
+    w.mass.clear();
     for (k, node) in out.nodes.iter_mut().enumerate() {
         let left = (k > 0).then(|| (x[a[k - 1]], w.seg_hats[k - 1]));
         let right = (k + 1 < na).then(|| (x[a[k + 1]], w.seg_hats[k]));
@@ -689,13 +705,7 @@ fn evaluate_impl(
         node.covered_weight = 0.0;
         node.gap = Vector::zero(2);
         node.coupling.clear();
-        if k > 0 {
-            node.coupling.push((a[k - 1], m.mass[0]));
-        }
-        node.coupling.push((a[k], m.mass[1]));
-        if k + 1 < na {
-            node.coupling.push((a[k + 1], m.mass[2]));
-        }
+        w.mass.push(m.mass);
         // the support's length (coverage is a fraction of it)
         let hl = if k > 0 { w.seg_len[k - 1] } else { 0.0 };
         let hr = if k + 1 < na { w.seg_len[k] } else { 0.0 };
@@ -705,6 +715,8 @@ fn evaluate_impl(
     w.uncovered.resize(na, 0.0);
     w.distance.clear();
     w.distance.resize(na, 0.0);
+    w.covered_mass.clear();
+    w.covered_mass.resize(na, [0.0; 3]);
 
     // candidate search structure over B
     let mean_a = w.seg_len.iter().sum::<f64>() / (na - 1) as f64;
@@ -858,6 +870,7 @@ fn evaluate_impl(
             };
             // exact Gauss on the piece: L^B, g and the measure affine in xi, M affine (or
             // quadratic on an axis segment)
+            let mut fa = [[0.0; 2]; 2];
             let mut fb = [[0.0; 2]; 2];
             let mut mg = [0.0; 2];
             let mut mw = [0.0; 2];
@@ -870,6 +883,8 @@ fn evaluate_impl(
                 let lb = [1.0 - eta, eta];
                 let g = c.g0 + eta * (c.g1 - c.g0);
                 for r in 0..2 {
+                    fa[r][0] += wt * mk[r] * (1.0 - xi);
+                    fa[r][1] += wt * mk[r] * xi;
                     fb[r][0] += wt * mk[r] * lb[0];
                     fb[r][1] += wt * mk[r] * lb[1];
                     mg[r] += wt * mk[r] * g;
@@ -877,6 +892,12 @@ fn evaluate_impl(
                 }
             }
             let (q0, q1) = (b[c.seg], b[c.seg + 1]);
+            // the segment is node k0's right one and node k1's left one
+            let cm = &mut w.covered_mass;
+            cm[k0][1] += fa[0][0];
+            cm[k0][2] += fa[0][1];
+            cm[k1][0] += fa[1][0];
+            cm[k1][1] += fa[1][1];
             for (r, k) in [(0, k0), (1, k1)] {
                 let node = &mut out.nodes[k];
                 node.gap[0] -= mg[r] * n[0];
@@ -889,7 +910,7 @@ fn evaluate_impl(
         }
     }
 
-    // finish: coverage, gaps, merged coupling rows
+    // finish: coverage, gaps, A's part of the coupling rows, merged rows
     for (k, node) in out.nodes.iter_mut().enumerate() {
         let support = w.support[k];
         node.coverage = if w.uncovered[k] <= 0.0 {
@@ -897,6 +918,19 @@ fn evaluate_impl(
         } else {
             (1.0 - w.uncovered[k] / support).clamp(0.0, 1.0)
         };
+        // F^A over the covered part: the closed form when that is the whole support; over
+        // the whole support when nothing is covered (module docs)
+        let mass = if node.is_covered() || node.covered_weight == 0.0 {
+            w.mass[k]
+        } else {
+            w.covered_mass[k]
+        };
+        let neighbours = [k.checked_sub(1), Some(k), (k + 1 < na).then_some(k + 1)];
+        for (j, v) in neighbours.into_iter().zip(mass) {
+            if let Some(j) = j {
+                node.coupling.push((a[j], v));
+            }
+        }
         if node.covered_weight > 0.0 {
             node.normal_gap = -node.frame.normal().dot(&node.gap) / node.covered_weight;
             node.mean_distance = w.distance[k] / node.covered_weight;
