@@ -99,6 +99,7 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
+mod solid;
 use active_set::{
     ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
     NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
@@ -111,6 +112,7 @@ pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
+pub use solid::FacePair;
 use small_system::{SmallSystem, Sparse, column, dot};
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
