@@ -12,6 +12,7 @@ mod contact_axisymmetric;
 mod contact_cattaneo;
 mod contact_convergence;
 mod contact_hertz;
+mod contact_hertz3d;
 mod contact_host;
 mod contact_robustness;
 mod contact_settle;

@@ -112,8 +112,8 @@ pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
-pub use solid::FacePair;
 use small_system::{SmallSystem, Sparse, column, dot};
+pub use solid::FacePair;
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
 /// ([`ContactAnalysis::new`], [`ContactAnalysis::host`]) build.

@@ -34,7 +34,8 @@ use super::mortar::inverse_bilinear;
 use super::surface::{COVERED, SurfaceFaces, SurfaceMortar};
 use super::{CORNERS, Quad, SurfaceFrames, SymmetryPlane};
 use crate::contact::geometry::{
-    BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally, Unresolved,
+    Adjacency, BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally,
+    Unresolved,
 };
 use crate::contact::space::{Frame, Vector};
 use crate::error::{Error, Result};
@@ -59,6 +60,9 @@ pub struct FaceGeometry {
     dropped: Vec<[bool; 2]>,
     /// A's faces around its nodes, neighbours and free edges.
     topology: Topology,
+    /// A's nodes' neighbours along A's face edges, and its edge: the nodes on a free edge
+    /// that does not lie in a symmetry plane (fixed at the reference positions).
+    adjacency: Adjacency,
     /// Under small kinematics: per A face, the B nodes projecting inside it at the reference.
     interiors: Option<Vec<Vec<usize>>>,
 }
@@ -214,6 +218,26 @@ impl Topology {
     }
 }
 
+impl Topology {
+    /// The [`Adjacency`] of A's nodes `a` (sorted ids) at positions `x`: the neighbours along
+    /// face edges, and on A's edge the nodes of the free edges that do not lie in one of the
+    /// `symmetry` planes (both ends on it, to [`SymmetryPlane::contains`] of the edge's
+    /// length).
+    fn adjacency(&self, a: &[usize], x: &[[f64; 3]], symmetry: &[SymmetryPlane]) -> Adjacency {
+        let index = |k: usize| a.binary_search(&k).expect("a node of A's faces");
+        let mut edge = vec![false; a.len()];
+        for &(p, q) in &self.free_edges {
+            let h = (v3(x[q]) - v3(x[p])).norm();
+            let mirrored = (symmetry.iter()).any(|s| s.contains(x[p], h) && s.contains(x[q], h));
+            if !mirrored {
+                edge[index(p)] = true;
+                edge[index(q)] = true;
+            }
+        }
+        Adjacency::new(self.neighbours.clone(), edge)
+    }
+}
+
 impl FaceGeometry {
     /// The pair of A faces `a_faces` and B faces `b_faces` (node ids into the flat positions
     /// `x`, 3 per node, in [`crate::solid::geometry::FACES`] order, outward), checked at `x`
@@ -252,10 +276,11 @@ impl FaceGeometry {
         )?;
         let dropped = a.iter().map(|k| frames.frames[k].dropped).collect();
         let topology = Topology::new(&a, &a_faces);
-        let symmetry = symmetry
+        let symmetry: Vec<SymmetryPlane> = symmetry
             .iter()
             .map(|p| SymmetryPlane::new(p.point, p.normal))
             .collect::<Result<_>>()?;
+        let adjacency = topology.adjacency(&a, pts, &symmetry);
         Ok(FaceGeometry {
             a_faces,
             b_faces,
@@ -265,6 +290,7 @@ impl FaceGeometry {
             symmetry,
             dropped,
             topology,
+            adjacency,
             interiors: None,
         })
     }
@@ -341,6 +367,11 @@ impl ContactGeometry for FaceGeometry {
 
     fn a_nodes(&self) -> &[usize] {
         &self.a
+    }
+
+    /// The nodes sharing a face edge; the edge: free edges of A outside the symmetry planes.
+    fn adjacency(&self) -> &Adjacency {
+        &self.adjacency
     }
 
     /// The [module docs](self)' quantities from [`SurfaceMortar`] over the face pairs within

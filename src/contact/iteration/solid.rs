@@ -172,6 +172,13 @@ impl ContactAnalysis {
         let geometries = (geometries.into_iter())
             .map(|g| Box::new(g) as Box<dyn ContactGeometry>)
             .collect();
-        Self::setup(Box::new(bodies), node_pairs, geometries, dofs, options, None)
+        Self::setup(
+            Box::new(bodies),
+            node_pairs,
+            geometries,
+            dofs,
+            options,
+            None,
+        )
     }
 }
