@@ -11,6 +11,7 @@ mod contact_algebra;
 mod contact_axisymmetric;
 mod contact_cattaneo;
 mod contact_convergence;
+mod contact_friction3d;
 mod contact_hertz;
 mod contact_hertz3d;
 mod contact_host;
