@@ -29,6 +29,7 @@
 //! Hertz's: the sign and the size of what is measured, and the same at both refinements.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeResult};
+use hycon::contact::space::Vector;
 use hycon::solid::contact_meshes::{CapModel, CapOnBlock, ContactMesh};
 use hycon::solid::model::SolidModel;
 use hycon::solid::{BrickFormulation, Isotropic};
@@ -118,6 +119,27 @@ fn press(a_over_h: usize) -> Pressed {
     let force = |r: &NodeResult| -r.frame.normal().dot(&r.force);
     let quarter_load: f64 = nodes.iter().map(force).sum();
     let moment: f64 = nodes.iter().map(|r| force(r) * radial(r).powi(2)).sum();
+    // B takes what A takes: the B nodes' forces balance the A nodes' (the patch-test
+    // condition `sum_b M_kb = sum_j D_kj` of every covered node)
+    let total = |forces: &mut dyn Iterator<Item = Vector>| {
+        forces.fold([0.0; 3], |s, f| {
+            std::array::from_fn(|i| s[i] + f.components()[i])
+        })
+    };
+    let on_a = total(&mut nodes.iter().map(|r| r.force));
+    let on_b = total(
+        &mut analysis
+            .b_node_results(0)
+            .unwrap()
+            .into_iter()
+            .map(|r| r.force),
+    );
+    for i in 0..3 {
+        assert!(
+            (on_a[i] + on_b[i]).abs() < 1e-12 * quarter_load,
+            "{on_a:?} {on_b:?}"
+        );
+    }
     let load = 4.0 * quarter_load;
     let hertz = HertzSphere::new(load, 1.0, e_star());
     let centre = (nodes.iter()).find(|r| radial(r) == 0.0).unwrap();

@@ -1034,8 +1034,8 @@ impl ContactAnalysis {
         Ok(&self.field.get_or_init(|| (q, seconds)).0)
     }
 
-    /// Length of load and displacement vectors: `2 n_nodes` for a model, the host's equation
-    /// count for a host.
+    /// Length of load and displacement vectors: `2 n_nodes` for a plane model, `3 n_nodes` for
+    /// a brick model, the host's equation count for a host.
     pub fn field_len(&self) -> usize {
         self.bodies.field_len()
     }

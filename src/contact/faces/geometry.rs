@@ -25,9 +25,8 @@
 //!
 //! A node on a symmetry plane has the normal of the mirrored model (in the plane) and the
 //! tangent along the plane's normal dropped; on two planes both are dropped and the node is
-//! frictionless ([`ContactGeometry::frictionless_at`]). The contact iteration does not build
-//! a `FaceGeometry` yet: it still reads one tangent per node (issue #43, the active set with
-//! two tangents).
+//! frictionless ([`ContactGeometry::frictionless_at`]). The 3D contact analysis of the brick
+//! model builds one per pair (`ContactAnalysis::solid`, `iteration/solid.rs`).
 
 use super::clip::{AuxPlane, check_face, point, v3};
 use super::mortar::inverse_bilinear;
@@ -641,9 +640,6 @@ impl ContactGeometry for FaceGeometry {
         out
     }
 
-    /// Over B's faces facing A node `k`'s normal (the direction of its faces' summed vector
-    /// areas) onto which the node projects (along the B face's auxiliary normal), the one
-    /// nearest to it decides: depth `-(x_k - q) . n_0 > limit`.
     /// The direction of the sum of the vector areas of B's faces at B node `i` (index into
     /// [`b_nodes`](FaceGeometry::b_nodes)): B's outward normal there, each face weighted by its
     /// area, the 3D twin of the plane's rotated chord.
@@ -659,6 +655,9 @@ impl ContactGeometry for FaceGeometry {
         Vector::solid(n.x, n.y, n.z)
     }
 
+    /// Over B's faces facing A node `k`'s normal (the direction of its faces' summed vector
+    /// areas) onto which the node projects (along the B face's auxiliary normal), the one
+    /// nearest to it decides: depth `-(x_k - q) . n_0 > limit`.
     fn behind(&self, k: usize, x: &[f64], limit: f64) -> Option<(Vec<usize>, f64)> {
         let pts = points(x);
         let (n, _) = self.node_normal(k, pts);
