@@ -674,6 +674,16 @@ mod solid_analysis {
             }
             let load: f64 = nodes.iter().map(|r| r.force.components()[2]).sum();
             assert!((load - p).abs() < 1e-9 * p, "{load} vs {p}");
+            // the constraint rows, 3 per A node (normal, s1, s2), times the recovered field:
+            // every normal gap closed (the stack touched at the start)
+            let rows = analysis.constraint_rows(0).unwrap();
+            assert_eq!(rows.row_ptr.len(), 3 * nodes.len() + 1);
+            let q = analysis.displacement().unwrap();
+            for (k, r) in nodes.iter().enumerate() {
+                let row = rows.row_ptr[3 * k]..rows.row_ptr[3 * k + 1];
+                let closing: f64 = row.map(|i| rows.values[i] * q[rows.columns[i]]).sum();
+                assert!(closing.abs() < 1e-12 * d * r.weight, "{closing} {r:?}");
+            }
         }
     }
 
