@@ -7,8 +7,8 @@
 //! surfaces and contact elements"). It also answers the pair checks (do A and B face each
 //! other, does a point lie inside A), the scales of the iteration (the mean element size), the
 //! reference gap slope of the small-sliding check, the B nodes over open A elements, and what
-//! "neighbours along A" means ([`Adjacency`]). Positions are a flat slice with [`ContactGeometry::dim`] values
-//! per node (node `i` at `x[dim * i..dim * i + dim]`).
+//! "neighbours along A" means ([`Adjacency`]). Positions are a flat slice with
+//! [`ContactGeometry::dim`] values per node (node `i` at `x[dim * i..dim * i + dim]`).
 //!
 //! The plane and axisymmetric implementation, on polylines, is
 //! [`PlaneGeometry`](super::plane::PlaneGeometry); a 3D implementation on faces is a sibling

@@ -62,6 +62,9 @@ pub struct FaceGeometry {
     /// A's nodes' neighbours along A's face edges, and its edge: the nodes on a free edge
     /// that does not lie in a symmetry plane (fixed at the reference positions).
     adjacency: Adjacency,
+    /// Per A face: the symmetry planes (indices into `symmetry`) one of its edges lies in, at
+    /// the reference positions; its auxiliary normal is turned into them ([`Self::aux_plane`]).
+    face_planes: Vec<Vec<usize>>,
     /// Under small kinematics: per A face, the B nodes projecting inside it at the reference.
     interiors: Option<Vec<Vec<usize>>>,
 }
@@ -280,6 +283,18 @@ impl FaceGeometry {
             .map(|p| SymmetryPlane::new(p.point, p.normal))
             .collect::<Result<_>>()?;
         let adjacency = topology.adjacency(&a, pts, &symmetry);
+        let face_planes = a_faces
+            .iter()
+            .map(|f| {
+                let on = |p: &SymmetryPlane| {
+                    edges(f).any(|(u, v)| {
+                        let h = (v3(pts[v]) - v3(pts[u])).norm();
+                        p.contains(pts[u], h) && p.contains(pts[v], h)
+                    })
+                };
+                (0..symmetry.len()).filter(|&i| on(&symmetry[i])).collect()
+            })
+            .collect();
         Ok(FaceGeometry {
             a_faces,
             b_faces,
@@ -290,6 +305,7 @@ impl FaceGeometry {
             dropped,
             topology,
             adjacency,
+            face_planes,
             interiors: None,
         })
     }
@@ -316,6 +332,29 @@ impl FaceGeometry {
 
     fn surface<'a>(faces: &'a [[usize; 4]], x: &'a [[f64; 3]]) -> SurfaceFaces<'a> {
         SurfaceFaces { x, faces }
+    }
+
+    /// The auxiliary plane of A face `i` (corners `q`): its own ([`AuxPlane::of`]), or for a
+    /// face with an edge in a symmetry plane, along its centre normal turned into the plane
+    /// (both planes: along their common line). Its edge there and B's, both in the plane,
+    /// then project onto the plane's one trace, as they would in the mirrored model, where
+    /// the face's mirror image cancels the normal's component across the plane; along the
+    /// face's own normal B's edge would be shifted by the gap times that component, leaving
+    /// a sliver of the face uncovered (or B's edge overhanging it) once the surfaces deform.
+    fn aux_plane(&self, i: usize, q: &Quad) -> AuxPlane {
+        let own = AuxPlane::of(q);
+        if self.face_planes[i].is_empty() {
+            return own;
+        }
+        let m = |p: usize| v3(self.symmetry[self.face_planes[i][p]].normal);
+        let n = match self.face_planes[i].len() {
+            1 => own.normal - m(0) * own.normal.dot(&m(0)),
+            _ => {
+                let line = m(0).cross(&m(1));
+                line * line.dot(&own.normal)
+            }
+        };
+        AuxPlane::along(q, n.normalize())
     }
 
     /// The corners of face `f` at positions `x`.
@@ -392,7 +431,7 @@ impl ContactGeometry for FaceGeometry {
             Self::surface(&self.a_faces, pts),
             Self::surface(&self.b_faces, pts),
         );
-        let mortar = SurfaceMortar::new(sa, sb, reach)?;
+        let mortar = SurfaceMortar::on_planes(sa, sb, reach, |i, q| self.aux_plane(i, q))?;
         let frames = SurfaceFrames::new(sa, Some(self.reference), &self.symmetry)?;
         out.nodes.resize(self.a.len(), ContactNode::empty(3));
         for (node, &k) in out.nodes.iter_mut().zip(&self.a) {

@@ -252,10 +252,10 @@ impl ActiveSet {
         next
     }
 
-    /// The open nodes of pair `p` that close in this iteration (docs/method.md, "The rules", step 3a,
-    /// damped), in increasing order. `depth[k]` is `Some(d)` for an open node that penetrates
-    /// (`d < 0`: the deeper of its weighted gap and any B node's distance that closes it),
-    /// `None` otherwise. Per patch of penetrating nodes connected along A (`adjacency`; in the
+    /// The open nodes of pair `p` that close in this iteration (docs/method.md, "The rules",
+    /// step 3a, damped), in increasing order. `depth[k]` is `Some(d)` for an open node that
+    /// penetrates (`d < 0`: the deeper of its weighted gap and any B node's distance that
+    /// closes it), `None` otherwise. Per patch of penetrating nodes connected along A (`adjacency`; in the
     /// plane a run of consecutive nodes):
     /// * enclosed by the zone (every node around it closed, none of it on A's edge: a hole in
     ///   the zone): all of it;
