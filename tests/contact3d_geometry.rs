@@ -578,3 +578,182 @@ mod face_geometry {
         assert!(err.contains("side A has no face"), "{err}");
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// The 3D contact analysis of the brick model: `ContactAnalysis::solid`.
+
+mod solid_analysis {
+    use hycon::contact::faces::SymmetryPlane;
+    use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeState};
+    use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
+    use hycon::solid::geometry::FACES;
+    use hycon::solid::model::SolidModel;
+    use hycon::solid::{BrickFormulation, Isotropic};
+
+    /// A unit cube of 2 x 2 bricks (A, its bottom) on a unit cube of 3 x 3 bricks (B, its
+    /// top): non-conforming faces, the same footprint.
+    fn stack() -> ContactMesh {
+        BlockOnFlat {
+            size: [1.0; 3],
+            cells: [2, 2, 1],
+            flat: [1.0; 3],
+            flat_cells: [3, 3, 1],
+            angle: 0.0,
+        }
+        .build()
+        .unwrap()
+    }
+
+    /// The stack's model (`E = 1`, `nu = 0.3`): the flat's bottom held along `z`, the block's
+    /// top prescribed along `z`; each body held in its plane by a corner (`x`, `y`) and the
+    /// next corner along `x` (`y`), which the lateral expansion about the first leaves at
+    /// rest.
+    fn model(c: &ContactMesh) -> SolidModel {
+        let m = Isotropic::new(1.0, 0.3).unwrap();
+        let mut model =
+            SolidModel::new(c.mesh.clone(), vec![m, m], BrickFormulation::Hybrid18).unwrap();
+        for (nodes, z) in [(&c.a_top, 1.0), (&c.b_bottom, -1.0)] {
+            for &n in nodes {
+                model.fix(n, 2, 0.0);
+            }
+            let at = |x: f64, y: f64| {
+                *(nodes.iter())
+                    .find(|&&n| c.mesh.nodes[n] == [x, y, z])
+                    .unwrap()
+            };
+            model.fix(at(-0.5, -0.5), 0, 0.0);
+            model.fix(at(-0.5, -0.5), 1, 0.0);
+            model.fix(at(0.5, -0.5), 1, 0.0);
+        }
+        model
+    }
+
+    fn pair(c: &ContactMesh, friction: f64) -> FacePair {
+        FacePair {
+            a: c.a_faces.clone(),
+            b: c.b_faces.clone(),
+            friction,
+        }
+    }
+
+    /// The contact patch test through the whole analysis: the stack pressed by `d` is in
+    /// uniaxial stress `p = E d / 2` (two unit heights of `E = 1`), which the bricks and the
+    /// mortar integrals of non-conforming faces represent exactly, so every A node's multiplier
+    /// is `-p` to round-off, frictionless and with friction (the lateral expansions of the two
+    /// bodies match: no shear).
+    #[test]
+    fn a_pressed_stack_passes_the_contact_patch_test() {
+        let c = stack();
+        for friction in [0.0, 0.3] {
+            let mut analysis = ContactAnalysis::solid(
+                model(&c),
+                vec![pair(&c, friction)],
+                &[],
+                ContactOptions::default(),
+            )
+            .unwrap();
+            let n = 3 * c.mesh.n_nodes();
+            let d = 1e-3;
+            let mut qp = vec![0.0; n];
+            for &k in &c.a_top {
+                qp[3 * k + 2] = -d;
+            }
+            analysis.increment(&vec![0.0; n], &qp).unwrap();
+            let nodes = analysis.node_results(0).unwrap();
+            assert_eq!(nodes.len(), 9);
+            let p = d / 2.0;
+            for r in &nodes {
+                let expected = if friction == 0.0 {
+                    NodeState::Frictionless
+                } else {
+                    NodeState::Stick
+                };
+                assert_eq!(r.state, expected, "{r:?}");
+                assert!((r.tn + p).abs() < 1e-9 * p, "{r:?}");
+                assert!(r.ts.norm() < 1e-9 * p, "{r:?}");
+            }
+            let load: f64 = nodes.iter().map(|r| r.force.components()[2]).sum();
+            assert!((load - p).abs() < 1e-9 * p, "{load} vs {p}");
+            // the constraint rows, 3 per A node (normal, s1, s2), times the recovered field:
+            // every normal gap closed (the stack touched at the start)
+            let rows = analysis.constraint_rows(0).unwrap();
+            assert_eq!(rows.row_ptr.len(), 3 * nodes.len() + 1);
+            let q = analysis.displacement().unwrap();
+            for (k, r) in nodes.iter().enumerate() {
+                let row = rows.row_ptr[3 * k]..rows.row_ptr[3 * k + 1];
+                let closing: f64 = row.map(|i| rows.values[i] * q[rows.columns[i]]).sum();
+                assert!(closing.abs() < 1e-12 * d * r.weight, "{closing} {r:?}");
+            }
+        }
+    }
+
+    /// The constructor's checks, each named: friction, an empty side, a node out of range, a
+    /// face listed clockwise, an interior face, a face listed twice, a node on both sides, a
+    /// non-finite position, a bad symmetry plane.
+    #[test]
+    fn bad_pairs_are_named() {
+        let c = stack();
+        let refused = |model: SolidModel, p: FacePair, symmetry: &[SymmetryPlane]| {
+            ContactAnalysis::solid(model, vec![p], symmetry, ContactOptions::default())
+                .unwrap_err()
+                .to_string()
+        };
+        let bad = |p: FacePair, what: &str| {
+            let e = refused(model(&c), p, &[]);
+            assert!(e.contains("contact pair 0") && e.contains(what), "{e}");
+        };
+        bad(pair(&c, -0.1), "friction");
+        bad(
+            FacePair {
+                a: Vec::new(),
+                ..pair(&c, 0.0)
+            },
+            "side A has no face",
+        );
+        let n = c.mesh.n_nodes();
+        let mut p = pair(&c, 0.0);
+        p.b[2][1] = n + 3;
+        let face = p.b[2];
+        bad(
+            p,
+            &format!(
+                "B face 2 {face:?}: node {} is not a node of the model ({n} nodes)",
+                n + 3
+            ),
+        );
+        let mut p = pair(&c, 0.0);
+        p.a[1].reverse();
+        let face = p.a[1];
+        bad(p, &format!("A face 1 {face:?}: listed clockwise"));
+        // the face between the block's first two bricks
+        let [e0, e1] = [c.mesh.elements[0], c.mesh.elements[1]];
+        let shared = (FACES.iter())
+            .map(|f| f.map(|k| e0[k]))
+            .find(|f| f.iter().all(|k| e1.contains(k)))
+            .unwrap();
+        let mut p = pair(&c, 0.0);
+        p.a.push(shared);
+        bad(p, "an interior face");
+        let mut p = pair(&c, 0.0);
+        p.a.push(p.a[0]);
+        bad(p, "listed twice");
+        // a side face of the block at its bottom edge shares two nodes with A
+        let side = (FACES.iter())
+            .map(|f| f.map(|k| e0[k]))
+            .find(|f| f.iter().all(|&k| c.mesh.nodes[k][0] == -0.5))
+            .unwrap();
+        let mut p = pair(&c, 0.0);
+        p.b.push(side);
+        bad(p, "belongs to both sides");
+        let mut m = model(&c);
+        m.mesh.nodes[c.a_faces[0][0]][2] = f64::NAN;
+        let e = refused(m, pair(&c, 0.0), &[]);
+        assert!(e.contains("non-finite position"), "{e}");
+        let plane = SymmetryPlane {
+            point: [0.0; 3],
+            normal: [f64::NAN, 0.0, 0.0],
+        };
+        let e = refused(model(&c), pair(&c, 0.0), &[plane]);
+        assert!(e.contains("contact pair 0"), "{e}");
+    }
+}

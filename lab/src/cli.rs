@@ -307,6 +307,16 @@ enum Bench {
         #[arg(long, default_value_t = 8)]
         positions: usize,
     },
+    /// Hertz's sphere in 3D (`hycon_lab::hertz3d`): the quarter paraboloid cap on a block,
+    /// frictionless, pressed by Hertz's approach of the target radius, per a/h: the contact
+    /// radius and the peak pressure against Hertz at the computed load, the pressure within
+    /// a/2, the load against Hertz's for the approach (above it by the finite bodies'
+    /// stiffening), and the time.
+    Hertz3d {
+        /// Faces per target contact radius at the centre, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [4, 8])]
+        a_over_h: Vec<usize>,
+    },
     /// What skipping unneeded work saves, on the reference Hertz scene (frictionless, a = R/64,
     /// calibration + 3 increments): each figure the fastest of --repeats runs.
     Skip {
@@ -910,6 +920,31 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
 }
 
 /// `bench sphere-edge`: a row per run, a summary per n and R/a, the rate over n per R/a.
+/// `hycon bench hertz3d`: one row per a/h.
+fn hertz3d(a_over_h: &[usize]) -> AnyResult {
+    println!(
+        "{:>4} {:>7} {:>6} {:>8} {:>8} {:>10} {:>8} {:>8}",
+        "a/h", "active", "iters", "a %", "p0 %", "p(r<a/2)%", "P %", "seconds"
+    );
+    for &n in a_over_h {
+        let clock = std::time::Instant::now();
+        let mut cap = hycon_lab::hertz3d::QuarterCap::new(
+            n,
+            hycon::contact::iteration::ContactOptions::default(),
+        )?;
+        let c = cap.press()?;
+        let [radius, peak, load] = c.errors().map(|e| 100.0 * e);
+        println!(
+            "{n:>4} {:>7} {:>6} {radius:>+8.3} {peak:>+8.3} {:>10.3} {load:>+8.3} {:>8.2}",
+            c.active,
+            c.iterations,
+            100.0 * c.interior,
+            clock.elapsed().as_secs_f64()
+        );
+    }
+    Ok(())
+}
+
 fn sphere_edge(ns: &[usize], r_over_a: &[usize], positions: usize) -> AnyResult {
     println!(
         "{:>4} {:>4} {:>8} {:>5} {:>8} {:>8} {:>8} {:>8}",
@@ -1055,6 +1090,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             r_over_a,
             positions,
         } => sphere_edge(&n, &r_over_a, positions)?,
+        Bench::Hertz3d { a_over_h } => hertz3d(&a_over_h)?,
         Bench::Presses {
             count,
             seed,

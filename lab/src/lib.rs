@@ -25,6 +25,7 @@ pub mod cases;
 pub mod closed3d;
 pub mod examples;
 pub mod gmsh;
+pub mod hertz3d;
 pub mod presses;
 pub mod report;
 pub mod scene;

@@ -702,3 +702,26 @@ fn bench_brick_prints_the_table_and_writes_the_plot() {
     let bad = hycon(&["bench", "brick", "--k", "0"]);
     assert!(!bad.status.success());
 }
+
+/// `hycon bench hertz3d` prints one row per a/h: the 3D Hertz comparison of
+/// `hycon_lab::hertz3d` (the numbers themselves are checked in `contact_hertz3d`).
+#[test]
+fn bench_hertz3d_prints_the_comparison() {
+    let out = hycon(&["bench", "hertz3d", "--a-over-h", "4"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let row: Vec<&str> = text
+        .lines()
+        .find(|l| l.trim_start().starts_with("4 "))
+        .unwrap_or_else(|| panic!("{text}"))
+        .split_whitespace()
+        .collect();
+    assert_eq!(row.len(), 8, "{text}");
+    assert_eq!(row[1], "15", "active A nodes: {text}");
+    let radius: f64 = row[3].parse().unwrap();
+    assert!((radius - 1.52).abs() < 0.01, "{text}");
+}

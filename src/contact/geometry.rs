@@ -7,8 +7,8 @@
 //! surfaces and contact elements"). It also answers the pair checks (do A and B face each
 //! other, does a point lie inside A), the scales of the iteration (the mean element size), the
 //! reference gap slope of the small-sliding check, the B nodes over open A elements, and what
-//! "neighbours along A" means. Positions are a flat slice with [`ContactGeometry::dim`] values
-//! per node (node `i` at `x[dim * i..dim * i + dim]`).
+//! "neighbours along A" means ([`Adjacency`]). Positions are a flat slice with
+//! [`ContactGeometry::dim`] values per node (node `i` at `x[dim * i..dim * i + dim]`).
 //!
 //! The plane and axisymmetric implementation, on polylines, is
 //! [`PlaneGeometry`](super::plane::PlaneGeometry); a 3D implementation on faces is a sibling
@@ -225,6 +225,51 @@ pub struct Unresolved {
     pub length: f64,
 }
 
+/// How a pair's A nodes connect along A: the neighbours of each (the nodes it shares an
+/// element edge with) and whether it lies on A's edge (the end of a polyline; a node on a
+/// free edge of a face surface, unless that edge lies in a symmetry plane, across which the
+/// mirrored surface goes on). What "neighbours along A" means to the active set (a run of
+/// penetrating nodes becomes a connected patch) and to the fallback's candidates.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Adjacency {
+    neighbours: Vec<Vec<usize>>,
+    edge: Vec<bool>,
+}
+
+impl Adjacency {
+    /// The nodes of a chain of `n` nodes: `k - 1` and `k + 1` are the neighbours of `k`, the
+    /// first and the last are its edge.
+    pub fn chain(n: usize) -> Self {
+        Adjacency {
+            neighbours: (0..n)
+                .map(|k| {
+                    let before = k.checked_sub(1);
+                    let after = (k + 1 < n).then_some(k + 1);
+                    before.into_iter().chain(after).collect()
+                })
+                .collect(),
+            edge: (0..n).map(|k| k == 0 || k + 1 == n).collect(),
+        }
+    }
+
+    /// Per node (index into A) its neighbours (indices into A, sorted, without itself) and
+    /// whether it lies on A's edge.
+    pub fn new(neighbours: Vec<Vec<usize>>, edge: Vec<bool>) -> Self {
+        debug_assert_eq!(neighbours.len(), edge.len());
+        Adjacency { neighbours, edge }
+    }
+
+    /// The neighbours of node `k` (indices into A, sorted).
+    pub fn neighbours(&self, k: usize) -> &[usize] {
+        &self.neighbours[k]
+    }
+
+    /// Whether node `k` lies on A's edge.
+    pub fn on_edge(&self, k: usize) -> bool {
+        self.edge[k]
+    }
+}
+
 /// The geometry of one contact pair, as the contact core consumes it. Positions `x` are flat,
 /// [`dim`](Self::dim) values per node, indexed by global node id.
 pub trait ContactGeometry: std::fmt::Debug + Send + Sync {
@@ -251,6 +296,9 @@ pub trait ContactGeometry: std::fmt::Debug + Send + Sync {
         self.evaluate_into(x, reach, &mut out)?;
         Ok(out)
     }
+
+    /// How A's nodes connect along A ([`Adjacency`]).
+    fn adjacency(&self) -> &Adjacency;
 
     /// The mean size of A's elements at `x`: the length scale of the gap tolerance and of the
     /// search distance.

@@ -99,6 +99,7 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
+mod solid;
 use active_set::{
     ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
     NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
@@ -112,6 +113,7 @@ use loads::LoadSolve;
 use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
+pub use solid::FacePair;
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
 /// ([`ContactAnalysis::new`], [`ContactAnalysis::host`]) build.
@@ -1032,8 +1034,8 @@ impl ContactAnalysis {
         Ok(&self.field.get_or_init(|| (q, seconds)).0)
     }
 
-    /// Length of load and displacement vectors: `2 n_nodes` for a model, the host's equation
-    /// count for a host.
+    /// Length of load and displacement vectors: `2 n_nodes` for a plane model, `3 n_nodes` for
+    /// a brick model, the host's equation count for a host.
     pub fn field_len(&self) -> usize {
         self.bodies.field_len()
     }

@@ -14,7 +14,8 @@
 //!   at given positions (the reference ones for small kinematics, the current ones for
 //!   finite): nodal frames, weights, the mortar matrices `F^A` and `F^B`, the weighted gap
 //!   `R_C`, coverage and the coupling rows; [`plane::facing`], the orientation checks.
-//! * [`faces`]: the mortar integrals of brick faces (3D, not yet behind the seam).
+//! * [`faces`]: the 3D geometry of a pair of brick-face surfaces behind the seam,
+//!   [`faces::FaceGeometry`], and its mortar integrals by projection and clipping.
 //! * [`bodies`]: the elastic bodies as the iteration sees them: hycon's own model, or a host
 //!   FE code's system (its stiffness in CSR, or its own solver through a callback).
 //! * [`handover`]: a host's hand-overs checked against each other (sections, radii, elements).

@@ -128,6 +128,21 @@ impl AuxPlane {
         }
     }
 
+    /// The plane of A face `a` through its centre `x_0` normal to the unit vector `normal`
+    /// (not parallel to the face), `e_1` along `x_s` made normal to it: a face with an edge on
+    /// a symmetry plane is projected along its centre normal turned into the plane, so that
+    /// its edge there and B's project onto the plane's one trace (see
+    /// [`FaceGeometry`](super::FaceGeometry)).
+    pub fn along(a: &Quad, normal: Vector3<f64>) -> Self {
+        let (xs, _) = tangents(a, 0.0, 0.0);
+        let e1 = (xs - normal * xs.dot(&normal)).normalize();
+        AuxPlane {
+            origin: point(a, 0.0, 0.0),
+            normal,
+            basis: [e1, normal.cross(&e1)],
+        }
+    }
+
     /// In-plane coordinates `y = ((p - x_0) . e_1, (p - x_0) . e_2)` of the projection of `p`
     /// along `n_0`.
     pub fn project(&self, p: [f64; 3]) -> Vector2<f64> {
@@ -191,9 +206,17 @@ fn convex(q: &[Vector2<f64>; 4], tol: f64) -> bool {
 /// [`Error::InvalidInput`] for a face failing [`check_face`], or projecting to a non-convex
 /// quadrilateral (A re-entrant; B re-entrant, or warped and seen nearly edge-on).
 pub fn overlap(a: &Quad, b: &Quad) -> Result<Option<Overlap>> {
+    overlap_on(a, b, AuxPlane::of(a))
+}
+
+/// [`overlap`] on the auxiliary plane `plane` of `a` (its own, [`AuxPlane::of`], or one
+/// [`AuxPlane::along`] a given normal).
+///
+/// # Errors
+/// Those of [`overlap`].
+pub fn overlap_on(a: &Quad, b: &Quad, plane: AuxPlane) -> Result<Option<Overlap>> {
     let h = check_face(a, "A face")?;
     let hb = check_face(b, "B face")?;
-    let plane = AuxPlane::of(a);
     let (bs, bt) = tangents(b, 0.0, 0.0);
     if bs.cross(&bt).dot(&plane.normal) >= 0.0 {
         return Ok(None);

@@ -25,16 +25,16 @@
 //!
 //! A node on a symmetry plane has the normal of the mirrored model (in the plane) and the
 //! tangent along the plane's normal dropped; on two planes both are dropped and the node is
-//! frictionless ([`ContactGeometry::frictionless_at`]). The contact iteration does not build
-//! a `FaceGeometry` yet: it still reads one tangent per node (issue #43, the active set with
-//! two tangents).
+//! frictionless ([`ContactGeometry::frictionless_at`]). The 3D contact analysis of the brick
+//! model builds one per pair (`ContactAnalysis::solid`, `iteration/solid.rs`).
 
 use super::clip::{AuxPlane, check_face, point, v3};
 use super::mortar::inverse_bilinear;
 use super::surface::{COVERED, SurfaceFaces, SurfaceMortar};
 use super::{CORNERS, Quad, SurfaceFrames, SymmetryPlane};
 use crate::contact::geometry::{
-    BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally, Unresolved,
+    Adjacency, BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally,
+    Unresolved,
 };
 use crate::contact::space::{Frame, Vector};
 use crate::error::{Error, Result};
@@ -59,6 +59,12 @@ pub struct FaceGeometry {
     dropped: Vec<[bool; 2]>,
     /// A's faces around its nodes, neighbours and free edges.
     topology: Topology,
+    /// A's nodes' neighbours along A's face edges, and its edge: the nodes on a free edge
+    /// that does not lie in a symmetry plane (fixed at the reference positions).
+    adjacency: Adjacency,
+    /// Per A face: the symmetry planes (indices into `symmetry`) one of its edges lies in, at
+    /// the reference positions; its auxiliary normal is turned into them ([`Self::aux_plane`]).
+    face_planes: Vec<Vec<usize>>,
     /// Under small kinematics: per A face, the B nodes projecting inside it at the reference.
     interiors: Option<Vec<Vec<usize>>>,
 }
@@ -214,6 +220,26 @@ impl Topology {
     }
 }
 
+impl Topology {
+    /// The [`Adjacency`] of A's nodes `a` (sorted ids) at positions `x`: the neighbours along
+    /// face edges, and on A's edge the nodes of the free edges that do not lie in one of the
+    /// `symmetry` planes (both ends on it, to [`SymmetryPlane::contains`] of the edge's
+    /// length).
+    fn adjacency(&self, a: &[usize], x: &[[f64; 3]], symmetry: &[SymmetryPlane]) -> Adjacency {
+        let index = |k: usize| a.binary_search(&k).expect("a node of A's faces");
+        let mut edge = vec![false; a.len()];
+        for &(p, q) in &self.free_edges {
+            let h = (v3(x[q]) - v3(x[p])).norm();
+            let mirrored = (symmetry.iter()).any(|s| s.contains(x[p], h) && s.contains(x[q], h));
+            if !mirrored {
+                edge[index(p)] = true;
+                edge[index(q)] = true;
+            }
+        }
+        Adjacency::new(self.neighbours.clone(), edge)
+    }
+}
+
 impl FaceGeometry {
     /// The pair of A faces `a_faces` and B faces `b_faces` (node ids into the flat positions
     /// `x`, 3 per node, in [`crate::solid::geometry::FACES`] order, outward), checked at `x`
@@ -252,10 +278,23 @@ impl FaceGeometry {
         )?;
         let dropped = a.iter().map(|k| frames.frames[k].dropped).collect();
         let topology = Topology::new(&a, &a_faces);
-        let symmetry = symmetry
+        let symmetry: Vec<SymmetryPlane> = symmetry
             .iter()
             .map(|p| SymmetryPlane::new(p.point, p.normal))
             .collect::<Result<_>>()?;
+        let adjacency = topology.adjacency(&a, pts, &symmetry);
+        let face_planes = a_faces
+            .iter()
+            .map(|f| {
+                let on = |p: &SymmetryPlane| {
+                    edges(f).any(|(u, v)| {
+                        let h = (v3(pts[v]) - v3(pts[u])).norm();
+                        p.contains(pts[u], h) && p.contains(pts[v], h)
+                    })
+                };
+                (0..symmetry.len()).filter(|&i| on(&symmetry[i])).collect()
+            })
+            .collect();
         Ok(FaceGeometry {
             a_faces,
             b_faces,
@@ -265,6 +304,8 @@ impl FaceGeometry {
             symmetry,
             dropped,
             topology,
+            adjacency,
+            face_planes,
             interiors: None,
         })
     }
@@ -291,6 +332,29 @@ impl FaceGeometry {
 
     fn surface<'a>(faces: &'a [[usize; 4]], x: &'a [[f64; 3]]) -> SurfaceFaces<'a> {
         SurfaceFaces { x, faces }
+    }
+
+    /// The auxiliary plane of A face `i` (corners `q`): its own ([`AuxPlane::of`]), or for a
+    /// face with an edge in a symmetry plane, along its centre normal turned into the plane
+    /// (both planes: along their common line). Its edge there and B's, both in the plane,
+    /// then project onto the plane's one trace, as they would in the mirrored model, where
+    /// the face's mirror image cancels the normal's component across the plane; along the
+    /// face's own normal B's edge would be shifted by the gap times that component, leaving
+    /// a sliver of the face uncovered (or B's edge overhanging it) once the surfaces deform.
+    fn aux_plane(&self, i: usize, q: &Quad) -> AuxPlane {
+        let own = AuxPlane::of(q);
+        if self.face_planes[i].is_empty() {
+            return own;
+        }
+        let m = |p: usize| v3(self.symmetry[self.face_planes[i][p]].normal);
+        let n = match self.face_planes[i].len() {
+            1 => own.normal - m(0) * own.normal.dot(&m(0)),
+            _ => {
+                let line = m(0).cross(&m(1));
+                line * line.dot(&own.normal)
+            }
+        };
+        AuxPlane::along(q, n.normalize())
     }
 
     /// The corners of face `f` at positions `x`.
@@ -343,6 +407,11 @@ impl ContactGeometry for FaceGeometry {
         &self.a
     }
 
+    /// The nodes sharing a face edge; the edge: free edges of A outside the symmetry planes.
+    fn adjacency(&self) -> &Adjacency {
+        &self.adjacency
+    }
+
     /// The [module docs](self)' quantities from [`SurfaceMortar`] over the face pairs within
     /// `reach` and [`SurfaceFrames`] with the pair's reference direction and symmetry planes.
     ///
@@ -362,7 +431,7 @@ impl ContactGeometry for FaceGeometry {
             Self::surface(&self.a_faces, pts),
             Self::surface(&self.b_faces, pts),
         );
-        let mortar = SurfaceMortar::new(sa, sb, reach)?;
+        let mortar = SurfaceMortar::on_planes(sa, sb, reach, |i, q| self.aux_plane(i, q))?;
         let frames = SurfaceFrames::new(sa, Some(self.reference), &self.symmetry)?;
         out.nodes.resize(self.a.len(), ContactNode::empty(3));
         for (node, &k) in out.nodes.iter_mut().zip(&self.a) {
@@ -610,9 +679,6 @@ impl ContactGeometry for FaceGeometry {
         out
     }
 
-    /// Over B's faces facing A node `k`'s normal (the direction of its faces' summed vector
-    /// areas) onto which the node projects (along the B face's auxiliary normal), the one
-    /// nearest to it decides: depth `-(x_k - q) . n_0 > limit`.
     /// The direction of the sum of the vector areas of B's faces at B node `i` (index into
     /// [`b_nodes`](FaceGeometry::b_nodes)): B's outward normal there, each face weighted by its
     /// area, the 3D twin of the plane's rotated chord.
@@ -628,6 +694,9 @@ impl ContactGeometry for FaceGeometry {
         Vector::solid(n.x, n.y, n.z)
     }
 
+    /// Over B's faces facing A node `k`'s normal (the direction of its faces' summed vector
+    /// areas) onto which the node projects (along the B face's auxiliary normal), the one
+    /// nearest to it decides: depth `-(x_k - q) . n_0 > limit`.
     fn behind(&self, k: usize, x: &[f64], limit: f64) -> Option<(Vec<usize>, f64)> {
         let pts = points(x);
         let (n, _) = self.node_normal(k, pts);

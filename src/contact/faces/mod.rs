@@ -14,8 +14,10 @@
 //!   normals point against each other, `n_B . n_0 < 0`; other B faces are ignored, as B
 //!   segments that do not face A are in the plane code.
 //! * **Auxiliary plane** of an A face ([`AuxPlane`]): through its centre `x_0 = x(0, 0)`,
-//!   normal `n_0 = x_s x x_t / |x_s x x_t|` at the centre. Both faces are projected onto it
-//!   **along `n_0`** (one constant direction per A face, the 3D twin of the plane code's
+//!   normal `n_0 = x_s x x_t / |x_s x x_t|` at the centre (for a face with an edge on a
+//!   symmetry plane of the model, [`FaceGeometry`] turns `n_0` into the plane:
+//!   [`AuxPlane::along`]). Both faces are projected onto it **along `n_0`** (one constant
+//!   direction per A face, the 3D twin of the plane code's
 //!   projection along a segment's constant normal). A point `y` of the plane has a point
 //!   `x^A(y)` on A and a point `x^B(y)` on B that both project to `y`; they differ by a multiple
 //!   of `n_0`, the **gap** `g(y) = (x^B - x^A) . n_0`, positive open, negative penetrating.

@@ -12,7 +12,7 @@
 //! its error against a fine subdivision. Whatever the shapes, `sum_b M_ab = w_a` holds to
 //! round-off (the `M_b` sum to one at every point), which is what the patch test needs.
 
-use super::clip::{Overlap, check_face, overlap, point, tangents};
+use super::clip::{AuxPlane, Overlap, check_face, overlap_on, point, tangents};
 use super::{Quad, shapes};
 use crate::error::{Error, Result};
 use crate::fem::quadrature::GAUSS3;
@@ -98,17 +98,26 @@ pub struct FacePair {
 }
 
 /// The mortar integrals of A face `a` against B face `b`, `None` where they do not overlap (or
-/// B does not face A; see [`overlap`]). The overlap polygon is split into triangles from its
-/// vertex centroid (inside, the polygon being convex) and each triangle integrated with
+/// B does not face A; see [`overlap`](super::clip::overlap)). The overlap polygon is split
+/// into triangles from its vertex centroid (inside, the polygon being convex) and each
+/// triangle integrated with
 /// [`TRIANGLE_RULE`]; a point `y` maps to `(s, t)` on each face by [`inverse_bilinear`] of the
 /// projected corners, to `x^A = x_A(s, t)` and `x^B = x_B(s', t')`, and
 /// `dA = |x_s x x_t| / |(x_s x x_t) . n_0| dy` (A's tangents).
 ///
 /// # Errors
-/// Those of [`overlap`]; [`Error::InvalidInput`] if an inverse map fails (a face folded over
-/// the overlap).
+/// Those of [`overlap`](super::clip::overlap); [`Error::InvalidInput`] if an inverse map
+/// fails (a face folded over the overlap).
 pub fn face_pair(a: &Quad, b: &Quad) -> Result<Option<FacePair>> {
-    let Some(overlap) = overlap(a, b)? else {
+    face_pair_on(a, b, AuxPlane::of(a))
+}
+
+/// [`face_pair`] on the auxiliary plane `plane` of `a` ([`overlap_on`]).
+///
+/// # Errors
+/// Those of [`face_pair`].
+pub fn face_pair_on(a: &Quad, b: &Quad, plane: AuxPlane) -> Result<Option<FacePair>> {
+    let Some(overlap) = overlap_on(a, b, plane)? else {
         return Ok(None);
     };
     let hb = super::clip::size(b);

@@ -1,6 +1,8 @@
 //! The mortar integrals assembled over two surfaces of brick faces, per node.
 
-use super::{Quad, face_mass, face_pair, pair_faces};
+use super::clip::AuxPlane;
+use super::mortar::face_pair_on;
+use super::{Quad, face_mass, pair_faces};
 use crate::error::{Error, Result};
 use std::collections::BTreeMap;
 
@@ -35,7 +37,8 @@ impl SurfaceFaces<'_> {
 }
 
 /// The mortar integrals of surface A (the multiplier side) against surface B, by node ids:
-/// sums over the overlapping face pairs of [`face_pair`] and over A's faces of [`face_mass`].
+/// sums over the overlapping face pairs of [`face_pair`](super::face_pair) and over A's faces
+/// of [`face_mass`].
 ///
 /// `d` is summed over the **covered** parts (Puso and Laursen's segment-wise `D`), so that for
 /// a fully covered A node `sum_j d[k, j] = covered[k] = sum_b m[k, b]` to round-off whatever
@@ -69,6 +72,20 @@ impl SurfaceMortar {
     /// [`Error::InvalidInput`] for a node id out of range, or a failing face or face pair
     /// (the message names the faces by their index in `a.faces`, `b.faces`).
     pub fn new(a: SurfaceFaces, b: SurfaceFaces, search: f64) -> Result<Self> {
+        Self::on_planes(a, b, search, |_, q| AuxPlane::of(q))
+    }
+
+    /// [`new`](Self::new) with A face `i` (corners `q`) projected on `plane(i, q)` instead of
+    /// its own auxiliary plane.
+    ///
+    /// # Errors
+    /// As [`new`](Self::new).
+    pub fn on_planes(
+        a: SurfaceFaces,
+        b: SurfaceFaces,
+        search: f64,
+        plane: impl Fn(usize, &Quad) -> AuxPlane,
+    ) -> Result<Self> {
         let (qa, qb) = (a.corners("A")?, b.corners("B")?);
         let mut out = SurfaceMortar::default();
         let at = |i: usize, e: Error, b: &str| match e {
@@ -83,7 +100,8 @@ impl SurfaceMortar {
             }
         }
         for (i, j) in pair_faces(&qa, &qb, search)? {
-            let pair = face_pair(&qa[i], &qb[j]).map_err(|e| at(i, e, &format!(", B face {j}")))?;
+            let pair = face_pair_on(&qa[i], &qb[j], plane(i, &qa[i]))
+                .map_err(|e| at(i, e, &format!(", B face {j}")))?;
             let Some(pair) = pair else { continue };
             out.pairs += 1;
             let (ia, ib) = (a.faces[i], b.faces[j]);

@@ -94,11 +94,10 @@ impl ContactAnalysis {
                     rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
                 })
                 .collect();
+            let adjacency = self.geometries[p].adjacency();
             let candidate = |k: usize| {
                 nodes[k].is_covered()
-                    && (penetrates[k]
-                        || (k > 0 && penetrates[k - 1])
-                        || (k + 1 < nodes.len() && penetrates[k + 1]))
+                    && (penetrates[k] || adjacency.neighbours(k).iter().any(|&j| penetrates[j]))
             };
             states.push(
                 (0..nodes.len())

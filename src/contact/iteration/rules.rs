@@ -74,7 +74,8 @@ impl ContactAnalysis {
             }
             // coverage is checked on the converged state only: an intermediate iterate may
             // move a node at the end of a surface a hair past the other's end
-            new.push(set.propose(p, &facts, &tolerances, &hits));
+            let adjacency = self.geometries[p].adjacency();
+            new.push(set.propose(p, &facts, &tolerances, &hits, adjacency));
         }
         Ok(new)
     }

@@ -10,7 +10,9 @@
 pub mod facing;
 pub mod mortar;
 
-use super::geometry::{BNodeDistance, ContactGeometry, ContactSurface, Facing, Unresolved};
+use super::geometry::{
+    Adjacency, BNodeDistance, ContactGeometry, ContactSurface, Facing, Unresolved,
+};
 use super::space::Vector;
 use crate::element::geometry::edge_normal;
 use crate::error::Result;
@@ -26,12 +28,15 @@ pub struct PlaneGeometry {
     b: Vec<usize>,
     measure: SurfaceMeasure,
     interiors: Option<SegmentInteriors>,
+    /// A as a chain.
+    adjacency: Adjacency,
 }
 
 impl PlaneGeometry {
     /// The pair of polylines `a`, `b` with A's surface measure `measure`.
     pub fn new(a: Vec<usize>, b: Vec<usize>, measure: SurfaceMeasure) -> Self {
         PlaneGeometry {
+            adjacency: Adjacency::chain(a.len()),
             a,
             b,
             measure,
@@ -64,6 +69,11 @@ impl ContactGeometry for PlaneGeometry {
 
     fn a_nodes(&self) -> &[usize] {
         &self.a
+    }
+
+    /// A's chain: `k - 1` and `k + 1`, its ends the edge.
+    fn adjacency(&self) -> &Adjacency {
+        &self.adjacency
     }
 
     fn evaluate_into(&self, x: &[f64], reach: f64, out: &mut ContactSurface) -> Result<()> {

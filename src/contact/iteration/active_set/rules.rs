@@ -24,6 +24,7 @@
 
 use super::super::{FrictionLaw, NodeState, SlipDirection, Tangential, Traction};
 use super::{ActiveSet, BNodes, NodeKey};
+use crate::contact::geometry::Adjacency;
 
 /// A run of penetrating nodes away from the contact zone closes where its penetration is at
 /// least this fraction of its deepest ([`ActiveSet::closing`]).
@@ -207,6 +208,7 @@ impl ActiveSet {
         facts: &[NodeFacts<'_>],
         tolerances: &Tolerances,
         b_hits: &[BNodeHit],
+        adjacency: &Adjacency,
     ) -> Vec<NodeState> {
         let states = &self.states()[p];
         let mut next = states.clone();
@@ -244,75 +246,148 @@ impl ActiveSet {
             }
             depth[node] = Some(depth[node].map_or(g, |d| d.min(g)));
         }
-        for k in self.closing(p, &depth) {
+        for k in self.closing(p, &depth, adjacency) {
             next[k] = closed_state(facts[k].law, facts[k].slip, tolerances.slip);
         }
         next
     }
 
-    /// The open nodes of pair `p` that close in this iteration (docs/method.md, "The rules", step 3a,
-    /// damped). `depth[k]` is `Some(d)` for an open node that penetrates (`d < 0`: the deeper of
-    /// its weighted gap and any B node's distance that closes it), `None` otherwise. Per run of
-    /// consecutive penetrating nodes:
-    /// * between two closed nodes (a hole in the zone): all of it;
-    /// * beside the zone on one side: the half nearest the zone (rounded up). The penetration
-    ///   beyond a zone was computed with the contact force on that zone, which is too small, so
-    ///   it overstates the band: closing all of it overshoots the edge, and the zone then
-    ///   shrinks by the one or two nodes per side whose traction turns tensile in each
-    ///   iteration. Halving approaches the edge from inside, where the zone grows fast
-    ///   (`bench contact` at n = 256: 46 iterations before, 20 now);
+    /// The open nodes of pair `p` that close in this iteration (docs/method.md, "The rules",
+    /// step 3a, damped), in increasing order. `depth[k]` is `Some(d)` for an open node that
+    /// penetrates (`d < 0`: the deeper of its weighted gap and any B node's distance that
+    /// closes it), `None` otherwise. Per patch of penetrating nodes connected along A (`adjacency`; in the
+    /// plane a run of consecutive nodes):
+    /// * enclosed by the zone (every node around it closed, none of it on A's edge: a hole in
+    ///   the zone): all of it;
+    /// * beside the zone (some node around it closed): the half nearest the zone (rounded up;
+    ///   by steps along A from the closed nodes, all nodes as near as the half's farthest).
+    ///   The penetration beyond a zone was computed with the contact force on that zone,
+    ///   which is too small, so it overstates the band: closing all of it overshoots the edge,
+    ///   and the zone then shrinks by the one or two nodes per side whose traction turns
+    ///   tensile in each iteration. Halving approaches the edge from inside, where the zone
+    ///   grows fast (`bench contact` at n = 256: 46 iterations before, 20 now);
     /// * away from the zone (a new contact region): the nodes within [`NEW_REGION_DEPTH`] of
     ///   the deepest one, so that conforming surfaces close at once and curved ones grow from
     ///   their deepest point.
     ///
-    /// Nodes locked open are skipped; if that leaves a run's choice empty, every node of the
-    /// run that may close closes, so the iteration never stops on a penetrating node it could
-    /// close.
+    /// Nodes locked open are skipped; if that leaves a patch's choice empty, every node of the
+    /// patch that may close closes, so the iteration never stops on a penetrating node it
+    /// could close.
     pub(in crate::contact::iteration) fn closing(
         &self,
         p: usize,
         depth: &[Option<f64>],
+        adjacency: &Adjacency,
     ) -> Vec<usize> {
         let closed = |k: usize| self.states()[p][k] != NodeState::Open;
+        let mut seen = vec![false; depth.len()];
         let mut chosen = Vec::new();
-        let mut k = 0;
-        while k < depth.len() {
-            if depth[k].is_none() {
-                k += 1;
+        for k in 0..depth.len() {
+            if depth[k].is_none() || seen[k] {
                 continue;
             }
-            let start = k;
-            while k < depth.len() && depth[k].is_some() {
-                k += 1;
-            }
-            let run = start..k;
-            let half = if run.len() <= WHOLE_RUN {
-                run.len()
+            let patch = patch_of(k, depth, adjacency, &mut seen);
+            let around: Vec<usize> = (patch.iter())
+                .flat_map(|&i| adjacency.neighbours(i))
+                .copied()
+                .filter(|&j| depth[j].is_none())
+                .collect();
+            let beside = around.iter().any(|&j| closed(j));
+            let enclosed = beside
+                && around.iter().all(|&j| closed(j))
+                && !patch.iter().any(|&i| adjacency.on_edge(i));
+            let mut pick: Vec<usize> = if enclosed {
+                patch.clone()
+            } else if beside {
+                let half = if patch.len() <= WHOLE_RUN {
+                    patch.len()
+                } else {
+                    patch.len().div_ceil(2)
+                };
+                nearest(&patch, half, adjacency, |j| closed(j) && depth[j].is_none())
             } else {
-                run.len().div_ceil(2)
-            };
-            let before = start > 0 && closed(start - 1);
-            let after = k < depth.len() && closed(k);
-            let mut pick: Vec<usize> = match (before, after) {
-                (true, true) => run.clone().collect(),
-                (true, false) => (start..start + half).collect(),
-                (false, true) => (k - half..k).collect(),
-                (false, false) => {
-                    let d = |i: usize| depth[i].unwrap_or(0.0);
-                    let deepest = run.clone().map(d).fold(0.0, f64::min);
-                    run.clone()
-                        .filter(|&i| d(i) <= NEW_REGION_DEPTH * deepest)
-                        .collect()
-                }
+                let d = |i: usize| depth[i].unwrap_or(0.0);
+                let deepest = patch.iter().map(|&i| d(i)).fold(0.0, f64::min);
+                (patch.iter().copied())
+                    .filter(|&i| d(i) <= NEW_REGION_DEPTH * deepest)
+                    .collect()
             };
             pick.retain(|&i| self.may_close((p, i)));
             if pick.is_empty() {
-                pick = run.filter(|&i| self.may_close((p, i))).collect();
+                pick = patch
+                    .into_iter()
+                    .filter(|&i| self.may_close((p, i)))
+                    .collect();
             }
             chosen.extend(pick);
         }
+        chosen.sort_unstable();
         chosen
     }
+}
+
+/// The patch of penetrating nodes (`depth` set) connected to node `k` along A, sorted; marks
+/// them `seen`.
+fn patch_of(
+    k: usize,
+    depth: &[Option<f64>],
+    adjacency: &Adjacency,
+    seen: &mut [bool],
+) -> Vec<usize> {
+    let mut patch = vec![k];
+    seen[k] = true;
+    let mut next = 0;
+    while next < patch.len() {
+        let i = patch[next];
+        next += 1;
+        for &j in adjacency.neighbours(i) {
+            if depth[j].is_some() && !seen[j] {
+                seen[j] = true;
+                patch.push(j);
+            }
+        }
+    }
+    patch.sort_unstable();
+    patch
+}
+
+/// The nodes of `patch` (sorted) at most as many steps along A from a node `source` holds as
+/// its `count`-th nearest (breadth first from the patch's nodes next to a source), sorted.
+fn nearest(
+    patch: &[usize],
+    count: usize,
+    adjacency: &Adjacency,
+    source: impl Fn(usize) -> bool,
+) -> Vec<usize> {
+    let mut steps = vec![usize::MAX; patch.len()];
+    let mut order: Vec<usize> = (patch.iter().copied())
+        .filter(|&i| adjacency.neighbours(i).iter().any(|&j| source(j)))
+        .collect();
+    for &i in &order {
+        steps[patch.binary_search(&i).expect("in the patch")] = 1;
+    }
+    let mut next = 0;
+    while next < order.len() {
+        let i = order[next];
+        next += 1;
+        let step = steps[patch.binary_search(&i).expect("in the patch")];
+        for &j in adjacency.neighbours(i) {
+            if let Ok(s) = patch.binary_search(&j)
+                && steps[s] == usize::MAX
+            {
+                steps[s] = step + 1;
+                order.push(j);
+            }
+        }
+    }
+    let Some(&last) = order.get(count.saturating_sub(1)) else {
+        return patch.to_vec();
+    };
+    let reach = steps[patch.binary_search(&last).expect("in the patch")];
+    (patch.iter().zip(&steps))
+        .filter(|&(_, &s)| s <= reach)
+        .map(|(&i, _)| i)
+        .collect()
 }
 
 #[cfg(test)]
@@ -344,6 +419,7 @@ mod tests {
             }
             depth
         };
+        let chain = Adjacency::chain(12);
         // closed: 3, 5 and 10
         let mut states = vec![Open; 12];
         for k in [3, 5, 10] {
@@ -363,7 +439,10 @@ mod tests {
         let rest = [(8, -3.0), (9, -2.0), (11, -1.0)];
         let depth = depths(&[&band[..], &rest[..]].concat());
         // 6..10 lies between 5 and 10: a hole, all of it
-        assert_eq!(set.closing(0, &depth), vec![1, 2, 4, 6, 7, 8, 9, 11]);
+        assert_eq!(
+            set.closing(0, &depth, &chain),
+            vec![1, 2, 4, 6, 7, 8, 9, 11]
+        );
         let depth = depths(&[
             (0, -1.0),
             (1, -2.0),
@@ -372,20 +451,20 @@ mod tests {
             (7, -4.0),
             (8, -1.0),
         ]);
-        assert_eq!(set.closing(0, &depth), vec![1, 2, 6, 7]);
+        assert_eq!(set.closing(0, &depth, &chain), vec![1, 2, 6, 7]);
         let depth = depths(&[(6, -5.0), (7, -4.0)]);
         assert_eq!(
-            set.closing(0, &depth),
+            set.closing(0, &depth, &chain),
             vec![6, 7],
             "a band of two closes whole"
         );
         // a new region: within 0.9 of its deepest node, which need not be at its middle
         let open = ActiveSet::new(vec![vec![Open; 12]], Locks::default(), 1);
         let depth = depths(&[(1, -0.5), (2, -0.95), (3, -1.0), (4, -0.91), (5, -0.2)]);
-        assert_eq!(open.closing(0, &depth), vec![2, 3, 4]);
+        assert_eq!(open.closing(0, &depth, &chain), vec![2, 3, 4]);
         // conforming surfaces: all at once
         assert_eq!(
-            open.closing(0, &[Some(-1.0); 12]),
+            open.closing(0, &[Some(-1.0); 12], &chain),
             (0..12).collect::<Vec<_>>()
         );
         // the chosen half locked open: the rest of the band closes instead
@@ -395,7 +474,72 @@ mod tests {
         };
         let locked = ActiveSet::new(vec![states], locks, 1);
         let depth = depths(&[(0, -1.0), (1, -2.0), (2, -3.0)]);
-        assert_eq!(locked.closing(0, &depth), vec![0]);
+        assert_eq!(locked.closing(0, &depth, &chain), vec![0]);
+    }
+
+    /// On a surface (a 5 x 5 grid of nodes, neighbours along the grid lines, the outer ring its
+    /// edge) the runs become connected patches: a band around the zone closes its half
+    /// nearest the zone, a hole closes whole, a new region from its deepest nodes.
+    #[test]
+    fn closing_grows_a_patch_on_a_surface() {
+        use NodeState::Open;
+        let at = |i: usize, j: usize| 5 * i + j;
+        let neighbours = (0..25)
+            .map(|k| {
+                let (i, j) = (k / 5, k % 5);
+                let mut n = Vec::new();
+                if i > 0 {
+                    n.push(at(i - 1, j));
+                }
+                if j > 0 {
+                    n.push(at(i, j - 1));
+                }
+                if j < 4 {
+                    n.push(at(i, j + 1));
+                }
+                if i < 4 {
+                    n.push(at(i + 1, j));
+                }
+                n
+            })
+            .collect();
+        let edge = (0..25).map(|k| [0, 4].contains(&(k / 5)) || [0, 4].contains(&(k % 5)));
+        let grid = Adjacency::new(neighbours, edge.collect());
+        let with = |entries: &[usize], d: f64| {
+            let mut depth = vec![None; 25];
+            for &k in entries {
+                depth[k] = Some(d);
+            }
+            depth
+        };
+        // the centre closed, the ring of 8 around it penetrating: the 4 sharing an edge with
+        // it close (half of 8), the corners of the ring wait
+        let mut states = vec![Open; 25];
+        states[12] = SLIP;
+        let set = ActiveSet::new(vec![states], Locks::default(), 1);
+        let ring = [6, 7, 8, 11, 13, 16, 17, 18];
+        assert_eq!(
+            set.closing(0, &with(&ring, -1.0), &grid),
+            vec![7, 11, 13, 17]
+        );
+        // everything closed but a column of 3 inside: a hole, all of it; with the node below
+        // it open, a band beside the zone, whose nodes are all next to it
+        let column = [7, 12, 17];
+        let mut states = vec![SLIP; 25];
+        for k in column {
+            states[k] = Open;
+        }
+        let hole = ActiveSet::new(vec![states.clone()], Locks::default(), 1);
+        assert_eq!(hole.closing(0, &with(&column, -1.0), &grid), column);
+        states[22] = Open;
+        let band = ActiveSet::new(vec![states], Locks::default(), 1);
+        assert_eq!(band.closing(0, &with(&column, -1.0), &grid), column);
+        // a new region: within 0.9 of its deepest node
+        let open = ActiveSet::new(vec![vec![Open; 25]], Locks::default(), 1);
+        let mut depth = with(&ring, -0.5);
+        depth[12] = Some(-1.0);
+        depth[7] = Some(-0.95);
+        assert_eq!(open.closing(0, &depth, &grid), vec![7, 12]);
     }
 
     /// The rules on plain data, in the plane and on a face (two tangents): a penetrating open
@@ -436,7 +580,7 @@ mod tests {
         ];
         let states = vec![vec![Open, Open, Stick, Stick, Stick, SLIP, Open, Open]];
         let set = ActiveSet::new(states.clone(), Locks::default(), 1);
-        let next = set.propose(0, &facts, &TOLERANCES, &[]);
+        let next = set.propose(0, &facts, &TOLERANCES, &[], &Adjacency::chain(8));
         let minus = NodeState::Slip {
             direction: SlipDirection::MINUS,
         };
@@ -452,7 +596,7 @@ mod tests {
         );
         let b_hits = [(7, -1e-3), (6, -1e-9)];
         assert_eq!(
-            set.propose(0, &facts, &TOLERANCES, &b_hits)[6..],
+            set.propose(0, &facts, &TOLERANCES, &b_hits, &Adjacency::chain(8))[6..],
             [Open, Stick]
         );
         let at_convergence = set.clone().judging(BNodes::AtConvergence);
@@ -463,7 +607,10 @@ mod tests {
             open: Vec::new(),
         };
         let locked = ActiveSet::new(states, locks, 1);
-        assert_eq!(locked.propose(0, &facts, &TOLERANCES, &[])[5], SLIP);
+        assert_eq!(
+            locked.propose(0, &facts, &TOLERANCES, &[], &Adjacency::chain(8))[5],
+            SLIP
+        );
 
         // on a face: the traction (0.3, 0.4) lies outside the cone 0.5 * 0.8 = 0.4; the node
         // slips along -(0.6, 0.8), and a node closing after sliding along (0, -1) slips so
@@ -488,7 +635,7 @@ mod tests {
             ),
         ];
         let set = ActiveSet::new(vec![vec![Stick, Stick, Open]], Locks::default(), 1);
-        let next = set.propose(0, &face, &TOLERANCES, &[]);
+        let next = set.propose(0, &face, &TOLERANCES, &[], &Adjacency::chain(3));
         let slips_along = |state: NodeState, v: Tangential| match state {
             NodeState::Slip { direction } => direction.same_as(&SlipDirection::of(v).unwrap()),
             _ => false,
