@@ -84,12 +84,13 @@ use crate::model::Model;
 use crate::solver::Backend;
 use faer::Mat;
 use nalgebra::{DMatrix, DVector};
-use std::sync::{Mutex, OnceLock, PoisonError};
+use std::sync::{OnceLock, PoisonError};
 
 mod active_set;
 mod boundary;
 mod checks;
 mod cutback;
+mod driver;
 mod failure;
 mod fallback;
 mod loads;
@@ -99,19 +100,22 @@ mod plate;
 mod results;
 mod rules;
 mod small_system;
+mod surfaces;
 use active_set::{
     ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
     NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
 };
-use boundary::{Flexibility, NodeFlexibility};
+use boundary::{Boundary, Flexibility, NodeFlexibility};
 use checks::change_ratio;
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
+use driver::{Converged, Driver, Settled};
 use failure::Failure;
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Controls, Plate, plate_force};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
+use surfaces::Surfaces;
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
 /// ([`ContactAnalysis::new`], [`ContactAnalysis::host`]) build.
@@ -643,28 +647,6 @@ pub enum PlateControl {
     Force(f64),
 }
 
-/// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
-/// prescribed dofs), the locks of its contact set, and how its rules judged B nodes
-/// penetrating open segments (at convergence only in the fallback's last attempt, see
-/// `rules.rs`).
-#[derive(Clone)]
-struct Settled {
-    load: Vec<f64>,
-    locks: Locks,
-    b_nodes: BNodes,
-}
-
-/// What the full field of a converged increment is recovered from.
-#[derive(Debug, Clone)]
-struct Converged {
-    /// External loads over the field.
-    load: Vec<f64>,
-    /// Prescribed values (empty for a host).
-    prescribed: Vec<f64>,
-    /// Contact forces at the contact dofs (`dofs` order).
-    contact: Vec<f64>,
-}
-
 /// A caller's function that sees every iteration record; returning `false` stops the increment
 /// (the last converged state is kept).
 pub type Monitor = Box<dyn FnMut(&IterationRecord) -> bool + Send>;
@@ -677,96 +659,36 @@ struct NodeData {
 }
 
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
-/// contact-boundary flexibility, and the last converged state.
+/// contact-boundary flexibility, and the last converged state. It composes its parts, each
+/// owning its data: the contact geometry ([`Surfaces`], `surfaces.rs`), the boundary algebra
+/// ([`Boundary`], `boundary.rs`) and the increment driver ([`Driver`], `driver.rs`); the
+/// state decisions of an increment are its active set's (`active_set/`).
 pub struct ContactAnalysis {
+    /// The bodies: positions, solves and responses of `K` (read by every part).
     bodies: Box<dyn Bodies>,
-    /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
-    pairs: Vec<ContactPair>,
-    /// The geometry of each pair (its A side's surface measure with it, all of one kind).
-    geometries: Vec<Box<dyn ContactGeometry>>,
-    /// The friction law of each pair: all the iteration knows of its friction.
-    laws: Vec<Box<dyn FrictionLaw>>,
     options: ContactOptions,
-    /// Global dofs of the contact nodes (A and B of every pair), sorted.
-    dofs: Vec<usize>,
-    /// Position of each global dof in `dofs` (`None`: not a contact dof).
-    slot: Vec<Option<usize>>,
-    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
-    /// built when first needed (all at once from a factor; a host callback's as nodes become
-    /// active).
-    flexibility: Flexibility,
-    /// Under small kinematics, the node flexibility of the directions that have been active.
-    node_flexibility: NodeFlexibility,
-    /// The storage of the small system `S` (see `solve_boundary`), kept between iterations: a
-    /// fresh `S` beyond glibc's 32 MiB mmap threshold (m > 2,048) had its pages faulted in
-    /// and zeroed again in every iteration.
-    small_matrix: Mat<f64>,
-    /// Iterate on the dense reference algebra (see `ContactAnalysis::set_reference_algebra`,
-    /// feature `oracles`).
-    #[cfg(feature = "oracles")]
-    reference_algebra: bool,
-    /// Converged displacement of the contact dofs (`dofs` order).
-    qc: Vec<f64>,
-    /// Factor `K` again in every iteration (a benchmark's control, see
-    /// `ContactAnalysis::set_refactor_each_iteration`, feature `oracles`).
-    #[cfg(feature = "oracles")]
-    refactor_each_iteration: bool,
-    /// Start a failed increment again from the fallback's states (`fallback.rs`; on unless a
-    /// benchmark turns it off, see [`ContactAnalysis::set_fallback`]).
-    fallback: bool,
-    /// Increments that converged from the fallback's states.
-    fallbacks: usize,
-    /// What the last converged increment without a plate settled with.
-    settled: Option<Settled>,
-    /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
-    /// scale to which the state is known (see [`ContactAnalysis::resolution`]).
-    largest_motion: f64,
-    /// The largest motion of one contact node (the length of its displacement change) in a
-    /// converged increment so far (see `motion_scale`).
-    largest_node_motion: f64,
-    /// Loads and contact forces of the last converged increment, for the full field.
-    converged: Option<Converged>,
-    /// The same for the increment before it (for displacement increments).
-    previous: Option<Converged>,
-    /// The full displacement field of the last converged increment, once asked for, with the
-    /// seconds its recovery took (set from `&self` queries; taken when an increment converges).
-    field: OnceLock<(Vec<f64>, f64)>,
-    /// Seconds of displacement recoveries not kept in `field` (displacement increments).
-    recovery: Mutex<f64>,
-    /// Recent load solves, reused when a new load is a combination of their loads.
-    /// (Shared, so that the cutback's snapshot copies no vector.)
-    loads: Vec<std::sync::Arc<LoadSolve>>,
-    /// Converged node data, per pair, per A node.
+    /// The contact geometry: the pairs, their geometries and friction laws, the reference and
+    /// converged surfaces and the pairing's reach.
+    surfaces: Surfaces,
+    /// The boundary algebra: the contact dofs, `F`, the node flexibility, the small system's
+    /// storage, the converged contact displacement and the kept load solves.
+    boundary: Boundary,
+    /// The increment driver: counters, records, timings, the monitor, the fallback's switch,
+    /// what the last increments settled and converged with.
+    driver: Driver,
+    /// Converged node data, per pair, per A node: the state the next increment's active set
+    /// starts from and the result queries read.
     nodes: Vec<Vec<NodeData>>,
-    /// The contact geometry of every pair in the reference configuration (the frozen pairing
-    /// of small kinematics).
-    reference: Vec<ContactSurface>,
-    /// How far from A the pairing of `reference` looked for B, per pair (absolute):
-    /// `search_distance` mean A segment lengths, widened under small kinematics as the bodies
-    /// move (see [`ContactAnalysis::widen_pairing`]).
-    reach: Vec<f64>,
-    /// The contact geometry of every pair at the last converged state (the reference one
-    /// before the first increment): the iteration starts from it and the result queries read
-    /// it, so nothing is evaluated twice.
-    surfaces: Vec<ContactSurface>,
-    increment: usize,
-    records: Vec<IterationRecord>,
-    timings: Timings,
     plate: Option<Plate>,
-    /// The sub-increment the iteration runs in (see [`IterationRecord::sub_increment`]).
-    sub_increment: usize,
-    /// Behind a lock only so that the analysis is `Sync` (a `Monitor` is `Send`, not `Sync`):
-    /// it is only called from `&mut self`.
-    monitor: Mutex<Option<Monitor>>,
 }
 
 impl std::fmt::Debug for ContactAnalysis {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("ContactAnalysis")
             .field("bodies", &self.bodies)
-            .field("pairs", &self.pairs.len())
-            .field("contact dofs", &self.dofs.len())
-            .field("increment", &self.increment)
+            .field("pairs", &self.surfaces.pairs.len())
+            .field("contact dofs", &self.boundary.dofs.len())
+            .field("increment", &self.driver.increment)
             .finish()
     }
 }
@@ -861,7 +783,7 @@ impl ContactAnalysis {
             options,
             Some(a_inside),
         )?;
-        analysis.timings.factorization = seconds;
+        analysis.driver.timings.factorization = seconds;
         Ok(analysis)
     }
 
@@ -877,10 +799,6 @@ impl ContactAnalysis {
         options: ContactOptions,
         a_inside: Option<Vec<Option<Vector>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; bodies.positions().len()];
-        for (i, &d) in dofs.iter().enumerate() {
-            slot[d] = Some(i);
-        }
         let mut timings = Timings::default();
         let setup = bodies.setup_seconds();
         (timings.assembly, timings.factorization) = (setup.assembly, setup.factorization);
@@ -928,50 +846,34 @@ impl ContactAnalysis {
                     .collect()
             })
             .collect();
-        let node_flexibility = NodeFlexibility::new(pairs.iter().map(|p| p.a.len()));
-        let mut analysis = ContactAnalysis {
-            qc: vec![0.0; dofs.len()],
-            node_flexibility,
-            small_matrix: Mat::new(),
-            #[cfg(feature = "oracles")]
-            reference_algebra: false,
-            settled: None,
-            #[cfg(feature = "oracles")]
-            refactor_each_iteration: false,
-            fallback: true,
-            fallbacks: 0,
-            largest_motion: 0.0,
-            largest_node_motion: 0.0,
-            converged: None,
-            previous: None,
-            field: OnceLock::new(),
-            recovery: Mutex::new(0.0),
-            loads: Vec::new(),
-            bodies,
-            pairs,
-            geometries,
-            laws,
-            options,
-            flexibility,
+        let boundary = Boundary::new(
             dofs,
-            slot,
+            bodies.positions().len(),
+            flexibility,
+            pairs.iter().map(|p| p.a.len()),
+        );
+        let mut analysis = ContactAnalysis {
+            surfaces: Surfaces {
+                pairs,
+                geometries,
+                laws,
+                current: reference.clone(),
+                reference,
+                reach,
+            },
+            boundary,
+            driver: Driver::new(timings),
+            bodies,
+            options,
             nodes,
-            surfaces: reference.clone(),
-            reference,
-            reach,
-            increment: 0,
-            records: Vec::new(),
-            timings,
             plate: None,
-            sub_increment: 1,
-            monitor: Mutex::new(None),
         };
-        if !analysis.flexibility.is_full() {
+        if !analysis.boundary.flexibility.is_full() {
             let clock = std::time::Instant::now();
-            let before = analysis.timings.flexibility;
+            let before = analysis.driver.timings.flexibility;
             analysis.prime()?;
             // (node directions time themselves; columns through ensure_columns too)
-            analysis.timings.flexibility = before + clock.elapsed().as_secs_f64();
+            analysis.driver.timings.flexibility = before + clock.elapsed().as_secs_f64();
         }
         Ok(analysis)
     }
@@ -981,13 +883,13 @@ impl ContactAnalysis {
     /// iteration is the paper's alone, as before 0.7.0: a benchmark's control (`hycon bench
     /// presses` compares the two), not an option.
     pub fn set_fallback(&mut self, on: bool) {
-        self.fallback = on;
+        self.driver.fallback = on;
     }
 
     /// How many increments so far converged only from the fallback's states (see
     /// [`set_fallback`](Self::set_fallback)).
     pub fn fallbacks(&self) -> usize {
-        self.fallbacks
+        self.driver.fallbacks
     }
 
     /// Call `monitor` with every iteration record from now on, also those of the tries the
@@ -996,6 +898,7 @@ impl ContactAnalysis {
     /// the last converged state is kept.
     pub fn set_monitor(&mut self, monitor: Option<Monitor>) {
         *self
+            .driver
             .monitor
             .get_mut()
             .unwrap_or_else(PoisonError::into_inner) = monitor;
@@ -1016,12 +919,12 @@ impl ContactAnalysis {
     /// Takes `&self`: concurrent calls are safe (the solves are serialized by a lock; two
     /// first calls may both solve, one result is kept).
     pub fn displacement(&self) -> Result<&[f64]> {
-        if let Some((q, _)) = self.field.get() {
+        if let Some((q, _)) = self.driver.field.get() {
             return Ok(q);
         }
         self.bodies.check_solver()?;
         let clock = std::time::Instant::now();
-        let q = match &self.converged {
+        let q = match &self.driver.converged {
             Some(c) => {
                 let total = self.total_load(c);
                 self.bodies.solve(&total, &c.prescribed)?
@@ -1029,7 +932,7 @@ impl ContactAnalysis {
             None => vec![0.0; self.bodies.field_len()],
         };
         let seconds = clock.elapsed().as_secs_f64();
-        Ok(&self.field.get_or_init(|| (q, seconds)).0)
+        Ok(&self.driver.field.get_or_init(|| (q, seconds)).0)
     }
 
     /// Length of load and displacement vectors: `2 n_nodes` for a model, the host's equation
@@ -1043,7 +946,7 @@ impl ContactAnalysis {
     /// recover the displacement with its own solver.
     pub fn contact_forces(&self) -> Vec<f64> {
         let mut out = vec![0.0; self.bodies.field_len()];
-        if let Some(c) = &self.converged {
+        if let Some(c) = &self.driver.converged {
             self.scatter(&c.contact, &mut out);
         }
         out
@@ -1051,7 +954,7 @@ impl ContactAnalysis {
 
     /// Add forces given at the contact dofs into a field vector.
     fn scatter(&self, forces: &[f64], out: &mut [f64]) {
-        for (&d, &v) in self.dofs.iter().zip(forces) {
+        for (&d, &v) in self.boundary.dofs.iter().zip(forces) {
             if let Some(i) = self.bodies.field_index(d) {
                 out[i] += v;
             }
@@ -1063,13 +966,13 @@ impl ContactAnalysis {
     /// [`displacement`](Self::displacement). One solve, with the difference of the two
     /// increments' loads (the response is linear in them).
     pub fn displacement_increment(&self) -> Result<Vec<f64>> {
-        let Some(c) = &self.converged else {
+        let Some(c) = &self.driver.converged else {
             return Ok(vec![0.0; self.bodies.field_len()]);
         };
         self.bodies.check_solver()?;
         let mut load = self.total_load(c);
         let mut prescribed = c.prescribed.clone();
-        if let Some(p) = &self.previous {
+        if let Some(p) = &self.driver.previous {
             for (l, v) in load.iter_mut().zip(self.total_load(p)) {
                 *l -= v;
             }
@@ -1079,8 +982,11 @@ impl ContactAnalysis {
         }
         let clock = std::time::Instant::now();
         let du = self.bodies.solve(&load, &prescribed)?;
-        *self.recovery.lock().unwrap_or_else(PoisonError::into_inner) +=
-            clock.elapsed().as_secs_f64();
+        *self
+            .driver
+            .recovery
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner) += clock.elapsed().as_secs_f64();
         Ok(du)
     }
 
@@ -1098,15 +1004,19 @@ impl ContactAnalysis {
 
     /// Where the time went so far.
     pub fn timings(&self) -> Timings {
-        let mut t = self.timings;
-        t.recovery += self.field.get().map_or(0.0, |f| f.1)
-            + *self.recovery.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut t = self.driver.timings;
+        t.recovery += self.driver.field.get().map_or(0.0, |f| f.1)
+            + *self
+                .driver
+                .recovery
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner);
         t
     }
 
     /// Every iteration record so far, in order.
     pub fn records(&self) -> &[IterationRecord] {
-        &self.records
+        &self.driver.records
     }
 
     /// Number of numeric factorizations of `K` performed by hycon (1 per analysis; 0 when a
@@ -1125,15 +1035,15 @@ impl ContactAnalysis {
     /// both sides represent with `u_r(0) = 0`) slips nowhere, so the stick rows were dependent
     /// and the small system singular. Such a node closes frictionless and keeps `ts = 0`.
     fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
-        if self.geometries[p].frictionless_at(k, self.bodies.positions()) {
+        if self.surfaces.geometries[p].frictionless_at(k, self.bodies.positions()) {
             &Coulomb::NONE
         } else {
-            &*self.laws[p]
+            &*self.surfaces.laws[p]
         }
     }
 
     fn mean_size(&self, p: usize, xg: &[f64]) -> f64 {
-        self.geometries[p].mean_size(xg)
+        self.surfaces.geometries[p].mean_size(xg)
     }
 
     /// How far the pairing of pair `p` reaches during an increment: `search_distance` mean A
@@ -1160,9 +1070,11 @@ impl ContactAnalysis {
             Kinematics::Small => 0.0,
             Kinematics::Finite => {
                 let x = self.bodies.positions();
-                let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d]).collect();
+                let positions: Vec<f64> = self.boundary.dofs.iter().map(|&d| x[d]).collect();
                 let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
-                self.largest_motion.max(round_off / self.options.tolerance)
+                self.driver
+                    .largest_motion
+                    .max(round_off / self.options.tolerance)
             }
         }
     }
@@ -1171,7 +1083,7 @@ impl ContactAnalysis {
     /// nodes keep their reference positions: the contact geometry never reads them).
     fn positions(&self, uc: &[f64]) -> Vec<f64> {
         let mut x = self.bodies.positions().to_vec();
-        for (&d, &u) in self.dofs.iter().zip(uc) {
+        for (&d, &u) in self.boundary.dofs.iter().zip(uc) {
             x[d] += u;
         }
         x
@@ -1204,11 +1116,11 @@ impl ContactAnalysis {
                 self.resolved(&x)?;
                 for (p, surface) in surfaces.iter_mut().enumerate() {
                     let distance = self.search_reach(p, &x, uc, startc);
-                    self.geometries[p].evaluate_into(&x, distance, surface)?;
+                    self.surfaces.geometries[p].evaluate_into(&x, distance, surface)?;
                 }
             }
             Kinematics::Small => {
-                for (surface, reference) in surfaces.iter_mut().zip(&self.reference) {
+                for (surface, reference) in surfaces.iter_mut().zip(&self.surfaces.reference) {
                     for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
                         let change = self.coupled(&r.coupling, uc);
                         node.gap = r.gap + change;
@@ -1241,33 +1153,34 @@ impl ContactAnalysis {
         if self.options.kinematics != Kinematics::Small {
             return Ok(());
         }
-        for p in 0..self.pairs.len() {
-            let pair = &self.pairs[p];
+        for p in 0..self.surfaces.pairs.len() {
+            let pair = &self.surfaces.pairs[p];
             let motion = pair
                 .a
                 .iter()
                 .chain(&pair.b)
                 .map(|&n| self.node_vector(n, uc).norm())
                 .fold(0.0f64, f64::max);
-            if 2.0 * motion <= self.reach[p] {
+            if 2.0 * motion <= self.surfaces.reach[p] {
                 continue;
             }
             let reach = 4.0 * motion;
             let x = self.bodies.positions();
-            let wider = self.geometries[p].evaluate(x, reach)?;
-            let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
+            let wider = self.surfaces.geometries[p].evaluate(x, reach)?;
+            let stale = (wider.nodes.iter().zip(&self.surfaces.reference[p].nodes))
                 .enumerate()
-                .any(|(k, (new, old))| new != old && self.node_flexibility.knows(p, k));
+                .any(|(k, (new, old))| new != old && self.boundary.node_flexibility.knows(p, k));
             if stale {
-                self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
+                self.boundary.node_flexibility =
+                    NodeFlexibility::new(self.surfaces.pairs.iter().map(|p| p.a.len()));
             }
-            self.reach[p] = reach;
-            self.reference[p] = wider;
-            surfaces[p] = self.reference[p].clone();
-            let mut converged = std::mem::take(&mut self.surfaces);
-            converged[p] = self.reference[p].clone();
-            self.update_geometry(&mut converged, &self.qc, &self.qc)?;
-            self.surfaces = converged;
+            self.surfaces.reach[p] = reach;
+            self.surfaces.reference[p] = wider;
+            surfaces[p] = self.surfaces.reference[p].clone();
+            let mut converged = std::mem::take(&mut self.surfaces.current);
+            converged[p] = self.surfaces.reference[p].clone();
+            self.update_geometry(&mut converged, &self.boundary.qc, &self.boundary.qc)?;
+            self.surfaces.current = converged;
         }
         Ok(())
     }
@@ -1275,7 +1188,7 @@ impl ContactAnalysis {
     /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
     /// only, so every dof asked for has one.
     fn contact_slot(&self, d: usize) -> usize {
-        self.slot[d].expect("a dof of a contact node")
+        self.boundary.slot[d].expect("a dof of a contact node")
     }
 
     /// The dimension of the positions: the bodies' equations per node.
@@ -1323,7 +1236,7 @@ impl ContactAnalysis {
         qp: &[f64],
         control: Option<Controls>,
     ) -> Result<IncrementInfo> {
-        let number = self.increment + 1;
+        let number = self.driver.increment + 1;
         let loads::Solved {
             u0c,
             plate_force: force0,
@@ -1338,12 +1251,12 @@ impl ContactAnalysis {
             .collect();
         if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
             // a force-controlled body needs a support to start from: the nearest node
-            self.close_nearest(&self.surfaces, &mut states);
+            self.close_nearest(&self.surfaces.current, &mut states);
         }
         // the same totals again: resume with the last increment's locks and its way of
         // judging B nodes, so that a contact set it settled by locking or in the fallback's
         // last attempt settles at once on the same state
-        let (locks, b_nodes) = match (&self.settled, control) {
+        let (locks, b_nodes) = match (&self.driver.settled, control) {
             (Some(last), None) if last.load == load => (last.locks.clone(), last.b_nodes),
             _ => (Locks::default(), BNodes::Pointwise),
         };
@@ -1356,17 +1269,19 @@ impl ContactAnalysis {
             border: border.as_ref(),
             force0,
             load: &load,
-            startc: self.qc.clone(),
+            startc: self.boundary.qc.clone(),
             resolution: self.resolution(),
             clock: std::time::Instant::now(),
             // columns of a lazy F built during the iteration count as flexibility
-            flexibility_before: self.timings.flexibility,
+            flexibility_before: self.driver.timings.flexibility,
         };
         let mut records = Vec::new();
         let first = self.iterate(&attempt, states, locks, b_nodes, &mut records);
         match first {
             Err(e)
-                if self.fallback && border.is_none() && Failure::of(&e).fallback_may_settle() =>
+                if self.driver.fallback
+                    && border.is_none()
+                    && Failure::of(&e).fallback_may_settle() =>
             {
                 // the paper's rules did not settle: start again from the states of the
                 // solution of the linearized conditions (fallback.rs), first with the
@@ -1394,7 +1309,7 @@ impl ContactAnalysis {
                     Error::Contact(ContactError::ConditionViolated { .. }) => last,
                     _ => e,
                 })?;
-                self.fallbacks += 1;
+                self.driver.fallbacks += 1;
                 Ok(info)
             }
             other => other,
@@ -1427,7 +1342,7 @@ impl ContactAnalysis {
         } = *attempt;
         // iterate on the contact dofs only; geometry from the start configuration
         let mut uc = startc.clone();
-        let mut surfaces = self.surfaces.clone();
+        let mut surfaces = self.surfaces.current.clone();
         let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
         let convergence = Convergence::new(self.options.tolerance);
         let first_record = records.len();
@@ -1440,7 +1355,7 @@ impl ContactAnalysis {
             // iterations are counted over the increment's attempts
             let iteration = first_record + step;
             #[cfg(feature = "oracles")]
-            if self.refactor_each_iteration && step > 1 {
+            if self.boundary.refactor_each_iteration && step > 1 {
                 refactoring += self.refactor()?;
             }
             let states = set.states();
@@ -1452,11 +1367,11 @@ impl ContactAnalysis {
                 _ => self.solve_iteration(&system, u0c, border)?,
             };
             let (tau, plate_motion, condition, uc_new) = solution.clone();
-            let forces = system.forces(&tau, self.dofs.len());
+            let forces = system.forces(&tau, self.boundary.dofs.len());
             finite(&uc_new, number, iteration)?;
             self.widen_pairing(&uc_new, &mut surfaces)?;
             self.update_geometry(&mut surfaces, &uc_new, startc)?;
-            let tractions = system.tractions(&tau, &surfaces, states, &self.laws);
+            let tractions = system.tractions(&tau, &surfaces, states, &self.surfaces.laws);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
             let changes = set.changes(&proposed);
             let r = change_ratio(&uc_new, &uc, startc, resolution, self.options.tolerance);
@@ -1486,10 +1401,11 @@ impl ContactAnalysis {
                 r,
                 condition,
                 violation: violation.relative,
-                sub_increment: self.sub_increment,
+                sub_increment: self.driver.sub_increment,
             };
             records.push(record);
             if let Some(monitor) = self
+                .driver
                 .monitor
                 .get_mut()
                 .unwrap_or_else(PoisonError::into_inner)
@@ -1521,10 +1437,10 @@ impl ContactAnalysis {
                     }
                     .into());
                 }
-                self.timings.factorization += refactoring;
-                self.timings.iterations += clock.elapsed().as_secs_f64()
+                self.driver.timings.factorization += refactoring;
+                self.driver.timings.iterations += clock.elapsed().as_secs_f64()
                     - refactoring
-                    - (self.timings.flexibility - flexibility_before);
+                    - (self.driver.timings.flexibility - flexibility_before);
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
                     let directions = border.map_or(&[][..], |b| &b.directions[..]);
@@ -1541,7 +1457,7 @@ impl ContactAnalysis {
                     prescribed,
                     contact: forces,
                 };
-                self.settled = control.is_none().then(|| Settled {
+                self.driver.settled = control.is_none().then(|| Settled {
                     load: load.to_vec(),
                     locks: set.locks().clone(),
                     b_nodes: set.b_nodes(),
@@ -1578,7 +1494,7 @@ impl ContactAnalysis {
 
     /// The caller's id of A node `(pair, index)`.
     fn external_a(&self, (p, k): NodeKey) -> usize {
-        self.bodies.external(self.pairs[p].a[k])
+        self.bodies.external(self.surfaces.pairs[p].a[k])
     }
 }
 
@@ -1778,15 +1694,20 @@ impl ContactAnalysis {
         converged: Converged,
         records: Vec<IterationRecord>,
     ) -> IncrementInfo {
-        let motion: Vec<f64> = uc.iter().zip(&self.qc).map(|(a, b)| a - b).collect();
-        self.largest_motion = self.largest_motion.max(checks::norm2(&motion));
-        self.largest_node_motion =
-            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc, self.dim()));
-        self.qc = uc;
-        self.surfaces = surfaces;
-        self.previous = self.converged.replace(converged);
-        if let Some((_, seconds)) = self.field.take() {
-            self.timings.recovery += seconds;
+        let motion: Vec<f64> = uc
+            .iter()
+            .zip(&self.boundary.qc)
+            .map(|(a, b)| a - b)
+            .collect();
+        self.driver.largest_motion = self.driver.largest_motion.max(checks::norm2(&motion));
+        self.driver.largest_node_motion = (self.driver.largest_node_motion).max(
+            checks::largest_node_motion(&uc, &self.boundary.qc, self.dim()),
+        );
+        self.boundary.qc = uc;
+        self.surfaces.current = surfaces;
+        self.driver.previous = self.driver.converged.replace(converged);
+        if let Some((_, seconds)) = self.driver.field.take() {
+            self.driver.timings.recovery += seconds;
         }
         for (p, s) in states.iter().enumerate() {
             for (k, &state) in s.iter().enumerate() {
@@ -1794,8 +1715,8 @@ impl ContactAnalysis {
                 self.nodes[p][k] = NodeData { state, traction };
             }
         }
-        self.increment = number;
-        self.records.extend(records);
+        self.driver.increment = number;
+        self.driver.records.extend(records);
         let (active, _, slip) = count(states);
         IncrementInfo {
             increment: number,

@@ -13,6 +13,7 @@
 //! from `F` in every iteration, nalgebra's unblocked LU) is a test oracle behind the feature
 //! `oracles` (`oracles.rs`); the tests compare the two.
 
+use super::loads::LoadSolve;
 use super::{
     Border, ContactAnalysis, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
 };
@@ -25,6 +26,67 @@ use faer::linalg::solvers::{PartialPivLu, Solve};
 use small_system::{Row, SmallSystem, kept_tangents, singular};
 use std::collections::HashMap;
 use std::ops::Range;
+
+/// The boundary algebra part of the analysis: the contact dofs, the flexibility over them,
+/// the small system's storage, the converged contact displacement and the kept load solves.
+pub(super) struct Boundary {
+    /// Global dofs of the contact nodes (A and B of every pair), sorted.
+    pub(super) dofs: Vec<usize>,
+    /// Position of each global dof in `dofs` (`None`: not a contact dof).
+    pub(super) slot: Vec<Option<usize>>,
+    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
+    /// built when first needed (all at once from a factor; a host callback's as nodes become
+    /// active).
+    pub(super) flexibility: Flexibility,
+    /// Under small kinematics, the node flexibility of the directions that have been active.
+    pub(super) node_flexibility: NodeFlexibility,
+    /// The storage of the small system `S` (see `solve_boundary`), kept between iterations: a
+    /// fresh `S` beyond glibc's 32 MiB mmap threshold (m > 2,048) had its pages faulted in
+    /// and zeroed again in every iteration.
+    pub(super) small_matrix: Mat<f64>,
+    /// Converged displacement of the contact dofs (`dofs` order).
+    pub(super) qc: Vec<f64>,
+    /// Recent load solves, reused when a new load is a combination of their loads.
+    /// (Shared, so that the cutback's snapshot copies no vector.)
+    pub(super) loads: Vec<std::sync::Arc<LoadSolve>>,
+    /// Iterate on the dense reference algebra (see `ContactAnalysis::set_reference_algebra`,
+    /// feature `oracles`).
+    #[cfg(feature = "oracles")]
+    pub(super) reference_algebra: bool,
+    /// Factor `K` again in every iteration (a benchmark's control, see
+    /// `ContactAnalysis::set_refactor_each_iteration`, feature `oracles`).
+    #[cfg(feature = "oracles")]
+    pub(super) refactor_each_iteration: bool,
+}
+
+impl Boundary {
+    /// The algebra over the contact `dofs` of positions of length `n`, with `flexibility` and
+    /// the node flexibility of `a_nodes` A nodes per pair.
+    pub(super) fn new(
+        dofs: Vec<usize>,
+        n: usize,
+        flexibility: Flexibility,
+        a_nodes: impl Iterator<Item = usize>,
+    ) -> Self {
+        let mut slot = vec![None; n];
+        for (i, &d) in dofs.iter().enumerate() {
+            slot[d] = Some(i);
+        }
+        Boundary {
+            qc: vec![0.0; dofs.len()],
+            node_flexibility: NodeFlexibility::new(a_nodes),
+            small_matrix: Mat::new(),
+            #[cfg(feature = "oracles")]
+            reference_algebra: false,
+            #[cfg(feature = "oracles")]
+            refactor_each_iteration: false,
+            loads: Vec::new(),
+            flexibility,
+            dofs,
+            slot,
+        }
+    }
+}
 
 /// Directions whose images one forward substitution computes (neighbouring nodes' directions:
 /// their elimination-tree paths mostly coincide).
@@ -881,7 +943,7 @@ impl ContactAnalysis {
     pub(super) fn ensure_columns(&mut self, slots: impl IntoIterator<Item = usize>) -> Result<()> {
         let mut missing: Vec<usize> = slots
             .into_iter()
-            .filter(|&j| !self.flexibility.known[j])
+            .filter(|&j| !self.boundary.flexibility.known[j])
             .collect();
         if missing.is_empty() {
             return Ok(());
@@ -890,12 +952,13 @@ impl ContactAnalysis {
         missing.dedup();
         let clock = std::time::Instant::now();
         let units: Vec<Sparse> = missing.iter().map(|&j| vec![(j, 1.0)]).collect();
-        let columns = self.bodies.flexibility_times(&self.dofs, &units)?;
+        let columns = self.bodies.flexibility_times(&self.boundary.dofs, &units)?;
         for (c, &j) in missing.iter().enumerate() {
-            self.flexibility
+            self.boundary
+                .flexibility
                 .set_column(j, columns.column(c).iter().copied());
         }
-        self.timings.flexibility += clock.elapsed().as_secs_f64();
+        self.driver.timings.flexibility += clock.elapsed().as_secs_f64();
         Ok(())
     }
 
@@ -903,7 +966,7 @@ impl ContactAnalysis {
     fn apply_flexibility(&self, v: &Sparse, out: &mut [f64]) {
         out.iter_mut().for_each(|o| *o = 0.0);
         for &(c, w) in v {
-            for (o, f) in out.iter_mut().zip(self.flexibility.column(c)) {
+            for (o, f) in out.iter_mut().zip(self.boundary.flexibility.column(c)) {
                 *o += f * w;
             }
         }
@@ -927,25 +990,27 @@ impl ContactAnalysis {
                 .map(|&(p, k, row, _)| (p, k, row)),
         );
         for key in keys {
-            if self.node_flexibility.get(key).is_none() && !new.contains(&key) {
+            if self.boundary.node_flexibility.get(key).is_none() && !new.contains(&key) {
                 new.push(key);
             }
         }
         let vectors: Vec<Sparse> = new
             .iter()
             .map(|&(p, k, row)| {
-                let node = &self.reference[p].nodes[k];
+                let node = &self.surfaces.reference[p].nodes[k];
                 self.directed(&node.coupling, &row.direction(&node.frame))
             })
             .collect();
         if new.is_empty() {
-        } else if self.flexibility.is_full() {
-            let m = self.dofs.len();
+        } else if self.boundary.flexibility.is_full() {
+            let m = self.boundary.dofs.len();
             let mut y = DMatrix::zeros(m, new.len());
             for (c, v) in vectors.iter().enumerate() {
                 self.apply_flexibility(v, &mut y.as_mut_slice()[c * m..(c + 1) * m]);
             }
-            self.node_flexibility.add_responses(&new, vectors, &y);
+            self.boundary
+                .node_flexibility
+                .add_responses(&new, vectors, &y);
         } else {
             let clock = std::time::Instant::now();
             if self.bodies.has_images() {
@@ -957,19 +1022,23 @@ impl ContactAnalysis {
                     .collect();
                 let images = self
                     .bodies
-                    .images(&self.dofs, &batches)?
+                    .images(&self.boundary.dofs, &batches)?
                     .expect("the bodies have images");
                 for ((keys, vs), images) in new.chunks(IMAGE_BATCH).zip(batches).zip(images) {
-                    self.node_flexibility.add_images(keys, vs, images);
+                    self.boundary.node_flexibility.add_images(keys, vs, images);
                 }
             } else {
                 // one right-hand side per new direction, not one per dof it touches
-                let y = self.bodies.flexibility_times(&self.dofs, &vectors)?;
-                self.node_flexibility.add_responses(&new, vectors, &y);
+                let y = self
+                    .bodies
+                    .flexibility_times(&self.boundary.dofs, &vectors)?;
+                self.boundary
+                    .node_flexibility
+                    .add_responses(&new, vectors, &y);
             }
-            self.timings.flexibility += clock.elapsed().as_secs_f64();
+            self.driver.timings.flexibility += clock.elapsed().as_secs_f64();
         }
-        let nf = &self.node_flexibility;
+        let nf = &self.boundary.node_flexibility;
         let rows = system
             .unknowns
             .iter()
@@ -1001,7 +1070,7 @@ impl ContactAnalysis {
     ) -> Option<(Vec<usize>, Mat<f64>)> {
         let order = self.factor_order(system, rows, symmetric);
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
-        let nf = &mut self.node_flexibility;
+        let nf = &mut self.boundary.node_flexibility;
         let prefix = nf.factor.common_prefix(&keys);
         nf.slip.keep(prefix);
         let kept = std::mem::replace(&mut nf.factor.l, Mat::new());
@@ -1036,7 +1105,7 @@ impl ContactAnalysis {
             .collect();
         needed.sort_unstable();
         needed.dedup();
-        let nf = &mut self.node_flexibility;
+        let nf = &mut self.boundary.node_flexibility;
         nf.slip.update(l, &nf.factor.keys, &nf.n, &needed);
         let (slip, k) = (&nf.slip, l.nrows());
         let (mut x, mut y) = (Mat::<f64>::zeros(k, q.len()), Mat::<f64>::zeros(k, q.len()));
@@ -1064,8 +1133,8 @@ impl ContactAnalysis {
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Vec<usize> {
-        let kept = &self.node_flexibility.factor.keys;
-        let mut rank = vec![usize::MAX; self.node_flexibility.n.len()];
+        let kept = &self.boundary.node_flexibility.factor.keys;
+        let mut rank = vec![usize::MAX; self.boundary.node_flexibility.n.len()];
         kept.iter().enumerate().for_each(|(r, &a)| rank[a] = r);
         let (mut old, mut new): (Vec<usize>, Vec<usize>) = symmetric
             .into_iter()
@@ -1074,12 +1143,12 @@ impl ContactAnalysis {
         let (x, dim) = (self.bodies.positions(), self.dim());
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
-            node(x, dim, self.pairs[p].a[k])
+            node(x, dim, self.surfaces.pairs[p].a[k])
         };
         let pair = |i: usize| system.unknowns[i].0;
-        let mut has_old = vec![false; self.pairs.len()];
+        let mut has_old = vec![false; self.surfaces.pairs.len()];
         old.iter().for_each(|&i| has_old[pair(i)] = true);
-        let mut centroids = vec![(Vector::zero(dim), 0usize); self.pairs.len()];
+        let mut centroids = vec![(Vector::zero(dim), 0usize); self.surfaces.pairs.len()];
         for &i in old.iter().chain(new.iter().filter(|&&i| !has_old[pair(i)])) {
             let ((c, count), y) = (&mut centroids[pair(i)], position(i));
             (*c, *count) = (*c + y, *count + 1);
@@ -1111,7 +1180,7 @@ impl ContactAnalysis {
         border: Option<&Border>,
     ) -> Result<Solution> {
         #[cfg(feature = "oracles")]
-        if self.reference_algebra {
+        if self.boundary.reference_algebra {
             return self.solve_reference(system, u0c, border);
         }
         self.solve_boundary(system, u0c, border)
@@ -1142,7 +1211,7 @@ impl ContactAnalysis {
         if m + k == 0 {
             return Ok((Vec::new(), Vec::new(), 1.0, u0c.to_vec()));
         }
-        let mc = self.dofs.len();
+        let mc = self.boundary.dofs.len();
         // small kinematics: directions of rows and columns; finite: the responses y_j
         let (directions, responses) = match self.options.kinematics {
             Kinematics::Small => (Some(self.node_directions(system)?), Vec::new()),
@@ -1178,7 +1247,7 @@ impl ContactAnalysis {
         };
         let columns = match &directions {
             Some((rows, cols)) => Columns::Nodes(NodeColumns {
-                n: &self.node_flexibility.n,
+                n: &self.boundary.node_flexibility.n,
                 rows,
                 runs: consecutive_runs(rows),
                 cols,
@@ -1192,12 +1261,12 @@ impl ContactAnalysis {
         // a factor here came from N (small kinematics); finite kinematics factor S_PP below
         let (lu, s_norm) = match (factor, &columns) {
             (Some((p, l)), Columns::Nodes(nodes)) => {
-                let s_norm = self.node_flexibility.sums.norm1(nodes);
+                let s_norm = self.boundary.node_flexibility.sums.norm1(nodes);
                 let entry = |i: usize, j: usize| columns.entry(i, j);
                 (Dense::block(p, l, unsymmetric, entry, images), s_norm)
             }
             _ => {
-                let mut s = std::mem::replace(&mut self.small_matrix, Mat::new());
+                let mut s = std::mem::replace(&mut self.boundary.small_matrix, Mat::new());
                 s.truncate(0, 0);
                 s.resize_with(m + k, m + k, |_, _| 0.0);
                 for j in 0..m {
@@ -1222,7 +1291,7 @@ impl ContactAnalysis {
                     cholesky_extending(Mat::new(), 0, p.len(), entries).map(|l| (symmetric, l))
                 });
                 let lu = Dense::new(&s, factor.flatten(), unsymmetric, None);
-                self.small_matrix = s;
+                self.boundary.small_matrix = s;
                 (lu, s_norm)
             }
         };
@@ -1239,7 +1308,7 @@ impl ContactAnalysis {
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
         if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
-            self.node_flexibility.factor.l = b.l;
+            self.boundary.node_flexibility.factor.l = b.l;
         }
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
         if !tau.iter().all(|v| v.is_finite()) {
@@ -1252,7 +1321,7 @@ impl ContactAnalysis {
         let mut uc = u0c.to_vec();
         match directions {
             Some((_, cols)) => {
-                let nf = &self.node_flexibility;
+                let nf = &self.boundary.node_flexibility;
                 let mut weights = vec![0.0; nf.kept.len()];
                 for (parts, &t) in cols.iter().zip(&tau) {
                     for &(b, c) in parts {
@@ -1283,11 +1352,11 @@ impl ContactAnalysis {
                     .collect();
                 if !parts.is_empty() {
                     let clock = std::time::Instant::now();
-                    let x = self.bodies.back_substitute(&self.dofs, &parts)?;
+                    let x = self.bodies.back_substitute(&self.boundary.dofs, &parts)?;
                     for (u, v) in uc.iter_mut().zip(x) {
                         *u += v;
                     }
-                    self.timings.flexibility += clock.elapsed().as_secs_f64();
+                    self.driver.timings.flexibility += clock.elapsed().as_secs_f64();
                 }
             }
             None => {
@@ -1319,7 +1388,7 @@ impl ContactAnalysis {
         let mut s = DMatrix::zeros(m, m);
         if self.options.kinematics == Kinematics::Small && !self.on_reference_algebra() {
             let (rows, cols) = self.node_directions(system)?;
-            let n = &self.node_flexibility.n;
+            let n = &self.boundary.node_flexibility.n;
             for (j, parts) in cols.iter().enumerate() {
                 for (i, &row) in rows.iter().enumerate() {
                     s[(i, j)] = parts.iter().fold(0.0, |sum, &(b, c)| sum + c * n[b][row]);
@@ -1327,7 +1396,7 @@ impl ContactAnalysis {
             }
         } else {
             self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
-            let mut y = vec![0.0; self.dofs.len()];
+            let mut y = vec![0.0; self.boundary.dofs.len()];
             for (j, col) in system.cols.iter().enumerate() {
                 self.apply_flexibility(col, &mut y);
                 for (i, row) in system.rows.iter().enumerate() {
@@ -1346,7 +1415,7 @@ impl ContactAnalysis {
     pub(super) fn prime(&mut self) -> Result<()> {
         let mut rows = Vec::new();
         let mut keys = Vec::new();
-        for (p, surface) in self.reference.iter().enumerate() {
+        for (p, surface) in self.surfaces.reference.iter().enumerate() {
             let nearest = surface
                 .nodes
                 .iter()
@@ -1356,7 +1425,7 @@ impl ContactAnalysis {
             if let Some((k, node)) = nearest {
                 rows.push((p, k, Row::Normal));
                 keys.push(self.directed(&node.coupling, &node.frame.normal()));
-                if !self.laws[p].is_frictionless() {
+                if !self.surfaces.laws[p].is_frictionless() {
                     for (i, s) in kept_tangents(&node.frame) {
                         rows.push((p, k, Row::Tangent(i)));
                         keys.push(self.directed(&node.coupling, &s));
@@ -1383,7 +1452,7 @@ impl ContactAnalysis {
     /// `oracles`; never without it).
     fn on_reference_algebra(&self) -> bool {
         #[cfg(feature = "oracles")]
-        return self.reference_algebra;
+        return self.boundary.reference_algebra;
         #[cfg(not(feature = "oracles"))]
         false
     }

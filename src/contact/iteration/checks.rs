@@ -101,7 +101,7 @@ impl ContactAnalysis {
     pub(super) fn motion_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
         let h = self.mean_size(p, xg);
         let motion = largest_node_motion(uc, startc, self.dim());
-        motion.max(self.largest_node_motion).max(1e-12 * h)
+        motion.max(self.driver.largest_node_motion).max(1e-12 * h)
     }
 
     /// The checks of the locks at convergence ([`ActiveSet::edge_penetration`],
@@ -189,7 +189,8 @@ impl ContactAnalysis {
             return Ok(());
         }
         let active = || {
-            self.reference
+            self.surfaces
+                .reference
                 .iter()
                 .zip(states)
                 .enumerate()
@@ -212,7 +213,7 @@ impl ContactAnalysis {
             .fold(0.0, f64::max);
         let x = self.bodies.positions();
         for (p, surface, k, node) in active() {
-            let slope = self.geometries[p].gap_slope(surface, k, x);
+            let slope = self.surfaces.geometries[p].gap_slope(surface, k, x);
             let slip = tangential_parts(node, |s| along(node, *s));
             // |slip| |dg0/ds| (in the plane |slip_k| is the component's magnitude: the
             // product's magnitude to the bit)
@@ -272,7 +273,7 @@ impl ContactAnalysis {
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
         for (p, (surface, states)) in surfaces.iter().zip(states).enumerate() {
-            let pair = &self.pairs[p];
+            let pair = &self.surfaces.pairs[p];
             let limit = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
             let lost = surface
                 .nodes
@@ -283,7 +284,7 @@ impl ContactAnalysis {
                     **state == NodeState::Open && !node.normal_gap.is_finite()
                 });
             for (k, _) in lost {
-                if let Some((element, depth)) = self.geometries[p].behind(k, &x, limit) {
+                if let Some((element, depth)) = self.surfaces.geometries[p].behind(k, &x, limit) {
                     let external = |i: usize| self.bodies.external(element[i]);
                     return Err(ContactError::BeyondSearchDistance {
                         node: self.bodies.external(pair.a[k]),
@@ -312,10 +313,10 @@ impl ContactAnalysis {
     /// not judged here: only the motion is.)
     pub(super) fn resolved(&self, x: &[f64]) -> Result<()> {
         let reference = self.bodies.positions();
-        for geometry in &self.geometries {
+        for geometry in &self.surfaces.geometries {
             if let Some(u) = geometry.unresolved(x, reference, POSITION_ROUND_OFF) {
                 return Err(ContactError::Unresolved {
-                    increment: self.increment + 1,
+                    increment: self.driver.increment + 1,
                     node: self.bodies.external(u.node),
                     motion: u.motion,
                     length: u.length,
@@ -407,7 +408,7 @@ impl ContactAnalysis {
                 .iter()
                 .fold(0.0f64, |m, t| m.max(t.normal.abs()));
             let per_traction = |v: f64| if tn_max > 0.0 { v / tn_max } else { 0.0 };
-            let law = &*self.laws[p];
+            let law = &*self.surfaces.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
                 let Traction {
                     normal: tn,
@@ -455,7 +456,7 @@ impl ContactAnalysis {
                 continue;
             }
             let open: Vec<bool> = states[p].iter().map(|s| *s == NodeState::Open).collect();
-            for d in self.geometries[p].b_node_distances(&open, &x, xg) {
+            for d in self.surfaces.geometries[p].b_node_distances(&open, &x, xg) {
                 let (node, g) = ((p, d.nearest), d.distance);
                 if -g / gap_scale > worst.relative {
                     worst = Violation {

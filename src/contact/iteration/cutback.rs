@@ -94,25 +94,25 @@ impl Path<'_> {
 impl ContactAnalysis {
     fn before(&mut self) -> Before {
         Before {
-            loads: self.loads.clone(),
-            reach: self.reach.clone(),
-            reference: self.reference.clone(),
-            surfaces: self.surfaces.clone(),
-            field: std::mem::take(&mut self.field),
+            loads: self.boundary.loads.clone(),
+            reach: self.surfaces.reach.clone(),
+            reference: self.surfaces.reference.clone(),
+            surfaces: self.surfaces.current.clone(),
+            field: std::mem::take(&mut self.driver.field),
         }
     }
 
     fn converging(&self) -> Converging {
         Converging {
-            qc: self.qc.clone(),
+            qc: self.boundary.qc.clone(),
             nodes: self.nodes.clone(),
-            converged: self.converged.clone(),
-            previous: self.previous.clone(),
-            settled: self.settled.clone(),
-            largest_motion: self.largest_motion,
-            largest_node_motion: self.largest_node_motion,
-            increment: self.increment,
-            records: self.records.len(),
+            converged: self.driver.converged.clone(),
+            previous: self.driver.previous.clone(),
+            settled: self.driver.settled.clone(),
+            largest_motion: self.driver.largest_motion,
+            largest_node_motion: self.driver.largest_node_motion,
+            increment: self.driver.increment,
+            records: self.driver.records.len(),
             plate: self.plate.clone(),
         }
     }
@@ -121,17 +121,18 @@ impl ContactAnalysis {
     /// kinematics, see `widen_pairing`), the node flexibility may hold directions of the wider
     /// pairing: it is emptied, to be rebuilt as nodes close.
     fn restore_before(&mut self, b: Before) {
-        if b.reach != self.reach {
-            self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
+        if b.reach != self.surfaces.reach {
+            self.boundary.node_flexibility =
+                NodeFlexibility::new(self.surfaces.pairs.iter().map(|p| p.a.len()));
         }
-        self.loads = b.loads;
-        self.reach = b.reach;
-        self.reference = b.reference;
-        self.surfaces = b.surfaces;
-        if let Some((_, seconds)) = self.field.take() {
-            self.timings.recovery += seconds;
+        self.boundary.loads = b.loads;
+        self.surfaces.reach = b.reach;
+        self.surfaces.reference = b.reference;
+        self.surfaces.current = b.surfaces;
+        if let Some((_, seconds)) = self.driver.field.take() {
+            self.driver.timings.recovery += seconds;
         }
-        self.field = b.field;
+        self.driver.field = b.field;
     }
 
     /// Keep the result of a converged increment: the field moved out by
@@ -139,26 +140,26 @@ impl ContactAnalysis {
     /// as [`finish`](Self::finish) counts it).
     fn forget_before(&mut self, b: Before) {
         if let Some((_, seconds)) = b.field.into_inner() {
-            self.timings.recovery += seconds;
+            self.driver.timings.recovery += seconds;
         }
     }
 
     fn restore_converging(&mut self, c: Converging) {
-        self.qc = c.qc;
+        self.boundary.qc = c.qc;
         self.nodes = c.nodes;
-        self.converged = c.converged;
-        self.previous = c.previous;
-        self.settled = c.settled;
-        self.largest_motion = c.largest_motion;
-        self.largest_node_motion = c.largest_node_motion;
-        self.increment = c.increment;
-        self.records.truncate(c.records);
+        self.driver.converged = c.converged;
+        self.driver.previous = c.previous;
+        self.driver.settled = c.settled;
+        self.driver.largest_motion = c.largest_motion;
+        self.driver.largest_node_motion = c.largest_node_motion;
+        self.driver.increment = c.increment;
+        self.driver.records.truncate(c.records);
         self.plate = c.plate;
     }
 
     /// The interpolation between the last converged state and the target `(f, qp, control)`.
     fn path<'a>(&self, f: &'a [f64], qp: &'a [f64], control: Option<Controls>) -> Path<'a> {
-        let (f0, qp0) = match &self.converged {
+        let (f0, qp0) = match &self.driver.converged {
             Some(c) => (c.load.clone(), c.prescribed.clone()),
             None => (vec![0.0; f.len()], vec![0.0; qp.len()]),
         };
@@ -187,7 +188,7 @@ impl ContactAnalysis {
         qp: &[f64],
         control: Option<Controls>,
     ) -> Result<IncrementInfo> {
-        self.sub_increment = 1;
+        self.driver.sub_increment = 1;
         let depth = self.options.cutback_depth;
         if depth == 0 {
             return self.run_increment(f, qp, control);
@@ -214,7 +215,7 @@ impl ContactAnalysis {
         let converging = self.converging();
         let path = self.path(f, qp, control);
         let mut info = IncrementInfo {
-            increment: self.increment + 1,
+            increment: self.driver.increment + 1,
             iterations: 0,
             active: 0,
             slip: 0,
@@ -233,9 +234,9 @@ impl ContactAnalysis {
                 // a force-controlled plate direction's motion is solved for, not prescribed
                 self.drive_plate(&mut qp_s, control);
             }
-            self.sub_increment = info.sub_increments + 1;
+            self.driver.sub_increment = info.sub_increments + 1;
             // every sub-increment is increment number `info.increment`
-            self.increment = info.increment - 1;
+            self.driver.increment = info.increment - 1;
             match self.run_increment(&f_s, &qp_s, control_s) {
                 Ok(done) => {
                     info.iterations += done.iterations;
@@ -255,16 +256,16 @@ impl ContactAnalysis {
                 Err(e) => {
                     self.restore_converging(converging);
                     self.restore_before(before);
-                    self.sub_increment = 1;
+                    self.driver.sub_increment = 1;
                     return Err(e);
                 }
             }
         }
         self.forget_before(before);
         // the increment spans the whole step: its displacement increment is from the start
-        self.previous = converging.converged;
-        self.increment = info.increment;
-        self.sub_increment = 1;
+        self.driver.previous = converging.converged;
+        self.driver.increment = info.increment;
+        self.driver.sub_increment = 1;
         Ok(info)
     }
 }

@@ -72,7 +72,7 @@ impl ContactAnalysis {
     /// linearized at the start of the increment, solved ([`Linearized::solution`]).
     pub(super) fn fallback_states(&mut self, attempt: &Attempt<'_>) -> Result<Vec<Vec<NodeState>>> {
         let startc = &attempt.startc;
-        let surfaces = self.surfaces.clone();
+        let surfaces = self.surfaces.current.clone();
         let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
         // the candidates: closed at the start, or penetrating under the load alone, and
         // their covered neighbours

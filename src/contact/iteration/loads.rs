@@ -106,7 +106,7 @@ impl ContactAnalysis {
                 format!("{name}[{index}] = {value} is not finite")
             }));
         }
-        if let Some(u0c) = self.bodies.condensed_image(f, &self.dofs) {
+        if let Some(u0c) = self.bodies.condensed_image(f, &self.boundary.dofs) {
             // the host solved for its load: the image is u0 itself
             return Ok(Solved {
                 u0c,
@@ -114,10 +114,10 @@ impl ContactAnalysis {
                 load,
             });
         }
-        if let Some(c) = combination(&load, &self.loads) {
-            let mut u0c = vec![0.0; self.dofs.len()];
+        if let Some(c) = combination(&load, &self.boundary.loads) {
+            let mut u0c = vec![0.0; self.boundary.dofs.len()];
             let mut force = Vector::zero(self.dim());
-            for (ci, cached) in c.iter().zip(&self.loads) {
+            for (ci, cached) in c.iter().zip(&self.boundary.loads) {
                 for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
                     *u += ci * v;
                 }
@@ -133,7 +133,7 @@ impl ContactAnalysis {
         let u0 = self.bodies.solve(f, qp)?;
         if u0.iter().any(|v| !v.is_finite()) {
             return Err(ContactError::NonFinite {
-                increment: self.increment + 1,
+                increment: self.driver.increment + 1,
                 iteration: 0,
             }
             .into());
@@ -142,16 +142,17 @@ impl ContactAnalysis {
             Some(p) => plate_force(self.model()?, &p.nodes, &u0, f, self.dim())?,
             None => Vector::zero(self.dim()),
         };
-        self.timings.load_solves += clock.elapsed().as_secs_f64();
+        self.driver.timings.load_solves += clock.elapsed().as_secs_f64();
         let u0c: Vec<f64> = self
+            .boundary
             .dofs
             .iter()
             .map(|&d| self.bodies.field_index(d).map_or(0.0, |i| u0[i]))
             .collect();
-        if self.loads.len() == KEPT_LOADS {
-            self.loads.remove(0);
+        if self.boundary.loads.len() == KEPT_LOADS {
+            self.boundary.loads.remove(0);
         }
-        self.loads.push(std::sync::Arc::new(LoadSolve {
+        self.boundary.loads.push(std::sync::Arc::new(LoadSolve {
             load: load.clone(),
             u0c: u0c.clone(),
             plate_force,

@@ -16,10 +16,10 @@ impl ContactAnalysis {
     /// # Errors
     /// A failed host solve while building the missing columns of `F`.
     pub fn set_reference_algebra(&mut self, on: bool) -> Result<()> {
-        if on && !self.flexibility.is_full() {
-            self.ensure_columns(0..self.dofs.len())?;
+        if on && !self.boundary.flexibility.is_full() {
+            self.ensure_columns(0..self.boundary.dofs.len())?;
         }
-        self.reference_algebra = on;
+        self.boundary.reference_algebra = on;
         Ok(())
     }
 
@@ -31,12 +31,13 @@ impl ContactAnalysis {
         u0c: &[f64],
         border: Option<&Border>,
     ) -> Result<boundary::Solution> {
-        let (tau, plate_motion, condition) = system.solve(u0c, &self.flexibility.matrix, border)?;
-        let forces = system.forces(&tau, self.dofs.len());
+        let (tau, plate_motion, condition) =
+            system.solve(u0c, &self.boundary.flexibility.matrix, border)?;
+        let forces = system.forces(&tau, self.boundary.dofs.len());
         // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
         let mut uc = u0c.to_vec();
         for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
-            for (u, c) in uc.iter_mut().zip(self.flexibility.column(j)) {
+            for (u, c) in uc.iter_mut().zip(self.boundary.flexibility.column(j)) {
                 *u += c * fj;
             }
         }
@@ -54,7 +55,7 @@ impl ContactAnalysis {
     /// analysis. Never needed (`K` does not change): a benchmark's control, not an option, so
     /// that `hycon bench skip` can show what factoring once saves.
     pub fn set_refactor_each_iteration(&mut self, on: bool) {
-        self.refactor_each_iteration = on;
+        self.boundary.refactor_each_iteration = on;
     }
 
     /// Factor `K` again and forget `F` (the refactor-every-iteration control); returns the
@@ -62,12 +63,13 @@ impl ContactAnalysis {
     pub(super) fn refactor(&mut self) -> Result<f64> {
         let clock = std::time::Instant::now();
         self.bodies.refactorize()?;
-        self.flexibility = if self.bodies.lazy_flexibility() {
-            Flexibility::lazy(self.dofs.len())
+        self.boundary.flexibility = if self.bodies.lazy_flexibility() {
+            Flexibility::lazy(self.boundary.dofs.len())
         } else {
-            Flexibility::full(self.bodies.flexibility(&self.dofs)?)
+            Flexibility::full(self.bodies.flexibility(&self.boundary.dofs)?)
         };
-        self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
+        self.boundary.node_flexibility =
+            NodeFlexibility::new(self.surfaces.pairs.iter().map(|p| p.a.len()));
         Ok(clock.elapsed().as_secs_f64())
     }
 }

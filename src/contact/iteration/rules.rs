@@ -53,10 +53,10 @@ impl ContactAnalysis {
             // B nodes over A segments whose two nodes are open (not in the fallback's last
             // attempt: `BNodes`)
             let inside = match set.b_node_judges(p, &facts, &tolerances) {
-                Some(open) => self.geometries[p].b_node_distances(&open, &x, xg),
+                Some(open) => self.surfaces.geometries[p].b_node_distances(&open, &x, xg),
                 None => Vec::new(),
             };
-            let a = &self.pairs[p].a;
+            let a = &self.surfaces.pairs[p].a;
             let mut hits: Vec<BNodeHit> = Vec::with_capacity(inside.len());
             for d in inside {
                 let g = d.distance;

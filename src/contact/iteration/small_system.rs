@@ -303,7 +303,7 @@ impl ContactAnalysis {
             basis: Vec::new(),
         };
         for (p, surface) in surfaces.iter().enumerate() {
-            let law = &*self.laws[p];
+            let law = &*self.surfaces.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
                 let directed = |d: &Vector| self.directed(&node.coupling, d);
                 sys.push_node(
