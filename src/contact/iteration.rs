@@ -84,14 +84,12 @@ use crate::model::Model;
 use crate::solver::Backend;
 use faer::Mat;
 use nalgebra::{DMatrix, DVector};
-use std::sync::{OnceLock, PoisonError};
+use std::sync::PoisonError;
 
 mod active_set;
 mod boundary;
 mod checks;
-mod cutback;
 mod driver;
-mod failure;
 mod fallback;
 mod loads;
 #[cfg(feature = "oracles")]
@@ -102,17 +100,15 @@ mod rules;
 mod small_system;
 mod surfaces;
 use active_set::{
-    ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
-    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
+    ActiveSet, BNodeHit, BNodes, EDGE_PENETRATION, Locks, NodeFacts, NodeKey, Rows, Tolerances,
+    close_nearest, closed_at_rest, linearized_state, rows_of,
 };
 use boundary::{Boundary, Flexibility, NodeFlexibility};
-use checks::change_ratio;
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
-use driver::{Converged, Driver, Settled};
-use failure::Failure;
+use driver::{Converged, Driver};
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
-use plate::{Border, Controls, Plate, plate_force};
+use plate::{Border, Plate, plate_force};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
 use surfaces::Surfaces;
@@ -878,32 +874,6 @@ impl ContactAnalysis {
         Ok(analysis)
     }
 
-    /// Whether an increment that the paper's rules do not settle starts again from the states
-    /// of the solution of its linearized conditions (`fallback.rs`; on by default). Off, the
-    /// iteration is the paper's alone, as before 0.7.0: a benchmark's control (`hycon bench
-    /// presses` compares the two), not an option.
-    pub fn set_fallback(&mut self, on: bool) {
-        self.driver.fallback = on;
-    }
-
-    /// How many increments so far converged only from the fallback's states (see
-    /// [`set_fallback`](Self::set_fallback)).
-    pub fn fallbacks(&self) -> usize {
-        self.driver.fallbacks
-    }
-
-    /// Call `monitor` with every iteration record from now on, also those of the tries the
-    /// automatic cutback halves (see [`IterationRecord::sub_increment`]; `None` removes it).
-    /// When it returns `false` the increment stops with [`Error::Callback`] (not retried) and
-    /// the last converged state is kept.
-    pub fn set_monitor(&mut self, monitor: Option<Monitor>) {
-        *self
-            .driver
-            .monitor
-            .get_mut()
-            .unwrap_or_else(PoisonError::into_inner) = monitor;
-    }
-
     /// The model (mesh, materials, boundary conditions); an error for a host's system.
     pub fn model(&self) -> Result<&Model> {
         self.bodies.as_model().ok_or_else(|| {
@@ -1023,6 +993,11 @@ impl ContactAnalysis {
     /// host solves with its own solver).
     pub fn factorizations(&self) -> usize {
         self.bodies.factorizations()
+    }
+
+    /// The caller's id of A node `(pair, index)`.
+    pub(super) fn external_a(&self, (p, k): NodeKey) -> usize {
+        self.bodies.external(self.surfaces.pairs[p].a[k])
     }
 
     /// Mean A segment length of pair `p` in the geometry's configuration `xg` (the length
@@ -1217,304 +1192,6 @@ impl ContactAnalysis {
             acc.add_scaled(c, &self.node_vector(j, uc))
         })
     }
-
-    /// Apply one load increment: total external forces `f` and total prescribed displacement
-    /// values `qp` (both over all dofs; `qp` read at the prescribed dofs). On success the
-    /// converged state advances; on failure it is left as it was and the error says why.
-    pub fn increment(&mut self, f: &[f64], qp: &[f64]) -> Result<IncrementInfo> {
-        if self.plate.is_some() {
-            return Err(Error::InvalidInput(
-                "this analysis has a rigid plate: use increment_with_plate".into(),
-            ));
-        }
-        self.cut_increment(f, qp, None)
-    }
-
-    fn run_increment(
-        &mut self,
-        f: &[f64],
-        qp: &[f64],
-        control: Option<Controls>,
-    ) -> Result<IncrementInfo> {
-        let number = self.driver.increment + 1;
-        let loads::Solved {
-            u0c,
-            plate_force: force0,
-            load,
-        } = self.load_solve(f, qp)?;
-        finite(&u0c, number, 0)?;
-        let border = control.and_then(|c| self.border(c, force0));
-        let mut states: Vec<Vec<NodeState>> = self
-            .nodes
-            .iter()
-            .map(|v| v.iter().map(|d| d.state).collect())
-            .collect();
-        if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
-            // a force-controlled body needs a support to start from: the nearest node
-            self.close_nearest(&self.surfaces.current, &mut states);
-        }
-        // the same totals again: resume with the last increment's locks and its way of
-        // judging B nodes, so that a contact set it settled by locking or in the fallback's
-        // last attempt settles at once on the same state
-        let (locks, b_nodes) = match (&self.driver.settled, control) {
-            (Some(last), None) if last.load == load => (last.locks.clone(), last.b_nodes),
-            _ => (Locks::default(), BNodes::Pointwise),
-        };
-        let attempt = Attempt {
-            number,
-            f,
-            qp,
-            control,
-            u0c: &u0c,
-            border: border.as_ref(),
-            force0,
-            load: &load,
-            startc: self.boundary.qc.clone(),
-            resolution: self.resolution(),
-            clock: std::time::Instant::now(),
-            // columns of a lazy F built during the iteration count as flexibility
-            flexibility_before: self.driver.timings.flexibility,
-        };
-        let mut records = Vec::new();
-        let first = self.iterate(&attempt, states, locks, b_nodes, &mut records);
-        match first {
-            Err(e)
-                if self.driver.fallback
-                    && border.is_none()
-                    && Failure::of(&e).fallback_may_settle() =>
-            {
-                // the paper's rules did not settle: start again from the states of the
-                // solution of the linearized conditions (fallback.rs), first with the
-                // paper's rules from those states, then with B nodes checked pointwise only at
-                // convergence (rules.rs)
-                let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
-                let mut info = self.iterate(
-                    &attempt,
-                    states.clone(),
-                    Locks::default(),
-                    BNodes::Pointwise,
-                    &mut records,
-                );
-                if info.is_err() {
-                    info = self.iterate(
-                        &attempt,
-                        states,
-                        Locks::default(),
-                        BNodes::AtConvergence,
-                        &mut records,
-                    );
-                }
-                // a state that settled but breaks a condition says more than the rules' failure
-                let info = info.map_err(|last| match last {
-                    Error::Contact(ContactError::ConditionViolated { .. }) => last,
-                    _ => e,
-                })?;
-                self.driver.fallbacks += 1;
-                Ok(info)
-            }
-            other => other,
-        }
-    }
-
-    /// The iteration of one increment from `states` and `locks` (module docs), its records
-    /// appended to `records`; on convergence the state advances.
-    fn iterate(
-        &mut self,
-        attempt: &Attempt<'_>,
-        states: Vec<Vec<NodeState>>,
-        locks: Locks,
-        b_nodes: BNodes,
-        records: &mut Vec<IterationRecord>,
-    ) -> Result<IncrementInfo> {
-        let Attempt {
-            number,
-            f,
-            qp,
-            control,
-            u0c,
-            border,
-            force0,
-            load,
-            ref startc,
-            resolution,
-            clock,
-            flexibility_before,
-        } = *attempt;
-        // iterate on the contact dofs only; geometry from the start configuration
-        let mut uc = startc.clone();
-        let mut surfaces = self.surfaces.current.clone();
-        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
-        let convergence = Convergence::new(self.options.tolerance);
-        let first_record = records.len();
-        // time of the refactor-every-iteration variant (feature `oracles`), counted as
-        // factorization
-        #[allow(unused_mut)]
-        let mut refactoring = 0.0;
-        let mut last: Option<(SmallSystem, boundary::Solution)> = None;
-        for step in 1..=self.options.max_iterations {
-            // iterations are counted over the increment's attempts
-            let iteration = first_record + step;
-            #[cfg(feature = "oracles")]
-            if self.boundary.refactor_each_iteration && step > 1 {
-                refactoring += self.refactor()?;
-            }
-            let states = set.states();
-            let system = self.build_system(&surfaces, states, &uc, startc)?;
-            // the contact set settled and R measured the last change: the same system again,
-            // whose solution is the last one to the bit (no factorization, no substitution)
-            let solution = match last.take() {
-                Some((previous, solution)) if previous == system => solution,
-                _ => self.solve_iteration(&system, u0c, border)?,
-            };
-            let (tau, plate_motion, condition, uc_new) = solution.clone();
-            let forces = system.forces(&tau, self.boundary.dofs.len());
-            finite(&uc_new, number, iteration)?;
-            self.widen_pairing(&uc_new, &mut surfaces)?;
-            self.update_geometry(&mut surfaces, &uc_new, startc)?;
-            let tractions = system.tractions(&tau, &surfaces, states, &self.surfaces.laws);
-            let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
-            let changes = set.changes(&proposed);
-            let r = change_ratio(&uc_new, &uc, startc, resolution, self.options.tolerance);
-            if !r.is_finite() {
-                return Err(ContactError::NonFinite {
-                    increment: number,
-                    iteration,
-                }
-                .into());
-            }
-            let violation = self.violation(
-                &surfaces,
-                states,
-                &tractions,
-                set.b_nodes(),
-                &uc_new,
-                startc,
-            );
-            let (active, stick, slip) = set.count();
-            let record = IterationRecord {
-                increment: number,
-                iteration,
-                active,
-                stick,
-                slip,
-                changes,
-                r,
-                condition,
-                violation: violation.relative,
-                sub_increment: self.driver.sub_increment,
-            };
-            records.push(record);
-            if let Some(monitor) = self
-                .driver
-                .monitor
-                .get_mut()
-                .unwrap_or_else(PoisonError::into_inner)
-                && !monitor(&record)
-            {
-                return Err(Error::Callback(format!(
-                    "increment {number}: the monitor stopped the iteration at iteration \
-                     {iteration}"
-                )));
-            }
-            uc = uc_new;
-            let iterate = Iterate {
-                changes,
-                r,
-                residual: None,
-            };
-            if convergence.reached(&iterate) {
-                let states = set.states();
-                self.uncovered(&surfaces, states)?;
-                self.passed_through(&surfaces, states, &uc, startc)?;
-                self.locks_hold(number, &surfaces, &set, &uc, startc)?;
-                self.small_sliding(number, states, &uc)?;
-                if violation.relative > CONDITION_LIMIT {
-                    return Err(ContactError::ConditionViolated {
-                        increment: number,
-                        node: self.external_a(violation.node),
-                        condition: violation.condition,
-                        relative: violation.relative,
-                    }
-                    .into());
-                }
-                self.driver.timings.factorization += refactoring;
-                self.driver.timings.iterations += clock.elapsed().as_secs_f64()
-                    - refactoring
-                    - (self.driver.timings.flexibility - flexibility_before);
-                let mut prescribed = qp.to_vec();
-                if let (Some(plate), Some(control)) = (&mut self.plate, control) {
-                    let directions = border.map_or(&[][..], |b| &b.directions[..]);
-                    plate.settle(
-                        control,
-                        (directions, &plate_motion),
-                        force0,
-                        &forces,
-                        &mut prescribed,
-                    );
-                }
-                let converged = Converged {
-                    load: f.to_vec(),
-                    prescribed,
-                    contact: forces,
-                };
-                self.driver.settled = control.is_none().then(|| Settled {
-                    load: load.to_vec(),
-                    locks: set.locks().clone(),
-                    b_nodes: set.b_nodes(),
-                });
-                return Ok(self.finish(
-                    number,
-                    iteration,
-                    set.states(),
-                    &tractions,
-                    uc,
-                    surfaces,
-                    converged,
-                    std::mem::take(records),
-                ));
-            }
-            last = Some((system, solution));
-            if let Commit::Cycle { returns_to, node } = set.commit(proposed) {
-                return Err(ContactError::Cycling {
-                    increment: number,
-                    iteration,
-                    returns_to,
-                    node: self.external_a(node),
-                }
-                .into());
-            }
-        }
-        Err(ContactError::NoConvergence {
-            increment: number,
-            iterations: records.len(),
-            last_r: records.last().map_or(f64::NAN, |r: &IterationRecord| r.r),
-        }
-        .into())
-    }
-
-    /// The caller's id of A node `(pair, index)`.
-    fn external_a(&self, (p, k): NodeKey) -> usize {
-        self.bodies.external(self.surfaces.pairs[p].a[k])
-    }
-}
-
-/// What one increment's iteration starts from: its loads and their solve, the start state.
-struct Attempt<'a> {
-    number: usize,
-    f: &'a [f64],
-    qp: &'a [f64],
-    control: Option<Controls>,
-    /// The load solve at the contact dofs.
-    u0c: &'a [f64],
-    border: Option<&'a Border>,
-    force0: Vector,
-    /// The load (`f` and `q_p`) the increment's locks are kept with.
-    load: &'a [f64],
-    /// The converged displacement of the contact dofs the increment starts from.
-    startc: Vec<f64>,
-    resolution: f64,
-    clock: std::time::Instant,
-    flexibility_before: f64,
 }
 
 /// The plane and axisymmetric geometry of every pair: its polylines with the measure of its A
@@ -1646,19 +1323,6 @@ fn check_facing(
     }
 }
 
-/// An iterate's displacements `u` must be finite (see [`ContactError::NonFinite`]).
-fn finite(u: &[f64], increment: usize, iteration: usize) -> Result<()> {
-    if u.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(ContactError::NonFinite {
-            increment,
-            iteration,
-        }
-        .into())
-    }
-}
-
 /// Name the pair in an error of its checks.
 pub(crate) fn in_pair(i: usize, e: Error) -> Error {
     match e {
@@ -1677,56 +1341,6 @@ fn check_host_nodes(pairs: &[ContactPair], bodies: &dyn Bodies) -> Result<()> {
         }
     }
     Ok(())
-}
-
-impl ContactAnalysis {
-    /// Accept the converged iterate: store the contact state, the node data and the records;
-    /// the full field is recovered only when asked for.
-    #[allow(clippy::too_many_arguments)]
-    fn finish(
-        &mut self,
-        number: usize,
-        iterations: usize,
-        states: &[Vec<NodeState>],
-        tractions: &[Vec<Traction>],
-        uc: Vec<f64>,
-        surfaces: Vec<ContactSurface>,
-        converged: Converged,
-        records: Vec<IterationRecord>,
-    ) -> IncrementInfo {
-        let motion: Vec<f64> = uc
-            .iter()
-            .zip(&self.boundary.qc)
-            .map(|(a, b)| a - b)
-            .collect();
-        self.driver.largest_motion = self.driver.largest_motion.max(checks::norm2(&motion));
-        self.driver.largest_node_motion = (self.driver.largest_node_motion).max(
-            checks::largest_node_motion(&uc, &self.boundary.qc, self.dim()),
-        );
-        self.boundary.qc = uc;
-        self.surfaces.current = surfaces;
-        self.driver.previous = self.driver.converged.replace(converged);
-        if let Some((_, seconds)) = self.driver.field.take() {
-            self.driver.timings.recovery += seconds;
-        }
-        for (p, s) in states.iter().enumerate() {
-            for (k, &state) in s.iter().enumerate() {
-                let traction = tractions[p][k];
-                self.nodes[p][k] = NodeData { state, traction };
-            }
-        }
-        self.driver.increment = number;
-        self.driver.records.extend(records);
-        let (active, _, slip) = count(states);
-        IncrementInfo {
-            increment: number,
-            iterations,
-            active,
-            slip,
-            sub_increments: 1,
-            cutbacks: 0,
-        }
-    }
 }
 
 #[cfg(test)]

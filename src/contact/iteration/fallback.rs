@@ -37,10 +37,11 @@
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
+use super::driver::Attempt;
 use super::small_system::Row;
 use super::{
-    Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
-    closed_at_rest, column, dot, linearized_state, plate,
+    ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential, closed_at_rest,
+    column, dot, linearized_state, plate,
 };
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use plate::dot_dense;
