@@ -103,7 +103,7 @@ use active_set::{
     ActiveSet, BNodeHit, BNodes, EDGE_PENETRATION, Locks, NodeFacts, NodeKey, Rows, Tolerances,
     close_nearest, closed_at_rest, linearized_state, rows_of,
 };
-use boundary::{Boundary, Flexibility, NodeFlexibility};
+use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use driver::{Converged, Driver};
 pub use loads::LOAD_LIMIT;
@@ -845,6 +845,7 @@ impl ContactAnalysis {
         let boundary = Boundary::new(
             dofs,
             bodies.positions().len(),
+            bodies.dim(),
             flexibility,
             pairs.iter().map(|p| p.a.len()),
         );
@@ -856,6 +857,8 @@ impl ContactAnalysis {
                 current: reference.clone(),
                 reference,
                 reach,
+                kinematics: options.kinematics,
+                search_distance: options.search_distance,
             },
             boundary,
             driver: Driver::new(timings),
@@ -1000,35 +1003,33 @@ impl ContactAnalysis {
         self.bodies.external(self.surfaces.pairs[p].a[k])
     }
 
-    /// Mean A segment length of pair `p` in the geometry's configuration `xg` (the length
-    /// scale of the gap tolerance and the search distance).
-    /// The friction law of A node `k` of pair `p`: the pair's, but none for a node on the axis
-    /// in axisymmetry (in the reference configuration, [`ContactGeometry::frictionless_at`]). There
-    /// `tau_rz = 0` by symmetry, and a tangential row would constrain the radial slip that
-    /// `u_r = 0` on both sides already holds: with B's segment over A's axis node spanning
-    /// as many of A's active nodes' radial dofs as it has rows, the field `u_r = c r` (which
-    /// both sides represent with `u_r(0) = 0`) slips nowhere, so the stick rows were dependent
-    /// and the small system singular. Such a node closes frictionless and keeps `ts = 0`.
+    /// The friction law of A node `k` of pair `p` (see [`Surfaces::node_law`]).
     fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
-        if self.surfaces.geometries[p].frictionless_at(k, self.bodies.positions()) {
-            &Coulomb::NONE
-        } else {
-            &*self.surfaces.laws[p]
-        }
+        self.surfaces.node_law(p, k, self.bodies.positions())
     }
 
-    fn mean_size(&self, p: usize, xg: &[f64]) -> f64 {
-        self.surfaces.geometries[p].mean_size(xg)
-    }
-
-    /// How far the pairing of pair `p` reaches during an increment: `search_distance` mean A
-    /// segment lengths, or twice the increment's largest motion of a contact node when that is
-    /// more. Two surfaces approach each other by at most twice that motion in an increment, so
-    /// a pairing that held at its start still finds its partner, however fine the mesh (a
-    /// reach tied to the element size alone breaks exactly when a user refines).
+    /// How far the pairing of pair `p` reaches in the iterate `uc` of an increment that
+    /// started at `startc` (see [`Surfaces::search_reach`]).
     fn search_reach(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
         let motion = checks::largest_node_motion(uc, startc, self.dim());
-        (self.options.search_distance * self.mean_size(p, xg)).max(2.0 * motion)
+        self.surfaces.search_reach(p, xg, motion)
+    }
+
+    /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (see
+    /// [`Boundary::positions`]).
+    fn positions(&self, uc: &[f64]) -> Vec<f64> {
+        self.boundary.positions(self.bodies.positions(), uc)
+    }
+
+    /// The positions the contact geometry is evaluated at, given the current ones `x` (see
+    /// [`Surfaces::geometry_positions`]).
+    fn geometry_positions<'a>(&'a self, x: &'a [f64]) -> &'a [f64] {
+        self.surfaces.geometry_positions(self.bodies.positions(), x)
+    }
+
+    /// The dimension of the positions: the bodies' equations per node.
+    fn dim(&self) -> usize {
+        self.bodies.dim()
     }
 
     /// A displacement scale below which an increment's iterates cannot be told apart, the
@@ -1052,145 +1053,6 @@ impl ContactAnalysis {
                     .max(round_off / self.options.tolerance)
             }
         }
-    }
-
-    /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
-    /// nodes keep their reference positions: the contact geometry never reads them).
-    fn positions(&self, uc: &[f64]) -> Vec<f64> {
-        let mut x = self.bodies.positions().to_vec();
-        for (&d, &u) in self.boundary.dofs.iter().zip(uc) {
-            x[d] += u;
-        }
-        x
-    }
-
-    /// The positions the contact geometry is evaluated at, given the current ones `x`: the
-    /// reference positions `X` under small kinematics, `x` itself under finite kinematics.
-    fn geometry_positions<'a>(&'a self, x: &'a [f64]) -> &'a [f64] {
-        match self.options.kinematics {
-            Kinematics::Small => self.bodies.positions(),
-            Kinematics::Finite => x,
-        }
-    }
-
-    /// Bring the contact geometry `surfaces` to the displacement `uc` of the contact dofs.
-    /// Finite kinematics: evaluate every pair at the current positions (reusing the surfaces'
-    /// buffers). Small kinematics: nothing but the gaps changes, linearly:
-    /// `R_C,k = R_C,k(X) + sum_j c_kj u_j`, `normal_gap_k = -n_k . R_C,k / covered weight`
-    /// (and `mean_distance` moves with `normal_gap`), with the reference pairing, frames,
-    /// weights and coupling rows.
-    fn update_geometry(
-        &self,
-        surfaces: &mut [ContactSurface],
-        uc: &[f64],
-        startc: &[f64],
-    ) -> Result<()> {
-        match self.options.kinematics {
-            Kinematics::Finite => {
-                let x = self.positions(uc);
-                self.resolved(&x)?;
-                for (p, surface) in surfaces.iter_mut().enumerate() {
-                    let distance = self.search_reach(p, &x, uc, startc);
-                    self.surfaces.geometries[p].evaluate_into(&x, distance, surface)?;
-                }
-            }
-            Kinematics::Small => {
-                for (surface, reference) in surfaces.iter_mut().zip(&self.surfaces.reference) {
-                    for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
-                        let change = self.coupled(&r.coupling, uc);
-                        node.gap = r.gap + change;
-                        if r.covered_weight > 0.0 {
-                            node.normal_gap = -r.frame.normal().dot(&node.gap) / r.covered_weight;
-                            node.mean_distance = r.mean_distance + (node.normal_gap - r.normal_gap);
-                        }
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// Small kinematics: keep the frozen pairing wide enough for displacement `uc` of the
-    /// contact dofs. A point of A at reference distance `g0` from B along A's normal can touch
-    /// B only if `g0 <= |u_A| + |u_B| <= 2 max |u|` (the largest nodal displacement of the
-    /// pair since the reference configuration), so whenever `2 max |u|` exceeds the pair's
-    /// reach the pairing is evaluated again in the reference configuration within
-    /// `4 max |u|` (a growing load widens it a logarithmic number of times). Without this, a
-    /// reach of a few element lengths loses the outer part of a contact zone whose initial
-    /// gaps span more elements than that: exactly what refining the mesh does.
-    ///
-    /// Every point paired before keeps its partner (a new hit is farther than the old reach),
-    /// so the nodes whose data change are those that were not fully covered. If one of them
-    /// has been active its directions' flexibility is stale and all of it is rebuilt as nodes
-    /// close again. The working `surfaces` and the converged ones are brought to the new
-    /// pairing (the converged state itself, node states and tractions, does not change).
-    fn widen_pairing(&mut self, uc: &[f64], surfaces: &mut [ContactSurface]) -> Result<()> {
-        if self.options.kinematics != Kinematics::Small {
-            return Ok(());
-        }
-        for p in 0..self.surfaces.pairs.len() {
-            let pair = &self.surfaces.pairs[p];
-            let motion = pair
-                .a
-                .iter()
-                .chain(&pair.b)
-                .map(|&n| self.node_vector(n, uc).norm())
-                .fold(0.0f64, f64::max);
-            if 2.0 * motion <= self.surfaces.reach[p] {
-                continue;
-            }
-            let reach = 4.0 * motion;
-            let x = self.bodies.positions();
-            let wider = self.surfaces.geometries[p].evaluate(x, reach)?;
-            let stale = (wider.nodes.iter().zip(&self.surfaces.reference[p].nodes))
-                .enumerate()
-                .any(|(k, (new, old))| new != old && self.boundary.node_flexibility.knows(p, k));
-            if stale {
-                self.boundary.node_flexibility =
-                    NodeFlexibility::new(self.surfaces.pairs.iter().map(|p| p.a.len()));
-            }
-            self.surfaces.reach[p] = reach;
-            self.surfaces.reference[p] = wider;
-            surfaces[p] = self.surfaces.reference[p].clone();
-            let mut converged = std::mem::take(&mut self.surfaces.current);
-            converged[p] = self.surfaces.reference[p].clone();
-            self.update_geometry(&mut converged, &self.boundary.qc, &self.boundary.qc)?;
-            self.surfaces.current = converged;
-        }
-        Ok(())
-    }
-
-    /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
-    /// only, so every dof asked for has one.
-    fn contact_slot(&self, d: usize) -> usize {
-        self.boundary.slot[d].expect("a dof of a contact node")
-    }
-
-    /// The dimension of the positions: the bodies' equations per node.
-    fn dim(&self) -> usize {
-        self.bodies.dim()
-    }
-
-    /// The global dof of component `dir` of node `node`: `dim node + dir`, the bodies'
-    /// numbering of their positions and displacements.
-    fn node_dof(&self, node: usize, dir: usize) -> usize {
-        self.dim() * node + dir
-    }
-
-    /// Contact node `n`'s vector of `u` over the contact dofs.
-    fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
-        let mut v = Vector::zero(self.dim());
-        for (c, out) in v.components_mut().iter_mut().enumerate() {
-            *out = uc[self.contact_slot(self.node_dof(n, c))];
-        }
-        v
-    }
-
-    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
-    fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
-        (coupling.iter()).fold(Vector::zero(self.dim()), |acc, &(j, c)| {
-            acc.add_scaled(c, &self.node_vector(j, uc))
-        })
     }
 }
 

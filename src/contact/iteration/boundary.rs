@@ -34,6 +34,8 @@ pub(super) struct Boundary {
     pub(super) dofs: Vec<usize>,
     /// Position of each global dof in `dofs` (`None`: not a contact dof).
     pub(super) slot: Vec<Option<usize>>,
+    /// The bodies' equations per node.
+    dim: usize,
     /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
     /// built when first needed (all at once from a factor; a host callback's as nodes become
     /// active).
@@ -65,6 +67,7 @@ impl Boundary {
     pub(super) fn new(
         dofs: Vec<usize>,
         n: usize,
+        dim: usize,
         flexibility: Flexibility,
         a_nodes: impl Iterator<Item = usize>,
     ) -> Self {
@@ -84,7 +87,59 @@ impl Boundary {
             flexibility,
             dofs,
             slot,
+            dim,
         }
+    }
+
+    /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
+    /// only, so every dof asked for has one.
+    pub(super) fn contact_slot(&self, d: usize) -> usize {
+        self.slot[d].expect("a dof of a contact node")
+    }
+
+    /// Contact node `n`'s vector of `u` over the contact dofs (its dofs `dim n + c`, the
+    /// bodies' numbering of their positions and displacements).
+    pub(super) fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
+        let mut v = Vector::zero(self.dim);
+        for (c, out) in v.components_mut().iter_mut().enumerate() {
+            *out = uc[self.contact_slot(self.dim * n + c)];
+        }
+        v
+    }
+
+    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
+    pub(super) fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
+        (coupling.iter()).fold(Vector::zero(self.dim), |acc, &(j, c)| {
+            acc.add_scaled(c, &self.node_vector(j, uc))
+        })
+    }
+
+    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
+    pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
+        let (dim, d) = (self.dim, d.components());
+        let mut row = Vec::with_capacity(coupling.len() * dim);
+        for &(j, c) in coupling {
+            for (i, &di) in d.iter().enumerate() {
+                row.push((self.contact_slot(dim * j + i), c * di));
+            }
+        }
+        row
+    }
+
+    /// Current positions `X + u` of the nodes from their reference positions `x0`, with `u`
+    /// given at the contact dofs (the other nodes keep their reference positions: the contact
+    /// geometry never reads them).
+    pub(super) fn positions(&self, x0: &[f64], uc: &[f64]) -> Vec<f64> {
+        let mut x = x0.to_vec();
+        for (&d, &u) in self.dofs.iter().zip(uc) {
+            x[d] += u;
+        }
+        x
+    }
+
+    /// Forget the node flexibility of every direction (see [`NodeFlexibility::forget`]).
+    pub(super) fn forget_directions(&mut self) {
+        self.node_flexibility.forget();
     }
 }
 
@@ -197,6 +252,11 @@ impl NodeFlexibility {
             index: a_nodes.map(|n| vec![[None; 1 + MAX_TANGENTS]; n]).collect(),
             ..Default::default()
         }
+    }
+
+    /// Forget every direction (their flexibility is stale, see `Surfaces::widen`).
+    pub(super) fn forget(&mut self) {
+        *self = Self::new(self.index.iter().map(Vec::len));
     }
 
     /// The place of `row` in a node's `index`: 0 for the normal, `1 + i` for tangent `s_i`.
@@ -998,7 +1058,8 @@ impl ContactAnalysis {
             .iter()
             .map(|&(p, k, row)| {
                 let node = &self.surfaces.reference[p].nodes[k];
-                self.directed(&node.coupling, &row.direction(&node.frame))
+                self.boundary
+                    .directed(&node.coupling, &row.direction(&node.frame))
             })
             .collect();
         if new.is_empty() {
@@ -1424,11 +1485,11 @@ impl ContactAnalysis {
                 .min_by(|a, b| a.1.normal_gap.total_cmp(&b.1.normal_gap));
             if let Some((k, node)) = nearest {
                 rows.push((p, k, Row::Normal));
-                keys.push(self.directed(&node.coupling, &node.frame.normal()));
+                keys.push(self.boundary.directed(&node.coupling, &node.frame.normal()));
                 if !self.surfaces.laws[p].is_frictionless() {
                     for (i, s) in kept_tangents(&node.frame) {
                         rows.push((p, k, Row::Tangent(i)));
-                        keys.push(self.directed(&node.coupling, &s));
+                        keys.push(self.boundary.directed(&node.coupling, &s));
                     }
                 }
             }

@@ -87,7 +87,7 @@ impl ContactAnalysis {
     /// repeated increment accepts the gaps its predecessors accepted (judged against its own
     /// vanishing motion, a node left open a hair inside the tolerance would close and reopen).
     pub(super) fn gap_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
-        let h = self.mean_size(p, xg);
+        let h = self.surfaces.geometries[p].mean_size(xg);
         self.motion_scale(p, xg, uc, startc).min(h)
     }
 
@@ -99,7 +99,7 @@ impl ContactAnalysis {
     /// threshold (by components, a rotation by 0.6 rad changed the tractions of round 83973 of
     /// `contact_randomized 1000 1` by 1.8e-4 of their peak).
     pub(super) fn motion_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
-        let h = self.mean_size(p, xg);
+        let h = self.surfaces.geometries[p].mean_size(xg);
         let motion = largest_node_motion(uc, startc, self.dim());
         motion.max(self.driver.largest_node_motion).max(1e-12 * h)
     }
@@ -164,7 +164,7 @@ impl ContactAnalysis {
         startc: &[f64],
     ) -> Tangential {
         tangential_parts(node, |s| {
-            let row = self.directed(&node.coupling, s);
+            let row = self.boundary.directed(&node.coupling, s);
             (dot(&row, uc) - dot(&row, startc)) / node.weight
         })
     }
@@ -205,7 +205,7 @@ impl ContactAnalysis {
                 })
         };
         let along = |node: &ContactNode, d: Vector| {
-            let change = self.coupled(&node.coupling, uc);
+            let change = self.boundary.coupled(&node.coupling, uc);
             d.dot(&change) / node.covered_weight
         };
         let delta = active()
@@ -294,34 +294,6 @@ impl ContactAnalysis {
                     }
                     .into());
                 }
-            }
-        }
-        Ok(())
-    }
-
-    /// Under finite kinematics the geometry is evaluated at the current positions
-    /// `x = X + u`, which double precision holds to about `POSITION_ROUND_OFF |x|`. When the
-    /// displacement `u` of a segment's end is so large that this round-off reaches the
-    /// segment's length (its reference length, the scale the mesh describes the surface at,
-    /// or its current one), the positions no longer carry the surface's shape: the segment's
-    /// direction, its normal and the gaps measured from it are round-off, and no contact state
-    /// can be judged (a press of `1e16` body sizes in one increment moved every A node far
-    /// behind B and left them all open; at `1e66` a segment collapsed to zero length; at
-    /// `1e300` both bodies were stretched to `1e299` and the contact system was singular).
-    /// Such an iterate fails the increment ([`ContactError::Unresolved`]), at any magnitude.
-    /// (Large coordinates alone, a model far from its origin, are the caller's choice and are
-    /// not judged here: only the motion is.)
-    pub(super) fn resolved(&self, x: &[f64]) -> Result<()> {
-        let reference = self.bodies.positions();
-        for geometry in &self.surfaces.geometries {
-            if let Some(u) = geometry.unresolved(x, reference, POSITION_ROUND_OFF) {
-                return Err(ContactError::Unresolved {
-                    increment: self.driver.increment + 1,
-                    node: self.bodies.external(u.node),
-                    motion: u.motion,
-                    length: u.length,
-                }
-                .into());
             }
         }
         Ok(())

@@ -37,7 +37,7 @@
 //! and the error returned: the analysis is exactly as before the call.
 
 use super::active_set::{ActiveSet, BNodes, Commit, Convergence, Iterate, Locks, count};
-use super::boundary::{NodeFlexibility, Solution};
+use super::boundary::Solution;
 use super::checks::{self, change_ratio};
 use super::plate::{Border, Controls, Plate};
 use super::small_system::SmallSystem;
@@ -282,12 +282,11 @@ impl ContactAnalysis {
     }
 
     /// Put back what [`before`](Self::before) took. If a try widened the pairing (small
-    /// kinematics, see `widen_pairing`), the node flexibility may hold directions of the wider
+    /// kinematics, see `Surfaces::widen`), the node flexibility may hold directions of the wider
     /// pairing: it is emptied, to be rebuilt as nodes close.
     fn restore_before(&mut self, b: Before) {
         if b.reach != self.surfaces.reach {
-            self.boundary.node_flexibility =
-                NodeFlexibility::new(self.surfaces.pairs.iter().map(|p| p.a.len()));
+            self.boundary.forget_directions();
         }
         self.boundary.loads = b.loads;
         self.surfaces.reach = b.reach;
@@ -612,8 +611,16 @@ impl ContactAnalysis {
             let (tau, plate_motion, condition, uc_new) = solution.clone();
             let forces = system.forces(&tau, self.boundary.dofs.len());
             finite(&uc_new, number, iteration)?;
-            self.widen_pairing(&uc_new, &mut surfaces)?;
-            self.update_geometry(&mut surfaces, &uc_new, startc)?;
+            self.surfaces
+                .widen(&uc_new, &mut surfaces, &*self.bodies, &mut self.boundary)?;
+            let motion = checks::largest_node_motion(&uc_new, startc, self.dim());
+            self.surfaces.update(
+                &mut surfaces,
+                &*self.bodies,
+                &self.boundary,
+                &uc_new,
+                (number, motion),
+            )?;
             let tractions = system.tractions(&tau, &surfaces, states, &self.surfaces.laws);
             let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
             let changes = set.changes(&proposed);

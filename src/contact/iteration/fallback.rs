@@ -90,7 +90,7 @@ impl ContactAnalysis {
                     if !node.is_covered() {
                         return false;
                     }
-                    let row = self.directed(&node.coupling, &node.frame.normal());
+                    let row = self.boundary.directed(&node.coupling, &node.frame.normal());
                     let rg = node.gap.dot(&node.frame.normal());
                     rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
                 })

@@ -3,7 +3,7 @@
 //! product's algebra with, and the benchmark's control that factors `K` again in every
 //! iteration.
 
-use super::{Border, ContactAnalysis, Flexibility, NodeFlexibility, Result, SmallSystem, boundary};
+use super::{Border, ContactAnalysis, Flexibility, Result, SmallSystem, boundary};
 
 impl ContactAnalysis {
     /// Run the iteration on the dense reference algebra (`true`) or on the lazy, cached one
@@ -68,8 +68,7 @@ impl ContactAnalysis {
         } else {
             Flexibility::full(self.bodies.flexibility(&self.boundary.dofs)?)
         };
-        self.boundary.node_flexibility =
-            NodeFlexibility::new(self.surfaces.pairs.iter().map(|p| p.a.len()));
+        self.boundary.forget_directions();
         Ok(clock.elapsed().as_secs_f64())
     }
 }

@@ -77,7 +77,7 @@ impl ContactAnalysis {
             for direction in std::iter::once(node.frame.normal()).chain(tangents) {
                 for &(j, c) in &node.coupling {
                     for (d, component) in direction.components().iter().enumerate() {
-                        let field = self.bodies.field_index(self.node_dof(j, d));
+                        let field = self.bodies.field_index(self.dim() * j + d);
                         if let Some(i) = field.filter(|_| *component != 0.0) {
                             rows.columns.push(i);
                             rows.values.push(c * component);

@@ -275,18 +275,6 @@ impl SmallSystem {
 }
 
 impl ContactAnalysis {
-    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
-    pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
-        let (dim, d) = (self.dim(), d.components());
-        let mut row = Vec::with_capacity(coupling.len() * dim);
-        for &(j, c) in coupling {
-            for (i, &di) in d.iter().enumerate() {
-                row.push((self.contact_slot(dim * j + i), c * di));
-            }
-        }
-        row
-    }
-
     /// Assemble the rows, columns and right-hand sides for the active nodes.
     pub(super) fn build_system(
         &self,
@@ -305,7 +293,7 @@ impl ContactAnalysis {
         for (p, surface) in surfaces.iter().enumerate() {
             let law = &*self.surfaces.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let directed = |d: &Vector| self.directed(&node.coupling, d);
+                let directed = |d: &Vector| self.boundary.directed(&node.coupling, d);
                 sys.push_node(
                     (p, k),
                     node,
