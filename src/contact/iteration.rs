@@ -108,7 +108,7 @@ pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use driver::{Converged, Driver};
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
-use plate::{Border, Plate, plate_force};
+use plate::{Border, Plate};
 pub use results::ConstraintRows;
 use small_system::{SmallSystem, Sparse, column, dot};
 use surfaces::Surfaces;
@@ -842,13 +842,14 @@ impl ContactAnalysis {
                     .collect()
             })
             .collect();
-        let boundary = Boundary::new(
+        let mut boundary = Boundary::new(
             dofs,
             bodies.positions().len(),
             bodies.dim(),
             flexibility,
             pairs.iter().map(|p| p.a.len()),
         );
+        (boundary.flexibility_seconds, timings.flexibility) = (timings.flexibility, 0.0);
         let mut analysis = ContactAnalysis {
             surfaces: Surfaces {
                 pairs,
@@ -869,21 +870,17 @@ impl ContactAnalysis {
         };
         if !analysis.boundary.flexibility.is_full() {
             let clock = std::time::Instant::now();
-            let before = analysis.driver.timings.flexibility;
-            analysis.prime()?;
+            let before = analysis.boundary.flexibility_seconds;
+            (analysis.boundary).prime(&mut *analysis.bodies, &analysis.surfaces)?;
             // (node directions time themselves; columns through ensure_columns too)
-            analysis.driver.timings.flexibility = before + clock.elapsed().as_secs_f64();
+            analysis.boundary.flexibility_seconds = before + clock.elapsed().as_secs_f64();
         }
         Ok(analysis)
     }
 
     /// The model (mesh, materials, boundary conditions); an error for a host's system.
     pub fn model(&self) -> Result<&Model> {
-        self.bodies.as_model().ok_or_else(|| {
-            Error::InvalidInput(
-                "this analysis runs on a host's system: hycon has no model of it".into(),
-            )
-        })
+        model_of(&*self.bodies)
     }
 
     /// The displacement field of the last converged increment (zero before the first): over
@@ -978,6 +975,8 @@ impl ContactAnalysis {
     /// Where the time went so far.
     pub fn timings(&self) -> Timings {
         let mut t = self.driver.timings;
+        t.flexibility = self.boundary.flexibility_seconds;
+        t.load_solves = self.boundary.load_seconds;
         t.recovery += self.driver.field.get().map_or(0.0, |f| f.1)
             + *self
                 .driver
@@ -1183,6 +1182,15 @@ fn check_facing(
         ))),
         Side::Inside(None) => Ok(()),
     }
+}
+
+/// The model of `bodies`; an error for a host's system.
+fn model_of(bodies: &dyn Bodies) -> Result<&Model> {
+    bodies.as_model().ok_or_else(|| {
+        Error::InvalidInput(
+            "this analysis runs on a host's system: hycon has no model of it".into(),
+        )
+    })
 }
 
 /// Name the pair in an error of its checks.

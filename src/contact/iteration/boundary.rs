@@ -14,10 +14,12 @@
 //! `oracles` (`oracles.rs`); the tests compare the two.
 
 use super::loads::LoadSolve;
+use super::surfaces::Surfaces;
 use super::{
-    Border, ContactAnalysis, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
+    Border, ContactPair, ContactSurface, DMatrix, Kinematics, Mat, Result, Sparse, column, dot,
+    small_system,
 };
-use crate::contact::bodies::Images;
+use crate::contact::bodies::{Bodies, Images};
 use crate::contact::space::{Vector, node};
 use crate::contact::tangent::MAX_TANGENTS;
 use crate::solver::vector_state::clean_after;
@@ -35,7 +37,11 @@ pub(super) struct Boundary {
     /// Position of each global dof in `dofs` (`None`: not a contact dof).
     pub(super) slot: Vec<Option<usize>>,
     /// The bodies' equations per node.
-    dim: usize,
+    pub(super) dim: usize,
+    /// Seconds spent building `F` (see [`Timings::flexibility`](super::Timings::flexibility)).
+    pub(super) flexibility_seconds: f64,
+    /// Seconds spent in load solves (see [`Timings::load_solves`](super::Timings::load_solves)).
+    pub(super) load_seconds: f64,
     /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
     /// built when first needed (all at once from a factor; a host callback's as nodes become
     /// active).
@@ -88,6 +94,8 @@ impl Boundary {
             dofs,
             slot,
             dim,
+            flexibility_seconds: 0.0,
+            load_seconds: 0.0,
         }
     }
 
@@ -390,7 +398,7 @@ fn shared_runs(a: &[usize], b: &[usize]) -> Vec<(usize, usize, usize)> {
     runs
 }
 
-/// What [`ContactAnalysis::solve_boundary`] gives: the unknowns `tau`, the plate's
+/// What [`Boundary::solve_boundary`] gives: the unknowns `tau`, the plate's
 /// force-controlled translations, the condition estimate of the small system and the new
 /// displacement of the contact dofs.
 pub(super) type Solution = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
@@ -436,7 +444,7 @@ struct Slip {
 /// theirs: only the rows of the new and reordered unknowns are computed
 /// ([`cholesky_extending`]). Between iterations the contact set changes at the zone's edges,
 /// so the unknowns are ordered with those of the kept factor first and new ones by distance
-/// from the zone's centre ([`ContactAnalysis::factor_order`]).
+/// from the zone's centre ([`Boundary::factor_order`]).
 #[derive(Debug, Clone)]
 pub(super) struct KeptFactor {
     /// The direction (node-flexibility index) of each row of `l`.
@@ -996,14 +1004,18 @@ fn solve_and_estimate(a_norm: f64, lu: &Dense, rhs: faer::MatMut<'_, f64>) -> Op
     condition.is_finite().then_some(condition)
 }
 
-impl ContactAnalysis {
+impl Boundary {
     /// Make the columns `slots` of `F` known: a lazy flexibility gets the missing ones from
     /// one batch of solves, `F e_j = E^T K^-1 e_j` (see [`Bodies::flexibility_times`]); the
     /// time counts as flexibility.
-    pub(super) fn ensure_columns(&mut self, slots: impl IntoIterator<Item = usize>) -> Result<()> {
+    pub(super) fn ensure_columns(
+        &mut self,
+        bodies: &mut dyn Bodies,
+        slots: impl IntoIterator<Item = usize>,
+    ) -> Result<()> {
         let mut missing: Vec<usize> = slots
             .into_iter()
-            .filter(|&j| !self.boundary.flexibility.known[j])
+            .filter(|&j| !self.flexibility.known[j])
             .collect();
         if missing.is_empty() {
             return Ok(());
@@ -1012,13 +1024,12 @@ impl ContactAnalysis {
         missing.dedup();
         let clock = std::time::Instant::now();
         let units: Vec<Sparse> = missing.iter().map(|&j| vec![(j, 1.0)]).collect();
-        let columns = self.bodies.flexibility_times(&self.boundary.dofs, &units)?;
+        let columns = bodies.flexibility_times(&self.dofs, &units)?;
         for (c, &j) in missing.iter().enumerate() {
-            self.boundary
-                .flexibility
+            self.flexibility
                 .set_column(j, columns.column(c).iter().copied());
         }
-        self.driver.timings.flexibility += clock.elapsed().as_secs_f64();
+        self.flexibility_seconds += clock.elapsed().as_secs_f64();
         Ok(())
     }
 
@@ -1026,7 +1037,7 @@ impl ContactAnalysis {
     fn apply_flexibility(&self, v: &Sparse, out: &mut [f64]) {
         out.iter_mut().for_each(|o| *o = 0.0);
         for &(c, w) in v {
-            for (o, f) in out.iter_mut().zip(self.boundary.flexibility.column(c)) {
+            for (o, f) in out.iter_mut().zip(self.flexibility.column(c)) {
                 *o += f * w;
             }
         }
@@ -1039,6 +1050,8 @@ impl ContactAnalysis {
     #[allow(clippy::type_complexity)]
     fn node_directions(
         &mut self,
+        bodies: &mut dyn Bodies,
+        reference: &[ContactSurface],
         system: &SmallSystem,
     ) -> Result<(Vec<usize>, Vec<Vec<(usize, f64)>>)> {
         let mut new: Vec<(usize, usize, Row)> = Vec::new();
@@ -1050,56 +1063,48 @@ impl ContactAnalysis {
                 .map(|&(p, k, row, _)| (p, k, row)),
         );
         for key in keys {
-            if self.boundary.node_flexibility.get(key).is_none() && !new.contains(&key) {
+            if self.node_flexibility.get(key).is_none() && !new.contains(&key) {
                 new.push(key);
             }
         }
         let vectors: Vec<Sparse> = new
             .iter()
             .map(|&(p, k, row)| {
-                let node = &self.surfaces.reference[p].nodes[k];
-                self.boundary
-                    .directed(&node.coupling, &row.direction(&node.frame))
+                let node = &reference[p].nodes[k];
+                self.directed(&node.coupling, &row.direction(&node.frame))
             })
             .collect();
         if new.is_empty() {
-        } else if self.boundary.flexibility.is_full() {
-            let m = self.boundary.dofs.len();
+        } else if self.flexibility.is_full() {
+            let m = self.dofs.len();
             let mut y = DMatrix::zeros(m, new.len());
             for (c, v) in vectors.iter().enumerate() {
                 self.apply_flexibility(v, &mut y.as_mut_slice()[c * m..(c + 1) * m]);
             }
-            self.boundary
-                .node_flexibility
-                .add_responses(&new, vectors, &y);
+            self.node_flexibility.add_responses(&new, vectors, &y);
         } else {
             let clock = std::time::Instant::now();
-            if self.bodies.has_images() {
+            if bodies.has_images() {
                 // batches of neighbouring directions share most of their reach
                 let mut vectors = vectors.into_iter();
                 let batches: Vec<Vec<Sparse>> = new
                     .chunks(IMAGE_BATCH)
                     .map(|keys| vectors.by_ref().take(keys.len()).collect())
                     .collect();
-                let images = self
-                    .bodies
-                    .images(&self.boundary.dofs, &batches)?
+                let images = bodies
+                    .images(&self.dofs, &batches)?
                     .expect("the bodies have images");
                 for ((keys, vs), images) in new.chunks(IMAGE_BATCH).zip(batches).zip(images) {
-                    self.boundary.node_flexibility.add_images(keys, vs, images);
+                    self.node_flexibility.add_images(keys, vs, images);
                 }
             } else {
                 // one right-hand side per new direction, not one per dof it touches
-                let y = self
-                    .bodies
-                    .flexibility_times(&self.boundary.dofs, &vectors)?;
-                self.boundary
-                    .node_flexibility
-                    .add_responses(&new, vectors, &y);
+                let y = bodies.flexibility_times(&self.dofs, &vectors)?;
+                self.node_flexibility.add_responses(&new, vectors, &y);
             }
-            self.driver.timings.flexibility += clock.elapsed().as_secs_f64();
+            self.flexibility_seconds += clock.elapsed().as_secs_f64();
         }
-        let nf = &self.boundary.node_flexibility;
+        let nf = &self.node_flexibility;
         let rows = system
             .unknowns
             .iter()
@@ -1125,13 +1130,14 @@ impl ContactAnalysis {
     /// numerically positive definite.
     fn symmetric_factor(
         &mut self,
+        (x, pairs): (&[f64], &[ContactPair]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Option<(Vec<usize>, Mat<f64>)> {
-        let order = self.factor_order(system, rows, symmetric);
+        let order = self.factor_order((x, pairs), system, rows, symmetric);
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
-        let nf = &mut self.boundary.node_flexibility;
+        let nf = &mut self.node_flexibility;
         let prefix = nf.factor.common_prefix(&keys);
         nf.slip.keep(prefix);
         let kept = std::mem::replace(&mut nf.factor.l, Mat::new());
@@ -1166,7 +1172,7 @@ impl ContactAnalysis {
             .collect();
         needed.sort_unstable();
         needed.dedup();
-        let nf = &mut self.boundary.node_flexibility;
+        let nf = &mut self.node_flexibility;
         nf.slip.update(l, &nf.factor.keys, &nf.n, &needed);
         let (slip, k) = (&nf.slip, l.nrows());
         let (mut x, mut y) = (Mat::<f64>::zeros(k, q.len()), Mat::<f64>::zeros(k, q.len()));
@@ -1190,26 +1196,27 @@ impl ContactAnalysis {
     /// falls near the end.
     fn factor_order(
         &self,
+        (x, pairs): (&[f64], &[ContactPair]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Vec<usize> {
-        let kept = &self.boundary.node_flexibility.factor.keys;
-        let mut rank = vec![usize::MAX; self.boundary.node_flexibility.n.len()];
+        let kept = &self.node_flexibility.factor.keys;
+        let mut rank = vec![usize::MAX; self.node_flexibility.n.len()];
         kept.iter().enumerate().for_each(|(r, &a)| rank[a] = r);
         let (mut old, mut new): (Vec<usize>, Vec<usize>) = symmetric
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let (x, dim) = (self.bodies.positions(), self.dim());
+        let dim = self.dim;
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
-            node(x, dim, self.surfaces.pairs[p].a[k])
+            node(x, dim, pairs[p].a[k])
         };
         let pair = |i: usize| system.unknowns[i].0;
-        let mut has_old = vec![false; self.surfaces.pairs.len()];
+        let mut has_old = vec![false; pairs.len()];
         old.iter().for_each(|&i| has_old[pair(i)] = true);
-        let mut centroids = vec![(Vector::zero(dim), 0usize); self.surfaces.pairs.len()];
+        let mut centroids = vec![(Vector::zero(dim), 0usize); pairs.len()];
         for &i in old.iter().chain(new.iter().filter(|&&i| !has_old[pair(i)])) {
             let ((c, count), y) = (&mut centroids[pair(i)], position(i));
             (*c, *count) = (*c + y, *count + 1);
@@ -1236,15 +1243,17 @@ impl ContactAnalysis {
     /// dense reference when it is switched on (`oracles.rs`).
     pub(super) fn solve_iteration(
         &mut self,
+        bodies: &mut dyn Bodies,
+        surfaces: &Surfaces,
         system: &SmallSystem,
         u0c: &[f64],
         border: Option<&Border>,
     ) -> Result<Solution> {
         #[cfg(feature = "oracles")]
-        if self.boundary.reference_algebra {
+        if self.reference_algebra {
             return self.solve_reference(system, u0c, border);
         }
-        self.solve_boundary(system, u0c, border)
+        self.solve_boundary(bodies, surfaces, system, u0c, border)
     }
 
     /// Solve the small system (docs/method.md, "The contact boundary's algebra"): `S tau = b - rows . u0` with
@@ -1263,6 +1272,8 @@ impl ContactAnalysis {
     /// `y_j = F col_j` from the columns of `F`. Returns `(tau, U, condition estimate, u)`.
     pub(super) fn solve_boundary(
         &mut self,
+        bodies: &mut dyn Bodies,
+        surfaces: &Surfaces,
         system: &SmallSystem,
         u0c: &[f64],
         border: Option<&Border>,
@@ -1272,12 +1283,18 @@ impl ContactAnalysis {
         if m + k == 0 {
             return Ok((Vec::new(), Vec::new(), 1.0, u0c.to_vec()));
         }
-        let mc = self.boundary.dofs.len();
+        let mc = self.dofs.len();
         // small kinematics: directions of rows and columns; finite: the responses y_j
-        let (directions, responses) = match self.options.kinematics {
-            Kinematics::Small => (Some(self.node_directions(system)?), Vec::new()),
+        let (directions, responses) = match surfaces.kinematics {
+            Kinematics::Small => {
+                let reference = &surfaces.reference;
+                (
+                    Some(self.node_directions(bodies, reference, system)?),
+                    Vec::new(),
+                )
+            }
             Kinematics::Finite => {
-                self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
+                self.ensure_columns(bodies, system.cols.iter().flatten().map(|&(c, _)| c))?;
                 let mut y = vec![0.0; mc * m];
                 for (j, col) in system.cols.iter().enumerate() {
                     self.apply_flexibility(col, &mut y[j * mc..(j + 1) * mc]);
@@ -1297,7 +1314,10 @@ impl ContactAnalysis {
         // only S_QQ and the images: S is not stored (at n = 512 with friction, zeroing,
         // filling and summing its 2,900^2 entries in every iteration took 0.46 s)
         let factor = match &directions {
-            Some((rows, _)) if block => self.symmetric_factor(system, rows, symmetric.clone()),
+            Some((rows, _)) if block => {
+                let x = (bodies.positions(), &surfaces.pairs[..]);
+                self.symmetric_factor(x, system, rows, symmetric.clone())
+            }
             _ => None,
         };
         let images = match (&directions, &factor) {
@@ -1308,7 +1328,7 @@ impl ContactAnalysis {
         };
         let columns = match &directions {
             Some((rows, cols)) => Columns::Nodes(NodeColumns {
-                n: &self.boundary.node_flexibility.n,
+                n: &self.node_flexibility.n,
                 rows,
                 runs: consecutive_runs(rows),
                 cols,
@@ -1322,12 +1342,12 @@ impl ContactAnalysis {
         // a factor here came from N (small kinematics); finite kinematics factor S_PP below
         let (lu, s_norm) = match (factor, &columns) {
             (Some((p, l)), Columns::Nodes(nodes)) => {
-                let s_norm = self.boundary.node_flexibility.sums.norm1(nodes);
+                let s_norm = self.node_flexibility.sums.norm1(nodes);
                 let entry = |i: usize, j: usize| columns.entry(i, j);
                 (Dense::block(p, l, unsymmetric, entry, images), s_norm)
             }
             _ => {
-                let mut s = std::mem::replace(&mut self.boundary.small_matrix, Mat::new());
+                let mut s = std::mem::replace(&mut self.small_matrix, Mat::new());
                 s.truncate(0, 0);
                 s.resize_with(m + k, m + k, |_, _| 0.0);
                 for j in 0..m {
@@ -1352,7 +1372,7 @@ impl ContactAnalysis {
                     cholesky_extending(Mat::new(), 0, p.len(), entries).map(|l| (symmetric, l))
                 });
                 let lu = Dense::new(&s, factor.flatten(), unsymmetric, None);
-                self.boundary.small_matrix = s;
+                self.small_matrix = s;
                 (lu, s_norm)
             }
         };
@@ -1368,8 +1388,8 @@ impl ContactAnalysis {
         let condition = solve_and_estimate(s_norm, &lu, rhs.as_mut())
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
-        if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
-            self.boundary.node_flexibility.factor.l = b.l;
+        if let (Dense::Block(b), Kinematics::Small) = (lu, surfaces.kinematics) {
+            self.node_flexibility.factor.l = b.l;
         }
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
         if !tau.iter().all(|v| v.is_finite()) {
@@ -1382,7 +1402,7 @@ impl ContactAnalysis {
         let mut uc = u0c.to_vec();
         match directions {
             Some((_, cols)) => {
-                let nf = &self.boundary.node_flexibility;
+                let nf = &self.node_flexibility;
                 let mut weights = vec![0.0; nf.kept.len()];
                 for (parts, &t) in cols.iter().zip(&tau) {
                     for &(b, c) in parts {
@@ -1413,11 +1433,11 @@ impl ContactAnalysis {
                     .collect();
                 if !parts.is_empty() {
                     let clock = std::time::Instant::now();
-                    let x = self.bodies.back_substitute(&self.boundary.dofs, &parts)?;
+                    let x = bodies.back_substitute(&self.dofs, &parts)?;
                     for (u, v) in uc.iter_mut().zip(x) {
                         *u += v;
                     }
-                    self.driver.timings.flexibility += clock.elapsed().as_secs_f64();
+                    self.flexibility_seconds += clock.elapsed().as_secs_f64();
                 }
             }
             None => {
@@ -1444,20 +1464,25 @@ impl ContactAnalysis {
     /// The small matrix `S_ij = row_i . F col_j` of `system`, dense (the fallback of
     /// `rules.rs` works on it): from the node flexibility under small kinematics, from the
     /// columns of `F` under finite kinematics or the reference algebra.
-    pub(super) fn dense_matrix(&mut self, system: &SmallSystem) -> Result<DMatrix<f64>> {
+    pub(super) fn dense_matrix(
+        &mut self,
+        bodies: &mut dyn Bodies,
+        surfaces: &Surfaces,
+        system: &SmallSystem,
+    ) -> Result<DMatrix<f64>> {
         let m = system.rows.len();
         let mut s = DMatrix::zeros(m, m);
-        if self.options.kinematics == Kinematics::Small && !self.on_reference_algebra() {
-            let (rows, cols) = self.node_directions(system)?;
-            let n = &self.boundary.node_flexibility.n;
+        if surfaces.kinematics == Kinematics::Small && !self.on_reference_algebra() {
+            let (rows, cols) = self.node_directions(bodies, &surfaces.reference, system)?;
+            let n = &self.node_flexibility.n;
             for (j, parts) in cols.iter().enumerate() {
                 for (i, &row) in rows.iter().enumerate() {
                     s[(i, j)] = parts.iter().fold(0.0, |sum, &(b, c)| sum + c * n[b][row]);
                 }
             }
         } else {
-            self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
-            let mut y = vec![0.0; self.boundary.dofs.len()];
+            self.ensure_columns(bodies, system.cols.iter().flatten().map(|&(c, _)| c))?;
+            let mut y = vec![0.0; self.dofs.len()];
             for (j, col) in system.cols.iter().enumerate() {
                 self.apply_flexibility(col, &mut y);
                 for (i, row) in system.rows.iter().enumerate() {
@@ -1473,10 +1498,10 @@ impl ContactAnalysis {
     /// first to close; normal, and the kept tangents with friction), under finite kinematics
     /// the columns its coupling touches. A failing host solver is thus reported when the
     /// analysis is created, as with an eager `F`.
-    pub(super) fn prime(&mut self) -> Result<()> {
+    pub(super) fn prime(&mut self, bodies: &mut dyn Bodies, surfaces: &Surfaces) -> Result<()> {
         let mut rows = Vec::new();
         let mut keys = Vec::new();
-        for (p, surface) in self.surfaces.reference.iter().enumerate() {
+        for (p, surface) in surfaces.reference.iter().enumerate() {
             let nearest = surface
                 .nodes
                 .iter()
@@ -1485,16 +1510,16 @@ impl ContactAnalysis {
                 .min_by(|a, b| a.1.normal_gap.total_cmp(&b.1.normal_gap));
             if let Some((k, node)) = nearest {
                 rows.push((p, k, Row::Normal));
-                keys.push(self.boundary.directed(&node.coupling, &node.frame.normal()));
-                if !self.surfaces.laws[p].is_frictionless() {
+                keys.push(self.directed(&node.coupling, &node.frame.normal()));
+                if !surfaces.laws[p].is_frictionless() {
                     for (i, s) in kept_tangents(&node.frame) {
                         rows.push((p, k, Row::Tangent(i)));
-                        keys.push(self.boundary.directed(&node.coupling, &s));
+                        keys.push(self.directed(&node.coupling, &s));
                     }
                 }
             }
         }
-        match self.options.kinematics {
+        match surfaces.kinematics {
             Kinematics::Small => {
                 let system = SmallSystem {
                     unknowns: rows.clone(),
@@ -1503,9 +1528,12 @@ impl ContactAnalysis {
                     cols: keys.clone(),
                     rows: keys,
                 };
-                self.node_directions(&system).map(|_| ())
+                self.node_directions(bodies, &surfaces.reference, &system)
+                    .map(|_| ())
             }
-            Kinematics::Finite => self.ensure_columns(keys.iter().flatten().map(|&(c, _)| c)),
+            Kinematics::Finite => {
+                self.ensure_columns(bodies, keys.iter().flatten().map(|&(c, _)| c))
+            }
         }
     }
 
@@ -1513,7 +1541,7 @@ impl ContactAnalysis {
     /// `oracles`; never without it).
     fn on_reference_algebra(&self) -> bool {
         #[cfg(feature = "oracles")]
-        return self.boundary.reference_algebra;
+        return self.reference_algebra;
         #[cfg(not(feature = "oracles"))]
         false
     }

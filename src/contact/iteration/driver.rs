@@ -39,11 +39,11 @@
 use super::active_set::{ActiveSet, BNodes, Commit, Convergence, Iterate, Locks, count};
 use super::boundary::Solution;
 use super::checks::{self, change_ratio};
-use super::plate::{Border, Controls, Plate};
+use super::plate::{Border, Controls, Plate, plate_force};
 use super::small_system::SmallSystem;
 use super::{
     CONDITION_LIMIT, ContactAnalysis, ContactSurface, IncrementInfo, IterationRecord, LoadSolve,
-    Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads,
+    Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
 };
 use crate::contact::space::Vector;
 use crate::error::{ContactError, Error, Result};
@@ -483,7 +483,14 @@ impl ContactAnalysis {
             u0c,
             plate_force: force0,
             load,
-        } = self.load_solve(f, qp)?;
+        } = {
+            let (bodies, plate, dim) = (&*self.bodies, &self.plate, self.dim());
+            let force = |u0: &[f64]| match plate {
+                Some(p) => plate_force(model_of(bodies)?, &p.nodes, u0, f, dim),
+                None => Ok(Vector::zero(dim)),
+            };
+            self.boundary.load_solve(bodies, (f, qp), number, force)?
+        };
         finite(&u0c, number, 0)?;
         let border = control.and_then(|c| self.border(c, force0));
         let mut states: Vec<Vec<NodeState>> = self
@@ -515,7 +522,7 @@ impl ContactAnalysis {
             resolution: self.resolution(),
             clock: std::time::Instant::now(),
             // columns of a lazy F built during the iteration count as flexibility
-            flexibility_before: self.driver.timings.flexibility,
+            flexibility_before: self.boundary.flexibility_seconds,
         };
         let mut records = Vec::new();
         let first = self.iterate(&attempt, states, locks, b_nodes, &mut records);
@@ -601,12 +608,19 @@ impl ContactAnalysis {
                 refactoring += self.refactor()?;
             }
             let states = set.states();
-            let system = self.build_system(&surfaces, states, &uc, startc)?;
+            let laws = &self.surfaces.laws;
+            let system = (self.boundary).build_system(&surfaces, laws, states, &uc, startc);
             // the contact set settled and R measured the last change: the same system again,
             // whose solution is the last one to the bit (no factorization, no substitution)
             let solution = match last.take() {
                 Some((previous, solution)) if previous == system => solution,
-                _ => self.solve_iteration(&system, u0c, border)?,
+                _ => self.boundary.solve_iteration(
+                    &mut *self.bodies,
+                    &self.surfaces,
+                    &system,
+                    u0c,
+                    border,
+                )?,
             };
             let (tau, plate_motion, condition, uc_new) = solution.clone();
             let forces = system.forces(&tau, self.boundary.dofs.len());
@@ -690,7 +704,7 @@ impl ContactAnalysis {
                 self.driver.timings.factorization += refactoring;
                 self.driver.timings.iterations += clock.elapsed().as_secs_f64()
                     - refactoring
-                    - (self.driver.timings.flexibility - flexibility_before);
+                    - (self.boundary.flexibility_seconds - flexibility_before);
                 let mut prescribed = qp.to_vec();
                 if let (Some(plate), Some(control)) = (&mut self.plate, control) {
                     let directions = border.map_or(&[][..], |b| &b.directions[..]);

@@ -113,8 +113,9 @@ impl ContactAnalysis {
                     .collect(),
             );
         }
-        let system = self.build_system(&surfaces, &states, startc, startc)?;
-        let s = self.dense_matrix(&system)?;
+        let laws = &self.surfaces.laws;
+        let system = (self.boundary).build_system(&surfaces, laws, &states, startc, startc);
+        let s = (self.boundary).dense_matrix(&mut *self.bodies, &self.surfaces, &system)?;
         let r: Vec<f64> = system
             .rows
             .iter()

@@ -3,7 +3,8 @@
 //! product's algebra with, and the benchmark's control that factors `K` again in every
 //! iteration.
 
-use super::{Border, ContactAnalysis, Flexibility, Result, SmallSystem, boundary};
+use super::boundary::{self, Boundary};
+use super::{Border, ContactAnalysis, Flexibility, Result, SmallSystem};
 
 impl ContactAnalysis {
     /// Run the iteration on the dense reference algebra (`true`) or on the lazy, cached one
@@ -17,38 +18,11 @@ impl ContactAnalysis {
     /// A failed host solve while building the missing columns of `F`.
     pub fn set_reference_algebra(&mut self, on: bool) -> Result<()> {
         if on && !self.boundary.flexibility.is_full() {
-            self.ensure_columns(0..self.boundary.dofs.len())?;
+            let all = 0..self.boundary.dofs.len();
+            self.boundary.ensure_columns(&mut *self.bodies, all)?;
         }
         self.boundary.reference_algebra = on;
         Ok(())
-    }
-
-    /// One iteration on the reference algebra: `SmallSystem::solve` on the full `F`, then
-    /// `u = u0 + F f + sum_e U_e w_e` over the contact dofs.
-    pub(super) fn solve_reference(
-        &mut self,
-        system: &SmallSystem,
-        u0c: &[f64],
-        border: Option<&Border>,
-    ) -> Result<boundary::Solution> {
-        let (tau, plate_motion, condition) =
-            system.solve(u0c, &self.boundary.flexibility.matrix, border)?;
-        let forces = system.forces(&tau, self.boundary.dofs.len());
-        // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
-        let mut uc = u0c.to_vec();
-        for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
-            for (u, c) in uc.iter_mut().zip(self.boundary.flexibility.column(j)) {
-                *u += c * fj;
-            }
-        }
-        if let Some(b) = border {
-            for (&d, &m) in b.directions.iter().zip(&plate_motion) {
-                for (u, w) in uc.iter_mut().zip(&b.response[d]) {
-                    *u += m * w;
-                }
-            }
-        }
-        Ok((tau, plate_motion, condition, uc))
     }
 
     /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
@@ -70,5 +44,34 @@ impl ContactAnalysis {
         };
         self.boundary.forget_directions();
         Ok(clock.elapsed().as_secs_f64())
+    }
+}
+
+impl Boundary {
+    /// One iteration on the reference algebra: `SmallSystem::solve` on the full `F`, then
+    /// `u = u0 + F f + sum_e U_e w_e` over the contact dofs.
+    pub(super) fn solve_reference(
+        &mut self,
+        system: &SmallSystem,
+        u0c: &[f64],
+        border: Option<&Border>,
+    ) -> Result<boundary::Solution> {
+        let (tau, plate_motion, condition) = system.solve(u0c, &self.flexibility.matrix, border)?;
+        let forces = system.forces(&tau, self.dofs.len());
+        // u = u0 + F f over the contact dofs (f is zero away from the active nodes)
+        let mut uc = u0c.to_vec();
+        for (j, &fj) in forces.iter().enumerate().filter(|(_, f)| **f != 0.0) {
+            for (u, c) in uc.iter_mut().zip(self.flexibility.column(j)) {
+                *u += c * fj;
+            }
+        }
+        if let Some(b) = border {
+            for (&d, &m) in b.directions.iter().zip(&plate_motion) {
+                for (u, w) in uc.iter_mut().zip(&b.response[d]) {
+                    *u += m * w;
+                }
+            }
+        }
+        Ok((tau, plate_motion, condition, uc))
     }
 }

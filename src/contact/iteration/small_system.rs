@@ -7,10 +7,10 @@
 #[cfg(any(test, feature = "oracles"))]
 use super::DVector;
 #[cfg(feature = "oracles")]
+use super::boundary::Boundary;
 use super::plate::Border;
 use super::{
-    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
-    Traction, rows_of,
+    ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows, Traction, rows_of,
 };
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::{Frame, Vector};
@@ -274,15 +274,17 @@ impl SmallSystem {
     }
 }
 
-impl ContactAnalysis {
-    /// Assemble the rows, columns and right-hand sides for the active nodes.
+impl Boundary {
+    /// Assemble the rows, columns and right-hand sides for the active nodes (their rows by
+    /// state: [`rows_of`]), with the pairs' friction `laws`.
     pub(super) fn build_system(
         &self,
         surfaces: &[ContactSurface],
+        laws: &[Box<dyn FrictionLaw>],
         states: &[Vec<NodeState>],
         uc: &[f64],
         startc: &[f64],
-    ) -> Result<SmallSystem> {
+    ) -> SmallSystem {
         let mut sys = SmallSystem {
             unknowns: Vec::new(),
             rows: Vec::new(),
@@ -291,9 +293,9 @@ impl ContactAnalysis {
             basis: Vec::new(),
         };
         for (p, surface) in surfaces.iter().enumerate() {
-            let law = &*self.surfaces.laws[p];
+            let law = &*laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
-                let directed = |d: &Vector| self.boundary.directed(&node.coupling, d);
+                let directed = |d: &Vector| self.directed(&node.coupling, d);
                 sys.push_node(
                     (p, k),
                     node,
@@ -304,7 +306,7 @@ impl ContactAnalysis {
                 );
             }
         }
-        Ok(sys)
+        sys
     }
 }
 
