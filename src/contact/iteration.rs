@@ -43,7 +43,7 @@
 //! are constant, the gap is linear, `R_C,k(q) = R_C,k(X) + sum_j c_kj q_j`, and the normal row
 //! above is exact, so a contact set is solved in one step and no geometry is evaluated during
 //! the iteration (except that the pairing is widened, still in `X`, when the bodies move
-//! farther than it looked for B: `widen_pairing`). [`Kinematics::Finite`] re-evaluates the
+//! farther than it looked for B: `Surfaces::widen`). [`Kinematics::Finite`] re-evaluates the
 //! geometry at every iterate (the current positions `x = X + q`), a geometric iteration that
 //! lets bodies slide far along each other.
 //!
@@ -58,7 +58,7 @@
 //! `change_ratio`) is below `tolerance` (the active set's `Convergence`, to which a 3D geometry
 //! adds a residual of the contact conditions). Every decision about a node's state is the
 //! increment's active set's (`active_set/`): the rules, on plain data this module gathers
-//! (`rules.rs`: per node its traction, gap, slip and law), which penetrating nodes close and in
+//! (`checks.rs`: per node its traction, gap, slip and law), which penetrating nodes close and in
 //! which closed state, the states of the fallback's solution, the plate's first support, the
 //! locks and their checks at convergence, and the history: a state set seen before reappearing
 //! is a cycle.
@@ -96,7 +96,6 @@ mod loads;
 mod oracles;
 mod plate;
 mod results;
-mod rules;
 mod small_system;
 mod surfaces;
 use active_set::{
@@ -332,7 +331,7 @@ pub struct ContactOptions {
     /// increment's largest motion of a contact dof (see `search_reach`); under small
     /// kinematics the reference pairing is evaluated again within four times the largest
     /// displacement of the pair's nodes whenever twice that exceeds its reach (see
-    /// `widen_pairing`).
+    /// `Surfaces::widen`).
     pub search_distance: f64,
     /// Cycle policy: how many times per increment a cycling contact set is resolved by locking
     /// the alternating nodes (in slip: a node on the edge of the friction cone alternating

@@ -1462,7 +1462,7 @@ impl Boundary {
     }
 
     /// The small matrix `S_ij = row_i . F col_j` of `system`, dense (the fallback of
-    /// `rules.rs` works on it): from the node flexibility under small kinematics, from the
+    /// `fallback.rs` works on it): from the node flexibility under small kinematics, from the
     /// columns of `F` under finite kinematics or the reference algebra.
     pub(super) fn dense_matrix(
         &mut self,

@@ -111,7 +111,7 @@ impl Driver {
 /// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
 /// prescribed dofs), the locks of its contact set, and how its rules judged B nodes
 /// penetrating open segments (at convergence only in the fallback's last attempt, see
-/// `rules.rs`).
+/// [`BNodes`]).
 #[derive(Clone)]
 pub(super) struct Settled {
     pub(super) load: Vec<f64>,
@@ -535,7 +535,7 @@ impl ContactAnalysis {
                 // the paper's rules did not settle: start again from the states of the
                 // solution of the linearized conditions (fallback.rs), first with the
                 // paper's rules from those states, then with B nodes checked pointwise only at
-                // convergence (rules.rs)
+                // convergence (`BNodes::AtConvergence`)
                 let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
                 let mut info = self.iterate(
                     &attempt,

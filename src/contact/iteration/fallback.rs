@@ -14,7 +14,7 @@
 //! but the rules go {stick, stick} -> {slip(+1), slip(-1)} and then cycle between
 //! {slip(+1), stick} and {slip(+1), slip(-1)}.
 //!
-//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `failure.rs`), the increment starts
+//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `driver.rs`), the increment starts
 //! again from the states of the solution of the same conditions, linearized at the start of
 //! the increment, over the candidate nodes (closed at the start, or penetrating under the
 //! load alone, and their neighbours): with every candidate's normal and tangent rows,

@@ -24,7 +24,7 @@ pub(super) struct Surfaces {
     pub(super) reference: Vec<ContactSurface>,
     /// How far from A the pairing of `reference` looked for B, per pair (absolute):
     /// `search_distance` mean A segment lengths, widened under small kinematics as the bodies
-    /// move (see `widen_pairing`).
+    /// move (see [`Surfaces::widen`]).
     pub(super) reach: Vec<f64>,
     /// The contact geometry of every pair at the last converged state (the reference one
     /// before the first increment): the iteration starts from it and the result queries read
