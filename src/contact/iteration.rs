@@ -1029,29 +1029,6 @@ impl ContactAnalysis {
     fn dim(&self) -> usize {
         self.bodies.dim()
     }
-
-    /// A displacement scale below which an increment's iterates cannot be told apart, the
-    /// `floor` of the convergence measure [`change_ratio`]: 0 under small kinematics (given
-    /// the contact set the problem is linear and a repeated increment reproduces the state to
-    /// round-off). Under finite kinematics the geometry is nonlinear and evaluated at `X + u`:
-    /// every converged increment stopped within `tolerance` of its own motion, so an increment
-    /// is measured against at least the largest of those motions (a repeated increment then
-    /// converges at once instead of refining the last fixed point against its own tiny motion),
-    /// and against round-off of the positions, `POSITION_ROUND_OFF |X| / tolerance` (a model
-    /// far from its origin).
-    fn resolution(&self) -> f64 {
-        match self.options.kinematics {
-            Kinematics::Small => 0.0,
-            Kinematics::Finite => {
-                let x = self.bodies.positions();
-                let positions: Vec<f64> = self.boundary.dofs.iter().map(|&d| x[d]).collect();
-                let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
-                self.driver
-                    .largest_motion
-                    .max(round_off / self.options.tolerance)
-            }
-        }
-    }
 }
 
 /// The plane and axisymmetric geometry of every pair: its polylines with the measure of its A

@@ -42,8 +42,8 @@ use super::checks::{self, change_ratio};
 use super::plate::{Border, Controls, Plate, plate_force};
 use super::small_system::SmallSystem;
 use super::{
-    CONDITION_LIMIT, ContactAnalysis, ContactSurface, IncrementInfo, IterationRecord, LoadSolve,
-    Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
+    CONDITION_LIMIT, ContactAnalysis, ContactSurface, IncrementInfo, IterationRecord, Kinematics,
+    LoadSolve, Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
 };
 use crate::contact::space::Vector;
 use crate::error::{ContactError, Error, Result};
@@ -758,6 +758,29 @@ impl ContactAnalysis {
 }
 
 impl ContactAnalysis {
+    /// A displacement scale below which an increment's iterates cannot be told apart, the
+    /// `floor` of the convergence measure [`change_ratio`]: 0 under small kinematics (given
+    /// the contact set the problem is linear and a repeated increment reproduces the state to
+    /// round-off). Under finite kinematics the geometry is nonlinear and evaluated at `X + u`:
+    /// every converged increment stopped within `tolerance` of its own motion, so an increment
+    /// is measured against at least the largest of those motions (a repeated increment then
+    /// converges at once instead of refining the last fixed point against its own tiny motion),
+    /// and against round-off of the positions, `POSITION_ROUND_OFF |X| / tolerance` (a model
+    /// far from its origin).
+    fn resolution(&self) -> f64 {
+        match self.options.kinematics {
+            Kinematics::Small => 0.0,
+            Kinematics::Finite => {
+                let x = self.bodies.positions();
+                let positions: Vec<f64> = self.boundary.dofs.iter().map(|&d| x[d]).collect();
+                let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
+                self.driver
+                    .largest_motion
+                    .max(round_off / self.options.tolerance)
+            }
+        }
+    }
+
     /// Accept the converged iterate: store the contact state, the node data and the records;
     /// the full field is recovered only when asked for.
     #[allow(clippy::too_many_arguments)]
