@@ -41,6 +41,7 @@ use super::boundary::Solution;
 use super::checks::{self, change_ratio};
 use super::plate::{Border, Controls, Plate, plate_force};
 use super::small_system::SmallSystem;
+use super::surfaces::Pairing;
 use super::{
     CONDITION_LIMIT, ContactAnalysis, ContactSurface, IncrementInfo, IterationRecord, Kinematics,
     LoadSolve, Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
@@ -106,6 +107,63 @@ impl Driver {
             recovery: Mutex::new(0.0),
         }
     }
+
+    /// Show `record` to the monitor, if there is one: whether the iteration goes on.
+    pub(super) fn watch(&mut self, record: &IterationRecord) -> bool {
+        let monitor = self.monitor.get_mut();
+        monitor
+            .unwrap_or_else(PoisonError::into_inner)
+            .as_mut()
+            .is_none_or(|m| m(record))
+    }
+
+    /// What a converged increment changes of the driver (the cutback's snapshot).
+    fn reached(&self) -> Reached {
+        Reached {
+            converged: self.converged.clone(),
+            previous: self.previous.clone(),
+            settled: self.settled.clone(),
+            largest_motion: self.largest_motion,
+            largest_node_motion: self.largest_node_motion,
+            increment: self.increment,
+            records: self.records.len(),
+        }
+    }
+
+    /// Put back what [`reached`](Self::reached) took.
+    fn restore(&mut self, r: Reached) {
+        self.converged = r.converged;
+        self.previous = r.previous;
+        self.settled = r.settled;
+        self.largest_motion = r.largest_motion;
+        self.largest_node_motion = r.largest_node_motion;
+        self.increment = r.increment;
+        self.records.truncate(r.records);
+    }
+
+    /// Count the recovery time of a displacement field that is dropped.
+    fn count_recovery(&mut self, field: OnceLock<(Vec<f64>, f64)>) {
+        if let Some((_, seconds)) = field.into_inner() {
+            self.timings.recovery += seconds;
+        }
+    }
+
+    /// Put back the displacement field `field`, counting the recovery of the one it replaces.
+    fn restore_field(&mut self, field: OnceLock<(Vec<f64>, f64)>) {
+        let replaced = std::mem::replace(&mut self.field, field);
+        self.count_recovery(replaced);
+    }
+}
+
+/// What a converged increment changes of the [`Driver`].
+struct Reached {
+    converged: Option<Converged>,
+    previous: Option<Converged>,
+    settled: Option<Settled>,
+    largest_motion: f64,
+    largest_node_motion: f64,
+    increment: usize,
+    records: usize,
 }
 
 /// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
@@ -201,9 +259,7 @@ impl Failure {
 /// moved out, nothing reading it during an increment).
 struct Before {
     loads: Vec<std::sync::Arc<LoadSolve>>,
-    reach: Vec<f64>,
-    reference: Vec<ContactSurface>,
-    surfaces: Vec<ContactSurface>,
+    pairing: Pairing,
     field: OnceLock<(Vec<f64>, f64)>,
 }
 
@@ -212,13 +268,7 @@ struct Before {
 struct Converging {
     qc: Vec<f64>,
     nodes: Vec<Vec<NodeData>>,
-    converged: Option<Converged>,
-    previous: Option<Converged>,
-    settled: Option<Settled>,
-    largest_motion: f64,
-    largest_node_motion: f64,
-    increment: usize,
-    records: usize,
+    driver: Reached,
     plate: Option<Plate>,
 }
 
@@ -259,9 +309,7 @@ impl ContactAnalysis {
     fn before(&mut self) -> Before {
         Before {
             loads: self.boundary.loads.clone(),
-            reach: self.surfaces.reach.clone(),
-            reference: self.surfaces.reference.clone(),
-            surfaces: self.surfaces.current.clone(),
+            pairing: self.surfaces.pairing(),
             field: std::mem::take(&mut self.driver.field),
         }
     }
@@ -270,13 +318,7 @@ impl ContactAnalysis {
         Converging {
             qc: self.boundary.qc.clone(),
             nodes: self.nodes.clone(),
-            converged: self.driver.converged.clone(),
-            previous: self.driver.previous.clone(),
-            settled: self.driver.settled.clone(),
-            largest_motion: self.driver.largest_motion,
-            largest_node_motion: self.driver.largest_node_motion,
-            increment: self.driver.increment,
-            records: self.driver.records.len(),
+            driver: self.driver.reached(),
             plate: self.plate.clone(),
         }
     }
@@ -285,38 +327,24 @@ impl ContactAnalysis {
     /// kinematics, see `Surfaces::widen`), the node flexibility may hold directions of the wider
     /// pairing: it is emptied, to be rebuilt as nodes close.
     fn restore_before(&mut self, b: Before) {
-        if b.reach != self.surfaces.reach {
+        if self.surfaces.restore_pairing(b.pairing) {
             self.boundary.forget_directions();
         }
         self.boundary.loads = b.loads;
-        self.surfaces.reach = b.reach;
-        self.surfaces.reference = b.reference;
-        self.surfaces.current = b.surfaces;
-        if let Some((_, seconds)) = self.driver.field.take() {
-            self.driver.timings.recovery += seconds;
-        }
-        self.driver.field = b.field;
+        self.driver.restore_field(b.field);
     }
 
     /// Keep the result of a converged increment: the field moved out by
     /// [`before`](Self::before) belongs to the state before it (its recovery time is counted,
     /// as [`finish`](Self::finish) counts it).
     fn forget_before(&mut self, b: Before) {
-        if let Some((_, seconds)) = b.field.into_inner() {
-            self.driver.timings.recovery += seconds;
-        }
+        self.driver.count_recovery(b.field);
     }
 
     fn restore_converging(&mut self, c: Converging) {
         self.boundary.qc = c.qc;
         self.nodes = c.nodes;
-        self.driver.converged = c.converged;
-        self.driver.previous = c.previous;
-        self.driver.settled = c.settled;
-        self.driver.largest_motion = c.largest_motion;
-        self.driver.largest_node_motion = c.largest_node_motion;
-        self.driver.increment = c.increment;
-        self.driver.records.truncate(c.records);
+        self.driver.restore(c.driver);
         self.plate = c.plate;
     }
 
@@ -426,7 +454,7 @@ impl ContactAnalysis {
         }
         self.forget_before(before);
         // the increment spans the whole step: its displacement increment is from the start
-        self.driver.previous = converging.converged;
+        self.driver.previous = converging.driver.converged;
         self.driver.increment = info.increment;
         self.driver.sub_increment = 1;
         Ok(info)
@@ -668,13 +696,7 @@ impl ContactAnalysis {
                 sub_increment: self.driver.sub_increment,
             };
             records.push(record);
-            if let Some(monitor) = self
-                .driver
-                .monitor
-                .get_mut()
-                .unwrap_or_else(PoisonError::into_inner)
-                && !monitor(&record)
-            {
+            if !self.driver.watch(&record) {
                 return Err(Error::Callback(format!(
                     "increment {number}: the monitor stopped the iteration at iteration \
                      {iteration}"

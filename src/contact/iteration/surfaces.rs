@@ -36,7 +36,32 @@ pub(super) struct Surfaces {
     pub(super) search_distance: f64,
 }
 
+/// The pairing of every pair: what a failed try may change of the geometry (widened under
+/// small kinematics, see [`Surfaces::widen`]).
+pub(super) struct Pairing {
+    reach: Vec<f64>,
+    reference: Vec<ContactSurface>,
+    current: Vec<ContactSurface>,
+}
+
 impl Surfaces {
+    /// The pairing as it is (the cutback's snapshot).
+    pub(super) fn pairing(&self) -> Pairing {
+        Pairing {
+            reach: self.reach.clone(),
+            reference: self.reference.clone(),
+            current: self.current.clone(),
+        }
+    }
+
+    /// Put back a pairing taken by [`pairing`](Self::pairing); whether the present one was
+    /// widened since (its directions' flexibility is then stale).
+    pub(super) fn restore_pairing(&mut self, p: Pairing) -> bool {
+        let widened = p.reach != self.reach;
+        (self.reach, self.reference, self.current) = (p.reach, p.reference, p.current);
+        widened
+    }
+
     /// The friction law of A node `k` of pair `p`: the pair's, but none for a node on the axis
     /// in axisymmetry (in the reference configuration `x0`,
     /// [`ContactGeometry::frictionless_at`]). There `tau_rz = 0` by symmetry, and a tangential
