@@ -109,7 +109,7 @@ pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Plate};
 pub use results::ConstraintRows;
-use small_system::{SmallSystem, Sparse, column, dot};
+use small_system::{Sparse, column, dot};
 use surfaces::Surfaces;
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
@@ -655,8 +655,8 @@ struct NodeData {
 
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
 /// contact-boundary flexibility, and the last converged state. It composes its parts, each
-/// owning its data: the contact geometry ([`Surfaces`], `surfaces.rs`), the boundary algebra
-/// ([`Boundary`], `boundary.rs`) and the increment driver ([`Driver`], `driver.rs`); the
+/// owning its data: the contact geometry (`Surfaces`, `surfaces.rs`), the boundary algebra
+/// (`Boundary`, `boundary.rs`) and the increment driver (`Driver`, `driver.rs`); the
 /// state decisions of an increment are its active set's (`active_set/`).
 pub struct ContactAnalysis {
     /// The bodies: positions, solves and responses of `K` (read by every part).

@@ -4,7 +4,8 @@
 //! iteration.
 
 use super::boundary::{self, Boundary};
-use super::{Border, ContactAnalysis, Flexibility, Result, SmallSystem};
+use super::small_system::SmallSystem;
+use super::{Border, ContactAnalysis, Flexibility, Result};
 
 impl ContactAnalysis {
     /// Run the iteration on the dense reference algebra (`true`) or on the lazy, cached one

@@ -7,11 +7,11 @@
 #[cfg(any(test, feature = "oracles"))]
 use super::DVector;
 #[cfg(feature = "oracles")]
+use super::Result;
 use super::boundary::Boundary;
+#[cfg(feature = "oracles")]
 use super::plate::Border;
-use super::{
-    ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows, Traction, rows_of,
-};
+use super::{ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Rows, Traction, rows_of};
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::{Frame, Vector};
 #[cfg(any(test, feature = "oracles"))]
