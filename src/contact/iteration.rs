@@ -43,7 +43,7 @@
 //! are constant, the gap is linear, `R_C,k(q) = R_C,k(X) + sum_j c_kj q_j`, and the normal row
 //! above is exact, so a contact set is solved in one step and no geometry is evaluated during
 //! the iteration (except that the pairing is widened, still in `X`, when the bodies move
-//! farther than it looked for B: `widen_pairing`). [`Kinematics::Finite`] re-evaluates the
+//! farther than it looked for B: `Surfaces::widen`). [`Kinematics::Finite`] re-evaluates the
 //! geometry at every iterate (the current positions `x = X + q`), a geometric iteration that
 //! lets bodies slide far along each other.
 //!
@@ -58,7 +58,7 @@
 //! `change_ratio`) is below `tolerance` (the active set's `Convergence`, to which a 3D geometry
 //! adds a residual of the contact conditions). Every decision about a node's state is the
 //! increment's active set's (`active_set/`): the rules, on plain data this module gathers
-//! (`rules.rs`: per node its traction, gap, slip and law), which penetrating nodes close and in
+//! (`checks.rs`: per node its traction, gap, slip and law), which penetrating nodes close and in
 //! which closed state, the states of the fallback's solution, the plate's first support, the
 //! locks and their checks at convergence, and the history: a state set seen before reappearing
 //! is a cycle.
@@ -84,36 +84,35 @@ use crate::model::Model;
 use crate::solver::Backend;
 use faer::Mat;
 use nalgebra::{DMatrix, DVector};
-use std::sync::{Mutex, OnceLock, PoisonError};
+use std::sync::PoisonError;
 
 mod active_set;
 mod boundary;
 mod checks;
-mod cutback;
-mod failure;
+mod driver;
 mod fallback;
 mod loads;
 #[cfg(feature = "oracles")]
 mod oracles;
 mod plate;
 mod results;
-mod rules;
 mod small_system;
 mod solid;
+mod surfaces;
 use active_set::{
-    ActiveSet, BNodeHit, BNodes, Commit, Convergence, EDGE_PENETRATION, Iterate, Locks, NodeFacts,
-    NodeKey, Rows, Tolerances, close_nearest, closed_at_rest, count, linearized_state, rows_of,
+    ActiveSet, BNodeHit, BNodes, EDGE_PENETRATION, Locks, NodeFacts, NodeKey, Rows, Tolerances,
+    close_nearest, closed_at_rest, linearized_state, rows_of,
 };
-use boundary::{Flexibility, NodeFlexibility};
-use checks::change_ratio;
+use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
-use failure::Failure;
+use driver::{Converged, Driver};
 pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
-use plate::{Border, Controls, Plate, plate_force};
+use plate::{Border, Plate};
 pub use results::ConstraintRows;
-use small_system::{SmallSystem, Sparse, column, dot};
 pub use solid::FacePair;
+use small_system::{Sparse, column, dot};
+use surfaces::Surfaces;
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
 /// ([`ContactAnalysis::new`], [`ContactAnalysis::host`]) build.
@@ -334,7 +333,7 @@ pub struct ContactOptions {
     /// increment's largest motion of a contact dof (see `search_reach`); under small
     /// kinematics the reference pairing is evaluated again within four times the largest
     /// displacement of the pair's nodes whenever twice that exceeds its reach (see
-    /// `widen_pairing`).
+    /// `Surfaces::widen`).
     pub search_distance: f64,
     /// Cycle policy: how many times per increment a cycling contact set is resolved by locking
     /// the alternating nodes (in slip: a node on the edge of the friction cone alternating
@@ -645,28 +644,6 @@ pub enum PlateControl {
     Force(f64),
 }
 
-/// What a converged increment without a plate settled with: its load (`f` and `q_p` at the
-/// prescribed dofs), the locks of its contact set, and how its rules judged B nodes
-/// penetrating open segments (at convergence only in the fallback's last attempt, see
-/// `rules.rs`).
-#[derive(Clone)]
-struct Settled {
-    load: Vec<f64>,
-    locks: Locks,
-    b_nodes: BNodes,
-}
-
-/// What the full field of a converged increment is recovered from.
-#[derive(Debug, Clone)]
-struct Converged {
-    /// External loads over the field.
-    load: Vec<f64>,
-    /// Prescribed values (empty for a host).
-    prescribed: Vec<f64>,
-    /// Contact forces at the contact dofs (`dofs` order).
-    contact: Vec<f64>,
-}
-
 /// A caller's function that sees every iteration record; returning `false` stops the increment
 /// (the last converged state is kept).
 pub type Monitor = Box<dyn FnMut(&IterationRecord) -> bool + Send>;
@@ -679,96 +656,36 @@ struct NodeData {
 }
 
 /// A contact analysis: the model with its stiffness factored once, the contact pairs, the
-/// contact-boundary flexibility, and the last converged state.
+/// contact-boundary flexibility, and the last converged state. It composes its parts, each
+/// owning its data: the contact geometry (`Surfaces`, `surfaces.rs`), the boundary algebra
+/// (`Boundary`, `boundary.rs`) and the increment driver (`Driver`, `driver.rs`); the
+/// state decisions of an increment are its active set's (`active_set/`).
 pub struct ContactAnalysis {
+    /// The bodies: positions, solves and responses of `K` (read by every part).
     bodies: Box<dyn Bodies>,
-    /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
-    pairs: Vec<ContactPair>,
-    /// The geometry of each pair (its A side's surface measure with it, all of one kind).
-    geometries: Vec<Box<dyn ContactGeometry>>,
-    /// The friction law of each pair: all the iteration knows of its friction.
-    laws: Vec<Box<dyn FrictionLaw>>,
     options: ContactOptions,
-    /// Global dofs of the contact nodes (A and B of every pair), sorted.
-    dofs: Vec<usize>,
-    /// Position of each global dof in `dofs` (`None`: not a contact dof).
-    slot: Vec<Option<usize>>,
-    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
-    /// built when first needed (all at once from a factor; a host callback's as nodes become
-    /// active).
-    flexibility: Flexibility,
-    /// Under small kinematics, the node flexibility of the directions that have been active.
-    node_flexibility: NodeFlexibility,
-    /// The storage of the small system `S` (see `solve_boundary`), kept between iterations: a
-    /// fresh `S` beyond glibc's 32 MiB mmap threshold (m > 2,048) had its pages faulted in
-    /// and zeroed again in every iteration.
-    small_matrix: Mat<f64>,
-    /// Iterate on the dense reference algebra (see `ContactAnalysis::set_reference_algebra`,
-    /// feature `oracles`).
-    #[cfg(feature = "oracles")]
-    reference_algebra: bool,
-    /// Converged displacement of the contact dofs (`dofs` order).
-    qc: Vec<f64>,
-    /// Factor `K` again in every iteration (a benchmark's control, see
-    /// `ContactAnalysis::set_refactor_each_iteration`, feature `oracles`).
-    #[cfg(feature = "oracles")]
-    refactor_each_iteration: bool,
-    /// Start a failed increment again from the fallback's states (`fallback.rs`; on unless a
-    /// benchmark turns it off, see [`ContactAnalysis::set_fallback`]).
-    fallback: bool,
-    /// Increments that converged from the fallback's states.
-    fallbacks: usize,
-    /// What the last converged increment without a plate settled with.
-    settled: Option<Settled>,
-    /// The largest `|q_c|` change of a converged increment so far (0 before the first): the
-    /// scale to which the state is known (see [`ContactAnalysis::resolution`]).
-    largest_motion: f64,
-    /// The largest motion of one contact node (the length of its displacement change) in a
-    /// converged increment so far (see `motion_scale`).
-    largest_node_motion: f64,
-    /// Loads and contact forces of the last converged increment, for the full field.
-    converged: Option<Converged>,
-    /// The same for the increment before it (for displacement increments).
-    previous: Option<Converged>,
-    /// The full displacement field of the last converged increment, once asked for, with the
-    /// seconds its recovery took (set from `&self` queries; taken when an increment converges).
-    field: OnceLock<(Vec<f64>, f64)>,
-    /// Seconds of displacement recoveries not kept in `field` (displacement increments).
-    recovery: Mutex<f64>,
-    /// Recent load solves, reused when a new load is a combination of their loads.
-    /// (Shared, so that the cutback's snapshot copies no vector.)
-    loads: Vec<std::sync::Arc<LoadSolve>>,
-    /// Converged node data, per pair, per A node.
+    /// The contact geometry: the pairs, their geometries and friction laws, the reference and
+    /// converged surfaces and the pairing's reach.
+    surfaces: Surfaces,
+    /// The boundary algebra: the contact dofs, `F`, the node flexibility, the small system's
+    /// storage, the converged contact displacement and the kept load solves.
+    boundary: Boundary,
+    /// The increment driver: counters, records, timings, the monitor, the fallback's switch,
+    /// what the last increments settled and converged with.
+    driver: Driver,
+    /// Converged node data, per pair, per A node: the state the next increment's active set
+    /// starts from and the result queries read.
     nodes: Vec<Vec<NodeData>>,
-    /// The contact geometry of every pair in the reference configuration (the frozen pairing
-    /// of small kinematics).
-    reference: Vec<ContactSurface>,
-    /// How far from A the pairing of `reference` looked for B, per pair (absolute):
-    /// `search_distance` mean A segment lengths, widened under small kinematics as the bodies
-    /// move (see [`ContactAnalysis::widen_pairing`]).
-    reach: Vec<f64>,
-    /// The contact geometry of every pair at the last converged state (the reference one
-    /// before the first increment): the iteration starts from it and the result queries read
-    /// it, so nothing is evaluated twice.
-    surfaces: Vec<ContactSurface>,
-    increment: usize,
-    records: Vec<IterationRecord>,
-    timings: Timings,
     plate: Option<Plate>,
-    /// The sub-increment the iteration runs in (see [`IterationRecord::sub_increment`]).
-    sub_increment: usize,
-    /// Behind a lock only so that the analysis is `Sync` (a `Monitor` is `Send`, not `Sync`):
-    /// it is only called from `&mut self`.
-    monitor: Mutex<Option<Monitor>>,
 }
 
 impl std::fmt::Debug for ContactAnalysis {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("ContactAnalysis")
             .field("bodies", &self.bodies)
-            .field("pairs", &self.pairs.len())
-            .field("contact dofs", &self.dofs.len())
-            .field("increment", &self.increment)
+            .field("pairs", &self.surfaces.pairs.len())
+            .field("contact dofs", &self.boundary.dofs.len())
+            .field("increment", &self.driver.increment)
             .finish()
     }
 }
@@ -863,7 +780,7 @@ impl ContactAnalysis {
             options,
             Some(a_inside),
         )?;
-        analysis.timings.factorization = seconds;
+        analysis.driver.timings.factorization = seconds;
         Ok(analysis)
     }
 
@@ -879,10 +796,6 @@ impl ContactAnalysis {
         options: ContactOptions,
         a_inside: Option<Vec<Option<Vector>>>,
     ) -> Result<Self> {
-        let mut slot = vec![None; bodies.positions().len()];
-        for (i, &d) in dofs.iter().enumerate() {
-            slot[d] = Some(i);
-        }
         let mut timings = Timings::default();
         let setup = bodies.setup_seconds();
         (timings.assembly, timings.factorization) = (setup.assembly, setup.factorization);
@@ -930,86 +843,45 @@ impl ContactAnalysis {
                     .collect()
             })
             .collect();
-        let node_flexibility = NodeFlexibility::new(pairs.iter().map(|p| p.a.len()));
-        let mut analysis = ContactAnalysis {
-            qc: vec![0.0; dofs.len()],
-            node_flexibility,
-            small_matrix: Mat::new(),
-            #[cfg(feature = "oracles")]
-            reference_algebra: false,
-            settled: None,
-            #[cfg(feature = "oracles")]
-            refactor_each_iteration: false,
-            fallback: true,
-            fallbacks: 0,
-            largest_motion: 0.0,
-            largest_node_motion: 0.0,
-            converged: None,
-            previous: None,
-            field: OnceLock::new(),
-            recovery: Mutex::new(0.0),
-            loads: Vec::new(),
-            bodies,
-            pairs,
-            geometries,
-            laws,
-            options,
-            flexibility,
+        let mut boundary = Boundary::new(
             dofs,
-            slot,
+            bodies.positions().len(),
+            bodies.dim(),
+            flexibility,
+            pairs.iter().map(|p| p.a.len()),
+        );
+        (boundary.flexibility_seconds, timings.flexibility) = (timings.flexibility, 0.0);
+        let mut analysis = ContactAnalysis {
+            surfaces: Surfaces {
+                pairs,
+                geometries,
+                laws,
+                current: reference.clone(),
+                reference,
+                reach,
+                kinematics: options.kinematics,
+                search_distance: options.search_distance,
+            },
+            boundary,
+            driver: Driver::new(timings),
+            bodies,
+            options,
             nodes,
-            surfaces: reference.clone(),
-            reference,
-            reach,
-            increment: 0,
-            records: Vec::new(),
-            timings,
             plate: None,
-            sub_increment: 1,
-            monitor: Mutex::new(None),
         };
-        if !analysis.flexibility.is_full() {
+        if !analysis.boundary.flexibility.is_full() {
             let clock = std::time::Instant::now();
-            let before = analysis.timings.flexibility;
-            analysis.prime()?;
+            let before = analysis.boundary.flexibility_seconds;
+            (analysis.boundary).prime(&mut *analysis.bodies, &analysis.surfaces)?;
             // (node directions time themselves; columns through ensure_columns too)
-            analysis.timings.flexibility = before + clock.elapsed().as_secs_f64();
+            analysis.boundary.flexibility_seconds = before + clock.elapsed().as_secs_f64();
         }
         Ok(analysis)
     }
 
-    /// Whether an increment that the paper's rules do not settle starts again from the states
-    /// of the solution of its linearized conditions (`fallback.rs`; on by default). Off, the
-    /// iteration is the paper's alone, as before 0.7.0: a benchmark's control (`hycon bench
-    /// presses` compares the two), not an option.
-    pub fn set_fallback(&mut self, on: bool) {
-        self.fallback = on;
-    }
-
-    /// How many increments so far converged only from the fallback's states (see
-    /// [`set_fallback`](Self::set_fallback)).
-    pub fn fallbacks(&self) -> usize {
-        self.fallbacks
-    }
-
-    /// Call `monitor` with every iteration record from now on, also those of the tries the
-    /// automatic cutback halves (see [`IterationRecord::sub_increment`]; `None` removes it).
-    /// When it returns `false` the increment stops with [`Error::Callback`] (not retried) and
-    /// the last converged state is kept.
-    pub fn set_monitor(&mut self, monitor: Option<Monitor>) {
-        *self
-            .monitor
-            .get_mut()
-            .unwrap_or_else(PoisonError::into_inner) = monitor;
-    }
-
     /// The model (mesh, materials, boundary conditions); an error for a host's system.
     pub fn model(&self) -> Result<&Model> {
-        self.bodies.as_model().ok_or_else(|| {
-            Error::InvalidInput(
-                "this analysis runs on a host's system: hycon has no model of it".into(),
-            )
-        })
+        model_of(&*self.bodies)
     }
 
     /// The displacement field of the last converged increment (zero before the first): over
@@ -1018,12 +890,12 @@ impl ContactAnalysis {
     /// Takes `&self`: concurrent calls are safe (the solves are serialized by a lock; two
     /// first calls may both solve, one result is kept).
     pub fn displacement(&self) -> Result<&[f64]> {
-        if let Some((q, _)) = self.field.get() {
+        if let Some((q, _)) = self.driver.field.get() {
             return Ok(q);
         }
         self.bodies.check_solver()?;
         let clock = std::time::Instant::now();
-        let q = match &self.converged {
+        let q = match &self.driver.converged {
             Some(c) => {
                 let total = self.total_load(c);
                 self.bodies.solve(&total, &c.prescribed)?
@@ -1031,7 +903,7 @@ impl ContactAnalysis {
             None => vec![0.0; self.bodies.field_len()],
         };
         let seconds = clock.elapsed().as_secs_f64();
-        Ok(&self.field.get_or_init(|| (q, seconds)).0)
+        Ok(&self.driver.field.get_or_init(|| (q, seconds)).0)
     }
 
     /// Length of load and displacement vectors: `2 n_nodes` for a plane model, `3 n_nodes` for
@@ -1045,7 +917,7 @@ impl ContactAnalysis {
     /// recover the displacement with its own solver.
     pub fn contact_forces(&self) -> Vec<f64> {
         let mut out = vec![0.0; self.bodies.field_len()];
-        if let Some(c) = &self.converged {
+        if let Some(c) = &self.driver.converged {
             self.scatter(&c.contact, &mut out);
         }
         out
@@ -1053,7 +925,7 @@ impl ContactAnalysis {
 
     /// Add forces given at the contact dofs into a field vector.
     fn scatter(&self, forces: &[f64], out: &mut [f64]) {
-        for (&d, &v) in self.dofs.iter().zip(forces) {
+        for (&d, &v) in self.boundary.dofs.iter().zip(forces) {
             if let Some(i) = self.bodies.field_index(d) {
                 out[i] += v;
             }
@@ -1065,13 +937,13 @@ impl ContactAnalysis {
     /// [`displacement`](Self::displacement). One solve, with the difference of the two
     /// increments' loads (the response is linear in them).
     pub fn displacement_increment(&self) -> Result<Vec<f64>> {
-        let Some(c) = &self.converged else {
+        let Some(c) = &self.driver.converged else {
             return Ok(vec![0.0; self.bodies.field_len()]);
         };
         self.bodies.check_solver()?;
         let mut load = self.total_load(c);
         let mut prescribed = c.prescribed.clone();
-        if let Some(p) = &self.previous {
+        if let Some(p) = &self.driver.previous {
             for (l, v) in load.iter_mut().zip(self.total_load(p)) {
                 *l -= v;
             }
@@ -1081,8 +953,11 @@ impl ContactAnalysis {
         }
         let clock = std::time::Instant::now();
         let du = self.bodies.solve(&load, &prescribed)?;
-        *self.recovery.lock().unwrap_or_else(PoisonError::into_inner) +=
-            clock.elapsed().as_secs_f64();
+        *self
+            .driver
+            .recovery
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner) += clock.elapsed().as_secs_f64();
         Ok(du)
     }
 
@@ -1100,15 +975,21 @@ impl ContactAnalysis {
 
     /// Where the time went so far.
     pub fn timings(&self) -> Timings {
-        let mut t = self.timings;
-        t.recovery += self.field.get().map_or(0.0, |f| f.1)
-            + *self.recovery.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut t = self.driver.timings;
+        t.flexibility = self.boundary.flexibility_seconds;
+        t.load_solves = self.boundary.load_seconds;
+        t.recovery += self.driver.field.get().map_or(0.0, |f| f.1)
+            + *self
+                .driver
+                .recovery
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner);
         t
     }
 
     /// Every iteration record so far, in order.
     pub fn records(&self) -> &[IterationRecord] {
-        &self.records
+        &self.driver.records
     }
 
     /// Number of numeric factorizations of `K` performed by hycon (1 per analysis; 0 when a
@@ -1117,490 +998,39 @@ impl ContactAnalysis {
         self.bodies.factorizations()
     }
 
-    /// Mean A segment length of pair `p` in the geometry's configuration `xg` (the length
-    /// scale of the gap tolerance and the search distance).
-    /// The friction law of A node `k` of pair `p`: the pair's, but none for a node on the axis
-    /// in axisymmetry (in the reference configuration, [`ContactGeometry::frictionless_at`]). There
-    /// `tau_rz = 0` by symmetry, and a tangential row would constrain the radial slip that
-    /// `u_r = 0` on both sides already holds: with B's segment over A's axis node spanning
-    /// as many of A's active nodes' radial dofs as it has rows, the field `u_r = c r` (which
-    /// both sides represent with `u_r(0) = 0`) slips nowhere, so the stick rows were dependent
-    /// and the small system singular. Such a node closes frictionless and keeps `ts = 0`.
+    /// The caller's id of A node `(pair, index)`.
+    pub(super) fn external_a(&self, (p, k): NodeKey) -> usize {
+        self.bodies.external(self.surfaces.pairs[p].a[k])
+    }
+
+    /// The friction law of A node `k` of pair `p` (see [`Surfaces::node_law`]).
     fn node_law(&self, p: usize, k: usize) -> &dyn FrictionLaw {
-        if self.geometries[p].frictionless_at(k, self.bodies.positions()) {
-            &Coulomb::NONE
-        } else {
-            &*self.laws[p]
-        }
+        self.surfaces.node_law(p, k, self.bodies.positions())
     }
 
-    fn mean_size(&self, p: usize, xg: &[f64]) -> f64 {
-        self.geometries[p].mean_size(xg)
-    }
-
-    /// How far the pairing of pair `p` reaches during an increment: `search_distance` mean A
-    /// segment lengths, or twice the increment's largest motion of a contact node when that is
-    /// more. Two surfaces approach each other by at most twice that motion in an increment, so
-    /// a pairing that held at its start still finds its partner, however fine the mesh (a
-    /// reach tied to the element size alone breaks exactly when a user refines).
+    /// How far the pairing of pair `p` reaches in the iterate `uc` of an increment that
+    /// started at `startc` (see [`Surfaces::search_reach`]).
     fn search_reach(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
         let motion = checks::largest_node_motion(uc, startc, self.dim());
-        (self.options.search_distance * self.mean_size(p, xg)).max(2.0 * motion)
+        self.surfaces.search_reach(p, xg, motion)
     }
 
-    /// A displacement scale below which an increment's iterates cannot be told apart, the
-    /// `floor` of the convergence measure [`change_ratio`]: 0 under small kinematics (given
-    /// the contact set the problem is linear and a repeated increment reproduces the state to
-    /// round-off). Under finite kinematics the geometry is nonlinear and evaluated at `X + u`:
-    /// every converged increment stopped within `tolerance` of its own motion, so an increment
-    /// is measured against at least the largest of those motions (a repeated increment then
-    /// converges at once instead of refining the last fixed point against its own tiny motion),
-    /// and against round-off of the positions, `POSITION_ROUND_OFF |X| / tolerance` (a model
-    /// far from its origin).
-    fn resolution(&self) -> f64 {
-        match self.options.kinematics {
-            Kinematics::Small => 0.0,
-            Kinematics::Finite => {
-                let x = self.bodies.positions();
-                let positions: Vec<f64> = self.dofs.iter().map(|&d| x[d]).collect();
-                let round_off = checks::POSITION_ROUND_OFF * checks::norm2(&positions);
-                self.largest_motion.max(round_off / self.options.tolerance)
-            }
-        }
-    }
-
-    /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (the other
-    /// nodes keep their reference positions: the contact geometry never reads them).
+    /// Current positions `X + u` of the nodes, with `u` given at the contact dofs (see
+    /// [`Boundary::positions`]).
     fn positions(&self, uc: &[f64]) -> Vec<f64> {
-        let mut x = self.bodies.positions().to_vec();
-        for (&d, &u) in self.dofs.iter().zip(uc) {
-            x[d] += u;
-        }
-        x
+        self.boundary.positions(self.bodies.positions(), uc)
     }
 
-    /// The positions the contact geometry is evaluated at, given the current ones `x`: the
-    /// reference positions `X` under small kinematics, `x` itself under finite kinematics.
+    /// The positions the contact geometry is evaluated at, given the current ones `x` (see
+    /// [`Surfaces::geometry_positions`]).
     fn geometry_positions<'a>(&'a self, x: &'a [f64]) -> &'a [f64] {
-        match self.options.kinematics {
-            Kinematics::Small => self.bodies.positions(),
-            Kinematics::Finite => x,
-        }
-    }
-
-    /// Bring the contact geometry `surfaces` to the displacement `uc` of the contact dofs.
-    /// Finite kinematics: evaluate every pair at the current positions (reusing the surfaces'
-    /// buffers). Small kinematics: nothing but the gaps changes, linearly:
-    /// `R_C,k = R_C,k(X) + sum_j c_kj u_j`, `normal_gap_k = -n_k . R_C,k / covered weight`
-    /// (and `mean_distance` moves with `normal_gap`), with the reference pairing, frames,
-    /// weights and coupling rows.
-    fn update_geometry(
-        &self,
-        surfaces: &mut [ContactSurface],
-        uc: &[f64],
-        startc: &[f64],
-    ) -> Result<()> {
-        match self.options.kinematics {
-            Kinematics::Finite => {
-                let x = self.positions(uc);
-                self.resolved(&x)?;
-                for (p, surface) in surfaces.iter_mut().enumerate() {
-                    let distance = self.search_reach(p, &x, uc, startc);
-                    self.geometries[p].evaluate_into(&x, distance, surface)?;
-                }
-            }
-            Kinematics::Small => {
-                for (surface, reference) in surfaces.iter_mut().zip(&self.reference) {
-                    for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
-                        let change = self.coupled(&r.coupling, uc);
-                        node.gap = r.gap + change;
-                        if r.covered_weight > 0.0 {
-                            node.normal_gap = -r.frame.normal().dot(&node.gap) / r.covered_weight;
-                            node.mean_distance = r.mean_distance + (node.normal_gap - r.normal_gap);
-                        }
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// Small kinematics: keep the frozen pairing wide enough for displacement `uc` of the
-    /// contact dofs. A point of A at reference distance `g0` from B along A's normal can touch
-    /// B only if `g0 <= |u_A| + |u_B| <= 2 max |u|` (the largest nodal displacement of the
-    /// pair since the reference configuration), so whenever `2 max |u|` exceeds the pair's
-    /// reach the pairing is evaluated again in the reference configuration within
-    /// `4 max |u|` (a growing load widens it a logarithmic number of times). Without this, a
-    /// reach of a few element lengths loses the outer part of a contact zone whose initial
-    /// gaps span more elements than that: exactly what refining the mesh does.
-    ///
-    /// Every point paired before keeps its partner (a new hit is farther than the old reach),
-    /// so the nodes whose data change are those that were not fully covered. If one of them
-    /// has been active its directions' flexibility is stale and all of it is rebuilt as nodes
-    /// close again. The working `surfaces` and the converged ones are brought to the new
-    /// pairing (the converged state itself, node states and tractions, does not change).
-    fn widen_pairing(&mut self, uc: &[f64], surfaces: &mut [ContactSurface]) -> Result<()> {
-        if self.options.kinematics != Kinematics::Small {
-            return Ok(());
-        }
-        for p in 0..self.pairs.len() {
-            let pair = &self.pairs[p];
-            let motion = pair
-                .a
-                .iter()
-                .chain(&pair.b)
-                .map(|&n| self.node_vector(n, uc).norm())
-                .fold(0.0f64, f64::max);
-            if 2.0 * motion <= self.reach[p] {
-                continue;
-            }
-            let reach = 4.0 * motion;
-            let x = self.bodies.positions();
-            let wider = self.geometries[p].evaluate(x, reach)?;
-            let stale = (wider.nodes.iter().zip(&self.reference[p].nodes))
-                .enumerate()
-                .any(|(k, (new, old))| new != old && self.node_flexibility.knows(p, k));
-            if stale {
-                self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
-            }
-            self.reach[p] = reach;
-            self.reference[p] = wider;
-            surfaces[p] = self.reference[p].clone();
-            let mut converged = std::mem::take(&mut self.surfaces);
-            converged[p] = self.reference[p].clone();
-            self.update_geometry(&mut converged, &self.qc, &self.qc)?;
-            self.surfaces = converged;
-        }
-        Ok(())
-    }
-
-    /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
-    /// only, so every dof asked for has one.
-    fn contact_slot(&self, d: usize) -> usize {
-        self.slot[d].expect("a dof of a contact node")
+        self.surfaces.geometry_positions(self.bodies.positions(), x)
     }
 
     /// The dimension of the positions: the bodies' equations per node.
     fn dim(&self) -> usize {
         self.bodies.dim()
     }
-
-    /// The global dof of component `dir` of node `node`: `dim node + dir`, the bodies'
-    /// numbering of their positions and displacements.
-    fn node_dof(&self, node: usize, dir: usize) -> usize {
-        self.dim() * node + dir
-    }
-
-    /// Contact node `n`'s vector of `u` over the contact dofs.
-    fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
-        let mut v = Vector::zero(self.dim());
-        for (c, out) in v.components_mut().iter_mut().enumerate() {
-            *out = uc[self.contact_slot(self.node_dof(n, c))];
-        }
-        v
-    }
-
-    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
-    fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
-        (coupling.iter()).fold(Vector::zero(self.dim()), |acc, &(j, c)| {
-            acc.add_scaled(c, &self.node_vector(j, uc))
-        })
-    }
-
-    /// Apply one load increment: total external forces `f` and total prescribed displacement
-    /// values `qp` (both over all dofs; `qp` read at the prescribed dofs). On success the
-    /// converged state advances; on failure it is left as it was and the error says why.
-    pub fn increment(&mut self, f: &[f64], qp: &[f64]) -> Result<IncrementInfo> {
-        if self.plate.is_some() {
-            return Err(Error::InvalidInput(
-                "this analysis has a rigid plate: use increment_with_plate".into(),
-            ));
-        }
-        self.cut_increment(f, qp, None)
-    }
-
-    fn run_increment(
-        &mut self,
-        f: &[f64],
-        qp: &[f64],
-        control: Option<Controls>,
-    ) -> Result<IncrementInfo> {
-        let number = self.increment + 1;
-        let loads::Solved {
-            u0c,
-            plate_force: force0,
-            load,
-        } = self.load_solve(f, qp)?;
-        finite(&u0c, number, 0)?;
-        let border = control.and_then(|c| self.border(c, force0));
-        let mut states: Vec<Vec<NodeState>> = self
-            .nodes
-            .iter()
-            .map(|v| v.iter().map(|d| d.state).collect())
-            .collect();
-        if border.is_some() && states.iter().flatten().all(|s| *s == NodeState::Open) {
-            // a force-controlled body needs a support to start from: the nearest node
-            self.close_nearest(&self.surfaces, &mut states);
-        }
-        // the same totals again: resume with the last increment's locks and its way of
-        // judging B nodes, so that a contact set it settled by locking or in the fallback's
-        // last attempt settles at once on the same state
-        let (locks, b_nodes) = match (&self.settled, control) {
-            (Some(last), None) if last.load == load => (last.locks.clone(), last.b_nodes),
-            _ => (Locks::default(), BNodes::Pointwise),
-        };
-        let attempt = Attempt {
-            number,
-            f,
-            qp,
-            control,
-            u0c: &u0c,
-            border: border.as_ref(),
-            force0,
-            load: &load,
-            startc: self.qc.clone(),
-            resolution: self.resolution(),
-            clock: std::time::Instant::now(),
-            // columns of a lazy F built during the iteration count as flexibility
-            flexibility_before: self.timings.flexibility,
-        };
-        let mut records = Vec::new();
-        let first = self.iterate(&attempt, states, locks, b_nodes, &mut records);
-        match first {
-            Err(e)
-                if self.fallback && border.is_none() && Failure::of(&e).fallback_may_settle() =>
-            {
-                // the paper's rules did not settle: start again from the states of the
-                // solution of the linearized conditions (fallback.rs), first with the
-                // paper's rules from those states, then with B nodes checked pointwise only at
-                // convergence (rules.rs)
-                let states = self.fallback_states(&attempt).map_err(|_| e.clone())?;
-                let mut info = self.iterate(
-                    &attempt,
-                    states.clone(),
-                    Locks::default(),
-                    BNodes::Pointwise,
-                    &mut records,
-                );
-                if info.is_err() {
-                    info = self.iterate(
-                        &attempt,
-                        states,
-                        Locks::default(),
-                        BNodes::AtConvergence,
-                        &mut records,
-                    );
-                }
-                // a state that settled but breaks a condition says more than the rules' failure
-                let info = info.map_err(|last| match last {
-                    Error::Contact(ContactError::ConditionViolated { .. }) => last,
-                    _ => e,
-                })?;
-                self.fallbacks += 1;
-                Ok(info)
-            }
-            other => other,
-        }
-    }
-
-    /// The iteration of one increment from `states` and `locks` (module docs), its records
-    /// appended to `records`; on convergence the state advances.
-    fn iterate(
-        &mut self,
-        attempt: &Attempt<'_>,
-        states: Vec<Vec<NodeState>>,
-        locks: Locks,
-        b_nodes: BNodes,
-        records: &mut Vec<IterationRecord>,
-    ) -> Result<IncrementInfo> {
-        let Attempt {
-            number,
-            f,
-            qp,
-            control,
-            u0c,
-            border,
-            force0,
-            load,
-            ref startc,
-            resolution,
-            clock,
-            flexibility_before,
-        } = *attempt;
-        // iterate on the contact dofs only; geometry from the start configuration
-        let mut uc = startc.clone();
-        let mut surfaces = self.surfaces.clone();
-        let mut set = ActiveSet::new(states, locks, self.options.lock_rounds).judging(b_nodes);
-        let convergence = Convergence::new(self.options.tolerance);
-        let first_record = records.len();
-        // time of the refactor-every-iteration variant (feature `oracles`), counted as
-        // factorization
-        #[allow(unused_mut)]
-        let mut refactoring = 0.0;
-        let mut last: Option<(SmallSystem, boundary::Solution)> = None;
-        for step in 1..=self.options.max_iterations {
-            // iterations are counted over the increment's attempts
-            let iteration = first_record + step;
-            #[cfg(feature = "oracles")]
-            if self.refactor_each_iteration && step > 1 {
-                refactoring += self.refactor()?;
-            }
-            let states = set.states();
-            let system = self.build_system(&surfaces, states, &uc, startc)?;
-            // the contact set settled and R measured the last change: the same system again,
-            // whose solution is the last one to the bit (no factorization, no substitution)
-            let solution = match last.take() {
-                Some((previous, solution)) if previous == system => solution,
-                _ => self.solve_iteration(&system, u0c, border)?,
-            };
-            let (tau, plate_motion, condition, uc_new) = solution.clone();
-            let forces = system.forces(&tau, self.dofs.len());
-            finite(&uc_new, number, iteration)?;
-            self.widen_pairing(&uc_new, &mut surfaces)?;
-            self.update_geometry(&mut surfaces, &uc_new, startc)?;
-            let tractions = system.tractions(&tau, &surfaces, states, &self.laws);
-            let proposed = self.update_states(&set, &tractions, &surfaces, &uc_new, startc)?;
-            let changes = set.changes(&proposed);
-            let r = change_ratio(&uc_new, &uc, startc, resolution, self.options.tolerance);
-            if !r.is_finite() {
-                return Err(ContactError::NonFinite {
-                    increment: number,
-                    iteration,
-                }
-                .into());
-            }
-            let violation = self.violation(
-                &surfaces,
-                states,
-                &tractions,
-                set.b_nodes(),
-                &uc_new,
-                startc,
-            );
-            let (active, stick, slip) = set.count();
-            let record = IterationRecord {
-                increment: number,
-                iteration,
-                active,
-                stick,
-                slip,
-                changes,
-                r,
-                condition,
-                violation: violation.relative,
-                sub_increment: self.sub_increment,
-            };
-            records.push(record);
-            if let Some(monitor) = self
-                .monitor
-                .get_mut()
-                .unwrap_or_else(PoisonError::into_inner)
-                && !monitor(&record)
-            {
-                return Err(Error::Callback(format!(
-                    "increment {number}: the monitor stopped the iteration at iteration \
-                     {iteration}"
-                )));
-            }
-            uc = uc_new;
-            let iterate = Iterate {
-                changes,
-                r,
-                residual: None,
-            };
-            if convergence.reached(&iterate) {
-                let states = set.states();
-                self.uncovered(&surfaces, states)?;
-                self.passed_through(&surfaces, states, &uc, startc)?;
-                self.locks_hold(number, &surfaces, &set, &uc, startc)?;
-                self.small_sliding(number, states, &uc)?;
-                if violation.relative > CONDITION_LIMIT {
-                    return Err(ContactError::ConditionViolated {
-                        increment: number,
-                        node: self.external_a(violation.node),
-                        condition: violation.condition,
-                        relative: violation.relative,
-                    }
-                    .into());
-                }
-                self.timings.factorization += refactoring;
-                self.timings.iterations += clock.elapsed().as_secs_f64()
-                    - refactoring
-                    - (self.timings.flexibility - flexibility_before);
-                let mut prescribed = qp.to_vec();
-                if let (Some(plate), Some(control)) = (&mut self.plate, control) {
-                    let directions = border.map_or(&[][..], |b| &b.directions[..]);
-                    plate.settle(
-                        control,
-                        (directions, &plate_motion),
-                        force0,
-                        &forces,
-                        &mut prescribed,
-                    );
-                }
-                let converged = Converged {
-                    load: f.to_vec(),
-                    prescribed,
-                    contact: forces,
-                };
-                self.settled = control.is_none().then(|| Settled {
-                    load: load.to_vec(),
-                    locks: set.locks().clone(),
-                    b_nodes: set.b_nodes(),
-                });
-                return Ok(self.finish(
-                    number,
-                    iteration,
-                    set.states(),
-                    &tractions,
-                    uc,
-                    surfaces,
-                    converged,
-                    std::mem::take(records),
-                ));
-            }
-            last = Some((system, solution));
-            if let Commit::Cycle { returns_to, node } = set.commit(proposed) {
-                return Err(ContactError::Cycling {
-                    increment: number,
-                    iteration,
-                    returns_to,
-                    node: self.external_a(node),
-                }
-                .into());
-            }
-        }
-        Err(ContactError::NoConvergence {
-            increment: number,
-            iterations: records.len(),
-            last_r: records.last().map_or(f64::NAN, |r: &IterationRecord| r.r),
-        }
-        .into())
-    }
-
-    /// The caller's id of A node `(pair, index)`.
-    fn external_a(&self, (p, k): NodeKey) -> usize {
-        self.bodies.external(self.pairs[p].a[k])
-    }
-}
-
-/// What one increment's iteration starts from: its loads and their solve, the start state.
-struct Attempt<'a> {
-    number: usize,
-    f: &'a [f64],
-    qp: &'a [f64],
-    control: Option<Controls>,
-    /// The load solve at the contact dofs.
-    u0c: &'a [f64],
-    border: Option<&'a Border>,
-    force0: Vector,
-    /// The load (`f` and `q_p`) the increment's locks are kept with.
-    load: &'a [f64],
-    /// The converged displacement of the contact dofs the increment starts from.
-    startc: Vec<f64>,
-    resolution: f64,
-    clock: std::time::Instant,
-    flexibility_before: f64,
 }
 
 /// The plane and axisymmetric geometry of every pair: its polylines with the measure of its A
@@ -1732,17 +1162,13 @@ fn check_facing(
     }
 }
 
-/// An iterate's displacements `u` must be finite (see [`ContactError::NonFinite`]).
-fn finite(u: &[f64], increment: usize, iteration: usize) -> Result<()> {
-    if u.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(ContactError::NonFinite {
-            increment,
-            iteration,
-        }
-        .into())
-    }
+/// The model of `bodies`; an error for a host's system.
+fn model_of(bodies: &dyn Bodies) -> Result<&Model> {
+    bodies.as_model().ok_or_else(|| {
+        Error::InvalidInput(
+            "this analysis runs on a host's system: hycon has no model of it".into(),
+        )
+    })
 }
 
 /// Name the pair in an error of its checks.
@@ -1763,51 +1189,6 @@ fn check_host_nodes(pairs: &[ContactPair], bodies: &dyn Bodies) -> Result<()> {
         }
     }
     Ok(())
-}
-
-impl ContactAnalysis {
-    /// Accept the converged iterate: store the contact state, the node data and the records;
-    /// the full field is recovered only when asked for.
-    #[allow(clippy::too_many_arguments)]
-    fn finish(
-        &mut self,
-        number: usize,
-        iterations: usize,
-        states: &[Vec<NodeState>],
-        tractions: &[Vec<Traction>],
-        uc: Vec<f64>,
-        surfaces: Vec<ContactSurface>,
-        converged: Converged,
-        records: Vec<IterationRecord>,
-    ) -> IncrementInfo {
-        let motion: Vec<f64> = uc.iter().zip(&self.qc).map(|(a, b)| a - b).collect();
-        self.largest_motion = self.largest_motion.max(checks::norm2(&motion));
-        self.largest_node_motion =
-            (self.largest_node_motion).max(checks::largest_node_motion(&uc, &self.qc, self.dim()));
-        self.qc = uc;
-        self.surfaces = surfaces;
-        self.previous = self.converged.replace(converged);
-        if let Some((_, seconds)) = self.field.take() {
-            self.timings.recovery += seconds;
-        }
-        for (p, s) in states.iter().enumerate() {
-            for (k, &state) in s.iter().enumerate() {
-                let traction = tractions[p][k];
-                self.nodes[p][k] = NodeData { state, traction };
-            }
-        }
-        self.increment = number;
-        self.records.extend(records);
-        let (active, _, slip) = count(states);
-        IncrementInfo {
-            increment: number,
-            iterations,
-            active,
-            slip,
-            sub_increments: 1,
-            cutbacks: 0,
-        }
-    }
 }
 
 #[cfg(test)]

@@ -13,10 +13,13 @@
 //! from `F` in every iteration, nalgebra's unblocked LU) is a test oracle behind the feature
 //! `oracles` (`oracles.rs`); the tests compare the two.
 
+use super::loads::LoadSolve;
+use super::surfaces::Surfaces;
 use super::{
-    Border, ContactAnalysis, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
+    Border, ContactPair, ContactSurface, DMatrix, Kinematics, Mat, Result, Sparse, column, dot,
+    small_system,
 };
-use crate::contact::bodies::Images;
+use crate::contact::bodies::{Bodies, Images};
 use crate::contact::space::{Vector, node};
 use crate::contact::tangent::MAX_TANGENTS;
 use crate::solver::vector_state::clean_after;
@@ -25,6 +28,128 @@ use faer::linalg::solvers::{PartialPivLu, Solve};
 use small_system::{Row, SmallSystem, kept_tangents, singular};
 use std::collections::HashMap;
 use std::ops::Range;
+
+/// The boundary algebra part of the analysis: the contact dofs, the flexibility over them,
+/// the small system's storage, the converged contact displacement and the kept load solves.
+pub(super) struct Boundary {
+    /// Global dofs of the contact nodes (A and B of every pair), sorted.
+    pub(super) dofs: Vec<usize>,
+    /// Position of each global dof in `dofs` (`None`: not a contact dof).
+    pub(super) slot: Vec<Option<usize>>,
+    /// The bodies' equations per node.
+    pub(super) dim: usize,
+    /// Seconds spent building `F` (see [`Timings::flexibility`](super::Timings::flexibility)).
+    pub(super) flexibility_seconds: f64,
+    /// Seconds spent in load solves (see [`Timings::load_solves`](super::Timings::load_solves)).
+    pub(super) load_seconds: f64,
+    /// `F = E^T K^-1 E` over `dofs` (zero rows and columns at prescribed dofs), its columns
+    /// built when first needed (all at once from a factor; a host callback's as nodes become
+    /// active).
+    pub(super) flexibility: Flexibility,
+    /// Under small kinematics, the node flexibility of the directions that have been active.
+    pub(super) node_flexibility: NodeFlexibility,
+    /// The storage of the small system `S` (see `solve_boundary`), kept between iterations: a
+    /// fresh `S` beyond glibc's 32 MiB mmap threshold (m > 2,048) had its pages faulted in
+    /// and zeroed again in every iteration.
+    pub(super) small_matrix: Mat<f64>,
+    /// Converged displacement of the contact dofs (`dofs` order).
+    pub(super) qc: Vec<f64>,
+    /// Recent load solves, reused when a new load is a combination of their loads.
+    /// (Shared, so that the cutback's snapshot copies no vector.)
+    pub(super) loads: Vec<std::sync::Arc<LoadSolve>>,
+    /// Iterate on the dense reference algebra (see `ContactAnalysis::set_reference_algebra`,
+    /// feature `oracles`).
+    #[cfg(feature = "oracles")]
+    pub(super) reference_algebra: bool,
+    /// Factor `K` again in every iteration (a benchmark's control, see
+    /// `ContactAnalysis::set_refactor_each_iteration`, feature `oracles`).
+    #[cfg(feature = "oracles")]
+    pub(super) refactor_each_iteration: bool,
+}
+
+impl Boundary {
+    /// The algebra over the contact `dofs` of positions of length `n`, with `flexibility` and
+    /// the node flexibility of `a_nodes` A nodes per pair.
+    pub(super) fn new(
+        dofs: Vec<usize>,
+        n: usize,
+        dim: usize,
+        flexibility: Flexibility,
+        a_nodes: impl Iterator<Item = usize>,
+    ) -> Self {
+        let mut slot = vec![None; n];
+        for (i, &d) in dofs.iter().enumerate() {
+            slot[d] = Some(i);
+        }
+        Boundary {
+            qc: vec![0.0; dofs.len()],
+            node_flexibility: NodeFlexibility::new(a_nodes),
+            small_matrix: Mat::new(),
+            #[cfg(feature = "oracles")]
+            reference_algebra: false,
+            #[cfg(feature = "oracles")]
+            refactor_each_iteration: false,
+            loads: Vec::new(),
+            flexibility,
+            dofs,
+            slot,
+            dim,
+            flexibility_seconds: 0.0,
+            load_seconds: 0.0,
+        }
+    }
+
+    /// Position of contact dof `d` in `dofs`. Coupling rows and the pairs name contact nodes
+    /// only, so every dof asked for has one.
+    pub(super) fn contact_slot(&self, d: usize) -> usize {
+        self.slot[d].expect("a dof of a contact node")
+    }
+
+    /// Contact node `n`'s vector of `u` over the contact dofs (its dofs `dim n + c`, the
+    /// bodies' numbering of their positions and displacements).
+    pub(super) fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
+        let mut v = Vector::zero(self.dim);
+        for (c, out) in v.components_mut().iter_mut().enumerate() {
+            *out = uc[self.contact_slot(self.dim * n + c)];
+        }
+        v
+    }
+
+    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
+    pub(super) fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
+        (coupling.iter()).fold(Vector::zero(self.dim), |acc, &(j, c)| {
+            acc.add_scaled(c, &self.node_vector(j, uc))
+        })
+    }
+
+    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
+    pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
+        let (dim, d) = (self.dim, d.components());
+        let mut row = Vec::with_capacity(coupling.len() * dim);
+        for &(j, c) in coupling {
+            for (i, &di) in d.iter().enumerate() {
+                row.push((self.contact_slot(dim * j + i), c * di));
+            }
+        }
+        row
+    }
+
+    /// Current positions `X + u` of the nodes from their reference positions `x0`, with `u`
+    /// given at the contact dofs (the other nodes keep their reference positions: the contact
+    /// geometry never reads them).
+    pub(super) fn positions(&self, x0: &[f64], uc: &[f64]) -> Vec<f64> {
+        let mut x = x0.to_vec();
+        for (&d, &u) in self.dofs.iter().zip(uc) {
+            x[d] += u;
+        }
+        x
+    }
+
+    /// Forget the node flexibility of every direction (see [`NodeFlexibility::forget`]).
+    pub(super) fn forget_directions(&mut self) {
+        self.node_flexibility.forget();
+    }
+}
 
 /// Directions whose images one forward substitution computes (neighbouring nodes' directions:
 /// their elimination-tree paths mostly coincide).
@@ -135,6 +260,11 @@ impl NodeFlexibility {
             index: a_nodes.map(|n| vec![[None; 1 + MAX_TANGENTS]; n]).collect(),
             ..Default::default()
         }
+    }
+
+    /// Forget every direction (their flexibility is stale, see `Surfaces::widen`).
+    pub(super) fn forget(&mut self) {
+        *self = Self::new(self.index.iter().map(Vec::len));
     }
 
     /// The place of `row` in a node's `index`: 0 for the normal, `1 + i` for tangent `s_i`.
@@ -268,7 +398,7 @@ fn shared_runs(a: &[usize], b: &[usize]) -> Vec<(usize, usize, usize)> {
     runs
 }
 
-/// What [`ContactAnalysis::solve_boundary`] gives: the unknowns `tau`, the plate's
+/// What [`Boundary::solve_boundary`] gives: the unknowns `tau`, the plate's
 /// force-controlled translations, the condition estimate of the small system and the new
 /// displacement of the contact dofs.
 pub(super) type Solution = (Vec<f64>, Vec<f64>, f64, Vec<f64>);
@@ -314,7 +444,7 @@ struct Slip {
 /// theirs: only the rows of the new and reordered unknowns are computed
 /// ([`cholesky_extending`]). Between iterations the contact set changes at the zone's edges,
 /// so the unknowns are ordered with those of the kept factor first and new ones by distance
-/// from the zone's centre ([`ContactAnalysis::factor_order`]).
+/// from the zone's centre ([`Boundary::factor_order`]).
 #[derive(Debug, Clone)]
 pub(super) struct KeptFactor {
     /// The direction (node-flexibility index) of each row of `l`.
@@ -874,11 +1004,15 @@ fn solve_and_estimate(a_norm: f64, lu: &Dense, rhs: faer::MatMut<'_, f64>) -> Op
     condition.is_finite().then_some(condition)
 }
 
-impl ContactAnalysis {
+impl Boundary {
     /// Make the columns `slots` of `F` known: a lazy flexibility gets the missing ones from
     /// one batch of solves, `F e_j = E^T K^-1 e_j` (see [`Bodies::flexibility_times`]); the
     /// time counts as flexibility.
-    pub(super) fn ensure_columns(&mut self, slots: impl IntoIterator<Item = usize>) -> Result<()> {
+    pub(super) fn ensure_columns(
+        &mut self,
+        bodies: &mut dyn Bodies,
+        slots: impl IntoIterator<Item = usize>,
+    ) -> Result<()> {
         let mut missing: Vec<usize> = slots
             .into_iter()
             .filter(|&j| !self.flexibility.known[j])
@@ -890,12 +1024,12 @@ impl ContactAnalysis {
         missing.dedup();
         let clock = std::time::Instant::now();
         let units: Vec<Sparse> = missing.iter().map(|&j| vec![(j, 1.0)]).collect();
-        let columns = self.bodies.flexibility_times(&self.dofs, &units)?;
+        let columns = bodies.flexibility_times(&self.dofs, &units)?;
         for (c, &j) in missing.iter().enumerate() {
             self.flexibility
                 .set_column(j, columns.column(c).iter().copied());
         }
-        self.timings.flexibility += clock.elapsed().as_secs_f64();
+        self.flexibility_seconds += clock.elapsed().as_secs_f64();
         Ok(())
     }
 
@@ -916,6 +1050,8 @@ impl ContactAnalysis {
     #[allow(clippy::type_complexity)]
     fn node_directions(
         &mut self,
+        bodies: &mut dyn Bodies,
+        reference: &[ContactSurface],
         system: &SmallSystem,
     ) -> Result<(Vec<usize>, Vec<Vec<(usize, f64)>>)> {
         let mut new: Vec<(usize, usize, Row)> = Vec::new();
@@ -934,7 +1070,7 @@ impl ContactAnalysis {
         let vectors: Vec<Sparse> = new
             .iter()
             .map(|&(p, k, row)| {
-                let node = &self.reference[p].nodes[k];
+                let node = &reference[p].nodes[k];
                 self.directed(&node.coupling, &row.direction(&node.frame))
             })
             .collect();
@@ -948,15 +1084,14 @@ impl ContactAnalysis {
             self.node_flexibility.add_responses(&new, vectors, &y);
         } else {
             let clock = std::time::Instant::now();
-            if self.bodies.has_images() {
+            if bodies.has_images() {
                 // batches of neighbouring directions share most of their reach
                 let mut vectors = vectors.into_iter();
                 let batches: Vec<Vec<Sparse>> = new
                     .chunks(IMAGE_BATCH)
                     .map(|keys| vectors.by_ref().take(keys.len()).collect())
                     .collect();
-                let images = self
-                    .bodies
+                let images = bodies
                     .images(&self.dofs, &batches)?
                     .expect("the bodies have images");
                 for ((keys, vs), images) in new.chunks(IMAGE_BATCH).zip(batches).zip(images) {
@@ -964,10 +1099,10 @@ impl ContactAnalysis {
                 }
             } else {
                 // one right-hand side per new direction, not one per dof it touches
-                let y = self.bodies.flexibility_times(&self.dofs, &vectors)?;
+                let y = bodies.flexibility_times(&self.dofs, &vectors)?;
                 self.node_flexibility.add_responses(&new, vectors, &y);
             }
-            self.timings.flexibility += clock.elapsed().as_secs_f64();
+            self.flexibility_seconds += clock.elapsed().as_secs_f64();
         }
         let nf = &self.node_flexibility;
         let rows = system
@@ -995,11 +1130,12 @@ impl ContactAnalysis {
     /// numerically positive definite.
     fn symmetric_factor(
         &mut self,
+        (x, pairs): (&[f64], &[ContactPair]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Option<(Vec<usize>, Mat<f64>)> {
-        let order = self.factor_order(system, rows, symmetric);
+        let order = self.factor_order((x, pairs), system, rows, symmetric);
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
         let nf = &mut self.node_flexibility;
         let prefix = nf.factor.common_prefix(&keys);
@@ -1060,6 +1196,7 @@ impl ContactAnalysis {
     /// falls near the end.
     fn factor_order(
         &self,
+        (x, pairs): (&[f64], &[ContactPair]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
@@ -1071,15 +1208,15 @@ impl ContactAnalysis {
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let (x, dim) = (self.bodies.positions(), self.dim());
+        let dim = self.dim;
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
-            node(x, dim, self.pairs[p].a[k])
+            node(x, dim, pairs[p].a[k])
         };
         let pair = |i: usize| system.unknowns[i].0;
-        let mut has_old = vec![false; self.pairs.len()];
+        let mut has_old = vec![false; pairs.len()];
         old.iter().for_each(|&i| has_old[pair(i)] = true);
-        let mut centroids = vec![(Vector::zero(dim), 0usize); self.pairs.len()];
+        let mut centroids = vec![(Vector::zero(dim), 0usize); pairs.len()];
         for &i in old.iter().chain(new.iter().filter(|&&i| !has_old[pair(i)])) {
             let ((c, count), y) = (&mut centroids[pair(i)], position(i));
             (*c, *count) = (*c + y, *count + 1);
@@ -1106,6 +1243,8 @@ impl ContactAnalysis {
     /// dense reference when it is switched on (`oracles.rs`).
     pub(super) fn solve_iteration(
         &mut self,
+        bodies: &mut dyn Bodies,
+        surfaces: &Surfaces,
         system: &SmallSystem,
         u0c: &[f64],
         border: Option<&Border>,
@@ -1114,7 +1253,7 @@ impl ContactAnalysis {
         if self.reference_algebra {
             return self.solve_reference(system, u0c, border);
         }
-        self.solve_boundary(system, u0c, border)
+        self.solve_boundary(bodies, surfaces, system, u0c, border)
     }
 
     /// Solve the small system (docs/method.md, "The contact boundary's algebra"): `S tau = b - rows . u0` with
@@ -1133,6 +1272,8 @@ impl ContactAnalysis {
     /// `y_j = F col_j` from the columns of `F`. Returns `(tau, U, condition estimate, u)`.
     pub(super) fn solve_boundary(
         &mut self,
+        bodies: &mut dyn Bodies,
+        surfaces: &Surfaces,
         system: &SmallSystem,
         u0c: &[f64],
         border: Option<&Border>,
@@ -1144,10 +1285,16 @@ impl ContactAnalysis {
         }
         let mc = self.dofs.len();
         // small kinematics: directions of rows and columns; finite: the responses y_j
-        let (directions, responses) = match self.options.kinematics {
-            Kinematics::Small => (Some(self.node_directions(system)?), Vec::new()),
+        let (directions, responses) = match surfaces.kinematics {
+            Kinematics::Small => {
+                let reference = &surfaces.reference;
+                (
+                    Some(self.node_directions(bodies, reference, system)?),
+                    Vec::new(),
+                )
+            }
             Kinematics::Finite => {
-                self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
+                self.ensure_columns(bodies, system.cols.iter().flatten().map(|&(c, _)| c))?;
                 let mut y = vec![0.0; mc * m];
                 for (j, col) in system.cols.iter().enumerate() {
                     self.apply_flexibility(col, &mut y[j * mc..(j + 1) * mc]);
@@ -1167,7 +1314,10 @@ impl ContactAnalysis {
         // only S_QQ and the images: S is not stored (at n = 512 with friction, zeroing,
         // filling and summing its 2,900^2 entries in every iteration took 0.46 s)
         let factor = match &directions {
-            Some((rows, _)) if block => self.symmetric_factor(system, rows, symmetric.clone()),
+            Some((rows, _)) if block => {
+                let x = (bodies.positions(), &surfaces.pairs[..]);
+                self.symmetric_factor(x, system, rows, symmetric.clone())
+            }
             _ => None,
         };
         let images = match (&directions, &factor) {
@@ -1238,7 +1388,7 @@ impl ContactAnalysis {
         let condition = solve_and_estimate(s_norm, &lu, rhs.as_mut())
             .filter(|&c| c < 1e-3 / f64::EPSILON)
             .ok_or_else(singular)?;
-        if let (Dense::Block(b), Kinematics::Small) = (lu, self.options.kinematics) {
+        if let (Dense::Block(b), Kinematics::Small) = (lu, surfaces.kinematics) {
             self.node_flexibility.factor.l = b.l;
         }
         let tau: Vec<f64> = (0..m + k).map(|i| rhs[(i, 0)]).collect();
@@ -1283,11 +1433,11 @@ impl ContactAnalysis {
                     .collect();
                 if !parts.is_empty() {
                     let clock = std::time::Instant::now();
-                    let x = self.bodies.back_substitute(&self.dofs, &parts)?;
+                    let x = bodies.back_substitute(&self.dofs, &parts)?;
                     for (u, v) in uc.iter_mut().zip(x) {
                         *u += v;
                     }
-                    self.timings.flexibility += clock.elapsed().as_secs_f64();
+                    self.flexibility_seconds += clock.elapsed().as_secs_f64();
                 }
             }
             None => {
@@ -1312,13 +1462,18 @@ impl ContactAnalysis {
     }
 
     /// The small matrix `S_ij = row_i . F col_j` of `system`, dense (the fallback of
-    /// `rules.rs` works on it): from the node flexibility under small kinematics, from the
+    /// `fallback.rs` works on it): from the node flexibility under small kinematics, from the
     /// columns of `F` under finite kinematics or the reference algebra.
-    pub(super) fn dense_matrix(&mut self, system: &SmallSystem) -> Result<DMatrix<f64>> {
+    pub(super) fn dense_matrix(
+        &mut self,
+        bodies: &mut dyn Bodies,
+        surfaces: &Surfaces,
+        system: &SmallSystem,
+    ) -> Result<DMatrix<f64>> {
         let m = system.rows.len();
         let mut s = DMatrix::zeros(m, m);
-        if self.options.kinematics == Kinematics::Small && !self.on_reference_algebra() {
-            let (rows, cols) = self.node_directions(system)?;
+        if surfaces.kinematics == Kinematics::Small && !self.on_reference_algebra() {
+            let (rows, cols) = self.node_directions(bodies, &surfaces.reference, system)?;
             let n = &self.node_flexibility.n;
             for (j, parts) in cols.iter().enumerate() {
                 for (i, &row) in rows.iter().enumerate() {
@@ -1326,7 +1481,7 @@ impl ContactAnalysis {
                 }
             }
         } else {
-            self.ensure_columns(system.cols.iter().flatten().map(|&(c, _)| c))?;
+            self.ensure_columns(bodies, system.cols.iter().flatten().map(|&(c, _)| c))?;
             let mut y = vec![0.0; self.dofs.len()];
             for (j, col) in system.cols.iter().enumerate() {
                 self.apply_flexibility(col, &mut y);
@@ -1343,10 +1498,10 @@ impl ContactAnalysis {
     /// first to close; normal, and the kept tangents with friction), under finite kinematics
     /// the columns its coupling touches. A failing host solver is thus reported when the
     /// analysis is created, as with an eager `F`.
-    pub(super) fn prime(&mut self) -> Result<()> {
+    pub(super) fn prime(&mut self, bodies: &mut dyn Bodies, surfaces: &Surfaces) -> Result<()> {
         let mut rows = Vec::new();
         let mut keys = Vec::new();
-        for (p, surface) in self.reference.iter().enumerate() {
+        for (p, surface) in surfaces.reference.iter().enumerate() {
             let nearest = surface
                 .nodes
                 .iter()
@@ -1356,7 +1511,7 @@ impl ContactAnalysis {
             if let Some((k, node)) = nearest {
                 rows.push((p, k, Row::Normal));
                 keys.push(self.directed(&node.coupling, &node.frame.normal()));
-                if !self.laws[p].is_frictionless() {
+                if !surfaces.laws[p].is_frictionless() {
                     for (i, s) in kept_tangents(&node.frame) {
                         rows.push((p, k, Row::Tangent(i)));
                         keys.push(self.directed(&node.coupling, &s));
@@ -1364,7 +1519,7 @@ impl ContactAnalysis {
                 }
             }
         }
-        match self.options.kinematics {
+        match surfaces.kinematics {
             Kinematics::Small => {
                 let system = SmallSystem {
                     unknowns: rows.clone(),
@@ -1373,9 +1528,12 @@ impl ContactAnalysis {
                     cols: keys.clone(),
                     rows: keys,
                 };
-                self.node_directions(&system).map(|_| ())
+                self.node_directions(bodies, &surfaces.reference, &system)
+                    .map(|_| ())
             }
-            Kinematics::Finite => self.ensure_columns(keys.iter().flatten().map(|&(c, _)| c)),
+            Kinematics::Finite => {
+                self.ensure_columns(bodies, keys.iter().flatten().map(|&(c, _)| c))
+            }
         }
     }
 

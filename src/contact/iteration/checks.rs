@@ -1,11 +1,27 @@
-//! What a converged increment must also satisfy, and the convergence measure: active nodes
-//! fully covered, the locks held (gathered here, judged by the active set: `active_set/locks.rs`),
-//! small kinematics within their range, the discrete contact conditions.
+//! The measures of an iterate: the facts the active set's rules judge, the convergence
+//! measure, the breach of the discrete contact conditions, and what a converged increment must
+//! also satisfy (active nodes fully covered, the locks held (gathered here, judged by the
+//! active set: `active_set/locks.rs`), small kinematics within their range).
+//!
+//! # The facts the rules judge
+//!
+//! After each solve the iteration reads, per A node, its traction, weighted normal gap and
+//! slip since the increment began ([`NodeFacts`]), per pair the rules' tolerances as lengths
+//! ([`Tolerances`]: the gap and slip tolerances times the pair's gap and motion scales, below),
+//! and the B nodes inside A elements whose nodes are all open with the A node each would close
+//! (the geometry's
+//! [`b_node_distances`](crate::contact::geometry::ContactGeometry::b_node_distances)); the
+//! decisions on them are the active set's ([`ActiveSet::propose`], `active_set/rules.rs`, with
+//! the rules' table).
+//!
+//! When the rules do not settle, the increment starts again from the fallback's states
+//! (`fallback.rs`).
 
 use super::small_system::kept_tangents;
 use super::{
-    ActiveSet, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION, Kinematics,
-    Locks, NodeKey, NodeState, Result, Tangential, Traction, dot,
+    ActiveSet, BNodeHit, BNodes, ContactAnalysis, ContactError, ContactSurface, EDGE_PENETRATION,
+    Kinematics, Locks, NodeFacts, NodeKey, NodeState, Result, Tangential, Tolerances, Traction,
+    dot,
 };
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::Vector;
@@ -87,7 +103,7 @@ impl ContactAnalysis {
     /// repeated increment accepts the gaps its predecessors accepted (judged against its own
     /// vanishing motion, a node left open a hair inside the tolerance would close and reopen).
     pub(super) fn gap_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
-        let h = self.mean_size(p, xg);
+        let h = self.surfaces.geometries[p].mean_size(xg);
         self.motion_scale(p, xg, uc, startc).min(h)
     }
 
@@ -99,9 +115,9 @@ impl ContactAnalysis {
     /// threshold (by components, a rotation by 0.6 rad changed the tractions of round 83973 of
     /// `contact_randomized 1000 1` by 1.8e-4 of their peak).
     pub(super) fn motion_scale(&self, p: usize, xg: &[f64], uc: &[f64], startc: &[f64]) -> f64 {
-        let h = self.mean_size(p, xg);
+        let h = self.surfaces.geometries[p].mean_size(xg);
         let motion = largest_node_motion(uc, startc, self.dim());
-        motion.max(self.largest_node_motion).max(1e-12 * h)
+        motion.max(self.driver.largest_node_motion).max(1e-12 * h)
     }
 
     /// The checks of the locks at convergence ([`ActiveSet::edge_penetration`],
@@ -164,7 +180,7 @@ impl ContactAnalysis {
         startc: &[f64],
     ) -> Tangential {
         tangential_parts(node, |s| {
-            let row = self.directed(&node.coupling, s);
+            let row = self.boundary.directed(&node.coupling, s);
             (dot(&row, uc) - dot(&row, startc)) / node.weight
         })
     }
@@ -189,7 +205,8 @@ impl ContactAnalysis {
             return Ok(());
         }
         let active = || {
-            self.reference
+            self.surfaces
+                .reference
                 .iter()
                 .zip(states)
                 .enumerate()
@@ -204,7 +221,7 @@ impl ContactAnalysis {
                 })
         };
         let along = |node: &ContactNode, d: Vector| {
-            let change = self.coupled(&node.coupling, uc);
+            let change = self.boundary.coupled(&node.coupling, uc);
             d.dot(&change) / node.covered_weight
         };
         let delta = active()
@@ -212,7 +229,7 @@ impl ContactAnalysis {
             .fold(0.0, f64::max);
         let x = self.bodies.positions();
         for (p, surface, k, node) in active() {
-            let slope = self.geometries[p].gap_slope(surface, k, x);
+            let slope = self.surfaces.geometries[p].gap_slope(surface, k, x);
             let slip = tangential_parts(node, |s| along(node, *s));
             // |slip| |dg0/ds| (in the plane |slip_k| is the component's magnitude: the
             // product's magnitude to the bit)
@@ -272,7 +289,7 @@ impl ContactAnalysis {
         let x = self.positions(uc);
         let xg = self.geometry_positions(&x);
         for (p, (surface, states)) in surfaces.iter().zip(states).enumerate() {
-            let pair = &self.pairs[p];
+            let pair = &self.surfaces.pairs[p];
             let limit = self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc);
             let lost = surface
                 .nodes
@@ -283,7 +300,7 @@ impl ContactAnalysis {
                     **state == NodeState::Open && !node.normal_gap.is_finite()
                 });
             for (k, _) in lost {
-                if let Some((element, depth)) = self.geometries[p].behind(k, &x, limit) {
+                if let Some((element, depth)) = self.surfaces.geometries[p].behind(k, &x, limit) {
                     let external = |i: usize| self.bodies.external(element[i]);
                     return Err(ContactError::BeyondSearchDistance {
                         node: self.bodies.external(pair.a[k]),
@@ -293,34 +310,6 @@ impl ContactAnalysis {
                     }
                     .into());
                 }
-            }
-        }
-        Ok(())
-    }
-
-    /// Under finite kinematics the geometry is evaluated at the current positions
-    /// `x = X + u`, which double precision holds to about `POSITION_ROUND_OFF |x|`. When the
-    /// displacement `u` of a segment's end is so large that this round-off reaches the
-    /// segment's length (its reference length, the scale the mesh describes the surface at,
-    /// or its current one), the positions no longer carry the surface's shape: the segment's
-    /// direction, its normal and the gaps measured from it are round-off, and no contact state
-    /// can be judged (a press of `1e16` body sizes in one increment moved every A node far
-    /// behind B and left them all open; at `1e66` a segment collapsed to zero length; at
-    /// `1e300` both bodies were stretched to `1e299` and the contact system was singular).
-    /// Such an iterate fails the increment ([`ContactError::Unresolved`]), at any magnitude.
-    /// (Large coordinates alone, a model far from its origin, are the caller's choice and are
-    /// not judged here: only the motion is.)
-    pub(super) fn resolved(&self, x: &[f64]) -> Result<()> {
-        let reference = self.bodies.positions();
-        for geometry in &self.geometries {
-            if let Some(u) = geometry.unresolved(x, reference, POSITION_ROUND_OFF) {
-                return Err(ContactError::Unresolved {
-                    increment: self.increment + 1,
-                    node: self.bodies.external(u.node),
-                    motion: u.motion,
-                    length: u.length,
-                }
-                .into());
             }
         }
         Ok(())
@@ -407,7 +396,7 @@ impl ContactAnalysis {
                 .iter()
                 .fold(0.0f64, |m, t| m.max(t.normal.abs()));
             let per_traction = |v: f64| if tn_max > 0.0 { v / tn_max } else { 0.0 };
-            let law = &*self.laws[p];
+            let law = &*self.surfaces.laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
                 let Traction {
                     normal: tn,
@@ -455,7 +444,7 @@ impl ContactAnalysis {
                 continue;
             }
             let open: Vec<bool> = states[p].iter().map(|s| *s == NodeState::Open).collect();
-            for d in self.geometries[p].b_node_distances(&open, &x, xg) {
+            for d in self.surfaces.geometries[p].b_node_distances(&open, &x, xg) {
                 let (node, g) = ((p, d.nearest), d.distance);
                 if -g / gap_scale > worst.relative {
                     worst = Violation {
@@ -467,6 +456,70 @@ impl ContactAnalysis {
             }
         }
         worst
+    }
+}
+
+impl ContactAnalysis {
+    /// The paper's rules ([`ActiveSet::propose`]) applied to the iterate `uc` with
+    /// `tractions` and the geometry `surfaces`, pair by pair: the proposed next states. A B
+    /// node that penetrates an open A segment beyond the pairing's reach fails the increment
+    /// ([`ContactError::BeyondSearchDistance`]).
+    pub(super) fn update_states(
+        &self,
+        set: &ActiveSet,
+        tractions: &[Vec<Traction>],
+        surfaces: &[ContactSurface],
+        uc: &[f64],
+        startc: &[f64],
+    ) -> Result<Vec<Vec<NodeState>>> {
+        let x = self.positions(uc);
+        let xg = self.geometry_positions(&x);
+        let mut new = Vec::with_capacity(surfaces.len());
+        for (p, surface) in surfaces.iter().enumerate() {
+            let reach = self.search_reach(p, xg, uc, startc);
+            let tolerances = Tolerances {
+                // penetration is judged against the increment's own displacement scale
+                gap: self.options.gap_tolerance * self.gap_scale(p, xg, uc, startc),
+                slip: self.options.slip_tolerance * self.motion_scale(p, xg, uc, startc),
+                tension: self.options.tension_tolerance,
+                friction: self.options.friction_tolerance,
+            };
+            let facts: Vec<NodeFacts<'_>> = (surface.nodes.iter().enumerate())
+                .map(|(k, node)| NodeFacts {
+                    traction: tractions[p][k],
+                    gap: node.normal_gap,
+                    slip: self.slip_since_start(node, uc, startc),
+                    law: self.node_law(p, k),
+                })
+                .collect();
+            // B nodes over A segments whose two nodes are open (not in the fallback's last
+            // attempt: `BNodes`)
+            let inside = match set.b_node_judges(p, &facts, &tolerances) {
+                Some(open) => self.surfaces.geometries[p].b_node_distances(&open, &x, xg),
+                None => Vec::new(),
+            };
+            let a = &self.surfaces.pairs[p].a;
+            let mut hits: Vec<BNodeHit> = Vec::with_capacity(inside.len());
+            for d in inside {
+                let g = d.distance;
+                if g < -tolerances.gap && g <= -reach {
+                    let w = [a[d.element[0]], a[d.element[1]]];
+                    return Err(ContactError::BeyondSearchDistance {
+                        node: self.bodies.external(d.node),
+                        segment: [self.bodies.external(w[0]), self.bodies.external(w[1])],
+                        depth: -g,
+                        search_distance: reach,
+                    }
+                    .into());
+                }
+                hits.push((d.nearest, g));
+            }
+            // coverage is checked on the converged state only: an intermediate iterate may
+            // move a node at the end of a surface a hair past the other's end
+            let adjacency = self.surfaces.geometries[p].adjacency();
+            new.push(set.propose(p, &facts, &tolerances, &hits, adjacency));
+        }
+        Ok(new)
     }
 }
 

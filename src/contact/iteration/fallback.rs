@@ -14,7 +14,7 @@
 //! but the rules go {stick, stick} -> {slip(+1), slip(-1)} and then cycle between
 //! {slip(+1), stick} and {slip(+1), slip(-1)}.
 //!
-//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `failure.rs`), the increment starts
+//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `driver.rs`), the increment starts
 //! again from the states of the solution of the same conditions, linearized at the start of
 //! the increment, over the candidate nodes (closed at the start, or penetrating under the
 //! load alone, and their neighbours): with every candidate's normal and tangent rows,
@@ -37,10 +37,11 @@
 //! checks every condition as usual. The paper's rules keep their results wherever they
 //! settle: the fallback runs only after they failed.
 
+use super::driver::Attempt;
 use super::small_system::Row;
 use super::{
-    Attempt, ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
-    closed_at_rest, column, dot, linearized_state, plate,
+    ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential, closed_at_rest,
+    column, dot, linearized_state, plate,
 };
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use plate::dot_dense;
@@ -72,7 +73,7 @@ impl ContactAnalysis {
     /// linearized at the start of the increment, solved ([`Linearized::solution`]).
     pub(super) fn fallback_states(&mut self, attempt: &Attempt<'_>) -> Result<Vec<Vec<NodeState>>> {
         let startc = &attempt.startc;
-        let surfaces = self.surfaces.clone();
+        let surfaces = self.surfaces.current.clone();
         let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
         // the candidates: closed at the start, or penetrating under the load alone, and
         // their covered neighbours
@@ -89,12 +90,12 @@ impl ContactAnalysis {
                     if !node.is_covered() {
                         return false;
                     }
-                    let row = self.directed(&node.coupling, &node.frame.normal());
+                    let row = self.boundary.directed(&node.coupling, &node.frame.normal());
                     let rg = node.gap.dot(&node.frame.normal());
                     rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
                 })
                 .collect();
-            let adjacency = self.geometries[p].adjacency();
+            let adjacency = self.surfaces.geometries[p].adjacency();
             let candidate = |k: usize| {
                 nodes[k].is_covered()
                     && (penetrates[k] || adjacency.neighbours(k).iter().any(|&j| penetrates[j]))
@@ -111,8 +112,9 @@ impl ContactAnalysis {
                     .collect(),
             );
         }
-        let system = self.build_system(&surfaces, &states, startc, startc)?;
-        let s = self.dense_matrix(&system)?;
+        let laws = &self.surfaces.laws;
+        let system = (self.boundary).build_system(&surfaces, laws, &states, startc, startc);
+        let s = (self.boundary).dense_matrix(&mut *self.bodies, &self.surfaces, &system)?;
         let r: Vec<f64> = system
             .rows
             .iter()

@@ -2,7 +2,9 @@
 //! combination of recent ones (proportional loading, a slide on a fixed approach); a host that
 //! handed over its condensed operator gives `u0` itself (its load image).
 
-use super::{ContactAnalysis, ContactError, DMatrix, DVector, Error, Result, checks, plate_force};
+use super::boundary::Boundary;
+use super::{ContactError, DMatrix, DVector, Error, Result, checks};
+use crate::contact::bodies::Bodies;
 use crate::contact::space::Vector;
 
 /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs for one load `(f, q_p)`.
@@ -46,7 +48,7 @@ pub(super) fn combination(new: &[f64], old: &[std::sync::Arc<LoadSolve>]) -> Opt
         .then(|| c.iter().copied().collect())
 }
 
-/// What [`ContactAnalysis::load_solve`] gives an increment.
+/// What [`Boundary::load_solve`] gives an increment.
 pub(super) struct Solved {
     /// `u0` at the contact dofs.
     pub(super) u0c: Vec<f64>,
@@ -64,15 +66,23 @@ pub(super) const KEPT_LOADS: usize = 4;
 /// and thicknesses have their own range, [`crate::material::SCALE_RANGE`].)
 pub const LOAD_LIMIT: f64 = 1e300;
 
-impl ContactAnalysis {
-    /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs: one solve, or none when the load is a
-    /// combination of recent ones (`u0` is linear in the load: proportional loading, or a slide
-    /// superposed on a fixed approach, costs one or two solves in all).
-    pub(super) fn load_solve(&mut self, f: &[f64], qp: &[f64]) -> Result<Solved> {
-        let n = self.bodies.load_len();
-        let n_qp = self.bodies.prescribed_len();
+impl Boundary {
+    /// `u0 = K^-1 (f - K_fp q_p)` at the contact dofs of `bodies`: one solve, or none when the
+    /// load is a combination of recent ones (`u0` is linear in the load: proportional loading,
+    /// or a slide superposed on a fixed approach, costs one or two solves in all), in
+    /// increment `number`. `plate_force` gives the force a plate exerts on the body in the
+    /// solution `u0` of a solve (over the field).
+    pub(super) fn load_solve(
+        &mut self,
+        bodies: &dyn Bodies,
+        (f, qp): (&[f64], &[f64]),
+        number: usize,
+        plate_force: impl FnOnce(&[f64]) -> Result<Vector>,
+    ) -> Result<Solved> {
+        let n = bodies.load_len();
+        let n_qp = bodies.prescribed_len();
         if f.len() != n || qp.len() != n_qp {
-            let image = if n == self.bodies.field_len() {
+            let image = if n == bodies.field_len() {
                 ""
             } else {
                 " (a condensed host's load image: u0 = K^-1 f at its candidate equations)"
@@ -86,7 +96,7 @@ impl ContactAnalysis {
         }
         // the key holds `f` and `qp` at the prescribed dofs only: the other entries of `qp` are
         // ignored, whatever they hold
-        let load = self.bodies.load_key(f, qp);
+        let load = bodies.load_key(f, qp);
         if let Some(i) = load
             .iter()
             .position(|v| !v.is_finite() || v.abs() > LOAD_LIMIT)
@@ -106,17 +116,17 @@ impl ContactAnalysis {
                 format!("{name}[{index}] = {value} is not finite")
             }));
         }
-        if let Some(u0c) = self.bodies.condensed_image(f, &self.dofs) {
+        if let Some(u0c) = bodies.condensed_image(f, &self.dofs) {
             // the host solved for its load: the image is u0 itself
             return Ok(Solved {
                 u0c,
-                plate_force: Vector::zero(self.dim()),
+                plate_force: Vector::zero(self.dim),
                 load,
             });
         }
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];
-            let mut force = Vector::zero(self.dim());
+            let mut force = Vector::zero(self.dim);
             for (ci, cached) in c.iter().zip(&self.loads) {
                 for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
                     *u += ci * v;
@@ -130,23 +140,20 @@ impl ContactAnalysis {
             });
         }
         let clock = std::time::Instant::now();
-        let u0 = self.bodies.solve(f, qp)?;
+        let u0 = bodies.solve(f, qp)?;
         if u0.iter().any(|v| !v.is_finite()) {
             return Err(ContactError::NonFinite {
-                increment: self.increment + 1,
+                increment: number,
                 iteration: 0,
             }
             .into());
         }
-        let plate_force = match &self.plate {
-            Some(p) => plate_force(self.model()?, &p.nodes, &u0, f, self.dim())?,
-            None => Vector::zero(self.dim()),
-        };
-        self.timings.load_solves += clock.elapsed().as_secs_f64();
+        let plate_force = plate_force(&u0)?;
+        self.load_seconds += clock.elapsed().as_secs_f64();
         let u0c: Vec<f64> = self
             .dofs
             .iter()
-            .map(|&d| self.bodies.field_index(d).map_or(0.0, |i| u0[i]))
+            .map(|&d| bodies.field_index(d).map_or(0.0, |i| u0[i]))
             .collect();
         if self.loads.len() == KEPT_LOADS {
             self.loads.remove(0);

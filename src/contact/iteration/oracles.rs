@@ -3,7 +3,9 @@
 //! product's algebra with, and the benchmark's control that factors `K` again in every
 //! iteration.
 
-use super::{Border, ContactAnalysis, Flexibility, NodeFlexibility, Result, SmallSystem, boundary};
+use super::boundary::{self, Boundary};
+use super::small_system::SmallSystem;
+use super::{Border, ContactAnalysis, Flexibility, Result};
 
 impl ContactAnalysis {
     /// Run the iteration on the dense reference algebra (`true`) or on the lazy, cached one
@@ -16,13 +18,37 @@ impl ContactAnalysis {
     /// # Errors
     /// A failed host solve while building the missing columns of `F`.
     pub fn set_reference_algebra(&mut self, on: bool) -> Result<()> {
-        if on && !self.flexibility.is_full() {
-            self.ensure_columns(0..self.dofs.len())?;
+        if on && !self.boundary.flexibility.is_full() {
+            let all = 0..self.boundary.dofs.len();
+            self.boundary.ensure_columns(&mut *self.bodies, all)?;
         }
-        self.reference_algebra = on;
+        self.boundary.reference_algebra = on;
         Ok(())
     }
 
+    /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
+    /// analysis. Never needed (`K` does not change): a benchmark's control, not an option, so
+    /// that `hycon bench skip` can show what factoring once saves.
+    pub fn set_refactor_each_iteration(&mut self, on: bool) {
+        self.boundary.refactor_each_iteration = on;
+    }
+
+    /// Factor `K` again and forget `F` (the refactor-every-iteration control); returns the
+    /// seconds it took.
+    pub(super) fn refactor(&mut self) -> Result<f64> {
+        let clock = std::time::Instant::now();
+        self.bodies.refactorize()?;
+        self.boundary.flexibility = if self.bodies.lazy_flexibility() {
+            Flexibility::lazy(self.boundary.dofs.len())
+        } else {
+            Flexibility::full(self.bodies.flexibility(&self.boundary.dofs)?)
+        };
+        self.boundary.forget_directions();
+        Ok(clock.elapsed().as_secs_f64())
+    }
+}
+
+impl Boundary {
     /// One iteration on the reference algebra: `SmallSystem::solve` on the full `F`, then
     /// `u = u0 + F f + sum_e U_e w_e` over the contact dofs.
     pub(super) fn solve_reference(
@@ -48,26 +74,5 @@ impl ContactAnalysis {
             }
         }
         Ok((tau, plate_motion, condition, uc))
-    }
-
-    /// Factor `K` and rebuild the boundary flexibility in every iteration instead of once per
-    /// analysis. Never needed (`K` does not change): a benchmark's control, not an option, so
-    /// that `hycon bench skip` can show what factoring once saves.
-    pub fn set_refactor_each_iteration(&mut self, on: bool) {
-        self.refactor_each_iteration = on;
-    }
-
-    /// Factor `K` again and forget `F` (the refactor-every-iteration control); returns the
-    /// seconds it took.
-    pub(super) fn refactor(&mut self) -> Result<f64> {
-        let clock = std::time::Instant::now();
-        self.bodies.refactorize()?;
-        self.flexibility = if self.bodies.lazy_flexibility() {
-            Flexibility::lazy(self.dofs.len())
-        } else {
-            Flexibility::full(self.bodies.flexibility(&self.dofs)?)
-        };
-        self.node_flexibility = NodeFlexibility::new(self.pairs.iter().map(|p| p.a.len()));
-        Ok(clock.elapsed().as_secs_f64())
     }
 }

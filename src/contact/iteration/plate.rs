@@ -225,7 +225,7 @@ impl ContactAnalysis {
         let dim = analysis.dim();
         for &node in &plate {
             let held = node < n / dim && (0..dim).all(|d| !analysis.bodies.is_free(dof(node, d)));
-            if !held || analysis.slot[dof(node, 0)].is_some() {
+            if !held || analysis.boundary.slot[dof(node, 0)].is_some() {
                 return Err(Error::InvalidInput(format!(
                     "plate node {node} must exist, be prescribed in x and y, and not be a \
                      contact node"
@@ -241,7 +241,7 @@ impl ContactAnalysis {
                 qp[dof(node, d)] = 1.0;
             }
             let q = analysis.bodies.solve(&zero, &qp)?;
-            response[d] = analysis.dofs.iter().map(|&i| q[i]).collect();
+            response[d] = analysis.boundary.dofs.iter().map(|&i| q[i]).collect();
             let force = plate_force(analysis.model()?, &plate, &q, &zero, dim)?;
             for (e, &v) in force.components().iter().enumerate() {
                 stiffness[(e, d)] = v;

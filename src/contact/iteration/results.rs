@@ -30,10 +30,10 @@ impl ContactAnalysis {
 
     /// Check a pair index.
     fn pair(&self, p: usize) -> Result<&super::ContactPair> {
-        self.pairs.get(p).ok_or_else(|| {
+        self.surfaces.pairs.get(p).ok_or_else(|| {
             Error::InvalidInput(format!(
                 "contact pair {p} does not exist ({} pairs)",
-                self.pairs.len()
+                self.surfaces.pairs.len()
             ))
         })
     }
@@ -43,7 +43,7 @@ impl ContactAnalysis {
     /// again.
     fn converged_surface(&self, p: usize) -> Result<&ContactSurface> {
         self.pair(p)?;
-        Ok(&self.surfaces[p])
+        Ok(&self.surfaces.current[p])
     }
 
     /// The contact-element quantities of pair `p` at the converged state, node ids in the
@@ -77,7 +77,7 @@ impl ContactAnalysis {
             for direction in std::iter::once(node.frame.normal()).chain(tangents) {
                 for &(j, c) in &node.coupling {
                     for (d, component) in direction.components().iter().enumerate() {
-                        let field = self.bodies.field_index(self.node_dof(j, d));
+                        let field = self.bodies.field_index(self.dim() * j + d);
                         if let Some(i) = field.filter(|_| *component != 0.0) {
                             rows.columns.push(i);
                             rows.values.push(c * component);
@@ -119,7 +119,7 @@ impl ContactAnalysis {
         })?;
         let field = self.displacement()?.to_vec();
         let (model, q, local) = self.bodies.elements(&field).ok_or_else(missing)?;
-        let a = self.pairs[p]
+        let a = self.surfaces.pairs[p]
             .a
             .iter()
             .map(|&n| {
@@ -136,7 +136,7 @@ impl ContactAnalysis {
         let mut sums = vec![([0.0; 2], 0.0); a.len()];
         for (k, w) in a.windows(2).enumerate() {
             let &(e, edge) = edges.get(&(w[0], w[1])).ok_or_else(|| {
-                let pair = &self.pairs[p].a;
+                let pair = &self.surfaces.pairs[p].a;
                 Error::InvalidInput(format!(
                     "A segment {} -> {} is not an element edge with its body on the left",
                     self.bodies.external(pair[k]),
@@ -169,7 +169,7 @@ impl ContactAnalysis {
             None => Ok(tractions),
             Some(k) => Err(Error::Solver(format!(
                 "the element stresses at A node {} overflow (the displacements are finite, but                  stiffness times displacement over a tiny element is not): choose other units",
-                self.bodies.external(self.pairs[p].a[k])
+                self.bodies.external(self.surfaces.pairs[p].a[k])
             ))),
         }
     }
@@ -182,10 +182,10 @@ impl ContactAnalysis {
     pub fn b_node_results(&self, p: usize) -> Result<Vec<BNodeResult>> {
         let a_nodes = self.node_results(p)?;
         let surface = self.converged_surface(p)?;
-        let x = self.positions(&self.qc);
+        let x = self.positions(&self.boundary.qc);
         let xg = self.geometry_positions(&x);
         let dim = self.dim();
-        let pair = &self.pairs[p];
+        let pair = &self.surfaces.pairs[p];
         let index = |j: usize| pair.b.iter().position(|&b| b == j);
         let mut weight = vec![0.0; pair.b.len()];
         let mut force = vec![Vector::zero(dim); pair.b.len()];
@@ -204,7 +204,7 @@ impl ContactAnalysis {
             .iter()
             .enumerate()
             .map(|(i, &j)| {
-                let n = self.geometries[p].b_node_normal(i, xg);
+                let n = self.surfaces.geometries[p].b_node_normal(i, xg);
                 let pressure = if weight[i] > 0.0 {
                     -force[i].dot(&n) / weight[i]
                 } else {
@@ -225,9 +225,9 @@ impl ContactAnalysis {
     /// equivalent nodal forces, frames, weights and gaps in the converged configuration.
     pub fn node_results(&self, p: usize) -> Result<Vec<NodeResult>> {
         let surface = self.converged_surface(p)?;
-        let x = self.positions(&self.qc);
+        let x = self.positions(&self.boundary.qc);
         let dim = self.dim();
-        let pair = &self.pairs[p];
+        let pair = &self.surfaces.pairs[p];
         let data = &self.nodes[p];
         // equivalent nodal force on A: f_j = sum_k F^A_kj t_k
         let mut force = vec![Vector::zero(dim); pair.a.len()];

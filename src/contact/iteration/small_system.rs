@@ -7,11 +7,11 @@
 #[cfg(any(test, feature = "oracles"))]
 use super::DVector;
 #[cfg(feature = "oracles")]
+use super::Result;
+use super::boundary::Boundary;
+#[cfg(feature = "oracles")]
 use super::plate::Border;
-use super::{
-    ContactAnalysis, ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Result, Rows,
-    Traction, rows_of,
-};
+use super::{ContactSurface, DMatrix, Error, FrictionLaw, NodeState, Rows, Traction, rows_of};
 use crate::contact::geometry::ContactNode;
 use crate::contact::space::{Frame, Vector};
 #[cfg(any(test, feature = "oracles"))]
@@ -274,27 +274,17 @@ impl SmallSystem {
     }
 }
 
-impl ContactAnalysis {
-    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
-    pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
-        let (dim, d) = (self.dim(), d.components());
-        let mut row = Vec::with_capacity(coupling.len() * dim);
-        for &(j, c) in coupling {
-            for (i, &di) in d.iter().enumerate() {
-                row.push((self.contact_slot(dim * j + i), c * di));
-            }
-        }
-        row
-    }
-
-    /// Assemble the rows, columns and right-hand sides for the active nodes.
+impl Boundary {
+    /// Assemble the rows, columns and right-hand sides for the active nodes (their rows by
+    /// state: [`rows_of`]), with the pairs' friction `laws`.
     pub(super) fn build_system(
         &self,
         surfaces: &[ContactSurface],
+        laws: &[Box<dyn FrictionLaw>],
         states: &[Vec<NodeState>],
         uc: &[f64],
         startc: &[f64],
-    ) -> Result<SmallSystem> {
+    ) -> SmallSystem {
         let mut sys = SmallSystem {
             unknowns: Vec::new(),
             rows: Vec::new(),
@@ -303,7 +293,7 @@ impl ContactAnalysis {
             basis: Vec::new(),
         };
         for (p, surface) in surfaces.iter().enumerate() {
-            let law = &*self.laws[p];
+            let law = &*laws[p];
             for (k, node) in surface.nodes.iter().enumerate() {
                 let directed = |d: &Vector| self.directed(&node.coupling, d);
                 sys.push_node(
@@ -316,7 +306,7 @@ impl ContactAnalysis {
                 );
             }
         }
-        Ok(sys)
+        sys
     }
 }
 

@@ -15,7 +15,7 @@
 //! | whether an iterate has converged | [`Convergence`] (`convergence.rs`) |
 //!
 //! The rules read per node a [`NodeFacts`] (traction, weighted gap, slip since the increment
-//! began, friction law) and per pair the [`Tolerances`]; the iteration (`iteration/rules.rs`)
+//! began, friction law) and per pair the [`Tolerances`]; the iteration (`iteration/checks.rs`)
 //! gathers them from the geometry and the solve, so that a 3D geometry feeds the same
 //! decisions. The friction cone is the law's ([`FrictionLaw`](super::FrictionLaw)): the
 //! rules read slip directions and tangential tractions as vectors of the tangent space.
