@@ -355,7 +355,7 @@ static bool test_results(void) {
     HyconSolidNodeResult nodes[4];
     HyconSolidBNodeResult b_nodes[4];
     HyconSolidContactNode surface[4];
-    HyconConstraintEntry rows[64];
+    HyconConstraintEntry rows[256];
     size_t needed = 0, i;
     double total = 0.0;
     bool ok = true;
@@ -394,7 +394,7 @@ static bool test_results(void) {
                          NULL);
     ok = ok && STATUS_FN(hycon_solid_contact_surface_nodes, (c, 0, surface, 4, NULL), HYCON_OK,
                          NULL);
-    ok = ok && STATUS_FN(hycon_solid_contact_constraint_rows, (c, 0, rows, 64, &needed), HYCON_OK,
+    ok = ok && STATUS_FN(hycon_solid_contact_constraint_rows, (c, 0, rows, 256, &needed), HYCON_OK,
                          NULL);
     EXPECT(ok);
     EXPECT(u[3 * top[0] + 2] == -PRESS);

@@ -1670,7 +1670,16 @@ pub unsafe extern "C" fn hycon_contact_increment(
     boundary("hycon_contact_increment", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
-        unsafe { increment(&mut c.analysis, load, load_len, prescribed, prescribed_len, info) }
+        unsafe {
+            increment(
+                &mut c.analysis,
+                load,
+                load_len,
+                prescribed,
+                prescribed_len,
+                info,
+            )
+        }
     })
 }
 
@@ -2191,7 +2200,11 @@ pub(super) unsafe fn forces(
 ) -> Result<(), Fail> {
     let count = analysis.field_len();
     // SAFETY: the caller's contract.
-    unsafe { fill(out, len, needed, "out", count, || Ok(analysis.contact_forces())) }
+    unsafe {
+        fill(out, len, needed, "out", count, || {
+            Ok(analysis.contact_forces())
+        })
+    }
 }
 
 /// The iteration records from `first` on (`hycon_contact_records`).

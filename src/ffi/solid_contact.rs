@@ -18,12 +18,13 @@ use super::contact::{
 };
 use super::solid::{HyconBrickKind, HyconSolidMaterial, brick_formulation, read_solid_material};
 use super::{
-    Fail, HYCON_WARNING_SHAPE, HyconStatus, Warning, boundary, boundary_warning, fill,
-    free_handle, hand_out, handle, handle_mut, length, optional, put, read_doubles, slice,
+    Fail, HYCON_WARNING_SHAPE, HyconStatus, Warning, boundary, boundary_warning, fill, free_handle,
+    hand_out, handle, handle_mut, length, optional, put, read_doubles, slice,
 };
 use crate::contact::faces::SymmetryPlane;
 use crate::contact::iteration::{ContactAnalysis, FacePair, NodeState};
 use crate::contact::space::Vector;
+use crate::error::Error;
 use crate::solid::mesh::{Face, SolidMesh};
 use crate::solid::model::SolidModel;
 use crate::solid::{N_NODES, ShapePolicy};
@@ -171,7 +172,9 @@ unsafe fn read_mesh(
     let xyz = unsafe { super::doubles(coords, length(n_nodes, 3, 0, "n_nodes")?, "coords")? };
     let b = unsafe { handle(block, "elements")? };
     if b.n_elements == 0 {
-        return Err(Fail::invalid("a model needs bricks (elements.n_elements = 0)"));
+        return Err(Fail::invalid(
+            "a model needs bricks (elements.n_elements = 0)",
+        ));
     }
     let ids = length(b.n_elements, N_NODES, 0, "elements.n_elements")?;
     let nodes = unsafe { slice(b.nodes, ids, "elements.nodes")? };
@@ -205,11 +208,10 @@ unsafe fn read_faces(
     let values = unsafe { slice(v.faces, length(v.n, 2, 0, &name)?, &format!("{name}.faces"))? };
     (values.chunks_exact(2).enumerate())
         .map(|(i, f)| {
-            mesh.brick_face(f[0], f[1])
-                .map_err(|e| {
-                    let fail = Fail::from(e);
-                    Fail::new(fail.status, format!("{side} face {i}: {}", fail.message))
-                })
+            mesh.brick_face(f[0], f[1]).map_err(|e| match e {
+                Error::InvalidInput(m) => Fail::invalid(format!("{side} face {i}: {m}")),
+                e => e.into(),
+            })
         })
         .collect()
 }
@@ -486,7 +488,14 @@ pub unsafe extern "C" fn hycon_solid_contact_increment(
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
         unsafe {
-            contact::increment(&mut c.analysis, load, load_len, prescribed, prescribed_len, info)
+            contact::increment(
+                &mut c.analysis,
+                load,
+                load_len,
+                prescribed,
+                prescribed_len,
+                info,
+            )
         }
     })
 }

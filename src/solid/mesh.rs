@@ -217,7 +217,9 @@ impl SolidMesh {
             ))
         })?;
         let local = FACES.get(face).ok_or_else(|| {
-            Error::InvalidInput(format!("local face {face} of brick {brick} (faces are 0 to 5)"))
+            Error::InvalidInput(format!(
+                "local face {face} of brick {brick} (faces are 0 to 5)"
+            ))
         })?;
         Ok(local.map(|k| element[k]))
     }
