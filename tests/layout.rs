@@ -1148,8 +1148,8 @@ fn layout_check_catches_mismatches() {
         ),
         (
             "same-size-type",
-            "    double normal_gap;",
-            "    int64_t normal_gap;",
+            "    // when nothing is covered).\n    double normal_gap;",
+            "    // when nothing is covered).\n    int64_t normal_gap;",
             &["type of HyconContactNode.normal_gap: i64 (header) != f64 (Rust)"],
         ),
         (
