@@ -397,8 +397,7 @@ pub unsafe extern "C" fn hycon_solid_model_add_pair(
 /// Declare a symmetry plane of the model: the plane through `point` (3 doubles) normal to
 /// `normal` (3 doubles, either orientation, normalised here). An A node on it gets the
 /// mirrored model's normal and no tangential traction across it. The model must hold the nodes
-/// on the plane normal to it (`hycon_solid_model_prescribe`). Not in the design's list: a
-/// quarter or half model needs it.
+/// on the plane normal to it (`hycon_solid_model_prescribe`): a quarter or a half model.
 ///
 /// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (a non-finite value, a
 /// zero normal, a misaligned pointer).
