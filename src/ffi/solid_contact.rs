@@ -27,7 +27,7 @@ use crate::contact::space::Vector;
 use crate::error::Error;
 use crate::solid::mesh::{Face, SolidMesh};
 use crate::solid::model::SolidModel;
-use crate::solid::{N_NODES, ShapePolicy};
+use crate::solid::{BrickFormulation, N_NODES, ShapePolicy};
 
 // ------------------------------------------------------------------------------------------
 // Input views
@@ -154,8 +154,9 @@ pub struct HyconSolidContact {
 // ------------------------------------------------------------------------------------------
 // Reading the inputs
 
-/// A brick mesh from caller arrays: `3 n_nodes` coordinates and a brick block (connectivity
-/// and material indices copied; the mesh's checks are `SolidModel::new`'s).
+/// A brick mesh from caller arrays, `3 n_nodes` coordinates and a brick block (connectivity
+/// and material indices copied; the mesh's checks are `SolidModel::new`'s), and the block's
+/// formulation.
 ///
 /// # Safety
 /// `coords` NULL or `3 n_nodes` readable doubles; `block` NULL or a readable view whose arrays
@@ -164,13 +165,14 @@ unsafe fn read_mesh(
     coords: *const f64,
     n_nodes: usize,
     block: *const HyconBrickBlock,
-) -> Result<SolidMesh, Fail> {
+) -> Result<(SolidMesh, BrickFormulation), Fail> {
     if n_nodes == 0 {
         return Err(Fail::invalid("a model needs nodes (n_nodes = 0)"));
     }
     // SAFETY (all reads): the caller's contract on the arrays and lengths.
     let xyz = unsafe { super::doubles(coords, length(n_nodes, 3, 0, "n_nodes")?, "coords")? };
     let b = unsafe { handle(block, "elements")? };
+    let formulation = brick_formulation(b.kind)?;
     if b.n_elements == 0 {
         return Err(Fail::invalid(
             "a model needs bricks (elements.n_elements = 0)",
@@ -183,14 +185,15 @@ unsafe fn read_mesh(
     } else {
         unsafe { slice(b.materials, b.n_elements, "elements.materials")? }.to_vec()
     };
-    Ok(SolidMesh {
+    let mesh = SolidMesh {
         nodes: xyz.chunks_exact(3).map(|p| [p[0], p[1], p[2]]).collect(),
         elements: (nodes.chunks_exact(N_NODES))
             .map(|e| std::array::from_fn(|k| e[k]))
             .collect(),
         element_material,
         face_sets: Default::default(),
-    })
+    };
+    Ok((mesh, formulation))
 }
 
 /// A face view's faces as node ids on `mesh` (`side` names them in messages).
@@ -295,8 +298,7 @@ pub unsafe extern "C" fn hycon_solid_model_new(
     boundary_warning("hycon_solid_model_new", || {
         super::check_pointer(out.cast_const(), "out")?;
         // SAFETY (all reads): the caller's contract on the arrays and lengths.
-        let mesh = unsafe { read_mesh(coords, n_nodes, elements)? };
-        let formulation = brick_formulation(unsafe { handle(elements, "elements")? }.kind)?;
+        let (mesh, formulation) = unsafe { read_mesh(coords, n_nodes, elements)? };
         if n_materials == 0 {
             return Err(Fail::invalid("a model needs materials (n_materials = 0)"));
         }
