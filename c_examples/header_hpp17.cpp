@@ -121,6 +121,69 @@ void condensed_hand_over(const std::vector<double> &load, const std::vector<doub
                 m, difference);
 }
 
+// The 3D model family through hycon::SolidModel and hycon::SolidContact: two unit cubes of one
+// hybrid brick each, A (nodes 0-7) on B (nodes 8-15), B's bottom held, A's top moved down by
+// 1e-3, frictionless; every member of SolidContact called once.
+void solid_two_cubes() {
+    static const double unit[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                      {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    std::vector<double> coords;
+    for (int cube = 0; cube < 2; ++cube)
+        for (const auto &p : unit)
+            for (int d = 0; d < 3; ++d) coords.push_back(p[d] + (d == 2 && cube == 0 ? 1.0 : 0.0));
+    std::vector<std::size_t> bricks(16);
+    for (std::size_t i = 0; i < 16; ++i) bricks[i] = i;
+    const HyconSolidMaterial steel[1] = {{210e3, 0.3}};
+    const auto short_bricks = hycon::SolidModel::create(
+        coords, std::vector<std::size_t>(bricks.begin(), bricks.end() - 1), steel,
+        HYCON_BRICK_HYBRID18);
+    expect(short_bricks.code() == HYCON_ERROR_INVALID_ARGUMENT,
+           "SolidModel::create checks 8 ids per brick");
+    auto model = hycon::SolidModel::create(coords, bricks, steel, HYCON_BRICK_HYBRID18);
+    expect(static_cast<bool>(model), "SolidModel::create");
+    if (!model) return;
+    const std::size_t top[4] = {4, 5, 6, 7}, bottom[4] = {8, 9, 10, 11};
+    expect(model->prescribe(bottom, HYCON_XYZ).ok() && model->prescribe(top, HYCON_XYZ).ok(),
+           "SolidModel::prescribe");
+    const hycon::BrickFace a[1] = {{0, 4}}, b[1] = {{1, 5}};
+    const auto pair = model->add_pair(a, b, 0.0);
+    expect(pair && *pair == 0, "SolidModel::add_pair");
+    auto contact = hycon::SolidContact::create(*model);
+    expect(static_cast<bool>(contact), "SolidContact::create");
+    if (!contact) return;
+    hycon::SolidContact c = std::move(contact.value());
+    const auto n = c.field_len();
+    expect(n && *n == 48, "field length 3 n_nodes");
+    std::vector<double> load(48, 0.0), prescribed(48, 0.0);
+    for (std::size_t k : top) prescribed[3 * k + 2] = -1e-3;
+    const auto info = c.increment(load, prescribed);
+    expect(info && info->active == 4, "the press closes A's 4 nodes");
+    const auto size = c.pair_size(0);
+    const auto nodes = c.node_results(0);
+    const auto b_nodes = c.b_node_results(0);
+    const auto surface = c.surface_nodes(0);
+    const auto u = c.displacement();
+    const auto du = c.displacement_increment();
+    const auto forces = c.forces();
+    const auto records = c.records();
+    const auto timings = c.timings();
+    const auto kc = c.constraint_rows(0);
+    const auto coupling = c.surface_coupling(0);
+    bool ok = size && size->a == 4 && size->b == 4 && nodes && b_nodes && surface && u && du &&
+              *u == *du && forces && forces->size() == 48 && records && !records->empty() &&
+              timings && timings->factorizations == 1 && kc && kc->back().row == 11 &&
+              coupling && !coupling->empty();
+    double fz = 0.0;
+    for (std::size_t i = 0; ok && i < 4; ++i) {
+        const HyconSolidNodeResult &r = (*nodes)[i];
+        ok = r.state == HYCON_NODE_FRICTIONLESS && r.tn < 0.0 && r.normal[2] == -1.0 &&
+             std::fabs(r.force[2] + (*b_nodes)[i].force[2]) < 1e-12 * std::fabs(r.force[2]);
+        fz += r.force[2];
+    }
+    expect(ok && fz > 0.0, "SolidContact results: frictionless, pressed, balanced");
+    std::printf("two cubes: %zu A nodes, force on A %.6e\n", nodes ? nodes->size() : 0, fz);
+}
+
 }  // namespace
 
 int main() {
@@ -242,6 +305,8 @@ int main() {
                 -(kPush - f), solves, columns, records_seen);
 
     if (u) condensed_hand_over(load, *u);
+
+    solid_two_cubes();
 
     // the load and check helpers: a unit pressure on edge 1 of the unit square (1/2 each end,
     // along -x), its area, quality 1; a cube's bottom face pushed by 2 (2 in all along +z)

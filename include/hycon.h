@@ -141,6 +141,16 @@ typedef struct HyconHost HyconHost;
 // distinct models are independent.
 typedef struct HyconModel HyconModel;
 
+// A 3D contact analysis: `K` factored once, the converged state, the records. Create with
+// `hycon_solid_contact_new`, free with `hycon_solid_contact_free`. Thread safety: as
+// `HyconContact` (const queries may run concurrently on one handle).
+typedef struct HyconSolidContact HyconSolidContact;
+
+// A 3D model being described (model API): brick mesh, materials, prescribed directions,
+// contact pairs of brick faces, symmetry planes. Create with `hycon_solid_model_new`, free
+// with `hycon_solid_model_free`. Thread safety: as `HyconModel`.
+typedef struct HyconSolidModel HyconSolidModel;
+
 // Result of every status-returning function: `0` OK, `< 0` error, `> 0` warning.
 typedef int32_t HyconStatus;
 
@@ -563,6 +573,93 @@ typedef struct HyconShapeReport {
     int32_t warnings;
 } HyconShapeReport;
 
+// 8-node bricks (3D model API): brick `e` has the nodes `nodes[8 e .. 8 e + 8]` in the brick
+// node order (`HyconBrickKind`).
+typedef struct HyconBrickBlock {
+    // `8 n_elements` node ids.
+    const size_t *nodes;
+    // Number of bricks (at least 1).
+    size_t n_elements;
+    // `n_elements` indices into the call's materials, or NULL: every brick uses material 0.
+    const size_t *materials;
+    // The formulation of every brick (`HYCON_BRICK_*`).
+    HyconBrickKind kind;
+} HyconBrickBlock;
+
+// Brick faces (3D model API surfaces): `faces[2 i]` a brick index, `faces[2 i + 1]` its local
+// face (0-5, outward by the right-hand rule: the numbering of `HyconBrickKind`).
+typedef struct HyconBrickFaces {
+    // `2 n` values: brick, local face.
+    const size_t *faces;
+    // Number of faces.
+    size_t n;
+} HyconBrickFaces;
+
+// Converged results at one A node of a 3D pair.
+typedef struct HyconSolidNodeResult {
+    // Node id (the caller's numbering).
+    size_t node;
+    // `HYCON_NODE_OPEN`, `HYCON_NODE_STICK`, `HYCON_NODE_SLIP` or `HYCON_NODE_FRICTIONLESS`.
+    HyconNodeState state;
+    // Normal traction on A (the multiplier, force per area; `< 0` compression, pressure
+    // `p = -tn`).
+    double tn;
+    // Tangential traction on A along `tangent[0]` and `tangent[1]` (force per area; 0 along a
+    // tangent dropped by a symmetry plane).
+    double ts[2];
+    // A slip node: the unit direction of A's slip relative to B along `tangent[0]`,
+    // `tangent[1]` (the friction traction opposes it: `ts = mu tn slip_direction`); else 0 0.
+    double slip_direction[2];
+    // Nodal normal (A's outward): of the reference configuration under small kinematics, of
+    // the converged one under finite kinematics.
+    double normal[3];
+    // The tangents `s1`, `s2`: `(normal, s1, s2)` orthonormal and right-handed, continuous
+    // over the pair; a tangent normal to a symmetry plane the node lies on is dropped (zero).
+    double tangent[2][3];
+    // Current position (reference position plus the converged displacement).
+    double position[3];
+    // Tributary area `integral N_k dA` (tractions are per unit of it).
+    double weight;
+    // Weighted normal gap (`< 0` penetration; infinite where B does not cover the node).
+    double gap;
+    // Equivalent nodal contact force on A (x, y, z).
+    double force[3];
+} HyconSolidNodeResult;
+
+// Converged results at one B node of a 3D pair.
+typedef struct HyconSolidBNodeResult {
+    // Node id (the caller's numbering).
+    size_t node;
+    // `integral M_j dA` over the projected overlap (A's measure; 0 outside it).
+    double weight;
+    // Equivalent nodal contact force on B (x, y, z).
+    double force[3];
+    // Pressure `-force . n / weight` (`n` B's outward nodal normal; 0 outside the overlap).
+    double pressure;
+    // Current position.
+    double position[3];
+} HyconSolidBNodeResult;
+
+// Contact-element quantities of one A node of a 3D pair at the converged state (the
+// reference one before the first increment), for hosts that assemble the mixed system
+// themselves.
+typedef struct HyconSolidContactNode {
+    // Node id (the caller's numbering).
+    size_t node;
+    // `integral N_k dA` over the node's support.
+    double weight;
+    // Fraction of the support covered by B, in [0, 1].
+    double coverage;
+    // Nodal normal (A's outward).
+    double normal[3];
+    // The tangents `s1`, `s2` (zero where a symmetry plane drops one).
+    double tangent[2][3];
+    // Weighted gap vector `R_C,k = integral N_k (x^A - x^B) dA`.
+    double gap[3];
+    // `-n_k . R_C,k / covered weight` (`< 0` penetration; infinite when nothing is covered).
+    double normal_gap;
+} HyconSolidContactNode;
+
 
 
 // Success.
@@ -664,6 +761,13 @@ typedef struct HyconShapeReport {
 
 // x and y.
 #define HYCON_XY 3
+
+// z only (3D: `hycon_solid_model_prescribe`; the plane's `hycon_model_prescribe` rejects it).
+#define HYCON_Z 4
+
+// x, y and z (3D: `hycon_solid_model_prescribe`; the plane's `hycon_model_prescribe` rejects
+// it).
+#define HYCON_XYZ 7
 
 // Not in contact.
 #define HYCON_NODE_OPEN 1
@@ -1741,6 +1845,255 @@ HyconStatus hycon_brick_face_traction(HyconBrickKind kind,
                                       double s,
                                       double t,
                                       double *out);
+
+// Create a 3D model from its mesh and materials (nodes, elements, materials, as
+// `hycon_model_new`):
+//
+// * `coords`: `3 n_nodes` doubles `x0 y0 z0 x1 ...`;
+// * `elements`: the bricks (`HyconBrickBlock`: `8 n_elements` node ids in the brick node
+//   order, their material indices or NULL for all 0, the formulation);
+// * `materials`: `n_materials` materials.
+//
+// The arrays are copied. Every brick is checked as by `hycon_brick_check`: a brick the default
+// shape policy only warns about gives `HYCON_WARNING_SHAPE` with the model made (the message
+// names the bricks).
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `coords`, `elements`, `materials`, or an array of
+// `elements` with a nonzero length), `HYCON_ERROR_INVALID_ARGUMENT` (no nodes or bricks, an
+// unknown node id or material index, non-finite coordinates, unknown kind, misaligned
+// pointers), `HYCON_ERROR_INVALID_MATERIAL`, `HYCON_ERROR_BAD_ELEMENT` (a degenerate or
+// inverted brick, named by index).
+//
+// # Safety
+// `out` must point to a writable pointer; `coords` NULL or `3 n_nodes` readable doubles;
+// `elements` NULL or a readable view whose arrays hold the stated counts; `materials` NULL or
+// `n_materials` readable structs.
+HyconStatus hycon_solid_model_new(struct HyconSolidModel **out,
+                                  const double *coords,
+                                  size_t n_nodes,
+                                  const struct HyconBrickBlock *elements,
+                                  const struct HyconSolidMaterial *materials,
+                                  size_t n_materials);
+
+// Free a 3D model (NULL is a no-op). Analyses made from it keep their own copy.
+//
+// # Safety
+// `model` must be NULL or a live handle from `hycon_solid_model_new`, not used afterwards.
+void hycon_solid_model_free(struct HyconSolidModel *model);
+
+// Prescribe the displacement of `nodes` in `directions` (any nonzero OR of `HYCON_X`,
+// `HYCON_Y`, `HYCON_Z`; `HYCON_XYZ` all three). The values are given per increment
+// (`prescribed` of `hycon_solid_contact_increment`). Contact nodes may be prescribed too.
+//
+// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for an unknown node id, unknown `directions`, or a
+// displacement component prescribed twice (listed twice in `nodes`, or prescribed by an
+// earlier call); on an error nothing is prescribed.
+//
+// # Safety
+// `model` must be a live handle; `nodes` NULL or `n` readable ids.
+HyconStatus hycon_solid_model_prescribe(struct HyconSolidModel *model,
+                                        const size_t *nodes,
+                                        size_t n,
+                                        HyconDirections directions);
+
+// Add a contact pair: the multiplier side `a` and the opposite side `b` (brick faces, each a
+// boundary face of the mesh, listed once) and the Coulomb coefficient `friction >= 0` (0:
+// frictionless; the cone is circular). The pair's index (0, 1, ...) is written to `index`
+// unless it is NULL. A pair's A nodes are numbered in increasing node id order (the order of
+// `hycon_solid_contact_node_results` and the rows of the coupling and constraint entries), B
+// nodes likewise.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`model`, `a`, `b`, or their `faces` with `n > 0`);
+// `HYCON_ERROR_INVALID_ARGUMENT` naming the side and the face for an unknown brick or local
+// face, a side without faces, a face that is not a boundary face of the mesh (shared by two
+// bricks) or is listed twice, a bad friction coefficient, a misaligned pointer. (A and B
+// sharing a node and faces the kernel cannot integrate are refused by
+// `hycon_solid_contact_new`.) On an error the model is unchanged.
+//
+// # Safety
+// `model` must be a live handle; `a`, `b` NULL or readable views holding `2 n` values each;
+// `index` NULL or writable.
+HyconStatus hycon_solid_model_add_pair(struct HyconSolidModel *model,
+                                       const struct HyconBrickFaces *a,
+                                       const struct HyconBrickFaces *b,
+                                       double friction,
+                                       size_t *index);
+
+// Declare a symmetry plane of the model: the plane through `point` (3 doubles) normal to
+// `normal` (3 doubles, either orientation, normalised here). An A node on it gets the
+// mirrored model's normal and no tangential traction across it. The model must hold the nodes
+// on the plane normal to it (`hycon_solid_model_prescribe`): a quarter or a half model.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (a non-finite value, a
+// zero normal, a misaligned pointer).
+//
+// # Safety
+// `model` must be a live handle; `point` and `normal` NULL or 3 readable doubles each.
+HyconStatus hycon_solid_model_add_symmetry_plane(struct HyconSolidModel *model,
+                                                 const double *point,
+                                                 const double *normal);
+
+// Start a 3D contact analysis of a model (copied: the model may be freed or changed
+// afterwards): validate, assemble, factor `K` once and set up the contact boundary's
+// flexibility. `options` NULL means the defaults (`search_distance` is relative to the mean A
+// face size, the square root of the mean A face area).
+//
+// Errors: `HYCON_ERROR_SINGULAR` (a body not held against rigid motion),
+// `HYCON_ERROR_INVALID_ARGUMENT` naming the pair (bad options, A and B sharing a node, a
+// contact face the kernel cannot integrate, no continuous tangent frame over a pair: split
+// the surface into pairs, a symmetry plane no model node lies on), `HYCON_ERROR_SOLVER`.
+//
+// # Safety
+// `out` must point to a writable pointer, `model` be a live handle, `options` NULL or
+// readable.
+HyconStatus hycon_solid_contact_new(struct HyconSolidContact **out,
+                                    const struct HyconSolidModel *model,
+                                    const struct HyconContactOptions *options);
+
+// Free a 3D analysis (NULL is a no-op).
+//
+// # Safety
+// `contact` must be NULL or a live handle, not used afterwards.
+void hycon_solid_contact_free(struct HyconSolidContact *contact);
+
+// One increment with **total** values (from the reference state), as
+// `hycon_contact_increment`: `load` the external nodal forces over all `3 n_nodes` dofs
+// (`u0 v0 w0 u1 ...`), `prescribed` the values at the prescribed dofs over the same entries
+// (the others are ignored). The automatic cutback, `info` and the errors are the plane's.
+//
+// # Safety
+// `contact` must be a live handle; arrays NULL or of the stated lengths; `info` NULL or
+// writable.
+HyconStatus hycon_solid_contact_increment(struct HyconSolidContact *contact,
+                                          const double *load,
+                                          size_t load_len,
+                                          const double *prescribed,
+                                          size_t prescribed_len,
+                                          struct HyconIncrementInfo *info);
+
+// The displacement of the last converged increment over the `3 n_nodes` dofs (zero before the
+// first), as `hycon_contact_displacement`; its size query gives the field length, also the
+// `load_len` of an increment.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable doubles; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_displacement(const struct HyconSolidContact *contact,
+                                             double *out,
+                                             size_t len,
+                                             size_t *needed);
+
+// The displacement increment of the last converged increment, as
+// `hycon_contact_displacement_increment`.
+//
+// # Safety
+// As `hycon_solid_contact_displacement`.
+HyconStatus hycon_solid_contact_displacement_increment(const struct HyconSolidContact *contact,
+                                                       double *out,
+                                                       size_t len,
+                                                       size_t *needed);
+
+// The contact forces of the last converged increment over the field (`K u = load + forces`),
+// as `hycon_contact_forces`.
+//
+// # Safety
+// As `hycon_solid_contact_displacement`.
+HyconStatus hycon_solid_contact_forces(const struct HyconSolidContact *contact,
+                                       double *out,
+                                       size_t len,
+                                       size_t *needed);
+
+// The iteration records from number `first` on, as `hycon_contact_records`.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_records(const struct HyconSolidContact *contact,
+                                        size_t first,
+                                        struct HyconIterationRecord *out,
+                                        size_t len,
+                                        size_t *needed);
+
+// Where the time went and the number of factorizations, as `hycon_contact_timings`.
+//
+// # Safety
+// `contact` must be a live handle; outputs NULL or writable.
+HyconStatus hycon_solid_contact_timings(const struct HyconSolidContact *contact,
+                                        struct HyconTimings *timings,
+                                        size_t *factorizations);
+
+// Tractions way (b), the multipliers: converged results at the A nodes of `pair` (states,
+// `tn`, `ts`, slip directions, frames, gaps, nodal forces), one per A node in increasing node
+// id order: the size query gives the A node count.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_node_results(const struct HyconSolidContact *contact,
+                                             size_t pair,
+                                             struct HyconSolidNodeResult *out,
+                                             size_t len,
+                                             size_t *needed);
+
+// Tractions way (c), the B side: nodal forces, weights and pressures at the B nodes of
+// `pair`, one per B node in increasing node id order: the size query gives the B node count.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_b_node_results(const struct HyconSolidContact *contact,
+                                               size_t pair,
+                                               struct HyconSolidBNodeResult *out,
+                                               size_t len,
+                                               size_t *needed);
+
+// Contact-element quantities of the A nodes of `pair` in the converged configuration (the
+// reference one before the first increment): weights, frames, weighted gaps `R_C`, coverage;
+// one per A node. Rust: `ContactAnalysis::surface(pair).nodes`.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`); also
+// `HYCON_ERROR_INVALID_ARGUMENT` for a pair index out of range.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_surface_nodes(const struct HyconSolidContact *contact,
+                                              size_t pair,
+                                              struct HyconSolidContactNode *out,
+                                              size_t len,
+                                              size_t *needed);
+
+// The contact-element matrices `F^A` (`D`) and `F^B` (`M`) of `pair` as entries (row = A
+// node index), as `hycon_contact_surface_coupling`.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_surface_coupling(const struct HyconSolidContact *contact,
+                                                 size_t pair,
+                                                 struct HyconCouplingEntry *out,
+                                                 size_t len,
+                                                 size_t *needed);
+
+// The constraint matrix `Kc` of `pair` as row-major, CSR-ready entries, as
+// `hycon_contact_constraint_rows`, with `3 n_a` rows: `3k` the normal constraint of A node
+// `k`, `3k + 1` and `3k + 2` the tangential ones along `s1` and `s2` (empty for a tangent
+// dropped by a symmetry plane); columns are model dofs `3 node + direction`.
+//
+// # Safety
+// `contact` must be a live handle; `out` NULL or `len` writable structs; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_contact_constraint_rows(const struct HyconSolidContact *contact,
+                                                size_t pair,
+                                                struct HyconConstraintEntry *out,
+                                                size_t len,
+                                                size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -5,8 +5,12 @@
  * What it adds to hycon.h, and nothing more:
  * - Ownership: hycon::Model, hycon::Host and hycon::Contact own a HyconModel, HyconHost and
  *   HyconContact through std::unique_ptr with deleters calling hycon_*_free (move-only; an
- *   empty object holds no handle). The raw unique_ptr types are hycon::ModelPtr, HostPtr and
- *   ContactPtr; get() gives the C handle for calls the wrapper does not cover.
+ *   empty object holds no handle); hycon::SolidModel and hycon::SolidContact own the 3D
+ *   family's HyconSolidModel and HyconSolidContact likewise. The raw unique_ptr types are
+ *   hycon::ModelPtr, HostPtr, ContactPtr, SolidModelPtr and SolidContactPtr; get() gives the C
+ *   handle for calls the wrapper does not cover. The members of Contact and SolidContact whose
+ *   meaning does not depend on the dimension (increment, displacement, forces, records, ...)
+ *   are written once, in detail::Analysis.
  * - Errors without exceptions: every call returns a [[nodiscard]] hycon::Status (the
  *   HyconStatus and, on an error or a warning, the message of hycon_last_error_message) or a
  *   hycon::Result<T> (a Status and a value). Nothing here throws except std::bad_alloc from
@@ -764,11 +768,145 @@ struct Timings {
     std::size_t factorizations = 0;
 };
 
+namespace detail {
+
+// The size convention: ask for the size with (NULL, 0, &n), then fill n elements.
+template <class T, class Fill>
+Result<std::vector<T>> fetch(Fill fill) {
+    std::size_t n = 0;
+    Status s = Status::from(fill(nullptr, 0, &n));
+    if (!s.ok()) return s;
+    std::vector<T> out(n);
+    if (n == 0) return out;
+    s = Status::from(fill(out.data(), out.size(), nullptr));
+    if (!s.ok()) return s;
+    return out;
+}
+
+// The C functions whose meaning does not depend on the dimension, overloaded on the handle
+// type: the plane's hycon_contact_* and the solid's hycon_solid_contact_*.
+#define HYCON_DETAIL_BOTH(name, plane, solid)                                                   \
+    template <class... Args>                                                                    \
+    HyconStatus name(const HyconContact *c, Args... args) {                                     \
+        return plane(c, args...);                                                               \
+    }                                                                                           \
+    template <class... Args>                                                                    \
+    HyconStatus name(const HyconSolidContact *c, Args... args) {                                \
+        return solid(c, args...);                                                               \
+    }
+HYCON_DETAIL_BOTH(displacement, hycon_contact_displacement, hycon_solid_contact_displacement)
+HYCON_DETAIL_BOTH(displacement_increment, hycon_contact_displacement_increment,
+                  hycon_solid_contact_displacement_increment)
+HYCON_DETAIL_BOTH(forces, hycon_contact_forces, hycon_solid_contact_forces)
+HYCON_DETAIL_BOTH(records, hycon_contact_records, hycon_solid_contact_records)
+HYCON_DETAIL_BOTH(timings, hycon_contact_timings, hycon_solid_contact_timings)
+HYCON_DETAIL_BOTH(surface_coupling, hycon_contact_surface_coupling,
+                  hycon_solid_contact_surface_coupling)
+HYCON_DETAIL_BOTH(constraint_rows, hycon_contact_constraint_rows,
+                  hycon_solid_contact_constraint_rows)
+#undef HYCON_DETAIL_BOTH
+inline HyconStatus increment(HyconContact *c, const double *load, std::size_t load_len,
+                             const double *prescribed, std::size_t prescribed_len,
+                             HyconIncrementInfo *info) {
+    return hycon_contact_increment(c, load, load_len, prescribed, prescribed_len, info);
+}
+inline HyconStatus increment(HyconSolidContact *c, const double *load, std::size_t load_len,
+                             const double *prescribed, std::size_t prescribed_len,
+                             HyconIncrementInfo *info) {
+    return hycon_solid_contact_increment(c, load, load_len, prescribed, prescribed_len, info);
+}
+
+// The members of Contact and SolidContact whose meaning does not depend on the dimension,
+// written once over the handle `H` owned by `Ptr`.
+template <class H, class Ptr>
+class Analysis {
+  public:
+    Analysis() noexcept = default;
+    explicit Analysis(Ptr handle) noexcept : handle_(std::move(handle)) {}
+
+    // Length of the load and displacement vectors (the size query of the displacement).
+    Result<std::size_t> field_len() const {
+        std::size_t n = 0;
+        const Status s = Status::from(detail::displacement(get(), nullptr, 0, &n));
+        return Result<std::size_t>(s, n);
+    }
+
+    // One increment with total values (see hycon_contact_increment).
+    Result<HyconIncrementInfo> increment(View<double> load, View<double> prescribed = {}) {
+        HyconIncrementInfo info{};
+        const Status s = Status::from(detail::increment(get(), load.data(), load.size(),
+                                                        prescribed.data(), prescribed.size(),
+                                                        &info));
+        return Result<HyconIncrementInfo>(s, info);
+    }
+
+    // Total displacement of the last converged increment over the field.
+    Result<std::vector<double>> displacement() const {
+        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
+            return detail::displacement(get(), out, n, needed);
+        });
+    }
+
+    // The last converged increment's displacement minus the previous one's (one solve).
+    Result<std::vector<double>> displacement_increment() const {
+        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
+            return detail::displacement_increment(get(), out, n, needed);
+        });
+    }
+
+    // Contact forces of the last converged increment over the field.
+    Result<std::vector<double>> forces() const {
+        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
+            return detail::forces(get(), out, n, needed);
+        });
+    }
+
+    // The iteration records from `first` on (all increments, failed ones excluded).
+    Result<std::vector<HyconIterationRecord>> records(std::size_t first = 0) const {
+        return fetch<HyconIterationRecord>(
+            [this, first](HyconIterationRecord *out, std::size_t n, std::size_t *needed) {
+                return detail::records(get(), first, out, n, needed);
+            });
+    }
+
+    Result<Timings> timings() const {
+        Timings t;
+        const Status s = Status::from(detail::timings(get(), &t.seconds, &t.factorizations));
+        return Result<Timings>(s, t);
+    }
+
+    // The entries of F^A and F^B of `pair`.
+    Result<std::vector<HyconCouplingEntry>> surface_coupling(std::size_t pair) const {
+        return fetch<HyconCouplingEntry>(
+            [this, pair](HyconCouplingEntry *out, std::size_t n, std::size_t *needed) {
+                return detail::surface_coupling(get(), pair, out, n, needed);
+            });
+    }
+
+    // The constraint matrix Kc of `pair` (2 n_a rows in the plane, 3 n_a in 3D) as row-major
+    // entries (CSR-ready).
+    Result<std::vector<HyconConstraintEntry>> constraint_rows(std::size_t pair) const {
+        return fetch<HyconConstraintEntry>(
+            [this, pair](HyconConstraintEntry *out, std::size_t n, std::size_t *needed) {
+                return detail::constraint_rows(get(), pair, out, n, needed);
+            });
+    }
+
+    H *get() const noexcept { return handle_.get(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
+    H *release() noexcept { return handle_.release(); }
+
+  private:
+    Ptr handle_;
+};
+
+}  // namespace detail
+
 // A contact analysis: K factored once, the converged state, the records.
-class Contact {
+class Contact : public detail::Analysis<HyconContact, ContactPtr> {
   public:
     Contact() noexcept = default;
-    explicit Contact(ContactPtr handle) noexcept : handle_(std::move(handle)) {}
+    explicit Contact(ContactPtr handle) noexcept : Analysis(std::move(handle)) {}
 
     // Model API. The model is copied (it may be destroyed or changed afterwards).
     static Result<Contact> create(const Model &model,
@@ -785,21 +923,6 @@ class Contact {
         const Status s = Status::from(hycon_contact_new_host(&raw, host.get(), &options));
         if (!s.ok()) return s;
         return Contact(ContactPtr(raw));
-    }
-
-    // Length of the load and displacement vectors (the size query of hycon_contact_displacement).
-    Result<std::size_t> field_len() const {
-        std::size_t n = 0;
-        const Status s = Status::from(hycon_contact_displacement(get(), nullptr, 0, &n));
-        return Result<std::size_t>(s, n);
-    }
-
-    // One increment with total values (see hycon_contact_increment).
-    Result<HyconIncrementInfo> increment(View<double> load, View<double> prescribed = {}) {
-        HyconIncrementInfo info{};
-        const Status s = Status::from(hycon_contact_increment(
-            get(), load.data(), load.size(), prescribed.data(), prescribed.size(), &info));
-        return Result<HyconIncrementInfo>(s, info);
     }
 
     // One increment of a model with a plate, its x and y translations driven by `x` and `y`.
@@ -821,27 +944,6 @@ class Contact {
         return Result<PlateState>(s, p);
     }
 
-    // Total displacement of the last converged increment over the field.
-    Result<std::vector<double>> displacement() const {
-        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
-            return hycon_contact_displacement(get(), out, n, needed);
-        });
-    }
-
-    // The last converged increment's displacement minus the previous one's (one solve).
-    Result<std::vector<double>> displacement_increment() const {
-        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
-            return hycon_contact_displacement_increment(get(), out, n, needed);
-        });
-    }
-
-    // Contact forces of the last converged increment over the field.
-    Result<std::vector<double>> forces() const {
-        return fetch<double>([this](double *out, std::size_t n, std::size_t *needed) {
-            return hycon_contact_forces(get(), out, n, needed);
-        });
-    }
-
     // Node counts of the A and B polylines of `pair` (the size queries of the node results).
     Result<PairSize> pair_size(std::size_t pair) const {
         PairSize size;
@@ -853,7 +955,7 @@ class Contact {
 
     // The multipliers and states at the A nodes of `pair`.
     Result<std::vector<HyconNodeResult>> node_results(std::size_t pair) const {
-        return fetch<HyconNodeResult>(
+        return detail::fetch<HyconNodeResult>(
             [this, pair](HyconNodeResult *out, std::size_t n, std::size_t *needed) {
                 return hycon_contact_node_results(get(), pair, out, n, needed);
             });
@@ -861,7 +963,7 @@ class Contact {
 
     // Forces, weights and pressures at the B nodes of `pair`.
     Result<std::vector<HyconBNodeResult>> b_node_results(std::size_t pair) const {
-        return fetch<HyconBNodeResult>(
+        return detail::fetch<HyconBNodeResult>(
             [this, pair](HyconBNodeResult *out, std::size_t n, std::size_t *needed) {
                 return hycon_contact_b_node_results(get(), pair, out, n, needed);
             });
@@ -870,68 +972,159 @@ class Contact {
     // tn ts per A node of `pair` from body A's element stresses, 2 n_a values (a host: with
     // its elements handed over, not on the condensed path).
     Result<std::vector<double>> stress_tractions(std::size_t pair) const {
-        return fetch<double>([this, pair](double *out, std::size_t n, std::size_t *needed) {
+        return detail::fetch<double>([this, pair](double *out, std::size_t n, std::size_t *needed) {
             return hycon_contact_stress_tractions(get(), pair, out, n, needed);
         });
     }
 
     // Contact-element quantities of the A nodes of `pair`.
     Result<std::vector<HyconContactNode>> surface_nodes(std::size_t pair) const {
-        return fetch<HyconContactNode>(
+        return detail::fetch<HyconContactNode>(
             [this, pair](HyconContactNode *out, std::size_t n, std::size_t *needed) {
                 return hycon_contact_surface_nodes(get(), pair, out, n, needed);
             });
     }
+};
 
-    // The iteration records from `first` on (all increments, failed ones excluded).
-    Result<std::vector<HyconIterationRecord>> records(std::size_t first = 0) const {
-        return fetch<HyconIterationRecord>(
-            [this, first](HyconIterationRecord *out, std::size_t n, std::size_t *needed) {
-                return hycon_contact_records(get(), first, out, n, needed);
-            });
+// ---------------------------------------------------------------------------------------------
+// 3D contact, model family: a brick model with contact pairs of brick faces
+
+struct SolidModelDeleter {
+    void operator()(HyconSolidModel *p) const noexcept { hycon_solid_model_free(p); }
+};
+struct SolidContactDeleter {
+    void operator()(HyconSolidContact *p) const noexcept { hycon_solid_contact_free(p); }
+};
+using SolidModelPtr = std::unique_ptr<HyconSolidModel, SolidModelDeleter>;
+using SolidContactPtr = std::unique_ptr<HyconSolidContact, SolidContactDeleter>;
+
+// A brick face of a surface: the brick's index and its local face (0-5, outward).
+struct BrickFace {
+    std::size_t brick;
+    std::size_t face;
+};
+
+// A 3D model being described: brick mesh, materials, prescribed directions, contact pairs of
+// brick faces, symmetry planes.
+class SolidModel {
+  public:
+    SolidModel() noexcept = default;
+    explicit SolidModel(SolidModelPtr handle) noexcept : handle_(std::move(handle)) {}
+
+    // Nodes `coords` (x0 y0 z0 x1 ...), bricks `brick_nodes` (8 ids each, brick node order),
+    // `materials`, and per brick an index into them (`brick_materials`; empty: all 0). A brick
+    // the default shape policy warns about gives an ok() result with HYCON_WARNING_SHAPE.
+    static Result<SolidModel> create(View<double> coords, View<std::size_t> brick_nodes,
+                                     View<HyconSolidMaterial> materials, HyconBrickKind kind,
+                                     View<std::size_t> brick_materials = {}) {
+        if (coords.size() % 3 != 0) return detail::invalid("coords must hold x y z triples");
+        if (brick_nodes.size() % 8 != 0)
+            return detail::invalid("brick_nodes must hold 8 node ids per brick");
+        const std::size_t n_bricks = brick_nodes.size() / 8;
+        if (!brick_materials.empty() && brick_materials.size() != n_bricks)
+            return detail::invalid("brick_materials must be empty or hold one index per brick");
+        const HyconBrickBlock bricks = {
+            brick_nodes.data(), n_bricks,
+            brick_materials.empty() ? nullptr : brick_materials.data(), kind};
+        HyconSolidModel *raw = nullptr;
+        const Status s = Status::from(hycon_solid_model_new(
+            &raw, coords.data(), coords.size() / 3, &bricks, materials.data(), materials.size()));
+        if (!s.ok()) return s;
+        return Result<SolidModel>(s, SolidModel(SolidModelPtr(raw)));
     }
 
-    Result<Timings> timings() const {
-        Timings t;
-        const Status s = Status::from(hycon_contact_timings(get(), &t.seconds, &t.factorizations));
-        return Result<Timings>(s, t);
+    // Prescribe the displacement of `nodes` in `directions` (an OR of HYCON_X, HYCON_Y, HYCON_Z).
+    Status prescribe(View<std::size_t> nodes, HyconDirections directions) {
+        return Status::from(
+            hycon_solid_model_prescribe(get(), nodes.data(), nodes.size(), directions));
     }
 
-    // The entries of F^A and F^B of `pair`.
-    Result<std::vector<HyconCouplingEntry>> surface_coupling(std::size_t pair) const {
-        return fetch<HyconCouplingEntry>(
-            [this, pair](HyconCouplingEntry *out, std::size_t n, std::size_t *needed) {
-                return hycon_contact_surface_coupling(get(), pair, out, n, needed);
-            });
+    // Add a contact pair of brick faces (A the multiplier side); returns the pair's index.
+    Result<std::size_t> add_pair(View<BrickFace> a, View<BrickFace> b, double friction) {
+        const std::vector<std::size_t> fa = flatten(a), fb = flatten(b);
+        const HyconBrickFaces va = {fa.empty() ? nullptr : fa.data(), a.size()};
+        const HyconBrickFaces vb = {fb.empty() ? nullptr : fb.data(), b.size()};
+        std::size_t index = 0;
+        const Status s =
+            Status::from(hycon_solid_model_add_pair(get(), &va, &vb, friction, &index));
+        return Result<std::size_t>(s, index);
     }
 
-    // The constraint matrix Kc of `pair` (2 n_a rows) as row-major entries (CSR-ready).
-    Result<std::vector<HyconConstraintEntry>> constraint_rows(std::size_t pair) const {
-        return fetch<HyconConstraintEntry>(
-            [this, pair](HyconConstraintEntry *out, std::size_t n, std::size_t *needed) {
-                return hycon_contact_constraint_rows(get(), pair, out, n, needed);
-            });
+    // Declare the symmetry plane through `point` normal to `normal`.
+    Status add_symmetry_plane(const std::array<double, 3> &point,
+                              const std::array<double, 3> &normal) {
+        return Status::from(
+            hycon_solid_model_add_symmetry_plane(get(), point.data(), normal.data()));
     }
 
-    HyconContact *get() const noexcept { return handle_.get(); }
+    HyconSolidModel *get() const noexcept { return handle_.get(); }
     explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
-    HyconContact *release() noexcept { return handle_.release(); }
+    // Give up ownership (the caller then frees with hycon_solid_model_free).
+    HyconSolidModel *release() noexcept { return handle_.release(); }
 
   private:
-    // The size convention: ask for the size with (NULL, 0, &n), then fill n elements.
-    template <class T, class Fill>
-    Result<std::vector<T>> fetch(Fill fill) const {
-        std::size_t n = 0;
-        Status s = Status::from(fill(nullptr, 0, &n));
-        if (!s.ok()) return s;
-        std::vector<T> out(n);
-        if (n == 0) return out;
-        s = Status::from(fill(out.data(), out.size(), nullptr));
-        if (!s.ok()) return s;
-        return out;
+    static std::vector<std::size_t> flatten(View<BrickFace> faces) {
+        std::vector<std::size_t> flat;
+        flat.reserve(2 * faces.size());
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            flat.push_back(faces[i].brick);
+            flat.push_back(faces[i].face);
+        }
+        return flat;
     }
 
-    ContactPtr handle_;
+    SolidModelPtr handle_;
+};
+
+// A 3D contact analysis: K factored once, the converged state, the records.
+class SolidContact : public detail::Analysis<HyconSolidContact, SolidContactPtr> {
+  public:
+    SolidContact() noexcept = default;
+    explicit SolidContact(SolidContactPtr handle) noexcept : Analysis(std::move(handle)) {}
+
+    // The model is copied (it may be destroyed or changed afterwards).
+    static Result<SolidContact> create(const SolidModel &model,
+                                       const HyconContactOptions &options = default_options()) {
+        HyconSolidContact *raw = nullptr;
+        const Status s = Status::from(hycon_solid_contact_new(&raw, model.get(), &options));
+        if (!s.ok()) return s;
+        return SolidContact(SolidContactPtr(raw));
+    }
+
+    // Node counts of the A and B sides of `pair` (the size queries of the node results).
+    Result<PairSize> pair_size(std::size_t pair) const {
+        PairSize size;
+        Status s =
+            Status::from(hycon_solid_contact_node_results(get(), pair, nullptr, 0, &size.a));
+        if (s.ok())
+            s = Status::from(
+                hycon_solid_contact_b_node_results(get(), pair, nullptr, 0, &size.b));
+        return Result<PairSize>(s, size);
+    }
+
+    // The multipliers, states and slip directions at the A nodes of `pair`.
+    Result<std::vector<HyconSolidNodeResult>> node_results(std::size_t pair) const {
+        return detail::fetch<HyconSolidNodeResult>(
+            [this, pair](HyconSolidNodeResult *out, std::size_t n, std::size_t *needed) {
+                return hycon_solid_contact_node_results(get(), pair, out, n, needed);
+            });
+    }
+
+    // Forces, weights and pressures at the B nodes of `pair`.
+    Result<std::vector<HyconSolidBNodeResult>> b_node_results(std::size_t pair) const {
+        return detail::fetch<HyconSolidBNodeResult>(
+            [this, pair](HyconSolidBNodeResult *out, std::size_t n, std::size_t *needed) {
+                return hycon_solid_contact_b_node_results(get(), pair, out, n, needed);
+            });
+    }
+
+    // Contact-element quantities of the A nodes of `pair`.
+    Result<std::vector<HyconSolidContactNode>> surface_nodes(std::size_t pair) const {
+        return detail::fetch<HyconSolidContactNode>(
+            [this, pair](HyconSolidContactNode *out, std::size_t n, std::size_t *needed) {
+                return hycon_solid_contact_surface_nodes(get(), pair, out, n, needed);
+            });
+    }
 };
 
 }  // namespace hycon

@@ -20,4 +20,5 @@ mod mesh;
 mod readme;
 mod solid;
 mod solid_c_api;
+mod solid_contact_c_api;
 mod solid_validation;

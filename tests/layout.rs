@@ -204,10 +204,33 @@ rust_structs! {
     HyconHostNodes { ids, coords, equations, n },
     HyconCondensed { size, kind, m, equations, matrix },
     HyconTimings { assembly, factorization, flexibility, load_solves, iterations, recovery },
+    HyconBrickBlock { nodes, n_elements, materials, kind },
+    HyconBrickFaces { faces, n },
+    HyconSolidNodeResult {
+        node,
+        state,
+        tn,
+        ts,
+        slip_direction,
+        normal,
+        tangent,
+        position,
+        weight,
+        gap,
+        force,
+    },
+    HyconSolidBNodeResult { node, weight, force, pressure, position },
+    HyconSolidContactNode { node, weight, coverage, normal, tangent, gap, normal_gap },
 }
 
 /// The opaque handle types: declared but not defined in the header, no layout to check.
-const OPAQUE: &[&str] = &["HyconContact", "HyconHost", "HyconModel"];
+const OPAQUE: &[&str] = &[
+    "HyconContact",
+    "HyconHost",
+    "HyconModel",
+    "HyconSolidContact",
+    "HyconSolidModel",
+];
 
 macro_rules! aliases {
     ($($name:ident),* $(,)?) => {
@@ -291,6 +314,8 @@ fn rust_constants() -> BTreeMap<&'static str, i128> {
         HYCON_X,
         HYCON_Y,
         HYCON_XY,
+        HYCON_Z,
+        HYCON_XYZ,
         HYCON_NODE_OPEN,
         HYCON_NODE_STICK,
         HYCON_NODE_SLIP,
@@ -1123,8 +1148,8 @@ fn layout_check_catches_mismatches() {
         ),
         (
             "same-size-type",
-            "    double normal_gap;",
-            "    int64_t normal_gap;",
+            "    // when nothing is covered).\n    double normal_gap;",
+            "    // when nothing is covered).\n    int64_t normal_gap;",
             &["type of HyconContactNode.normal_gap: i64 (header) != f64 (Rust)"],
         ),
         (

@@ -69,6 +69,11 @@ pub const HYCON_X: HyconDirections = 1;
 pub const HYCON_Y: HyconDirections = 2;
 /// x and y.
 pub const HYCON_XY: HyconDirections = 3;
+/// z only (3D: `hycon_solid_model_prescribe`; the plane's `hycon_model_prescribe` rejects it).
+pub const HYCON_Z: HyconDirections = 4;
+/// x, y and z (3D: `hycon_solid_model_prescribe`; the plane's `hycon_model_prescribe` rejects
+/// it).
+pub const HYCON_XYZ: HyconDirections = 7;
 
 /// State of an A node, one of `HYCON_NODE_*`.
 pub type HyconNodeState = i32;
@@ -775,7 +780,7 @@ unsafe fn read_host_nodes(
 ///
 /// # Safety
 /// `options` must be NULL or point to a readable `HyconContactOptions`.
-unsafe fn read_options(
+pub(super) unsafe fn read_options(
     options: *const HyconContactOptions,
 ) -> Result<(ContactOptions, Option<Monitor>), Fail> {
     if options.is_null() {
@@ -1610,7 +1615,7 @@ fn plane(v: crate::contact::space::Vector) -> [f64; 2] {
     [v[0], v[1]]
 }
 
-fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo {
+pub(super) fn info_to_c(i: crate::contact::iteration::IncrementInfo) -> HyconIncrementInfo {
     HyconIncrementInfo {
         increment: i.increment,
         iterations: i.iterations,
@@ -1665,12 +1670,16 @@ pub unsafe extern "C" fn hycon_contact_increment(
     boundary("hycon_contact_increment", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
-        let info = optional(info, "info")?;
-        let f = unsafe { slice(load, load_len, "load")? };
-        let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
-        let done = c.analysis.increment(f, qp)?;
-        unsafe { put(info, info_to_c(done)) };
-        Ok(())
+        unsafe {
+            increment(
+                &mut c.analysis,
+                load,
+                load_len,
+                prescribed,
+                prescribed_len,
+                info,
+            )
+        }
     })
 }
 
@@ -1777,12 +1786,7 @@ pub unsafe extern "C" fn hycon_contact_displacement(
     boundary("hycon_contact_displacement", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let count = c.analysis.field_len();
-        unsafe {
-            fill(out, len, needed, "out", count, || {
-                Ok(c.analysis.displacement()?.to_vec())
-            })
-        }
+        unsafe { displacement(&c.analysis, out, len, needed) }
     })
 }
 
@@ -1812,12 +1816,7 @@ pub unsafe extern "C" fn hycon_contact_displacement_increment(
     boundary("hycon_contact_displacement_increment", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let count = c.analysis.field_len();
-        unsafe {
-            fill(out, len, needed, "out", count, || {
-                Ok(c.analysis.displacement_increment()?)
-            })
-        }
+        unsafe { displacement_increment(&c.analysis, out, len, needed) }
     })
 }
 
@@ -1841,12 +1840,7 @@ pub unsafe extern "C" fn hycon_contact_forces(
     boundary("hycon_contact_forces", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let count = c.analysis.field_len();
-        unsafe {
-            fill(out, len, needed, "out", count, || {
-                Ok(c.analysis.contact_forces())
-            })
-        }
+        unsafe { forces(&c.analysis, out, len, needed) }
     })
 }
 
@@ -2007,18 +2001,7 @@ pub unsafe extern "C" fn hycon_contact_records(
     boundary("hycon_contact_records", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let all = c.analysis.records();
-        let Some(records) = all.get(first..) else {
-            return Err(Fail::invalid(format!(
-                "first = {first}, but {} records exist",
-                all.len()
-            )));
-        };
-        unsafe {
-            fill(out, len, needed, "out", records.len(), || {
-                Ok(records.iter().map(record_to_c).collect())
-            })
-        }
+        unsafe { records(&c.analysis, first, out, len, needed) }
     })
 }
 
@@ -2039,22 +2022,7 @@ pub unsafe extern "C" fn hycon_contact_timings(
     boundary("hycon_contact_timings", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let timings = optional(timings, "timings")?;
-        let factorizations = optional(factorizations, "factorizations")?;
-        let t = c.analysis.timings();
-        let out = HyconTimings {
-            assembly: t.assembly,
-            factorization: t.factorization,
-            flexibility: t.flexibility,
-            load_solves: t.load_solves,
-            iterations: t.iterations,
-            recovery: t.recovery,
-        };
-        unsafe {
-            put(timings, out);
-            put(factorizations, c.analysis.factorizations());
-        }
-        Ok(())
+        unsafe { timings_of(&c.analysis, timings, factorizations) }
     })
 }
 
@@ -2120,31 +2088,7 @@ pub unsafe extern "C" fn hycon_contact_surface_coupling(
     boundary("hycon_contact_surface_coupling", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let surface = c.analysis.surface(pair)?;
-        let a_ids: std::collections::HashSet<usize> =
-            surface.nodes.iter().map(|n| n.node).collect();
-        let entries: Vec<HyconCouplingEntry> = surface
-            .nodes
-            .iter()
-            .enumerate()
-            .flat_map(|(k, n)| {
-                let a_ids = &a_ids;
-                n.coupling.iter().map(move |&(j, v)| {
-                    let side = if a_ids.contains(&j) {
-                        HYCON_SIDE_A
-                    } else {
-                        HYCON_SIDE_B
-                    };
-                    HyconCouplingEntry {
-                        row: k,
-                        node: j,
-                        side,
-                        value: if side == HYCON_SIDE_A { v } else { -v },
-                    }
-                })
-            })
-            .collect();
-        unsafe { fill(out, len, needed, "out", entries.len(), || Ok(entries)) }
+        unsafe { surface_coupling(&c.analysis, pair, out, len, needed) }
     })
 }
 
@@ -2175,24 +2119,216 @@ pub unsafe extern "C" fn hycon_contact_constraint_rows(
     boundary("hycon_contact_constraint_rows", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let rows = c.analysis.constraint_rows(pair)?;
-        let mut entries = Vec::with_capacity(rows.columns.len());
-        for (row, range) in rows.row_ptr.windows(2).enumerate() {
-            let mut row_entries: Vec<(usize, f64)> = (range[0]..range[1])
-                .map(|i| (rows.columns[i], rows.values[i]))
-                .collect();
-            row_entries.sort_by_key(|e| e.0);
-            for (column, value) in row_entries {
-                match entries.last_mut() {
-                    Some(HyconConstraintEntry {
-                        row: r,
-                        column: col,
-                        value: v,
-                    }) if *r == row && *col == column => *v += value,
-                    _ => entries.push(HyconConstraintEntry { row, column, value }),
+        unsafe { constraint_rows(&c.analysis, pair, out, len, needed) }
+    })
+}
+
+// ------------------------------------------------------------------------------------------
+// The bodies of the exports whose meaning does not depend on the dimension: the plane's
+// `hycon_contact_*` above and the solid's `hycon_solid_contact_*` (`solid_contact`) both wrap a
+// `ContactAnalysis` and call these (arguments, errors and safety as those exports state).
+
+/// One increment with total values (`hycon_contact_increment`).
+///
+/// # Safety
+/// `load` and `prescribed` NULL or of the stated lengths; `info` NULL or writable.
+pub(super) unsafe fn increment(
+    analysis: &mut ContactAnalysis,
+    load: *const f64,
+    load_len: usize,
+    prescribed: *const f64,
+    prescribed_len: usize,
+    info: *mut HyconIncrementInfo,
+) -> Result<(), Fail> {
+    let info = optional(info, "info")?;
+    // SAFETY (all): the caller's contract.
+    let f = unsafe { slice(load, load_len, "load")? };
+    let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
+    let done = analysis.increment(f, qp)?;
+    unsafe { put(info, info_to_c(done)) };
+    Ok(())
+}
+
+/// The converged displacement over the field (`hycon_contact_displacement`).
+///
+/// # Safety
+/// `out` NULL or `len` writable doubles; `needed` NULL or writable.
+pub(super) unsafe fn displacement(
+    analysis: &ContactAnalysis,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let count = analysis.field_len();
+    // SAFETY: the caller's contract.
+    unsafe {
+        fill(out, len, needed, "out", count, || {
+            Ok(analysis.displacement()?.to_vec())
+        })
+    }
+}
+
+/// The last converged increment's displacement increment
+/// (`hycon_contact_displacement_increment`).
+///
+/// # Safety
+/// As [`displacement`].
+pub(super) unsafe fn displacement_increment(
+    analysis: &ContactAnalysis,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let count = analysis.field_len();
+    // SAFETY: the caller's contract.
+    unsafe {
+        fill(out, len, needed, "out", count, || {
+            Ok(analysis.displacement_increment()?)
+        })
+    }
+}
+
+/// The converged contact forces over the field (`hycon_contact_forces`).
+///
+/// # Safety
+/// As [`displacement`].
+pub(super) unsafe fn forces(
+    analysis: &ContactAnalysis,
+    out: *mut f64,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let count = analysis.field_len();
+    // SAFETY: the caller's contract.
+    unsafe {
+        fill(out, len, needed, "out", count, || {
+            Ok(analysis.contact_forces())
+        })
+    }
+}
+
+/// The iteration records from `first` on (`hycon_contact_records`).
+///
+/// # Safety
+/// `out` NULL or `len` writable records; `needed` NULL or writable.
+pub(super) unsafe fn records(
+    analysis: &ContactAnalysis,
+    first: usize,
+    out: *mut HyconIterationRecord,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let all = analysis.records();
+    let Some(records) = all.get(first..) else {
+        return Err(Fail::invalid(format!(
+            "first = {first}, but {} records exist",
+            all.len()
+        )));
+    };
+    // SAFETY: the caller's contract.
+    unsafe {
+        fill(out, len, needed, "out", records.len(), || {
+            Ok(records.iter().map(record_to_c).collect())
+        })
+    }
+}
+
+/// The timings and the factorization count (`hycon_contact_timings`).
+///
+/// # Safety
+/// Outputs NULL or writable.
+pub(super) unsafe fn timings_of(
+    analysis: &ContactAnalysis,
+    timings: *mut HyconTimings,
+    factorizations: *mut usize,
+) -> Result<(), Fail> {
+    let timings = optional(timings, "timings")?;
+    let factorizations = optional(factorizations, "factorizations")?;
+    let t = analysis.timings();
+    let out = HyconTimings {
+        assembly: t.assembly,
+        factorization: t.factorization,
+        flexibility: t.flexibility,
+        load_solves: t.load_solves,
+        iterations: t.iterations,
+        recovery: t.recovery,
+    };
+    // SAFETY: both checked by `optional`, writable (contract).
+    unsafe {
+        put(timings, out);
+        put(factorizations, analysis.factorizations());
+    }
+    Ok(())
+}
+
+/// The entries of `F^A` and `F^B` of `pair` (`hycon_contact_surface_coupling`).
+///
+/// # Safety
+/// `out` NULL or `len` writable entries; `needed` NULL or writable.
+pub(super) unsafe fn surface_coupling(
+    analysis: &ContactAnalysis,
+    pair: usize,
+    out: *mut HyconCouplingEntry,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let surface = analysis.surface(pair)?;
+    let a_ids: std::collections::HashSet<usize> = surface.nodes.iter().map(|n| n.node).collect();
+    let entries: Vec<HyconCouplingEntry> = surface
+        .nodes
+        .iter()
+        .enumerate()
+        .flat_map(|(k, n)| {
+            let a_ids = &a_ids;
+            n.coupling.iter().map(move |&(j, v)| {
+                let side = if a_ids.contains(&j) {
+                    HYCON_SIDE_A
+                } else {
+                    HYCON_SIDE_B
+                };
+                HyconCouplingEntry {
+                    row: k,
+                    node: j,
+                    side,
+                    value: if side == HYCON_SIDE_A { v } else { -v },
                 }
+            })
+        })
+        .collect();
+    // SAFETY: the caller's contract.
+    unsafe { fill(out, len, needed, "out", entries.len(), || Ok(entries)) }
+}
+
+/// The constraint matrix `Kc` of `pair` as row-major entries
+/// (`hycon_contact_constraint_rows`).
+///
+/// # Safety
+/// `out` NULL or `len` writable entries; `needed` NULL or writable.
+pub(super) unsafe fn constraint_rows(
+    analysis: &ContactAnalysis,
+    pair: usize,
+    out: *mut HyconConstraintEntry,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let rows = analysis.constraint_rows(pair)?;
+    let mut entries = Vec::with_capacity(rows.columns.len());
+    for (row, range) in rows.row_ptr.windows(2).enumerate() {
+        let mut row_entries: Vec<(usize, f64)> = (range[0]..range[1])
+            .map(|i| (rows.columns[i], rows.values[i]))
+            .collect();
+        row_entries.sort_by_key(|e| e.0);
+        for (column, value) in row_entries {
+            match entries.last_mut() {
+                Some(HyconConstraintEntry {
+                    row: r,
+                    column: col,
+                    value: v,
+                }) if *r == row && *col == column => *v += value,
+                _ => entries.push(HyconConstraintEntry { row, column, value }),
             }
         }
-        unsafe { fill(out, len, needed, "out", entries.len(), || Ok(entries)) }
-    })
+    }
+    // SAFETY: the caller's contract.
+    unsafe { fill(out, len, needed, "out", entries.len(), || Ok(entries)) }
 }

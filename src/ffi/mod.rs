@@ -5,8 +5,9 @@
 //! the caller's buffers. This module holds the conventions, status codes and the checked
 //! boundary; `elements` exports the element routines ([`crate::element`]), `solid` the 3D brick
 //! routines ([`crate::solid`]), `loads` the load and check routines of both (nodal forces of
-//! edge and face loads, volume, quality, stress at natural coordinates) and `contact` the contact analysis ([`crate::contact`]: model API
-//! and host-assembly API). The header
+//! edge and face loads, volume, quality, stress at natural coordinates), `contact` the contact analysis ([`crate::contact`]: model API
+//! and host-assembly API) and `solid_contact` the 3D contact analysis of a brick model (the
+//! `hycon_solid_*` family of handles). The header
 //! `include/hycon.h` is generated from the crate by cbindgen
 //! (`cbindgen --config cbindgen.toml --crate hycon --output include/hycon.h`, or
 //! `HYCON_BLESS=1 cargo test --test integration header_fresh::`) and committed; `tests/header_fresh.rs` fails
@@ -65,11 +66,13 @@ mod elements;
 mod loads;
 mod results;
 mod solid;
+mod solid_contact;
 
 pub use contact::*;
 pub use elements::*;
 pub use loads::*;
 pub use solid::*;
+pub use solid_contact::*;
 
 // ------------------------------------------------------------------------------------------
 // Version

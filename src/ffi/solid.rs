@@ -103,7 +103,7 @@ pub(super) unsafe fn read_brick(coords: *const f64) -> Result<[[f64; 3]; N_NODES
 ///
 /// # Safety
 /// If `m` is non-null it must point to a readable `HyconSolidMaterial`.
-unsafe fn read_solid_material(m: *const HyconSolidMaterial) -> Result<Isotropic, Fail> {
+pub(super) unsafe fn read_solid_material(m: *const HyconSolidMaterial) -> Result<Isotropic, Fail> {
     check_pointer(m, "material")?;
     // SAFETY: non-null and aligned (checked); a readable struct of two doubles (contract).
     let m = unsafe { m.read() };

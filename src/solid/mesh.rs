@@ -204,6 +204,26 @@ impl SolidMesh {
             .collect()
     }
 
+    /// The outward face `face` (0 to 5, numbering of [`super::geometry`]) of brick `brick`:
+    /// its 4 global nodes in the order of [`FACES`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a brick or a local face that does not exist.
+    pub fn brick_face(&self, brick: usize, face: usize) -> Result<Face> {
+        let element = self.elements.get(brick).ok_or_else(|| {
+            Error::InvalidInput(format!(
+                "brick {brick} does not exist ({} bricks)",
+                self.elements.len()
+            ))
+        })?;
+        let local = FACES.get(face).ok_or_else(|| {
+            Error::InvalidInput(format!(
+                "local face {face} of brick {brick} (faces are 0 to 5)"
+            ))
+        })?;
+        Ok(local.map(|k| element[k]))
+    }
+
     /// The boundary faces `(brick, local face)` whose 4 nodes all satisfy `pred`.
     pub fn faces_where(&self, pred: impl Fn([f64; 3]) -> bool) -> Vec<(usize, usize)> {
         let mut out = Vec::new();

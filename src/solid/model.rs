@@ -284,6 +284,9 @@ impl SolidModel {
         for m in &materials {
             m.validate()?;
         }
+        for e in 0..mesh.n_elements() {
+            brick_material(&mesh, &materials, e)?;
+        }
         let loads = vec![0.0; 3 * mesh.n_nodes()];
         Ok(SolidModel {
             mesh,
@@ -300,6 +303,46 @@ impl SolidModel {
     pub fn fix(&mut self, node: usize, dir: usize, value: f64) {
         assert!(dir < 3, "direction {dir} (0, 1, 2 = x, y, z)");
         self.prescribed.insert(3 * node + dir, value);
+    }
+
+    /// Prescribe the displacement of every node in `nodes` in every direction of `directions`
+    /// (0, 1, 2 = x, y, z) to zero, the values to be given later (a contact analysis takes
+    /// them per increment).
+    ///
+    /// Checked here, atomically (on an error nothing is prescribed): every node exists, every
+    /// direction is 0, 1 or 2, and no component is prescribed twice (within the call or by an
+    /// earlier one).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the node or the direction.
+    pub fn prescribe(&mut self, nodes: &[usize], directions: &[usize]) -> Result<()> {
+        let n = self.mesh.n_nodes();
+        if let Some(&node) = nodes.iter().find(|&&node| node >= n) {
+            return Err(Error::InvalidInput(format!(
+                "unknown node {node} (the model has {n} nodes)"
+            )));
+        }
+        if let Some(&dir) = directions.iter().find(|&&d| d > 2) {
+            return Err(Error::InvalidInput(format!(
+                "direction {dir} (0, 1, 2 = x, y, z)"
+            )));
+        }
+        let mut added = std::collections::BTreeSet::new();
+        for &node in nodes {
+            for &dir in directions {
+                let dof = 3 * node + dir;
+                if self.prescribed.contains_key(&dof) || !added.insert(dof) {
+                    return Err(Error::InvalidInput(format!(
+                        "node {node} direction {} is prescribed twice",
+                        ["x", "y", "z"][dir]
+                    )));
+                }
+            }
+        }
+        for dof in added {
+            self.prescribed.insert(dof, 0.0);
+        }
+        Ok(())
     }
 
     /// Add the force `f` to `node`. Panics if `node` is not a node of the mesh.
