@@ -284,8 +284,9 @@ impl SolidModel {
         for m in &materials {
             m.validate()?;
         }
+        let bricks = Bricks::new(&mesh, &materials, formulation);
         for e in 0..mesh.n_elements() {
-            brick_material(&mesh, &materials, e)?;
+            bricks.material(e)?;
         }
         let loads = vec![0.0; 3 * mesh.n_nodes()];
         Ok(SolidModel {
