@@ -21,6 +21,7 @@
 //! trailing side than on the leading one (at `a/h = 8`, 25 and 17 slip nodes), where
 //! Mindlin's annulus is symmetric. `Q / (mu P)` reaches 0.457 (0.447 at `a/h = 8`) for the
 //! displacement that gives 0.5 on half-spaces.
+//! The comparison with Mindlin is `contact_mindlin3d`'s, on mirror bodies with `R / a = 256`.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeState};
 use hycon::solid::contact_meshes::{CapModel, CapOnBlock};
