@@ -5,7 +5,8 @@
 //! deep, so that the block is the cap's mirror image in `z = 0` (meshes included) but for the
 //! cap's curved bottom. The block's bottom is held, the cap's top moved rigidly (all three
 //! directions prescribed, as the block's bottom's are), the nodes on `y = 0` held along `y`;
-//! 18-beta hybrid bricks, small kinematics, Coulomb friction `mu` from the start.
+//! 18-beta hybrid bricks, small kinematics, Coulomb friction `mu` from the start; the
+//! multipliers on the block's flat top (side A), the cap's bottom side B.
 //!
 //! [`HalfCap::press`] moves the cap's top down by Hertz's approach `a^2 / R` of the target
 //! radius ([`crate::closed3d::hertz_approach`]); [`HalfCap::pull_to`] then moves it along `x`
@@ -17,23 +18,33 @@
 //! radius read off the node states along and across `Q` ([`Ray`]), against Mindlin's
 //! `c = a (1 - Q / (mu P))^(1/3)`.
 //!
-//! Why these bodies (measured at `a/h = 4`, `nu = 0`, `mu = 0.3` unless said): Mindlin's
-//! solution needs the press to leave no tangential traction, i.e. the two surfaces to move
-//! alike radially under the pressure, which identical half-spaces do (at any `nu`: each
-//! surface's radial displacement, `(1 - 2 nu) / (4 pi G r)` per unit load, is the other's).
-//! * The unlike bodies of `CapOnBlock::new` (the cap `8 a`, the block `16 a`): the press slips
-//!   at 4 of the 26 active nodes (`contact_friction3d`).
-//! * Mirror bodies but `R / a = 16`: the press still slips at the same 4 nodes (`r = 0.87 a`),
-//!   A's surface moving inward relative to B's. Frictionless, the cap's surface moves along
-//!   `x` by `-1.757e-4` at `x = h` and the block's by `-1.398e-4`: the cap's bottom is curved,
-//!   its normal tilted by `r / R`, so the pressure pushes the cap inward and the block outward
-//!   by `p r / R`, and the relative approach has a component along the tilted tangent; both
-//!   are of relative order `a / R`, outside Hertz's and Mindlin's linearised theory, and they
-//!   slip where the pressure is small. At `R / a = 64` the press slips nowhere at `a/h = 4`,
-//!   but at 7 edge nodes at `a/h = 8`, where the pull then slips more on the trailing side
-//!   (its stick radius a node spacing smaller than the leading side's).
-//! * [`RADIUS_OVER_CONTACT`] `= 256`: no slip in the press at `a/h = 4`, 3 nodes at the very
-//!   edge (`r = 8 h`, `a = 8.27 h`) at `a/h = 8`, leading and trailing sides alike there.
+//! Why this model (measured at `nu = 0`, `mu = 0.3`): Mindlin's solution needs the press to
+//! leave no tangential traction, i.e. the two surfaces to move alike radially under the
+//! pressure, as identical half-spaces do (at any `nu`: each surface's radial displacement,
+//! `(1 - 2 nu) / (4 pi G r)` per unit load, is the other's).
+//! * The unlike bodies of `CapOnBlock::new` (the cap `8 a`, the block `16 a`, `R / a = 16`):
+//!   the press slips at 4 of the 26 active nodes at `a/h = 4` (`contact_friction3d`).
+//! * Mirror bodies, `R / a = 16`, multipliers on the cap: the press still slips at the same 4
+//!   nodes (`r = 0.87 a`), the cap's surface moving inward relative to the block's.
+//!   Frictionless, the cap's surface moves along `x` by `-1.757e-4` at `x = h` and the block's
+//!   by `-1.398e-4`: the cap's bottom is curved, its normal tilted by `r / R`, so the pressure
+//!   pushes the cap inward and the block outward by `p r / R`, and the relative approach has
+//!   a component along the tilted tangent; both are of relative order `a / R`, outside
+//!   Hertz's and Mindlin's linearised theory, and they slip where the pressure is small. With
+//!   the multipliers on the block the press slips nowhere at `a/h = 4` but at 3 nodes at the
+//!   edge at `a/h = 8`, and at `Q / (mu P) = 0.5` and `a/h = 4` the stick radius on the
+//!   trailing side is a node spacing smaller than on the leading side.
+//! * Multipliers on the curved cap, even at `R / a = 256`: the tangential tractions of the
+//!   stick nodes come out unlike on the two sides of the centre (at `a/h = 4`,
+//!   `Q / (mu P) = 0.088`, all stick: `|tx| / |tn|` 0.060 at `x = -3 h` and 0.036 at `+3 h`,
+//!   against 0.049 and 0.046 with them on the flat block), and at `Q / (mu P) = 0.5` the node
+//!   at `-3 h` slips while its twin at `+3 h` sticks; the stick nodes' tractions alternate
+//!   from node to node on either side (0.024, 0.080, 0.018, 0.26 at `x = 0, h, 2 h, 3 h` at
+//!   0.5, Mindlin's ratio 0.062, 0.066, 0.084, 0.155) and follow small changes of the
+//!   geometry strongly.
+//! * Multipliers on the block and `R / a =` [`RADIUS_OVER_CONTACT`] `= 256` (64 measures the
+//!   same): the press slips nowhere at `a/h = 4` and 8, and the leading and trailing sides
+//!   agree node for node.
 //!
 //! The numbers against Mindlin are `lab/tests/contact_mindlin3d.rs`'s.
 
@@ -49,8 +60,8 @@ use hycon::solid::{BrickFormulation, Isotropic};
 /// Young's modulus of both bodies.
 pub const YOUNGS: f64 = 1.0;
 
-/// `R / a` of [`HalfCap::new`]: flat enough that the press slips nowhere at `a/h = 4` (module
-/// docs).
+/// `R / a` of [`HalfCap::new`]: flat enough that the press slips nowhere at `a/h = 4` and 8
+/// (module docs).
 pub const RADIUS_OVER_CONTACT: f64 = 256.0;
 
 /// The half cap on its mirror block, its analysis built (module docs).
@@ -60,7 +71,7 @@ pub struct HalfCap {
     pub spec: CapOnBlock,
     /// Both bodies' mesh, contact faces and node sets.
     pub mesh: ContactMesh,
-    /// The contact analysis (one pair: the cap's bottom A on the block's top B).
+    /// The contact analysis (one pair: the block's top A under the cap's bottom B).
     pub analysis: ContactAnalysis,
     /// Poisson's ratio of both bodies.
     pub poisson: f64,
@@ -112,10 +123,8 @@ pub struct Pull {
     pub trailing: Ray,
     /// Along `+y`, across `Q`.
     pub across: Ray,
-    /// The smallest radius of a slip node (infinite without slip nodes).
-    pub slip_inner: f64,
-    /// The largest angle, in degrees, of a slip node's slip direction (of A relative to B)
-    /// to `+x`, the direction of `Q` and of Mindlin's slip (0 without slip nodes).
+    /// The largest angle, in degrees, of a slip node's slip direction to Mindlin's: the cap's
+    /// along `Q` (`+x`) relative to the block (0 without slip nodes).
     pub spread: f64,
     /// The increment's summary.
     pub info: IncrementInfo,
@@ -177,9 +186,10 @@ impl HalfCap {
         for &n in on_plane {
             model.fix(n, 1, 0.0);
         }
+        // the multipliers on the flat block's top (module docs)
         let pair = FacePair {
-            a: mesh.a_faces.clone(),
-            b: mesh.b_faces.clone(),
+            a: mesh.b_faces.clone(),
+            b: mesh.a_faces.clone(),
             friction: mu,
         };
         let analysis =
@@ -295,7 +305,8 @@ impl HalfCap {
 
     fn results(&self, info: IncrementInfo) -> Result<Pull> {
         let nodes = self.analysis.node_results(0)?;
-        let total = |c: usize| 2.0 * nodes.iter().map(|r| r.force.components()[c]).sum::<f64>();
+        // the contact force on the cap: minus that on the block (A)
+        let total = |c: usize| -2.0 * nodes.iter().map(|r| r.force.components()[c]).sum::<f64>();
         let normal = |r: &NodeResult| -r.frame.normal().dot(&r.force);
         let moment: f64 = (nodes.iter())
             .map(|r| {
@@ -309,18 +320,12 @@ impl HalfCap {
                 NodeState::Slip { direction } => {
                     let slip = r.frame.vector(0.0, direction.vector());
                     let [x, y, _] = [0, 1, 2].map(|i| slip.components()[i]);
-                    Some(y.atan2(x).abs().to_degrees())
+                    // A (the block) slips along -x relative to the cap
+                    Some(y.atan2(-x).abs().to_degrees())
                 }
                 _ => None,
             })
             .fold(0.0, f64::max);
-        let slip_inner = (nodes.iter())
-            .filter(|r| matches!(r.state, NodeState::Slip { .. }))
-            .map(|r| {
-                let [x, y, _] = self.at(r);
-                x.hypot(y)
-            })
-            .fold(f64::INFINITY, f64::min);
         Ok(Pull {
             load: total(2),
             tangential: -total(0),
@@ -329,7 +334,6 @@ impl HalfCap {
             leading: self.ray(&nodes, [1.0, 0.0]),
             trailing: self.ray(&nodes, [-1.0, 0.0]),
             across: self.ray(&nodes, [0.0, 1.0]),
-            slip_inner,
             spread,
             info,
         })
