@@ -11,6 +11,7 @@
 //!   cylinders stacked on the axis).
 //! * [`closed3d`]: the closed forms of the 3D contact validation (Hertz's sphere, its approach,
 //!   Cattaneo-Mindlin's partial slip of a sphere).
+//! * [`mindlin3d`]: Cattaneo-Mindlin's partial slip in 3D (the half cap on its mirror block).
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 //! * [`bench`](mod@bench): the measurements behind the performance figures of docs/performance.md.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
@@ -26,6 +27,7 @@ pub mod closed3d;
 pub mod examples;
 pub mod gmsh;
 pub mod hertz3d;
+pub mod mindlin3d;
 pub mod presses;
 pub mod report;
 pub mod scene;

@@ -21,6 +21,10 @@
 //! trailing side than on the leading one (at `a/h = 8`, 25 and 17 slip nodes), where
 //! Mindlin's annulus is symmetric. `Q / (mu P)` reaches 0.457 (0.447 at `a/h = 8`) for the
 //! displacement that gives 0.5 on half-spaces.
+//! The comparison with Mindlin is `contact_mindlin3d`'s: on mirror bodies (the block as big as
+//! the cap) the press still slips at the same 4 nodes, the cap's curvature `R / a = 16` (its
+//! tilted normal) moving its surface inward relative to the block's; at `R / a = 256`, with the
+//! multipliers on the flat block, it slips nowhere (`hycon_lab::mindlin3d`'s docs).
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeState};
 use hycon::solid::contact_meshes::{CapModel, CapOnBlock};

@@ -15,6 +15,7 @@ mod contact_friction3d;
 mod contact_hertz;
 mod contact_hertz3d;
 mod contact_host;
+mod contact_mindlin3d;
 mod contact_robustness;
 mod contact_settle;
 mod contact_sliding;
