@@ -110,8 +110,8 @@ pub use loads::LOAD_LIMIT;
 use loads::LoadSolve;
 use plate::{Border, Plate};
 pub use results::ConstraintRows;
-pub use solid::FacePair;
 use small_system::{Sparse, column, dot};
+pub use solid::FacePair;
 use surfaces::Surfaces;
 
 /// Equations per node of the bodies the plane and axisymmetric constructors

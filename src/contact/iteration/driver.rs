@@ -881,7 +881,7 @@ mod tests {
         .into();
         let too_long: Error = ContactError::BeyondSearchDistance {
             node: 3,
-            segment: [1, 2],
+            element: vec![1, 2],
             depth: 1.0,
             search_distance: 0.5,
         }
