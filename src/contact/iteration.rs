@@ -846,7 +846,6 @@ impl ContactAnalysis {
         let mut boundary = Boundary::new(
             dofs,
             bodies.positions().len(),
-            bodies.dim(),
             flexibility,
             pairs.iter().map(|p| p.a.len()),
         );

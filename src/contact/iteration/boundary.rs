@@ -36,8 +36,6 @@ pub(super) struct Boundary {
     pub(super) dofs: Vec<usize>,
     /// Position of each global dof in `dofs` (`None`: not a contact dof).
     pub(super) slot: Vec<Option<usize>>,
-    /// The bodies' equations per node.
-    pub(super) dim: usize,
     /// Seconds spent building `F` (see [`Timings::flexibility`](super::Timings::flexibility)).
     pub(super) flexibility_seconds: f64,
     /// Seconds spent in load solves (see [`Timings::load_solves`](super::Timings::load_solves)).
@@ -73,7 +71,6 @@ impl Boundary {
     pub(super) fn new(
         dofs: Vec<usize>,
         n: usize,
-        dim: usize,
         flexibility: Flexibility,
         a_nodes: impl Iterator<Item = usize>,
     ) -> Self {
@@ -93,7 +90,6 @@ impl Boundary {
             flexibility,
             dofs,
             slot,
-            dim,
             flexibility_seconds: 0.0,
             load_seconds: 0.0,
         }
@@ -105,26 +101,29 @@ impl Boundary {
         self.slot[d].expect("a dof of a contact node")
     }
 
-    /// Contact node `n`'s vector of `u` over the contact dofs (its dofs `dim n + c`, the
-    /// bodies' numbering of their positions and displacements).
-    pub(super) fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
-        let mut v = Vector::zero(self.dim);
+    /// Contact node `n`'s vector of `u` over the contact dofs, `dim` the bodies' equations per
+    /// node ([`Bodies::dim`]: its dofs are `dim n + c`, the bodies' numbering of their
+    /// positions and displacements).
+    pub(super) fn node_vector(&self, (n, dim): (usize, usize), uc: &[f64]) -> Vector {
+        let mut v = Vector::zero(dim);
         for (c, out) in v.components_mut().iter_mut().enumerate() {
-            *out = uc[self.contact_slot(self.dim * n + c)];
+            *out = uc[self.contact_slot(dim * n + c)];
         }
         v
     }
 
-    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
-    pub(super) fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
-        (coupling.iter()).fold(Vector::zero(self.dim), |acc, &(j, c)| {
-            acc.add_scaled(c, &self.node_vector(j, uc))
+    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs, `dim`
+    /// the bodies' equations per node.
+    pub(super) fn coupled(&self, (coupling, dim): (&[(usize, f64)], usize), uc: &[f64]) -> Vector {
+        (coupling.iter()).fold(Vector::zero(dim), |acc, &(j, c)| {
+            acc.add_scaled(c, &self.node_vector((j, dim), uc))
         })
     }
 
-    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
+    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d` (of the
+    /// bodies' dimension).
     pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
-        let (dim, d) = (self.dim, d.components());
+        let (dim, d) = (d.dim(), d.components());
         let mut row = Vec::with_capacity(coupling.len() * dim);
         for &(j, c) in coupling {
             for (i, &di) in d.iter().enumerate() {
@@ -1130,12 +1129,12 @@ impl Boundary {
     /// numerically positive definite.
     fn symmetric_factor(
         &mut self,
-        (x, pairs): (&[f64], &[ContactPair]),
+        (bodies, pairs): (&dyn Bodies, &[ContactPair]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Option<(Vec<usize>, Mat<f64>)> {
-        let order = self.factor_order((x, pairs), system, rows, symmetric);
+        let order = self.factor_order((bodies, pairs), system, rows, symmetric);
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
         let nf = &mut self.node_flexibility;
         let prefix = nf.factor.common_prefix(&keys);
@@ -1196,7 +1195,7 @@ impl Boundary {
     /// falls near the end.
     fn factor_order(
         &self,
-        (x, pairs): (&[f64], &[ContactPair]),
+        (bodies, pairs): (&dyn Bodies, &[ContactPair]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
@@ -1208,7 +1207,7 @@ impl Boundary {
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let dim = self.dim;
+        let (x, dim) = (bodies.positions(), bodies.dim());
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
             node(x, dim, pairs[p].a[k])
@@ -1315,8 +1314,8 @@ impl Boundary {
         // filling and summing its 2,900^2 entries in every iteration took 0.46 s)
         let factor = match &directions {
             Some((rows, _)) if block => {
-                let x = (bodies.positions(), &surfaces.pairs[..]);
-                self.symmetric_factor(x, system, rows, symmetric.clone())
+                let pairs = (&*bodies, &surfaces.pairs[..]);
+                self.symmetric_factor(pairs, system, rows, symmetric.clone())
             }
             _ => None,
         };

@@ -221,7 +221,7 @@ impl ContactAnalysis {
                 })
         };
         let along = |node: &ContactNode, d: Vector| {
-            let change = self.boundary.coupled(&node.coupling, uc);
+            let change = self.boundary.coupled((&node.coupling, self.dim()), uc);
             d.dot(&change) / node.covered_weight
         };
         let delta = active()

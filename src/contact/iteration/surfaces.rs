@@ -124,7 +124,7 @@ impl Surfaces {
             Kinematics::Small => {
                 for (surface, reference) in surfaces.iter_mut().zip(&self.reference) {
                     for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
-                        let change = dofs.coupled(&r.coupling, uc);
+                        let change = dofs.coupled((&r.coupling, bodies.dim()), uc);
                         node.gap = r.gap + change;
                         if r.covered_weight > 0.0 {
                             node.normal_gap = -r.frame.normal().dot(&node.gap) / r.covered_weight;
@@ -169,7 +169,7 @@ impl Surfaces {
                 .a
                 .iter()
                 .chain(&pair.b)
-                .map(|&n| boundary.node_vector(n, uc).norm())
+                .map(|&n| boundary.node_vector((n, bodies.dim()), uc).norm())
                 .fold(0.0f64, f64::max);
             if 2.0 * motion <= self.reach[p] {
                 continue;
