@@ -14,10 +14,9 @@
 //! `oracles` (`oracles.rs`); the tests compare the two.
 
 use super::loads::LoadSolve;
-use super::surfaces::Surfaces;
+use super::surfaces::{PairNodes, Surfaces};
 use super::{
-    Border, ContactPair, ContactSurface, DMatrix, Kinematics, Mat, Result, Sparse, column, dot,
-    small_system,
+    Border, ContactSurface, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
 };
 use crate::contact::bodies::{Bodies, Images};
 use crate::contact::space::{Vector, node};
@@ -1129,7 +1128,7 @@ impl Boundary {
     /// numerically positive definite.
     fn symmetric_factor(
         &mut self,
-        (bodies, pairs): (&dyn Bodies, &[ContactPair]),
+        (bodies, pairs): (&dyn Bodies, &[PairNodes]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
@@ -1195,7 +1194,7 @@ impl Boundary {
     /// falls near the end.
     fn factor_order(
         &self,
-        (bodies, pairs): (&dyn Bodies, &[ContactPair]),
+        (bodies, pairs): (&dyn Bodies, &[PairNodes]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
