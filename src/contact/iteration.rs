@@ -107,7 +107,6 @@ use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use driver::{Converged, Driver};
 pub use loads::LOAD_LIMIT;
-use loads::LoadSolve;
 use plate::{Border, Plate};
 pub use results::ConstraintRows;
 use small_system::{Sparse, column, dot};

@@ -147,6 +147,28 @@ impl Boundary {
     pub(super) fn forget_directions(&mut self) {
         self.node_flexibility.forget();
     }
+
+    /// What an increment changes of the boundary algebra, as it is (the cutback's snapshot):
+    /// the kept load solves (shared: no solve is copied) and the converged contact
+    /// displacement. (`F`, the node flexibility and the small system's storage are caches of
+    /// `K`'s responses, true of any state.)
+    pub(super) fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            loads: self.loads.clone(),
+            qc: self.qc.clone(),
+        }
+    }
+
+    /// Put back what [`snapshot`](Self::snapshot) took.
+    pub(super) fn restore(&mut self, s: Snapshot) {
+        (self.loads, self.qc) = (s.loads, s.qc);
+    }
+}
+
+/// What an increment changes of the [`Boundary`] (see [`Boundary::snapshot`]).
+pub(super) struct Snapshot {
+    loads: Vec<std::sync::Arc<LoadSolve>>,
+    qc: Vec<f64>,
 }
 
 /// Directions whose images one forward substitution computes (neighbouring nodes' directions:
