@@ -717,7 +717,7 @@ impl ContactAnalysis {
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = ModelBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
         let geometries = plane_geometries(&pairs, measures);
-        let (nodes, laws) = plane_pairs(&pairs)?;
+        let (nodes, laws) = (plane_nodes(&pairs), plane_laws(&pairs)?);
         Self::setup(
             Box::new(bodies),
             nodes,
@@ -782,7 +782,7 @@ impl ContactAnalysis {
         check_host_radii(&pairs, &sections, &bodies)?;
         let dofs = (0..PLANE_DIM * n_nodes).collect();
         let geometries = plane_geometries(&pairs, measures);
-        let (pairs, laws) = plane_pairs(&pairs)?;
+        let (pairs, laws) = (plane_nodes(&pairs), plane_laws(&pairs)?);
         let mut analysis = Self::setup(
             Box::new(bodies),
             pairs,
@@ -1056,23 +1056,23 @@ fn plane_geometries(
         .collect()
 }
 
-/// The nodes and the friction law of every plane or axisymmetric pair, as the iteration reads
-/// them.
-///
-/// # Errors
-/// [`Error::InvalidInput`] for a bad friction coefficient (the constructors' checks refuse it
-/// first).
-fn plane_pairs(pairs: &[ContactPair]) -> Result<(Vec<PairNodes>, Vec<Box<dyn FrictionLaw>>)> {
-    let nodes = (pairs.iter())
+/// The nodes of every plane or axisymmetric pair, as the iteration reads them: its polylines.
+fn plane_nodes(pairs: &[ContactPair]) -> Vec<PairNodes> {
+    (pairs.iter())
         .map(|p| PairNodes {
             a: p.a.clone(),
             b: p.b.clone(),
         })
-        .collect();
-    let laws = (pairs.iter())
-        .map(ContactPair::friction_law)
-        .collect::<Result<_>>()?;
-    Ok((nodes, laws))
+        .collect()
+}
+
+/// The friction law of every plane or axisymmetric pair ([`ContactPair::friction_law`]).
+///
+/// # Errors
+/// [`Error::InvalidInput`] for a bad friction coefficient (the constructors' checks refuse it
+/// first).
+fn plane_laws(pairs: &[ContactPair]) -> Result<Vec<Box<dyn FrictionLaw>>> {
+    pairs.iter().map(ContactPair::friction_law).collect()
 }
 
 /// What tells the side of body A of a pair beyond the geometry of its polylines.
