@@ -234,51 +234,51 @@ pub enum ContactError {
         relative: f64,
     },
     /// A node penetrates the opposite surface where the pairing does not see it: a B node
-    /// deeper than the search distance below an open A segment, or an A node with no B segment
-    /// within the search distance (one surface pushed through the other).
+    /// deeper than the search distance below an open A element, or an A node with no B
+    /// element within the search distance (one surface pushed through the other).
     #[error(
-        "node {node} penetrates the opposite surface's segment {} -> {} by {depth:.3e}, beyond \
-         what the pairing sees (search distance {search_distance:.3e}): reduce the load step \
-         or widen search_distance",
-        segment[0],
-        segment[1]
+        "node {node} penetrates the opposite surface's {} by {depth:.3e}, beyond what the \
+         pairing sees (search distance {search_distance:.3e}): reduce the load step or widen \
+         search_distance",
+        element_name(element)
     )]
     BeyondSearchDistance {
         /// The penetrating node (of A or of B).
         node: usize,
-        /// The segment of the opposite surface it penetrates.
-        segment: [usize; 2],
+        /// The nodes of the opposite surface's element it penetrates: a segment's 2 (plane
+        /// and axisymmetric), a face's 4 (3D).
+        element: Vec<usize>,
         /// The penetration (a length, positive).
         depth: f64,
         /// The search distance it exceeds.
         search_distance: f64,
     },
     /// Under finite kinematics an iterate moves the contact nodes so far that double precision
-    /// no longer resolves the surfaces at their current positions: a segment's length, or a
+    /// no longer resolves the surfaces at their current positions: an element's size, or a
     /// node's distance to the opposite surface, is below the round-off of the coordinates
     /// (a press of `1e16` body sizes in one increment, say). The geometry cannot be evaluated
     /// there, so no contact state can be judged: the surfaces are beyond what the pairing
     /// sees.
     #[error(
         "increment {increment}: node {node} moves {motion:.3e}, beyond what the pairing sees: \
-         at that distance double precision does not resolve the contact surfaces (segment \
-         {length:.3e} long): reduce the load step"
+         at that distance double precision does not resolve the contact surfaces (an element \
+         {length:.3e} in size): reduce the load step"
     )]
     Unresolved {
         /// Increment number (1-based).
         increment: usize,
-        /// A node of the segment (the caller's id).
+        /// The element's node that moved most (the caller's id).
         node: usize,
         /// The node's displacement in the increment (a length).
         motion: f64,
-        /// The segment's reference length.
+        /// The element's size in the reference configuration (a segment's length).
         length: f64,
     },
     /// An active A node's support is not fully covered by the opposite surface (an integral
     /// over a hole would be wrong).
     #[error(
         "contact node {node} is active but {:.1e} of its support is not covered by the opposite \
-         surface: extend the B polyline",
+         surface: extend the B surface",
         1.0 - coverage
     )]
     Uncovered {
@@ -323,6 +323,17 @@ pub enum ContactError {
 impl From<ContactError> for Error {
     fn from(e: ContactError) -> Self {
         Error::Contact(e)
+    }
+}
+
+/// A contact element named by its nodes: a segment `a -> b` (2 nodes), a face `(a, b, c, d)`.
+fn element_name(nodes: &[usize]) -> String {
+    match nodes {
+        [a, b] => format!("segment {a} -> {b}"),
+        _ => {
+            let ids: Vec<String> = nodes.iter().map(usize::to_string).collect();
+            format!("face ({})", ids.join(", "))
+        }
     }
 }
 

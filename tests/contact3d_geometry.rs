@@ -585,6 +585,7 @@ mod face_geometry {
 mod solid_analysis {
     use hycon::contact::faces::SymmetryPlane;
     use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeState};
+    use hycon::error::{ContactError, Error};
     use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
     use hycon::solid::geometry::FACES;
     use hycon::solid::model::SolidModel;
@@ -685,6 +686,70 @@ mod solid_analysis {
                 assert!(closing.abs() < 1e-12 * d * r.weight, "{closing} {r:?}");
             }
         }
+    }
+
+    /// A B node deeper than the search distance under an open A face fails the increment,
+    /// naming the node and the face's 4 nodes: the stack with the block's bottom lifted by
+    /// `g0 = 0.04`
+    /// and B's top node at `(1/6, 1/6)` raised by `0.12`, `0.08` into A's face over
+    /// `[0, 0.5]^2`, beyond the reach `0.1` mean A faces `= 0.05` (no load moves anything).
+    /// The bump raises B under A's nearest node `(0, 0)` by a quarter of it, `0.03`, which
+    /// leaves that node `0.01` open: every node of the face is open.
+    #[test]
+    fn a_b_node_beyond_the_search_distance_names_the_face() {
+        let mut c = stack();
+        let (g0, bump) = (0.04, 0.12);
+        for x in c.mesh.nodes[..c.a_nodes].iter_mut().filter(|x| x[2] == 0.0) {
+            x[2] = g0;
+        }
+        let b_top = |x: f64, y: f64| {
+            let at = |n: usize| {
+                let p = c.mesh.nodes[n];
+                (p[0] - x).abs() < 1e-12 && (p[1] - y).abs() < 1e-12 && p[2] == 0.0
+            };
+            (c.a_nodes..c.mesh.n_nodes()).find(|&n| at(n)).unwrap()
+        };
+        let raised = b_top(1.0 / 6.0, 1.0 / 6.0);
+        c.mesh.nodes[raised][2] = bump;
+        let under = |f: &[usize; 4]| {
+            f.iter().all(|&n| {
+                let p = c.mesh.nodes[n];
+                p[0] >= 0.0 && p[1] >= 0.0
+            })
+        };
+        let face = *c.a_faces.iter().find(|f| under(f)).unwrap();
+        let options = ContactOptions {
+            search_distance: 0.1,
+            ..ContactOptions::default()
+        };
+        let mut analysis =
+            ContactAnalysis::solid(model(&c), vec![pair(&c, 0.0)], &[], options).unwrap();
+        let n = 3 * c.mesh.n_nodes();
+        let e = analysis
+            .increment(&vec![0.0; n], &vec![0.0; n])
+            .unwrap_err();
+        let message = e.to_string();
+        let Error::Contact(ContactError::BeyondSearchDistance {
+            node,
+            element,
+            depth,
+            search_distance,
+        }) = e
+        else {
+            panic!("{message}");
+        };
+        assert_eq!(node, raised, "{message}");
+        let mut named = element.clone();
+        named.sort_unstable();
+        let mut expected = face.to_vec();
+        expected.sort_unstable();
+        assert_eq!(named, expected, "{message}");
+        assert!((depth - (bump - g0)).abs() < 1e-12, "{message}");
+        assert!((search_distance - 0.05).abs() < 1e-12, "{message}");
+        let ids: Vec<String> = element.iter().map(usize::to_string).collect();
+        let face = format!("face ({})", ids.join(", "));
+        assert!(message.contains(&face), "{message}");
+        assert!(analysis.records().is_empty());
     }
 
     /// The constructor's checks, each named: friction, an empty side, a node out of range, a

@@ -1625,9 +1625,9 @@ fn failure(scene: &Scene, e: &hycon::Error) -> String {
         | C::ConditionViolated { node, .. }
         | C::Unresolved { node, .. }
         | C::SmallSlidingExceeded { node, .. } => tag(node),
-        C::BeyondSearchDistance { node, segment, .. } => {
+        C::BeyondSearchDistance { node, element, .. } => {
             tag(node);
-            segment.iter_mut().for_each(tag);
+            element.iter_mut().for_each(tag);
         }
         _ => {}
     }

@@ -107,12 +107,11 @@ use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use driver::{Converged, Driver};
 pub use loads::LOAD_LIMIT;
-use loads::LoadSolve;
 use plate::{Border, Plate};
 pub use results::ConstraintRows;
 use small_system::{Sparse, column, dot};
 pub use solid::FacePair;
-use surfaces::Surfaces;
+use surfaces::{PairNodes, Surfaces};
 
 /// Equations per node of the bodies the plane and axisymmetric constructors
 /// ([`ContactAnalysis::new`], [`ContactAnalysis::host`]) build.
@@ -120,6 +119,8 @@ const PLANE_DIM: usize = 2;
 
 /// One contact pair: the multiplier-side polyline A and the opposite polyline B (node ids, each
 /// with its body on the left), and the Coulomb friction coefficient between them.
+/// The input of the plane and axisymmetric constructors ([`ContactAnalysis::new`],
+/// [`ContactAnalysis::host`]); a 3D analysis takes [`FacePair`]s.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactPair {
     /// Multiplier-side boundary nodes (body A on the left of each segment).
@@ -716,7 +717,16 @@ impl ContactAnalysis {
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = ModelBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
         let geometries = plane_geometries(&pairs, measures);
-        Self::setup(Box::new(bodies), pairs, geometries, dofs, options, None)
+        let (nodes, laws) = (plane_nodes(&pairs), plane_laws(&pairs)?);
+        Self::setup(
+            Box::new(bodies),
+            nodes,
+            laws,
+            geometries,
+            dofs,
+            options,
+            None,
+        )
     }
 
     /// A contact analysis of a host's system: its contact nodes (ids of its numbering, which
@@ -772,9 +782,11 @@ impl ContactAnalysis {
         check_host_radii(&pairs, &sections, &bodies)?;
         let dofs = (0..PLANE_DIM * n_nodes).collect();
         let geometries = plane_geometries(&pairs, measures);
+        let (pairs, laws) = (plane_nodes(&pairs), plane_laws(&pairs)?);
         let mut analysis = Self::setup(
             Box::new(bodies),
             pairs,
+            laws,
             geometries,
             dofs,
             options,
@@ -784,13 +796,16 @@ impl ContactAnalysis {
         Ok(analysis)
     }
 
-    /// The common part of the constructors: slots, `F`, node data. `geometries`: one per pair,
+    /// The common part of the constructors: slots, `F`, node data. `pairs`, `laws` and
+    /// `geometries`: the nodes, the friction law and the geometry of each pair, built by each
+    /// constructor from its own pair type; `geometries`
     /// its measure checked by the constructors (a model's come from its validated materials, a
     /// host's are checked before its stiffness is factored). `a_inside`: a host's points inside body A per
     /// pair (`None` for a model, whose element edges tell the sides).
     fn setup(
         mut bodies: Box<dyn Bodies>,
-        pairs: Vec<ContactPair>,
+        pairs: Vec<PairNodes>,
+        laws: Vec<Box<dyn FrictionLaw>>,
         mut geometries: Vec<Box<dyn ContactGeometry>>,
         dofs: Vec<usize>,
         options: ContactOptions,
@@ -828,10 +843,6 @@ impl ContactAnalysis {
             check_facing(&**geometry, bodies.as_ref(), options.search_distance, side)
                 .map_err(|e| in_pair(i, e))?;
         }
-        let laws = pairs
-            .iter()
-            .map(ContactPair::friction_law)
-            .collect::<Result<_>>()?;
         let nodes = reference
             .iter()
             .map(|surface| {
@@ -846,7 +857,6 @@ impl ContactAnalysis {
         let mut boundary = Boundary::new(
             dofs,
             bodies.positions().len(),
-            bodies.dim(),
             flexibility,
             pairs.iter().map(|p| p.a.len()),
         );
@@ -1044,6 +1054,25 @@ fn plane_geometries(
             Box::new(PlaneGeometry::new(p.a.clone(), p.b.clone(), m)) as Box<dyn ContactGeometry>
         })
         .collect()
+}
+
+/// The nodes of every plane or axisymmetric pair, as the iteration reads them: its polylines.
+fn plane_nodes(pairs: &[ContactPair]) -> Vec<PairNodes> {
+    (pairs.iter())
+        .map(|p| PairNodes {
+            a: p.a.clone(),
+            b: p.b.clone(),
+        })
+        .collect()
+}
+
+/// The friction law of every plane or axisymmetric pair ([`ContactPair::friction_law`]).
+///
+/// # Errors
+/// [`Error::InvalidInput`] for a bad friction coefficient (the constructors' checks refuse it
+/// first).
+fn plane_laws(pairs: &[ContactPair]) -> Result<Vec<Box<dyn FrictionLaw>>> {
+    pairs.iter().map(ContactPair::friction_law).collect()
 }
 
 /// What tells the side of body A of a pair beyond the geometry of its polylines.

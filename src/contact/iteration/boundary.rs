@@ -14,10 +14,9 @@
 //! `oracles` (`oracles.rs`); the tests compare the two.
 
 use super::loads::LoadSolve;
-use super::surfaces::Surfaces;
+use super::surfaces::{PairNodes, Surfaces};
 use super::{
-    Border, ContactPair, ContactSurface, DMatrix, Kinematics, Mat, Result, Sparse, column, dot,
-    small_system,
+    Border, ContactSurface, DMatrix, Kinematics, Mat, Result, Sparse, column, dot, small_system,
 };
 use crate::contact::bodies::{Bodies, Images};
 use crate::contact::space::{Vector, node};
@@ -36,8 +35,6 @@ pub(super) struct Boundary {
     pub(super) dofs: Vec<usize>,
     /// Position of each global dof in `dofs` (`None`: not a contact dof).
     pub(super) slot: Vec<Option<usize>>,
-    /// The bodies' equations per node.
-    pub(super) dim: usize,
     /// Seconds spent building `F` (see [`Timings::flexibility`](super::Timings::flexibility)).
     pub(super) flexibility_seconds: f64,
     /// Seconds spent in load solves (see [`Timings::load_solves`](super::Timings::load_solves)).
@@ -73,7 +70,6 @@ impl Boundary {
     pub(super) fn new(
         dofs: Vec<usize>,
         n: usize,
-        dim: usize,
         flexibility: Flexibility,
         a_nodes: impl Iterator<Item = usize>,
     ) -> Self {
@@ -93,7 +89,6 @@ impl Boundary {
             flexibility,
             dofs,
             slot,
-            dim,
             flexibility_seconds: 0.0,
             load_seconds: 0.0,
         }
@@ -105,26 +100,29 @@ impl Boundary {
         self.slot[d].expect("a dof of a contact node")
     }
 
-    /// Contact node `n`'s vector of `u` over the contact dofs (its dofs `dim n + c`, the
-    /// bodies' numbering of their positions and displacements).
-    pub(super) fn node_vector(&self, n: usize, uc: &[f64]) -> Vector {
-        let mut v = Vector::zero(self.dim);
+    /// Contact node `n`'s vector of `u` over the contact dofs, `dim` the bodies' equations per
+    /// node ([`Bodies::dim`]: its dofs are `dim n + c`, the bodies' numbering of their
+    /// positions and displacements).
+    pub(super) fn node_vector(&self, (n, dim): (usize, usize), uc: &[f64]) -> Vector {
+        let mut v = Vector::zero(dim);
         for (c, out) in v.components_mut().iter_mut().enumerate() {
-            *out = uc[self.contact_slot(self.dim * n + c)];
+            *out = uc[self.contact_slot(dim * n + c)];
         }
         v
     }
 
-    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs.
-    pub(super) fn coupled(&self, coupling: &[(usize, f64)], uc: &[f64]) -> Vector {
-        (coupling.iter()).fold(Vector::zero(self.dim), |acc, &(j, c)| {
-            acc.add_scaled(c, &self.node_vector(j, uc))
+    /// `sum_j c_kj u_j` for a coupling row over node ids and `u` over the contact dofs, `dim`
+    /// the bodies' equations per node.
+    pub(super) fn coupled(&self, (coupling, dim): (&[(usize, f64)], usize), uc: &[f64]) -> Vector {
+        (coupling.iter()).fold(Vector::zero(dim), |acc, &(j, c)| {
+            acc.add_scaled(c, &self.node_vector((j, dim), uc))
         })
     }
 
-    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d`.
+    /// Rows over the contact dofs of node `k`: `d . sum_j c_kj u_j` for direction `d` (of the
+    /// bodies' dimension).
     pub(super) fn directed(&self, coupling: &[(usize, f64)], d: &Vector) -> Sparse {
-        let (dim, d) = (self.dim, d.components());
+        let (dim, d) = (d.dim(), d.components());
         let mut row = Vec::with_capacity(coupling.len() * dim);
         for &(j, c) in coupling {
             for (i, &di) in d.iter().enumerate() {
@@ -149,6 +147,28 @@ impl Boundary {
     pub(super) fn forget_directions(&mut self) {
         self.node_flexibility.forget();
     }
+
+    /// What an increment changes of the boundary algebra, as it is (the cutback's snapshot):
+    /// the kept load solves (shared: no solve is copied) and the converged contact
+    /// displacement. (`F`, the node flexibility and the small system's storage are caches of
+    /// `K`'s responses, true of any state.)
+    pub(super) fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            loads: self.loads.clone(),
+            qc: self.qc.clone(),
+        }
+    }
+
+    /// Put back what [`snapshot`](Self::snapshot) took.
+    pub(super) fn restore(&mut self, s: Snapshot) {
+        (self.loads, self.qc) = (s.loads, s.qc);
+    }
+}
+
+/// What an increment changes of the [`Boundary`] (see [`Boundary::snapshot`]).
+pub(super) struct Snapshot {
+    loads: Vec<std::sync::Arc<LoadSolve>>,
+    qc: Vec<f64>,
 }
 
 /// Directions whose images one forward substitution computes (neighbouring nodes' directions:
@@ -1130,12 +1150,12 @@ impl Boundary {
     /// numerically positive definite.
     fn symmetric_factor(
         &mut self,
-        (x, pairs): (&[f64], &[ContactPair]),
+        (bodies, pairs): (&dyn Bodies, &[PairNodes]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
     ) -> Option<(Vec<usize>, Mat<f64>)> {
-        let order = self.factor_order((x, pairs), system, rows, symmetric);
+        let order = self.factor_order((bodies, pairs), system, rows, symmetric);
         let keys: Vec<usize> = order.iter().map(|&i| rows[i]).collect();
         let nf = &mut self.node_flexibility;
         let prefix = nf.factor.common_prefix(&keys);
@@ -1196,7 +1216,7 @@ impl Boundary {
     /// falls near the end.
     fn factor_order(
         &self,
-        (x, pairs): (&[f64], &[ContactPair]),
+        (bodies, pairs): (&dyn Bodies, &[PairNodes]),
         system: &SmallSystem,
         rows: &[usize],
         symmetric: Vec<usize>,
@@ -1208,7 +1228,7 @@ impl Boundary {
             .into_iter()
             .partition(|&i| rank[rows[i]] != usize::MAX);
         old.sort_unstable_by_key(|&i| rank[rows[i]]);
-        let dim = self.dim;
+        let (x, dim) = (bodies.positions(), bodies.dim());
         let position = |i: usize| {
             let (p, k, _) = system.unknowns[i];
             node(x, dim, pairs[p].a[k])
@@ -1315,8 +1335,8 @@ impl Boundary {
         // filling and summing its 2,900^2 entries in every iteration took 0.46 s)
         let factor = match &directions {
             Some((rows, _)) if block => {
-                let x = (bodies.positions(), &surfaces.pairs[..]);
-                self.symmetric_factor(x, system, rows, symmetric.clone())
+                let pairs = (&*bodies, &surfaces.pairs[..]);
+                self.symmetric_factor(pairs, system, rows, symmetric.clone())
             }
             _ => None,
         };

@@ -221,7 +221,7 @@ impl ContactAnalysis {
                 })
         };
         let along = |node: &ContactNode, d: Vector| {
-            let change = self.boundary.coupled(&node.coupling, uc);
+            let change = self.boundary.coupled((&node.coupling, self.dim()), uc);
             d.dot(&change) / node.covered_weight
         };
         let delta = active()
@@ -301,10 +301,9 @@ impl ContactAnalysis {
                 });
             for (k, _) in lost {
                 if let Some((element, depth)) = self.surfaces.geometries[p].behind(k, &x, limit) {
-                    let external = |i: usize| self.bodies.external(element[i]);
                     return Err(ContactError::BeyondSearchDistance {
                         node: self.bodies.external(pair.a[k]),
-                        segment: [external(0), external(1)],
+                        element: element.iter().map(|&n| self.bodies.external(n)).collect(),
                         depth,
                         search_distance: self.search_reach(p, xg, uc, startc),
                     }
@@ -503,10 +502,11 @@ impl ContactAnalysis {
             for d in inside {
                 let g = d.distance;
                 if g < -tolerances.gap && g <= -reach {
-                    let w = [a[d.element[0]], a[d.element[1]]];
                     return Err(ContactError::BeyondSearchDistance {
                         node: self.bodies.external(d.node),
-                        segment: [self.bodies.external(w[0]), self.bodies.external(w[1])],
+                        element: (d.element.iter())
+                            .map(|&k| self.bodies.external(a[k]))
+                            .collect(),
                         depth: -g,
                         search_distance: reach,
                     }

@@ -37,14 +37,14 @@
 //! and the error returned: the analysis is exactly as before the call.
 
 use super::active_set::{ActiveSet, BNodes, Commit, Convergence, Iterate, Locks, count};
-use super::boundary::Solution;
+use super::boundary::{self, Solution};
 use super::checks::{self, change_ratio};
 use super::plate::{Border, Controls, Plate, plate_force};
 use super::small_system::SmallSystem;
 use super::surfaces::Pairing;
 use super::{
     CONDITION_LIMIT, ContactAnalysis, ContactSurface, IncrementInfo, IterationRecord, Kinematics,
-    LoadSolve, Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
+    Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
 };
 use crate::contact::space::Vector;
 use crate::error::{ContactError, Error, Result};
@@ -254,19 +254,19 @@ impl Failure {
 }
 
 /// What a failed try may change in the analysis besides timings and the caches of `K`'s
-/// responses (the load solves kept, and the pairing when it is widened), taken before the
-/// first try: no vector is copied (the load solves are shared, and the displacement field is
-/// moved out, nothing reading it during an increment).
+/// responses, and what a converged sub-increment changes of the boundary algebra, taken before
+/// the first try: each part's own snapshot (the boundary algebra's load solves kept and
+/// converged contact displacement, the pairing, widened by a try), and the displacement field,
+/// moved out (nothing reads it during an increment).
 struct Before {
-    loads: Vec<std::sync::Arc<LoadSolve>>,
+    boundary: boundary::Snapshot,
     pairing: Pairing,
     field: OnceLock<(Vec<f64>, f64)>,
 }
 
 /// The rest of the state a converged sub-increment changes, taken when the first try failed
-/// (which left it as it was).
+/// (which left it as it was): the node data, the driver's, the plate.
 struct Converging {
-    qc: Vec<f64>,
     nodes: Vec<Vec<NodeData>>,
     driver: Reached,
     plate: Option<Plate>,
@@ -308,7 +308,7 @@ impl Path<'_> {
 impl ContactAnalysis {
     fn before(&mut self) -> Before {
         Before {
-            loads: self.boundary.loads.clone(),
+            boundary: self.boundary.snapshot(),
             pairing: self.surfaces.pairing(),
             field: std::mem::take(&mut self.driver.field),
         }
@@ -316,7 +316,6 @@ impl ContactAnalysis {
 
     fn converging(&self) -> Converging {
         Converging {
-            qc: self.boundary.qc.clone(),
             nodes: self.nodes.clone(),
             driver: self.driver.reached(),
             plate: self.plate.clone(),
@@ -330,7 +329,7 @@ impl ContactAnalysis {
         if self.surfaces.restore_pairing(b.pairing) {
             self.boundary.forget_directions();
         }
-        self.boundary.loads = b.loads;
+        self.boundary.restore(b.boundary);
         self.driver.restore_field(b.field);
     }
 
@@ -342,7 +341,6 @@ impl ContactAnalysis {
     }
 
     fn restore_converging(&mut self, c: Converging) {
-        self.boundary.qc = c.qc;
         self.nodes = c.nodes;
         self.driver.restore(c.driver);
         self.plate = c.plate;
@@ -881,7 +879,7 @@ mod tests {
         .into();
         let too_long: Error = ContactError::BeyondSearchDistance {
             node: 3,
-            segment: [1, 2],
+            element: vec![1, 2],
             depth: 1.0,
             search_distance: 0.5,
         }

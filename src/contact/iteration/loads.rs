@@ -120,13 +120,13 @@ impl Boundary {
             // the host solved for its load: the image is u0 itself
             return Ok(Solved {
                 u0c,
-                plate_force: Vector::zero(self.dim),
+                plate_force: Vector::zero(bodies.dim()),
                 load,
             });
         }
         if let Some(c) = combination(&load, &self.loads) {
             let mut u0c = vec![0.0; self.dofs.len()];
-            let mut force = Vector::zero(self.dim);
+            let mut force = Vector::zero(bodies.dim());
             for (ci, cached) in c.iter().zip(&self.loads) {
                 for (u, v) in u0c.iter_mut().zip(&cached.u0c) {
                     *u += ci * v;

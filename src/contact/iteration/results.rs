@@ -2,6 +2,7 @@
 //! forces and pressures on the B side, element stresses of body A), and the contact-element
 //! matrices for hosts that assemble the mixed system themselves.
 
+use super::surfaces::PairNodes;
 use super::{BNodeResult, ContactAnalysis, NodeResult};
 use crate::contact::geometry::ContactSurface;
 use crate::contact::space::{self, Vector, node};
@@ -23,13 +24,13 @@ pub struct ConstraintRows {
 }
 
 impl ContactAnalysis {
-    /// Node counts of the A and B polylines of pair `p`.
+    /// Node counts of the A and B sides of pair `p` (polylines in the plane, face sets in 3D).
     pub fn pair_size(&self, p: usize) -> Result<(usize, usize)> {
         self.pair(p).map(|pair| (pair.a.len(), pair.b.len()))
     }
 
     /// Check a pair index.
-    fn pair(&self, p: usize) -> Result<&super::ContactPair> {
+    fn pair(&self, p: usize) -> Result<&PairNodes> {
         self.surfaces.pairs.get(p).ok_or_else(|| {
             Error::InvalidInput(format!(
                 "contact pair {p} does not exist ({} pairs)",

@@ -8,10 +8,11 @@
 //! and two tangents (zero where a symmetry plane drops one): a stick node has two tangent rows,
 //! a slip node the column `n + mu (d_1 s_1 + d_2 s_2)`.
 
-use super::{ContactAnalysis, ContactOptions, ContactPair, Kinematics, in_pair};
+use super::surfaces::PairNodes;
+use super::{ContactAnalysis, ContactOptions, Kinematics, in_pair};
 use crate::contact::bodies::SolidBodies;
 use crate::contact::faces::{FaceGeometry, SymmetryPlane};
-use crate::contact::friction::Coulomb;
+use crate::contact::friction::{Coulomb, FrictionLaw};
 use crate::contact::geometry::ContactGeometry;
 use crate::error::{Error, Result};
 use crate::solid::geometry::FACES;
@@ -154,13 +155,15 @@ impl ContactAnalysis {
                     .map_err(|e| in_pair(i, e))
             })
             .collect::<Result<Vec<_>>>()?;
-        let node_pairs: Vec<ContactPair> = (pairs.iter().zip(&geometries))
-            .map(|(p, g)| ContactPair {
+        let node_pairs: Vec<PairNodes> = (geometries.iter())
+            .map(|g| PairNodes {
                 a: g.a_nodes().to_vec(),
                 b: g.b_nodes().to_vec(),
-                friction: p.friction,
             })
             .collect();
+        let laws = (pairs.iter())
+            .map(|p| Ok(Box::new(Coulomb::new(p.friction)?) as Box<dyn FrictionLaw>))
+            .collect::<Result<_>>()?;
         let mut dofs: Vec<usize> = (node_pairs.iter())
             .flat_map(|p| p.a.iter().chain(&p.b))
             .flat_map(|&n| (0..SOLID_DIM).map(move |c| SOLID_DIM * n + c))
@@ -175,6 +178,7 @@ impl ContactAnalysis {
         Self::setup(
             Box::new(bodies),
             node_pairs,
+            laws,
             geometries,
             dofs,
             options,

@@ -1,20 +1,33 @@
 //! The contact geometry of the analysis: the pairs with their geometries and friction laws,
 //! the surfaces in the reference and the converged configurations, and the pairing's reach.
 
+use super::Kinematics;
 use super::boundary::Boundary;
 use super::checks::POSITION_ROUND_OFF;
-use super::{ContactPair, Kinematics};
 use crate::contact::bodies::Bodies;
 use crate::contact::friction::{Coulomb, FrictionLaw};
 use crate::contact::geometry::{ContactGeometry, ContactSurface};
 use crate::error::{ContactError, Result};
 
+/// The nodes of one pair, as the iteration reads them: ids in the iteration's numbering (see
+/// [`Bodies::local`]), A's in the order of its geometry's contact nodes
+/// ([`ContactGeometry::a_nodes`]), and B's. Each constructor builds them from its own pair
+/// type (a plane [`ContactPair`](super::ContactPair)'s polylines, a
+/// [`FacePair`](super::FacePair)'s face nodes).
+///
+/// [`Bodies::local`]: crate::contact::bodies::Bodies::local
+#[derive(Debug)]
+pub(super) struct PairNodes {
+    /// The multiplier side's nodes.
+    pub(super) a: Vec<usize>,
+    /// The opposite side's nodes.
+    pub(super) b: Vec<usize>,
+}
+
 /// The contact geometry part of the analysis.
 pub(super) struct Surfaces {
-    /// The pairs, node ids in the iteration's numbering (see [`Bodies::local`]).
-    ///
-    /// [`Bodies::local`]: crate::contact::bodies::Bodies::local
-    pub(super) pairs: Vec<ContactPair>,
+    /// The nodes of each pair.
+    pub(super) pairs: Vec<PairNodes>,
     /// The geometry of each pair (its A side's surface measure with it, all of one kind).
     pub(super) geometries: Vec<Box<dyn ContactGeometry>>,
     /// The friction law of each pair: all the iteration knows of its friction.
@@ -124,7 +137,7 @@ impl Surfaces {
             Kinematics::Small => {
                 for (surface, reference) in surfaces.iter_mut().zip(&self.reference) {
                     for (node, r) in surface.nodes.iter_mut().zip(&reference.nodes) {
-                        let change = dofs.coupled(&r.coupling, uc);
+                        let change = dofs.coupled((&r.coupling, bodies.dim()), uc);
                         node.gap = r.gap + change;
                         if r.covered_weight > 0.0 {
                             node.normal_gap = -r.frame.normal().dot(&node.gap) / r.covered_weight;
@@ -169,7 +182,7 @@ impl Surfaces {
                 .a
                 .iter()
                 .chain(&pair.b)
-                .map(|&n| boundary.node_vector(n, uc).norm())
+                .map(|&n| boundary.node_vector((n, bodies.dim()), uc).norm())
                 .fold(0.0f64, f64::max);
             if 2.0 * motion <= self.reach[p] {
                 continue;
