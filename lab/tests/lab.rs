@@ -17,6 +17,7 @@ mod contact_hertz3d;
 mod contact_host;
 mod contact_robustness;
 mod contact_settle;
+mod contact_slide3d;
 mod contact_sliding;
 mod guard;
 mod linear;

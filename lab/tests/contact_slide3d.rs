@@ -1,0 +1,86 @@
+//! Sliding at an angle in 3D (issue #43): a block dragged over a flat at 0, 15, 30, 45, 60 and
+//! 90 degrees to the flat's mesh lines (`hycon_lab::slide3d`, the block turned with the drag),
+//! `mu = 0.3`, small kinematics: pressed, then dragged by `0.1` (100 times the press) in each
+//! of four increments. From the first drag increment on every A node slips; from the second
+//! (steady sliding: the elastic state no longer changes) the total friction force opposes the
+//! drag within `1e-6` rad and its magnitude is `mu P` to `1e-8`, at every angle. A pyramid
+//! cone errs by tens of percent off its facets; a slip direction kept from the press (radial:
+//! 20 of the 25 nodes slip outward under the press) errs by 12% in magnitude at 0 degrees and
+//! by 0.03 to 0.07 rad in direction at 15 to 60 (measured before slip directions followed the
+//! slip).
+//!
+//! Node by node, from the third drag increment on every slip node's direction is the drag's
+//! within `1.5e-6` rad: an increment converges only when no slip node's direction turns by
+//! more than `SlipDirection::same_as` tells apart, a cosine of `1 - 1e-12` (`1.41e-6` rad). In
+//! the second the nodes' slips still differ from the drag by the last change of the elastic
+//! state (measured up to `6.8e-6` rad); the totals average it out. Measured in the second
+//! drag increment: angle at most `6.3e-8` rad, `|F_t| / (mu P) - 1` at most `7.8e-12`; in the
+//! later ones round-off (`cargo test -p hycon-lab --test lab contact_slide3d:: --
+//! --nocapture`).
+
+use hycon_lab::slide3d::Slide;
+
+const ANGLES: [f64; 6] = [0.0, 15.0, 30.0, 45.0, 60.0, 90.0];
+
+/// The angle `SlipDirection::same_as` tells apart: `acos(1 - 1e-12)`.
+const DIRECTION: f64 = 1.5e-6;
+
+#[test]
+fn a_block_dragged_at_any_angle_feels_mu_p_against_its_slip() {
+    for theta in ANGLES {
+        let slide = Slide::small(theta);
+        let increments = slide.run().unwrap();
+        assert_eq!(increments.len(), 5);
+        for (i, inc) in increments.iter().enumerate() {
+            println!(
+                "theta {theta:>2}: drag {:.1}, P {:.6e}, F_t {:+.6e} {:+.6e}, angle {:.2e} rad, \
+                 |F_t|/(mu P) - 1 {:+.2e}, slip spread {:.2e} rad, active/stick/slip {:?}, \
+                 {} iterations",
+                inc.drag,
+                inc.normal,
+                inc.friction[0],
+                inc.friction[1],
+                inc.angle,
+                inc.magnitude,
+                inc.spread,
+                inc.states,
+                inc.iterations
+            );
+            assert_eq!(inc.states[0], 25, "the whole bottom presses: {inc:?}");
+            assert!(inc.normal > 0.0);
+            if i == 0 {
+                continue;
+            }
+            assert_eq!(inc.states[2], 25, "every node slips: {inc:?}");
+            if i >= 2 {
+                assert!(i < 3 || inc.spread <= DIRECTION, "theta {theta}: {inc:?}");
+                assert!(inc.angle <= 1e-6, "theta {theta}: {inc:?}");
+                assert!(inc.magnitude.abs() <= 1e-8, "theta {theta}: {inc:?}");
+            }
+        }
+    }
+}
+
+/// Finite kinematics: the block starts `1` behind the flat's centre and is dragged by `0.25`
+/// eight times, over four of the flat's faces (`0.5` wide), re-paired as it goes; the same
+/// totals asserted from the second drag increment on.
+///
+/// Fails today (`cargo test -p hycon-lab --test lab contact_slide3d:: -- --ignored
+/// --nocapture`): with slip directions following the slip the press increment does not
+/// converge at 15 to 60 degrees (the stick/slip states of some 20 of the 25 nodes churn for
+/// 60 iterations, and again from the fallback's states), and at 0 and 90 degrees, as at every
+/// angle in the first drag increment when the directions are kept from stick -> slip, an A
+/// node is found covered more than `1 + 1e-10` times (printed `1.000000`: B's clipped pieces
+/// over its support, in the deformed configuration, sum to a hair more than its weight).
+#[test]
+#[ignore = "finite kinematics does not yet slide the block: see the doc comment"]
+fn a_block_dragged_over_four_faces_with_finite_kinematics() {
+    for theta in ANGLES {
+        let increments = Slide::finite(theta).run().unwrap();
+        for inc in &increments[2..] {
+            assert_eq!(inc.states[2], 25, "every node slips: {inc:?}");
+            assert!(inc.angle <= 1e-6, "theta {theta}: {inc:?}");
+            assert!(inc.magnitude.abs() <= 1e-8, "theta {theta}: {inc:?}");
+        }
+    }
+}
