@@ -18,6 +18,7 @@
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
 //! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).
 //! * [`scenefile`]: TOML scene files over Gmsh meshes (`hycon run`).
+//! * [`slide3d`]: a block dragged over a flat at an angle to its mesh lines (3D friction).
 #![warn(missing_docs)]
 
 pub mod axisymmetric;
@@ -32,3 +33,4 @@ pub mod presses;
 pub mod report;
 pub mod scene;
 pub mod scenefile;
+pub mod slide3d;

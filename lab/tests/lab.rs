@@ -18,6 +18,7 @@ mod contact_host;
 mod contact_mindlin3d;
 mod contact_robustness;
 mod contact_settle;
+mod contact_slide3d;
 mod contact_sliding;
 mod guard;
 mod linear;

@@ -101,6 +101,20 @@ pub(in crate::contact::iteration) fn rows_of(state: NodeState, law: &dyn Frictio
     }
 }
 
+/// On a face (two tangents) a slip node's direction follows its slip since the increment
+/// began (docs/design/3d-contact.md, "Friction with the circular cone"): the direction of
+/// `slip` when it is longer than `tolerance` and turned from `direction` by more than
+/// [`SlipDirection::same_as`] tells apart (a cosine below `1 - 1e-12`, about `1.4e-6` rad),
+/// `None` otherwise. The proposal then counts as a change, so an increment converges only once
+/// every slip node's direction is its slip's to that angle. In the plane a direction can only
+/// flip, which the reversal rule decides.
+fn followed(direction: SlipDirection, slip: Tangential, tolerance: f64) -> Option<SlipDirection> {
+    if slip.components().len() < 2 || slip.norm() <= tolerance {
+        return None;
+    }
+    SlipDirection::of(slip).filter(|d| !d.same_as(&direction))
+}
+
 /// The state of a node that closes without sliding: stick, or frictionless under a law
 /// without friction.
 pub(in crate::contact::iteration) fn closed_at_rest(law: &dyn FrictionLaw) -> NodeState {
@@ -233,6 +247,8 @@ impl ActiveSet {
                 NodeState::Slip { direction } => {
                     if self.may_stick((p, k)) && direction.along(&f.slip) < -tolerances.slip {
                         next[k] = NodeState::Stick;
+                    } else if let Some(direction) = followed(direction, f.slip, tolerances.slip) {
+                        next[k] = NodeState::Slip { direction };
                     }
                 }
                 NodeState::Frictionless => {}
@@ -649,6 +665,32 @@ mod tests {
             slips_along(next[2], Tangential::on_face(0.0, -1.0)),
             "{next:?}"
         );
+        // a slip node's direction follows its slip: turned by 90 degrees, by 1e-5 rad, and
+        // not for a turn of 1e-7 rad nor for a slip within the tolerance
+        let slipping = |slip| fact(-0.8, Tangential::on_face(-0.4, 0.0), 0.0, slip);
+        let (sn, cs) = 1e-5f64.sin_cos();
+        let face = [
+            slipping(Tangential::on_face(0.0, 1e-3)),
+            slipping(Tangential::on_face(1e-3 * cs, 1e-3 * sn)),
+            slipping(Tangential::on_face(1e-3, 1e-10)),
+            slipping(Tangential::on_face(0.0, 1e-7)),
+        ];
+        let along_s1 = NodeState::Slip {
+            direction: SlipDirection::of(Tangential::on_face(1.0, 0.0)).unwrap(),
+        };
+        let set = ActiveSet::new(vec![vec![along_s1; 4]], Locks::default(), 1);
+        let next = set.propose(0, &face, &TOLERANCES, &[], &Adjacency::chain(4));
+        assert!(
+            slips_along(next[0], Tangential::on_face(0.0, 1.0)),
+            "{next:?}"
+        );
+        assert!(
+            slips_along(next[1], Tangential::on_face(cs, sn)),
+            "{next:?}"
+        );
+        assert!(!next[1].same_as(&along_s1), "{next:?}");
+        assert_eq!(next[2..], [along_s1; 2]);
+        assert_eq!(set.changes(&[next]), 2);
     }
 
     /// Which closed state, once: at rest a node sticks (frictionless without friction), after
