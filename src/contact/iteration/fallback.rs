@@ -1,41 +1,36 @@
 //! The fallback: when the paper's rules do not settle an increment, it starts again from the
-//! states of the solution of the linearized contact conditions.
+//! states of the solution of the linearized contact conditions (docs/method.md, "The
+//! fallback").
 //!
-//! The rules move one way only from a slip node that slides with its friction: it stays in
-//! slip. At the first all-stick iterate the stick shear of the linear multipliers alternates
-//! in sign from node to node (the oscillation that shows at the Hertz edge), many nodes
-//! exceed the cone at once and all of them turn to slip; a node whose violation was only that
-//! oscillation then slides consistently and never returns, while its neighbour alternates
-//! between stick (outside the cone) and slip (sliding against its friction). The cycle guard
-//! locks the neighbour in slip and the increment fails with a slip reversal (434 of the 513
-//! failures of `hycon bench presses` in 0.6.2); the same happens to the normal states at the
-//! edge of a zone (a node locked open that penetrates). In the traced press 247 of seed 1
-//! (`hycon bench presses --count 2000`) the state {stick, slip(-1)} satisfies every condition,
-//! but the rules go {stick, stick} -> {slip(+1), slip(-1)} and then cycle between
-//! {slip(+1), stick} and {slip(+1), slip(-1)}.
+//! Why the rules can fail: they move one way only from a slip node that slides with its
+//! friction: it stays in slip. At the first all-stick iterate the stick shear of the linear
+//! multipliers alternates in sign from node to node (the oscillation that shows at the Hertz
+//! edge), many nodes exceed the cone at once and all of them turn to slip; a node whose
+//! violation was only that oscillation then slides consistently and never returns, while its
+//! neighbour alternates between stick (outside the cone) and slip (sliding against its
+//! friction). The cycle guard locks the neighbour in slip and the increment fails with a slip
+//! reversal; the same happens to the normal states at the edge of a zone (a node locked open
+//! that penetrates).
 //!
-//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `driver.rs`), the increment starts
-//! again from the states of the solution of the same conditions, linearized at the start of
-//! the increment, over the candidate nodes (closed at the start, or penetrating under the
-//! load alone, and their neighbours): with every candidate's normal and tangent rows,
-//! `S t - r = rho` (`rho_n = n . R_C` the weighted gap with its sign reversed, `rho_t` the
-//! weighted slip), solve `tn <= 0`, `rho_n <= 0`, `tn rho_n = 0`, `|ts| <= mu |tn|`, `ts`
-//! opposing `rho_t` where it is on the cone and `rho_t = 0` inside ([`Linearized`]): a
-//! thousand sweeps of projected block Gauss-Seidel over the nodes (for a fixed `|tn|` the
-//! problem is the minimum of a convex quadratic over boxes, so each sweep lowers it; the
-//! friction bound follows `tn`) give a start from which the semi-smooth Newton method
-//! (primal-dual active set) solves the conditions exactly in a few dense solves; where it
-//! does not settle, Gauss-Seidel goes on to convergence. Gauss-Seidel alone needs up to
-//! `cond(S)` sweeps (826,000 in a press with one body 1,000 times stiffer), and with a large
-//! `mu` may not converge at all. In `hycon bench presses --count 2000 --seed 1,2,3,4,5` the
-//! Newton method settled 1,232 of the 1,303 fallback solves (counted in a debug build); over
-//! `--count 20000` the presses the fallback rescues take 23-33 ms each instead of 0.8.0's
-//! 90-144 ms, and press 15241 of seed 1, where Gauss-Seidel cycles, now settles (test
-//! `a_large_friction_press_settles_from_the_newton_fallback`). Its states (closed where
-//! `tn < 0`, slip where `|ts|` is on the cone, opposing `ts`: the active set's
-//! `linearized_state`) start the paper's iteration again, which then settles in a few iterations and
-//! checks every condition as usual. The paper's rules keep their results wherever they
-//! settle: the fallback runs only after they failed.
+//! When the rules fail for such a reason (`Failure::fallback_may_settle`, `driver.rs`), the
+//! increment starts again from the states of the solution of the same conditions, linearized
+//! at the start of the increment, over the candidate nodes (closed at the start, or
+//! penetrating under the load alone, and their neighbours along A, from the geometry's
+//! `Adjacency`): with every candidate's normal and tangent rows, `S t - r = rho`
+//! (`rho_n = n . R_C` the weighted gap with its sign reversed, `rho_t` the weighted slip),
+//! solve `tn <= 0`, `rho_n <= 0`, `tn rho_n = 0`, `|ts| <= mu |tn|`, `ts` opposing `rho_t`
+//! where it is on the cone and `rho_t = 0` inside ([`Linearized`]). A thousand sweeps of
+//! projected block Gauss-Seidel over the nodes (for a fixed `|tn|` the problem is the minimum
+//! of a convex quadratic over the cone, so each sweep lowers it; the friction bound follows
+//! `tn`) give a start from which the semi-smooth Newton method (primal-dual active set, the
+//! cone through `FrictionLaw::project` and `trial_slip`) solves the conditions exactly in a
+//! few dense solves; where it does not settle, Gauss-Seidel goes on to convergence
+//! (Gauss-Seidel alone needs up to `cond(S)` sweeps, and with a large `mu` may not converge at
+//! all). Its states (closed where `tn < 0`, slip where `|ts|` is on the cone, opposing `ts`:
+//! the active set's `linearized_state`) start the paper's iteration again, which then settles
+//! in a few iterations and checks every condition as usual. The paper's rules keep their
+//! results wherever they settle: the fallback runs only after they failed. (Its measured
+//! effect on `hycon bench presses` is in the CHANGELOG, 0.7.0 and 0.8.1.)
 
 use super::driver::Attempt;
 use super::small_system::Row;
