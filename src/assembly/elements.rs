@@ -222,18 +222,19 @@ mod tests {
 
         let mut mesh = SolidMesh::uniform([1.0; 3], [2, 1, 1]);
         mesh.element_material[1] = 3;
-        let solid = SolidModel::new(
-            mesh,
-            vec![Isotropic::new(1.0, 0.0).unwrap()],
-            BrickFormulation::H8,
-        )
-        .unwrap();
+        let materials = vec![Isotropic::new(1.0, 0.0).unwrap()];
+        let refused = SolidModel::new(mesh.clone(), materials.clone(), BrickFormulation::H8)
+            .unwrap_err()
+            .to_string();
+        let named = "brick 1 uses material 3 but only 1 are defined";
+        assert!(refused.contains(named), "{refused}");
+        // a model changed after its checks: the loop names the brick too
+        mesh.element_material[1] = 0;
+        let mut solid = SolidModel::new(mesh, materials, BrickFormulation::H8).unwrap();
+        solid.mesh.element_material[1] = 3;
         let q = vec![1.0; 3 * solid.mesh.n_nodes()];
         let message = solid.internal_forces(&q).unwrap_err().to_string();
-        assert!(
-            message.contains("brick 1 uses material 3 but only 1 are defined"),
-            "{message}"
-        );
+        assert!(message.contains(named), "{message}");
     }
 
     #[test]
