@@ -10,8 +10,10 @@
 //!   `integral N_k n dA`, tangents from the pair's reference direction); a tangent dropped by a
 //!   symmetry plane is **zero** in the [`Frame`] ([`Frame::is_dropped`]);
 //! * `weight = integral N_k dA` over the whole support, `covered_weight` over the part whose
-//!   projection along its A face's auxiliary normal meets a facing B face, `coverage` their
-//!   ratio (snapped to exactly 1 within [`COVERED`]);
+//!   projection along its A face's auxiliary normal meets a facing B face, `coverage` the
+//!   ratio of that part's projected area to the support's
+//!   ([`SurfaceMortar::covered_once`]: exact polygon areas, snapped to exactly 1 within
+//!   [`COVERED`](super::surface::COVERED));
 //! * `gap = R_k = integral N_k (x^A - x^B) dA` (covered part), `normal_gap = -n_k . R_k /
 //!   covered_weight`, `mean_distance = integral N_k g dA / covered_weight` (`g` along each A
 //!   face's own auxiliary normal);
@@ -30,7 +32,7 @@
 
 use super::clip::{AuxPlane, check_face, point, v3};
 use super::mortar::inverse_bilinear;
-use super::surface::{COVERED, SurfaceFaces, SurfaceMortar};
+use super::surface::{SurfaceFaces, SurfaceMortar};
 use super::{CORNERS, Quad, SurfaceFrames, SymmetryPlane};
 use crate::contact::geometry::{
     Adjacency, BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally,
@@ -447,18 +449,7 @@ impl ContactGeometry for FaceGeometry {
             node.frame = Frame::face(f.normal, s1, s2);
             node.weight = mortar.weight[&k];
             node.covered_weight = mortar.covered[&k];
-            let coverage = mortar.coverage(k);
-            if coverage > 1.0 + COVERED {
-                return Err(Error::InvalidInput(format!(
-                    "A node {k} is covered {coverage:.6} times over: B's faces overlap each \
-                     other over its support"
-                )));
-            }
-            node.coverage = if coverage >= 1.0 - COVERED {
-                1.0
-            } else {
-                coverage
-            };
+            node.coverage = mortar.covered_once(k)?;
             node.gap = Vector::from(mortar.mismatch.get(&k).copied().unwrap_or([0.0; 3]));
             if node.covered_weight > 0.0 {
                 node.normal_gap = -node.frame.normal().dot(&node.gap) / node.covered_weight;

@@ -41,8 +41,11 @@
 //!   up to round-off since the `M_b` sum to one: the discrete patch-test condition).
 //!
 //! The whole A face's `D` and weights (over the face, covered or not) are [`mortar::face_mass`];
-//! a node's coverage is the ratio of its covered weight to its whole weight, summed over its
-//! faces ([`surface::SurfaceMortar::coverage`]).
+//! a node's coverage is the ratio of its faces' covered projected area (their overlap
+//! polygons') to their projected area, each face's on its own auxiliary plane
+//! ([`surface::SurfaceMortar::coverage`]): exact whatever the faces' shapes, where the covered
+//! weight (the triangle rule through the inverse bilinear map) and the whole weight (Gauss's
+//! rule in `(s, t)`) differ by the rule's error on non-parallelogram faces.
 //!
 //! # Modules
 //! * [`clip`]: checks of a face, the auxiliary plane, projection, convex clipping.
