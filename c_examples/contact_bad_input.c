@@ -1542,13 +1542,18 @@ static bool test_deep_press_never_missed(void) {
                 /* "beyond what the pairing sees" once the press is beyond the search's reach
                  * (or the positions no longer resolve the surfaces), a cycling contact set
                  * within it; the automatic cutback may also take the press in sub-increments
-                 * until an active node leaves the other surface ("not covered") */
+                 * until an active node leaves the other surface ("not covered"); under finite
+                 * kinematics a press ten times the block's thickness may not settle at all
+                 * ("no convergence": since 0.11.0, whose consistent rows for partly covered
+                 * nodes no longer let it reach "not covered") */
                 char message[512];
                 hycon_last_error_message(message, sizeof message);
                 EXPECT(s == HYCON_ERROR_CONTACT);
                 if (strstr(message, "beyond what the pairing sees") == NULL &&
                     strstr(message, "cycles") == NULL &&
-                    strstr(message, "not covered by the opposite surface") == NULL) {
+                    strstr(message, "not covered by the opposite surface") == NULL &&
+                    (kinematics[k] != HYCON_KINEMATICS_FINITE ||
+                     strstr(message, "no convergence") == NULL)) {
                     fprintf(stderr, "  depth %g: %s\n", depths[i], message);
                     return false;
                 }
@@ -1885,10 +1890,13 @@ static int32_t sub_monitor(void *user_data, const HyconIterationRecord *record) 
     return 0;
 }
 
-/* The slide off B's end under finite kinematics: with the cutback (the default) the monitor sees
- * sub-increments 2 and more converge before an active node leaves B's end, and the failure
- * restores the state (contact_failure_keeps_state); with cutback_depth = 0 the whole step fails
- * at once, as before 0.7.0. A press converges in one sub-increment. */
+/* The slide off B's end under finite kinematics: the whole step converges to a state with an
+ * active node mostly beyond B's end, which is final ("not covered": no shorter step removes
+ * it), so the cutback (the default) tries no sub-increment and the failure restores the state
+ * (contact_failure_keeps_state), as with cutback_depth = 0. (Before 0.11.0 the inconsistent
+ * row of a partly covered node failed the whole step otherwise, and the cutback walked
+ * sub-increments up to the node's leaving.) A press converges in one sub-increment. The
+ * cutback's sub-increments themselves are tested in tests/contact_cutback.rs. */
 static bool test_cutback_sub_increments(void) {
     HyconContactOptions o;
     HyconContact *c;
@@ -1906,8 +1914,14 @@ static bool test_cutback_sub_increments(void) {
         largest = 0;
         EXPECT(STATUS(press(c, PRESS, 0.0, &info), HYCON_OK, NULL));
         EXPECT(info.sub_increments == 1 && info.cutbacks == 0 && largest == 1);
+        largest = 0;
         EXPECT(press(c, PRESS, 0.9, &info) == HYCON_ERROR_CONTACT);
-        EXPECT(depth == 0 ? largest == 1 : largest >= 2);
+        {
+            char message[512];
+            hycon_last_error_message(message, sizeof message);
+            EXPECT(strstr(message, "not covered by the opposite surface") != NULL);
+        }
+        EXPECT(largest == 1);
         hycon_contact_free(c);
     }
     return true;
