@@ -707,17 +707,11 @@ impl ContactAnalysis {
                     .map_err(|e| in_pair(i, e))
             })
             .collect::<Result<Vec<_>>>()?;
-        let mut dofs: Vec<usize> = pairs
-            .iter()
-            .flat_map(|p| p.a.iter().chain(&p.b))
-            .flat_map(|&n| (0..PLANE_DIM).map(move |c| dof(n, c)))
-            .collect();
-        dofs.sort_unstable();
-        dofs.dedup();
+        let (nodes, laws) = (plane_nodes(&pairs), plane_laws(&pairs)?);
+        let dofs = contact_dofs(&nodes, PLANE_DIM);
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = ModelBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
         let geometries = plane_geometries(&pairs, measures);
-        let (nodes, laws) = (plane_nodes(&pairs), plane_laws(&pairs)?);
         Self::setup(
             Box::new(bodies),
             nodes,
@@ -1054,6 +1048,18 @@ fn plane_geometries(
             Box::new(PlaneGeometry::new(p.a.clone(), p.b.clone(), m)) as Box<dyn ContactGeometry>
         })
         .collect()
+}
+
+/// The contact dofs of a model's pairs, sorted: `dim n + c` for every A and B node `n` and
+/// direction `c < dim`.
+fn contact_dofs(pairs: &[PairNodes], dim: usize) -> Vec<usize> {
+    let mut dofs: Vec<usize> = (pairs.iter())
+        .flat_map(|p| p.a.iter().chain(&p.b))
+        .flat_map(|&n| (0..dim).map(move |c| dim * n + c))
+        .collect();
+    dofs.sort_unstable();
+    dofs.dedup();
+    dofs
 }
 
 /// The nodes of every plane or axisymmetric pair, as the iteration reads them: its polylines.

@@ -9,7 +9,7 @@
 //! a slip node the column `n + mu (d_1 s_1 + d_2 s_2)`.
 
 use super::surfaces::PairNodes;
-use super::{ContactAnalysis, ContactOptions, Kinematics, in_pair};
+use super::{ContactAnalysis, ContactOptions, Kinematics, contact_dofs, in_pair};
 use crate::contact::bodies::SolidBodies;
 use crate::contact::faces::{FaceGeometry, SymmetryPlane};
 use crate::contact::friction::{Coulomb, FrictionLaw};
@@ -164,12 +164,7 @@ impl ContactAnalysis {
         let laws = (pairs.iter())
             .map(|p| Ok(Box::new(Coulomb::new(p.friction)?) as Box<dyn FrictionLaw>))
             .collect::<Result<_>>()?;
-        let mut dofs: Vec<usize> = (node_pairs.iter())
-            .flat_map(|p| p.a.iter().chain(&p.b))
-            .flat_map(|&n| (0..SOLID_DIM).map(move |c| SOLID_DIM * n + c))
-            .collect();
-        dofs.sort_unstable();
-        dofs.dedup();
+        let dofs = contact_dofs(&node_pairs, SOLID_DIM);
         let lazy = options.kinematics == Kinematics::Small;
         let bodies = SolidBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
         let geometries = (geometries.into_iter())
