@@ -177,11 +177,8 @@ impl HalfCap {
             BrickFormulation::Hybrid18,
         )?;
         // the block's bottom held, the cap's top moved by the increments' prescribed values
-        for &n in mesh.b_bottom.iter().chain(&mesh.a_top) {
-            for d in 0..3 {
-                model.fix(n, d, 0.0);
-            }
-        }
+        model.prescribe(&mesh.b_bottom, &[0, 1, 2])?;
+        model.prescribe(&mesh.a_top, &[0, 1, 2])?;
         let (plane, on_plane) = &mesh.symmetry[0];
         for &n in on_plane {
             model.fix(n, 1, 0.0);

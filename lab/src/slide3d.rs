@@ -127,11 +127,8 @@ impl Slide {
             vec![material, material],
             BrickFormulation::Hybrid18,
         )?;
-        for &n in mesh.b_bottom.iter().chain(&mesh.a_top) {
-            for d in 0..3 {
-                model.fix(n, d, 0.0);
-            }
-        }
+        model.prescribe(&mesh.b_bottom, &[0, 1, 2])?;
+        model.prescribe(&mesh.a_top, &[0, 1, 2])?;
         let pair = FacePair {
             a: mesh.a_faces.clone(),
             b: mesh.b_faces.clone(),
