@@ -14,8 +14,10 @@
 //! more than `SlipDirection::same_as` tells apart, a cosine of `1 - 1e-12` (`1.41e-6` rad). In
 //! the second the nodes' slips still differ from the drag by the last change of the elastic
 //! state (measured up to `6.8e-6` rad); the totals average it out. Measured in the second
-//! drag increment: angle at most `6.3e-8` rad, `|F_t| / (mu P) - 1` at most `7.8e-12`; in the
-//! later ones round-off (`cargo test -p hycon-lab --test lab contact_slide3d:: --
+//! drag increment: angle at most `9.3e-8` rad, `|F_t| / (mu P) - 1` at most `7.8e-12`; in the
+//! later ones `8.6e-10` rad and `4.4e-16`, every increment in 2 or 3 iterations (the press
+//! too: the states from the linearized conditions, docs/method.md, "The solver order on a
+//! face") (`cargo test -p hycon-lab --test lab contact_slide3d:: --
 //! --nocapture`).
 
 use hycon_lab::slide3d::Slide;
@@ -70,12 +72,13 @@ fn a_block_dragged_at_any_angle_feels_mu_p_against_its_slip() {
 /// some `depth` (measured at most `3.9e-7`: `Slide::finite`'s docs).
 ///
 /// 24 or 25 of the 25 nodes are in contact: where a node of the block lies over a vertex of
-/// the flat (the block's centre node in every other increment) it may open, its weighted gap
-/// `+1.1e-3` to `+6.8e-3` of the press (measured at every press from `1e-6` to `1e-3`), a
-/// feature of the mortar gap over the flat's pressed vertex, not of the friction (the same
-/// without friction).
+/// the flat (the block's centre node in every other increment at 0 and 90 degrees) it may
+/// open, its weighted gap `+4e-4` to `+7e-3` of the press (measured at a press of `1e-3`), a
+/// feature of the mortar gap over the flat's pressed vertex rather than of the friction
+/// (without friction, too, 24 or 25 nodes were in contact).
 ///
-/// The press converges in 4 iterations, each drag increment in 4 or 5: on a face with
+/// The press converges in 3 iterations, the first drag increment in 4 or 5, the later ones in
+/// 2: on a face with
 /// friction the states come from the contact conditions linearized at every iterate, solved
 /// exactly (the driver's `Proposer::Linearized`). With the paper's rules, whose slip
 /// directions follow the slip, the press does not settle (60 iterations, `R` still 0.05 to
