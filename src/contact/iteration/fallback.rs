@@ -31,12 +31,17 @@
 //! in a few iterations and checks every condition as usual. The paper's rules keep their
 //! results wherever they settle: the fallback runs only after they failed. (Its measured
 //! effect on `hycon bench presses` is in the CHANGELOG, 0.7.0 and 0.8.1.)
+//!
+//! On a face with friction the same solution, linearized at every iterate instead of the
+//! start ([`ContactAnalysis::linearized_states`]), proposes the states of every iteration
+//! (the driver's `Proposer::Linearized`; docs/method.md, "The solver order on a face"): the
+//! slip directions are then the trial tractions' at every iterate.
 
 use super::driver::Attempt;
 use super::small_system::Row;
 use super::{
-    ContactAnalysis, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential, closed_at_rest,
-    column, dot, linearized_state, plate,
+    ContactAnalysis, ContactSurface, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
+    closed_at_rest, column, dot, linearized_state, plate,
 };
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use plate::dot_dense;
@@ -67,19 +72,47 @@ impl ContactAnalysis {
     /// The fallback's start states for `attempt` (module docs): the candidates' conditions
     /// linearized at the start of the increment, solved ([`Linearized::solution`]).
     pub(super) fn fallback_states(&mut self, attempt: &Attempt<'_>) -> Result<Vec<Vec<NodeState>>> {
-        let startc = &attempt.startc;
         let surfaces = self.surfaces.current.clone();
+        let states: Vec<Vec<NodeState>> = (self.nodes.iter())
+            .map(|v| v.iter().map(|d| d.state).collect())
+            .collect();
+        let startc = &attempt.startc;
+        let at = Linearization {
+            uc: startc,
+            probe: attempt.u0c,
+            startc,
+            u0c: attempt.u0c,
+        };
+        self.linearized_states(&surfaces, &states, at)
+    }
+
+    /// The states of the solution of the contact conditions linearized at the iterate `at.uc`
+    /// (its geometry `surfaces`), over the candidate nodes: closed in `states`, or penetrating
+    /// at `at.probe` (by the gap linearized at `at.uc`), and their covered neighbours along A
+    /// (module docs). The fallback linearizes at the start of the increment and probes with
+    /// the load solve; the iteration on a face (the driver's `Proposer::Linearized`) at every
+    /// iterate, probing with the iterate itself.
+    pub(super) fn linearized_states(
+        &mut self,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+        at: Linearization<'_>,
+    ) -> Result<Vec<Vec<NodeState>>> {
+        let Linearization {
+            uc,
+            probe,
+            startc,
+            u0c,
+        } = at;
         let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
-        // the candidates: closed at the start, or penetrating under the load alone, and
-        // their covered neighbours
-        let mut states: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
+        let mut candidates: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
         for (p, surface) in surfaces.iter().enumerate() {
             let nodes = &surface.nodes;
             let penetrates: Vec<bool> = nodes
                 .iter()
                 .enumerate()
                 .map(|(k, node)| {
-                    if self.nodes[p][k].state != NodeState::Open {
+                    if states[p][k] != NodeState::Open {
                         return true;
                     }
                     if !node.is_covered() {
@@ -87,7 +120,7 @@ impl ContactAnalysis {
                     }
                     let row = self.boundary.directed(&node.coupling, &node.frame.normal());
                     let rg = node.gap.dot(&node.frame.normal());
-                    rg + dot(&row, attempt.u0c) - dot(&row, startc) > 0.0
+                    rg + dot(&row, probe) - dot(&row, uc) > 0.0
                 })
                 .collect();
             let adjacency = self.surfaces.geometries[p].adjacency();
@@ -95,7 +128,7 @@ impl ContactAnalysis {
                 nodes[k].is_covered()
                     && (penetrates[k] || adjacency.neighbours(k).iter().any(|&j| penetrates[j]))
             };
-            states.push(
+            candidates.push(
                 (0..nodes.len())
                     .map(|k| {
                         if candidate(k) {
@@ -108,13 +141,13 @@ impl ContactAnalysis {
             );
         }
         let laws = &self.surfaces.laws;
-        let system = (self.boundary).build_system(&surfaces, laws, &states, startc, startc);
+        let system = (self.boundary).build_system(surfaces, laws, &candidates, uc, startc);
         let s = (self.boundary).dense_matrix(&mut *self.bodies, &self.surfaces, &system)?;
         let r: Vec<f64> = system
             .rows
             .iter()
             .zip(&system.b)
-            .map(|(row, b)| b - dot(row, attempt.u0c))
+            .map(|(row, b)| b - dot(row, u0c))
             .collect();
         let laws: Vec<&dyn FrictionLaw> = (system.unknowns.iter())
             .map(|&(p, k, _)| self.node_law(p, k))
@@ -123,7 +156,7 @@ impl ContactAnalysis {
         let linearized = Linearized::new(&system.unknowns, &laws, frame_tangents, s, r);
         let t = linearized.solution();
         let tn_max = (linearized.nodes.iter()).fold(0.0f64, |m, node| m.max(t[node.normal].abs()));
-        let mut out: Vec<Vec<NodeState>> = states
+        let mut out: Vec<Vec<NodeState>> = candidates
             .iter()
             .map(|s| vec![NodeState::Open; s.len()])
             .collect();
@@ -135,6 +168,18 @@ impl ContactAnalysis {
         }
         Ok(out)
     }
+}
+
+/// Where [`ContactAnalysis::linearized_states`] linearizes the contact conditions: the
+/// iterate `uc` (the geometry's), the displacement `probe` at which open nodes are judged
+/// penetrating, the increment's start `startc` (the slips' origin) and the load solve `u0c`,
+/// all at the contact dofs.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Linearization<'a> {
+    pub(super) uc: &'a [f64],
+    pub(super) probe: &'a [f64],
+    pub(super) startc: &'a [f64],
+    pub(super) u0c: &'a [f64],
 }
 
 /// The fallback's linearized conditions `S t - r = rho` (module docs), node by node.
