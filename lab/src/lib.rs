@@ -13,6 +13,8 @@
 //!   Cattaneo-Mindlin's partial slip of a sphere).
 //! * [`mindlin3d`]: Cattaneo-Mindlin's partial slip in 3D (the half cap on its mirror block).
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
+//! * [`solid_scene`]: the two-body 3D scene (model, supports, pair, symmetry planes) the 3D
+//!   scenes share.
 //! * [`bench`](mod@bench): the measurements behind the performance figures of docs/performance.md.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
@@ -34,3 +36,4 @@ pub mod report;
 pub mod scene;
 pub mod scenefile;
 pub mod slide3d;
+pub mod solid_scene;
