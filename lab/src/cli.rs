@@ -9,6 +9,7 @@ use hycon_lab::cases::{self, BeamLoad, COOK_CONVERGED, COOK_PUBLISHED};
 use hycon_lab::examples::{
     self, CattaneoCase, Example, Fields, HertzCase, Run, SlideCase, SphereCase,
 };
+use hycon_lab::examples3d::{self, CapCase};
 use hycon_lab::report;
 use serde::Serialize;
 use std::io::Write;
@@ -22,8 +23,8 @@ use std::time::Instant;
     version,
     about = "Assumed-stress hybrid elements and contact (Kubomura-Pian)",
     long_about = "Assumed-stress hybrid elements and contact (Kubomura-Pian).\n\nWithout a \
-                  subcommand, runs the main job: the paper's four contact examples (`hycon \
-                  contact`)."
+                  subcommand, runs the main job: the paper's four contact examples, the \
+                  axisymmetric sphere and the 3D sphere (`hycon contact`)."
 )]
 struct Cli {
     /// Directory for written results [default: out for `elements`, out/contact for the contact
@@ -38,12 +39,15 @@ struct Cli {
 enum Command {
     /// The main job (also the default): the four contact examples on the disk-on-block scene
     /// (Hertz for three modulus ratios, frictionless and frictional sliding, Cattaneo-Mindlin)
-    /// and the axisymmetric one (Hertz's sphere), tables against the closed forms, the time
-    /// split, SVG plots, VTU fields and summary.json.
+    /// the axisymmetric one (Hertz's sphere) and the two 3D ones (`hycon sphere3d`: Hertz's
+    /// sphere, Cattaneo-Mindlin), tables against the closed forms, the time split, SVG plots,
+    /// VTU fields and summary.json.
     Contact {
         /// Elements per contact half-width (a power of two).
         #[arg(long, default_value_t = 32)]
         n: usize,
+        #[command(flatten)]
+        cap: CapOptions,
         #[command(flatten)]
         output: Output,
     },
@@ -104,6 +108,16 @@ enum Command {
         /// R / a of the target contact radius.
         #[arg(long, default_value_t = 32)]
         r_over_a: usize,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// Hertz's sphere and Cattaneo-Mindlin in 3D (the main job's 3D examples): the quarter
+    /// model of a paraboloid cap on a block pressed by Hertz's approach, then the half model
+    /// on its mirror block pressed and moved along x until Q/(mu P) reaches the target; hybrid
+    /// bricks, small kinematics. --json prints the two examples as a JSON array.
+    Sphere3d {
+        #[command(flatten)]
+        cap: CapOptions,
         #[command(flatten)]
         output: Output,
     },
@@ -199,6 +213,53 @@ struct Output {
     /// more solve, which then shows in the time split's recovery).
     #[arg(long)]
     every_increment: bool,
+}
+
+/// Options of the 3D examples.
+#[derive(Args, Clone, Copy)]
+struct CapOptions {
+    /// 3D examples: faces per target contact radius at the centre (a/h).
+    #[arg(long, default_value_t = 4)]
+    a_over_h: usize,
+    /// 3D Cattaneo-Mindlin: Coulomb friction coefficient (> 0).
+    #[arg(long = "friction-3d", default_value_t = 0.3)]
+    friction: f64,
+    /// 3D Cattaneo-Mindlin: the Q/(mu P) the cap is pulled to.
+    #[arg(long = "target-3d", default_value_t = 0.5)]
+    target: f64,
+}
+
+impl Default for CapOptions {
+    fn default() -> Self {
+        let c = CapCase::default();
+        CapOptions {
+            a_over_h: c.a_over_h,
+            friction: c.friction,
+            target: c.target,
+        }
+    }
+}
+
+impl CapOptions {
+    fn case(&self, output: &Output) -> CapCase {
+        CapCase {
+            a_over_h: self.a_over_h,
+            friction: self.friction,
+            target: self.target,
+            fields: output.fields(),
+        }
+    }
+}
+
+/// The two 3D examples of `cap`.
+fn examples3d(cap: &CapCase, mut progress: examples::Progress<'_>) -> hycon::Result<[Example; 2]> {
+    Ok([
+        examples3d::hertz(
+            cap,
+            progress.as_mut().map(|f| &mut **f as &mut dyn FnMut(&str)),
+        )?,
+        examples3d::cattaneo_mindlin(cap, progress)?,
+    ])
 }
 
 #[derive(Subcommand)]
@@ -518,10 +579,16 @@ pub fn main() -> ExitCode {
     };
     let command = cli.command.unwrap_or(Command::Contact {
         n: 32,
+        cap: CapOptions::default(),
         output: Output::default(),
     });
     let result = match command {
-        Command::Contact { n, output } => main_job(n, output, &contact_dir()),
+        Command::Contact { n, cap, output } => {
+            main_job(n, &cap.case(&output), output, &contact_dir())
+        }
+        Command::Sphere3d { cap, output } => several(output, &contact_dir(), |progress| {
+            Ok(examples3d(&cap.case(&output), progress)?.into())
+        }),
         Command::Hertz {
             n,
             modulus_ratio,
@@ -1187,23 +1254,40 @@ fn progress_printer(start: Instant, after: f64) -> impl FnMut(&str) {
     }
 }
 
-/// One contact example alone (`hycon hertz | slide | cattaneo`).
+/// One contact example alone (`hycon hertz | slide | cattaneo | sphere`).
 fn single(
     output: Output,
     dir: &Path,
     run: impl FnOnce(examples::Progress<'_>) -> hycon::Result<Example>,
 ) -> AnyResult {
+    several(output, dir, |progress| Ok(vec![run(progress)?]))
+}
+
+/// Contact examples without the main job's overview (`hycon sphere3d`, and [`single`]):
+/// `--json` prints one example as a JSON object, several as an array.
+fn several(
+    output: Output,
+    dir: &Path,
+    run: impl FnOnce(examples::Progress<'_>) -> hycon::Result<Vec<Example>>,
+) -> AnyResult {
     let mut progress = progress_printer(Instant::now(), 1.0);
-    let example = run(Some(&mut progress))?;
-    let files = if output.no_files {
-        Vec::new()
-    } else {
-        write_files(dir, &example, output.every_increment)?
-    };
+    let all = run(Some(&mut progress))?;
+    let mut files = Vec::new();
+    if !output.no_files {
+        for example in &all {
+            files.extend(write_files(dir, example, output.every_increment)?);
+        }
+    }
     if output.json {
-        println!("{}", report::json::to_string(&example)?);
+        let text = match all.as_slice() {
+            [one] => report::json::to_string(one)?,
+            _ => report::json::to_string(&all)?,
+        };
+        println!("{text}");
     } else {
-        print_example(&example);
+        for example in &all {
+            print_example(example);
+        }
     }
     say_written(dir, &files, output.json);
     Ok(())
@@ -1231,11 +1315,12 @@ fn main_slide(n: usize, friction: f64, output: &Output) -> SlideCase {
     }
 }
 
-/// The main job: the four contact examples, tables, time split, files.
-fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
+/// The main job: the four contact examples, the axisymmetric one and the two 3D ones
+/// (`cap`), tables, time split, files.
+fn main_job(n: usize, cap: &CapCase, output: Output, dir: &Path) -> AnyResult {
     let start = Instant::now();
     let mut progress = progress_printer(start, 0.0);
-    let all = [
+    let plane = [
         examples::hertz(
             &HertzCase {
                 n,
@@ -1263,6 +1348,10 @@ fn main_job(n: usize, output: Output, dir: &Path) -> AnyResult {
             Some(&mut progress),
         )?,
     ];
+    let all: Vec<Example> = plane
+        .into_iter()
+        .chain(examples3d(cap, Some(&mut progress))?)
+        .collect();
     let seconds = start.elapsed().as_secs_f64();
     let mut files = Vec::new();
     if !output.no_files {

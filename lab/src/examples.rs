@@ -26,13 +26,14 @@ use hycon::contact::iteration::{
 };
 use hycon::error::{Error, Result};
 use hycon::model::{LinearSystem, Model};
+use hycon::solid::model::SolidModel;
 use serde::Serialize;
 use std::time::Instant;
 
 /// An optional progress callback: called with one line of text per increment (and per run).
 pub type Progress<'a> = Option<&'a mut dyn FnMut(&str)>;
 
-fn say(progress: &mut Progress<'_>, message: impl FnOnce() -> String) {
+pub(crate) fn say(progress: &mut Progress<'_>, message: impl FnOnce() -> String) {
     if let Some(f) = progress.as_mut() {
         f(&message());
     }
@@ -174,7 +175,44 @@ pub struct Run {
     pub timings: TimeSplit,
     /// The model (both bodies), for field output.
     #[serde(skip)]
-    pub model: Model,
+    pub model: Bodies,
+}
+
+/// The bodies of a run, for field output.
+#[derive(Debug, Clone)]
+pub enum Bodies {
+    /// A plane or axisymmetric model (2 dofs per node).
+    Plane(Model),
+    /// A brick model (3 dofs per node).
+    Solid(SolidModel),
+}
+
+/// The contact tractions at one node of the multiplier side A, for field output.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactPoint {
+    /// The node.
+    pub node: usize,
+    /// The pressure `-tn`.
+    pub pressure: f64,
+    /// The traction on A, global components (`z = 0` in the plane).
+    pub traction: [f64; 3],
+}
+
+impl ContactPoint {
+    /// The tractions of the A nodes `results`.
+    pub fn of(results: &[NodeResult]) -> Vec<ContactPoint> {
+        (results.iter())
+            .map(|r| {
+                let t = r.frame.vector(r.tn, r.ts);
+                let c = t.components();
+                ContactPoint {
+                    node: r.node,
+                    pressure: -r.tn,
+                    traction: std::array::from_fn(|i| c.get(i).copied().unwrap_or(0.0)),
+                }
+            })
+            .collect()
+    }
 }
 
 /// The disk-on-block scene of a run.
@@ -279,6 +317,10 @@ pub struct Increment {
     /// Converged total displacement over all dofs, for field output.
     #[serde(skip)]
     pub displacement: Vec<f64>,
+    /// The contact tractions of the A nodes, for field output (brick models; empty when
+    /// [`displacement`](Self::displacement) is, and for plane models).
+    #[serde(skip)]
+    pub contact: Vec<ContactPoint>,
 }
 
 /// The Hertz comparison with relative errors.
@@ -327,6 +369,8 @@ impl From<&HertzComparison> for HertzErrors {
 /// pressure: `p = p0 sqrt(1 - r^2/a^2)`; `q = sign (mu p - (c/a) mu p0 sqrt(1 - r^2/c^2))`
 /// inside the stick zone `|r| < c` and `sign mu p` outside, `c = a sqrt(1 - |Q|/(mu P))`
 /// (`c = 0`, full slip, once `|Q| >= mu P`; `q = 0` frictionless), `r = x - centre`.
+/// The same forms hold for Hertz's sphere and Mindlin's traction along `Q` in 3D, with `r` the
+/// distance from the axis and `c = a (1 - |Q|/(mu P))^(1/3)` ([`crate::examples3d`]).
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct ClosedForm {
     /// Centre of contact.
@@ -337,7 +381,7 @@ pub struct ClosedForm {
     pub peak: f64,
     /// Coulomb friction coefficient `mu`.
     pub friction: f64,
-    /// Stick-zone half-width `c`.
+    /// Stick-zone half-width `c` (in 3D the stick radius).
     pub stick_half_width: f64,
     /// Sign of the tangential load (+1 or -1).
     pub sign: f64,
@@ -446,28 +490,47 @@ impl Serialize for TimeSplit {
 /// The analysis's time split, and a linear analysis of the same model timed for reference:
 /// assembly and factorization of a fresh `K`, then one solve with the final loads.
 fn time_split(
-    analysis: &mut ContactAnalysis,
+    analysis: &ContactAnalysis,
     increments: usize,
     f: &[f64],
     qp: &[f64],
 ) -> Result<TimeSplit> {
-    let t = analysis.timings();
     let clock = Instant::now();
     let mut system = LinearSystem::new(analysis.model()?)?;
     let setup = clock.elapsed().as_secs_f64();
     let clock = Instant::now();
     system.solve_for(analysis.model()?, f, qp)?;
     let one_solve = clock.elapsed().as_secs_f64();
-    let linear = setup + one_solve;
-    Ok(TimeSplit {
-        phases: t,
-        total: t.total(),
-        increments,
-        factorizations: analysis.factorizations(),
+    Ok(TimeSplit::new(
+        analysis.timings(),
+        (increments, analysis.factorizations()),
+        setup,
         one_solve,
-        linear,
-        ratio: t.total() / linear,
-    })
+    ))
+}
+
+impl TimeSplit {
+    /// The split `phases` of an analysis after `increments` increments and `factorizations`
+    /// numeric factorizations, against a linear analysis of the same model that took `setup`
+    /// seconds (assembly and factorization) and `one_solve` (one solve).
+    pub fn new(
+        phases: Timings,
+        (increments, factorizations): (usize, usize),
+        setup: f64,
+        one_solve: f64,
+    ) -> Self {
+        let t = phases;
+        let linear = setup + one_solve;
+        TimeSplit {
+            phases: t,
+            total: t.total(),
+            increments,
+            factorizations,
+            one_solve,
+            linear,
+            ratio: t.total() / linear,
+        }
+    }
 }
 
 /// A scene with its analysis, calibrated, and the increments so far.
@@ -601,7 +664,7 @@ impl Path {
             .last()
             .map_or((0.0, 0.0), |i| (i.approach, i.slide));
         let qp = self.scene.prescribed(last.0, last.1);
-        let timings = time_split(&mut self.analysis, self.solved, &self.forces, &qp)?;
+        let timings = time_split(&self.analysis, self.solved, &self.forces, &qp)?;
         Ok(Run {
             label: self.label,
             tag: self.tag,
@@ -609,7 +672,7 @@ impl Path {
             calibration: Some(self.calibration),
             increments: self.increments,
             timings,
-            model: self.analysis.model()?.clone(),
+            model: Bodies::Plane(self.analysis.model()?.clone()),
         })
     }
 }
@@ -721,6 +784,7 @@ fn evaluate(
         seconds,
         nodes,
         displacement,
+        contact: Vec::new(),
     }
 }
 
@@ -1087,7 +1151,7 @@ pub fn sphere(case: &SphereCase, mut progress: Progress<'_>) -> Result<Example> 
             last.displacement = analysis.displacement()?.to_vec();
         }
         let qp = scene.prescribed(scene.hertz_approach());
-        let timings = time_split(&mut analysis, case.increments, &f, &qp)?;
+        let timings = time_split(&analysis, case.increments, &f, &qp)?;
         runs.push(Run {
             label,
             tag: format!("ratio-{ratio:.0e}"),
@@ -1095,7 +1159,7 @@ pub fn sphere(case: &SphereCase, mut progress: Progress<'_>) -> Result<Example> 
             calibration: None,
             increments,
             timings,
-            model: analysis.model()?.clone(),
+            model: Bodies::Plane(analysis.model()?.clone()),
         });
     }
     Ok(Example {

@@ -13,6 +13,10 @@
 //!   Cattaneo-Mindlin's partial slip of a sphere).
 //! * [`mindlin3d`]: Cattaneo-Mindlin's partial slip in 3D (the half cap on its mirror block).
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
+//! * [`examples3d`]: the main job's 3D examples (Hertz's sphere, Cattaneo-Mindlin) in the same
+//!   result structs.
+//! * [`solid_scene`]: the two-body 3D scene (model, supports, pair, symmetry planes) the 3D
+//!   scenes share.
 //! * [`bench`](mod@bench): the measurements behind the performance figures of docs/performance.md.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
@@ -26,6 +30,7 @@ pub mod bench;
 pub mod cases;
 pub mod closed3d;
 pub mod examples;
+pub mod examples3d;
 pub mod gmsh;
 pub mod hertz3d;
 pub mod mindlin3d;
@@ -34,3 +39,4 @@ pub mod report;
 pub mod scene;
 pub mod scenefile;
 pub mod slide3d;
+pub mod solid_scene;

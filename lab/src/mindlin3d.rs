@@ -49,13 +49,13 @@
 //! The numbers against Mindlin are `lab/tests/contact_mindlin3d.rs`'s.
 
 use crate::closed3d::{Mindlin, hertz_approach};
+use crate::solid_scene::{Multipliers, SolidScene};
 use hycon::Result;
 use hycon::contact::iteration::{
-    ContactAnalysis, ContactOptions, FacePair, IncrementInfo, NodeResult, NodeState,
+    ContactAnalysis, ContactOptions, IncrementInfo, NodeResult, NodeState,
 };
-use hycon::solid::contact_meshes::{CapModel, CapOnBlock, ContactMesh};
-use hycon::solid::model::SolidModel;
-use hycon::solid::{BrickFormulation, Isotropic};
+use hycon::solid::Isotropic;
+use hycon::solid::contact_meshes::{CapModel, CapOnBlock};
 
 /// Young's modulus of both bodies.
 pub const YOUNGS: f64 = 1.0;
@@ -69,8 +69,8 @@ pub const RADIUS_OVER_CONTACT: f64 = 256.0;
 pub struct HalfCap {
     /// The mesh's parameters.
     pub spec: CapOnBlock,
-    /// Both bodies' mesh, contact faces and node sets.
-    pub mesh: ContactMesh,
+    /// Both bodies' mesh and model, the pair and the symmetry plane.
+    pub scene: SolidScene,
     /// The contact analysis (one pair: the block's top A under the cap's bottom B).
     pub analysis: ContactAnalysis,
     /// Poisson's ratio of both bodies.
@@ -169,31 +169,19 @@ impl HalfCap {
     /// # Errors
     /// Those of the mesh, the material, the model and `ContactAnalysis::solid`.
     pub fn with_spec(spec: CapOnBlock, poisson: f64, mu: f64) -> Result<Self> {
-        let mesh = spec.build()?;
-        let material = Isotropic::new(YOUNGS, poisson)?;
-        let mut model = SolidModel::new(
-            mesh.mesh.clone(),
-            vec![material, material],
-            BrickFormulation::Hybrid18,
+        // the block's bottom held, the cap's top moved by the increments' prescribed values in
+        // all three directions, the multipliers on the flat block's top (module docs)
+        let scene = SolidScene::new(
+            spec.build()?,
+            Isotropic::new(YOUNGS, poisson)?,
+            &[0, 1, 2],
+            Multipliers::Lower,
+            mu,
         )?;
-        // the block's bottom held, the cap's top moved by the increments' prescribed values
-        model.prescribe(&mesh.b_bottom, &[0, 1, 2])?;
-        model.prescribe(&mesh.a_top, &[0, 1, 2])?;
-        let (plane, on_plane) = &mesh.symmetry[0];
-        for &n in on_plane {
-            model.fix(n, 1, 0.0);
-        }
-        // the multipliers on the flat block's top (module docs)
-        let pair = FacePair {
-            a: mesh.b_faces.clone(),
-            b: mesh.a_faces.clone(),
-            friction: mu,
-        };
-        let analysis =
-            ContactAnalysis::solid(model, vec![pair], &[*plane], ContactOptions::default())?;
+        let analysis = scene.analysis(ContactOptions::default())?;
         Ok(HalfCap {
             spec,
-            mesh,
+            scene,
             analysis,
             poisson,
             friction: mu,
@@ -203,13 +191,8 @@ impl HalfCap {
 
     /// One increment to the cap's top's total motion `[x, z]`, and its results.
     fn step(&mut self, motion: [f64; 2]) -> Result<Pull> {
-        let n = 3 * self.mesh.mesh.n_nodes();
-        let mut qp = vec![0.0; n];
-        for &k in &self.mesh.a_top {
-            qp[3 * k] = motion[0];
-            qp[3 * k + 2] = motion[1];
-        }
-        let info = self.analysis.increment(&vec![0.0; n], &qp)?;
+        let qp = self.scene.prescribed([motion[0], 0.0, motion[1]]);
+        let info = self.analysis.increment(&vec![0.0; qp.len()], &qp)?;
         self.motion = motion;
         self.results(info)
     }
@@ -275,7 +258,7 @@ impl HalfCap {
 
     /// The reference position of A node `r`.
     fn at(&self, r: &NodeResult) -> [f64; 3] {
-        self.mesh.mesh.nodes[r.node]
+        self.scene.mesh.mesh.nodes[r.node]
     }
 
     /// The stick-slip transition along the ray of the unit direction `along` (in `x, y`).
@@ -288,7 +271,7 @@ impl HalfCap {
             let [x, y, _] = self.at(r);
             let radius = x * along[0] + y * along[1];
             let off = (x * along[1] - y * along[0]).abs();
-            if off > 1e-9 * self.mesh.h || radius < 0.0 {
+            if off > 1e-9 * self.scene.mesh.h || radius < 0.0 {
                 continue;
             }
             if r.state == NodeState::Stick {

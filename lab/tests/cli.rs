@@ -725,3 +725,151 @@ fn bench_hertz3d_prints_the_comparison() {
     let radius: f64 = row[3].parse().unwrap();
     assert!((radius - 1.52).abs() < 0.01, "{text}");
 }
+
+/// `hycon sphere3d` (the main job's 3D examples, at the main job's `a/h = 4`): the JSON array
+/// of the two examples in the plane examples' structure, the quarter cap's `a` and `p0`
+/// within the tolerances `contact_hertz3d` asserts at `a/h = 4` (and equal to
+/// `hycon_lab::hertz3d::QuarterCap`'s own, so the shared scene builder builds its model), the
+/// half cap pulled to `Q / (mu P) = 0.5` with its stick radius within a node spacing of
+/// Mindlin's (`contact_mindlin3d`'s tolerance), and a VTU of both bodies per example that
+/// parses back: every brick a `VTK_HEXAHEDRON`, the contact pressure at the contact nodes
+/// (its largest value the centre node's), the cap's top moved by the last increment's motion.
+#[test]
+fn sphere3d_writes_the_json_the_plots_and_the_bricks() {
+    let dir = Scratch::new("sphere3d");
+    let out = hycon(&["sphere3d", "--json", "--out", dir.arg()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    let examples = json.as_array().expect("an array of examples");
+    let names: Vec<&str> = examples
+        .iter()
+        .map(|e| e["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["hertz3d", "cattaneo-mindlin3d"]);
+
+    let press = &examples[0]["runs"][0]["increments"][0];
+    let hertz = &press["hertz"];
+    let [radius, peak] = ["half_width_error", "peak_error"].map(|k| finite(&hertz[k], k));
+    assert!(radius.abs() < 0.03 && peak.abs() < 0.02, "{hertz}");
+    let mut cap = hycon_lab::hertz3d::QuarterCap::new(4, Default::default()).unwrap();
+    let own = cap.press().unwrap().errors();
+    assert!(
+        (radius - own[0]).abs() < 1e-12 && (peak - own[1]).abs() < 1e-12,
+        "{own:?}"
+    );
+    for k in ["l2_error", "l2_error_forces"] {
+        let e = finite(&hertz[k], k);
+        assert!(e > 0.0 && e < 0.5, "{k} {e}");
+    }
+
+    let run = &examples[1]["runs"][0];
+    let h = finite(&run["setup"]["element_size"], "h");
+    let pulled = run["increments"].as_array().unwrap().last().unwrap();
+    let ratio = finite(&pulled["q_over_mu_p"], "Q/(mu P)");
+    assert!((ratio - 0.5).abs() <= 0.005, "{ratio}");
+    let zone = &pulled["stick_zone"];
+    let miss = finite(&zone["measured"], "c") - finite(&zone["predicted"], "c_M");
+    assert!(miss.abs() <= h, "{zone}, h = {h}");
+
+    for (example, stem) in examples.iter().zip(["hertz3d", "cattaneo-mindlin3d"]) {
+        let svg = std::fs::read_to_string(dir.path().join(format!("{stem}.svg"))).expect("svg");
+        assert!(svg.contains("p / p0"), "{stem}: pressure axis");
+        let setup = &example["runs"][0]["setup"];
+        let n_points = setup["nodes"].as_u64().unwrap() as usize;
+        let n_cells = setup["elements"].as_u64().unwrap() as usize;
+        let text = std::fs::read_to_string(dir.path().join(format!("{stem}.vtu"))).expect("vtu");
+        let xml = parse_xml(&text);
+        let piece = xml.elements.iter().find(|e| e.0 == "Piece").expect("Piece");
+        assert_eq!(attr(&piece.1, "NumberOfPoints"), n_points.to_string());
+        assert_eq!(attr(&piece.1, "NumberOfCells"), n_cells.to_string());
+        let array = |name: &str| {
+            xml.arrays
+                .iter()
+                .find(|(a, _)| attr(a, "Name") == name)
+                .map(|(_, v)| v)
+                .unwrap_or_else(|| panic!("{stem}: no DataArray {name}"))
+        };
+        for (name, len) in [
+            ("Points", 3 * n_points),
+            ("displacement", 3 * n_points),
+            ("contact_pressure", n_points),
+            ("contact_traction", 3 * n_points),
+            ("connectivity", 8 * n_cells),
+        ] {
+            assert_eq!(array(name).len(), len, "{stem}: {name}");
+        }
+        for name in [
+            "sx",
+            "sy",
+            "sz",
+            "txy",
+            "tyz",
+            "tzx",
+            "von_mises",
+            "body",
+            "types",
+        ] {
+            assert_eq!(array(name).len(), n_cells, "{stem}: {name}");
+        }
+        assert!(
+            array("types").iter().all(|&t| t == 12.0),
+            "{stem}: hexahedra"
+        );
+        assert_eq!(*array("offsets").last().unwrap() as usize, 8 * n_cells);
+        assert!(
+            array("connectivity")
+                .iter()
+                .all(|&i| (i as usize) < n_points)
+        );
+        assert!(
+            array("von_mises")
+                .iter()
+                .all(|v| v.is_finite() && *v >= 0.0)
+        );
+        let bodies = array("body");
+        assert!(
+            bodies.contains(&0.0) && bodies.contains(&1.0),
+            "{stem}: both bodies"
+        );
+        let inc = example["runs"][0]["increments"]
+            .as_array()
+            .unwrap()
+            .last()
+            .unwrap();
+        let pressure = array("contact_pressure");
+        let loaded = pressure.iter().filter(|&&p| p > 0.0).count();
+        assert!(loaded >= inc["active"].as_u64().unwrap() as usize, "{stem}");
+        let largest = pressure.iter().copied().fold(0.0, f64::max);
+        assert_eq!(
+            largest,
+            finite(&inc["hertz"]["measured_peak"], "p0"),
+            "{stem}"
+        );
+        // the cap's top (the highest points) moved by the increment's motion: down by the
+        // approach; the half cap's also along x by the slide and not along y (the quarter's
+        // top is free to move sideways)
+        let slide = finite(&inc["slide"], "slide");
+        let motion = [slide, 0.0, -finite(&inc["approach"], "d")];
+        let held = if slide > 0.0 { 0..3 } else { 2..3 };
+        let points = array("Points");
+        let top = points.chunks(3).map(|p| p[2]).fold(f64::MIN, f64::max);
+        let moved: Vec<&[f64]> = (array("displacement").chunks(3))
+            .zip(points.chunks(3))
+            .filter(|(_, p)| p[2] == top)
+            .map(|(u, _)| u)
+            .collect();
+        assert!(moved.len() > 1, "{stem}");
+        for u in moved {
+            for d in held.clone() {
+                assert!(
+                    (u[d] - motion[d]).abs() <= 1e-12 * motion[2].abs(),
+                    "{stem}: {u:?} {motion:?}"
+                );
+            }
+        }
+    }
+}

@@ -50,7 +50,7 @@ const TOLERANCE: f64 = 0.005;
 /// the two pulls, and the face size `h`.
 fn measure(a_over_h: usize, nu: f64) -> (Pull, Vec<Pull>, f64) {
     let mut cap = HalfCap::new(a_over_h, nu, MU).unwrap();
-    let h = cap.mesh.h;
+    let h = cap.scene.mesh.h;
     let pressed = cap.press().unwrap();
     let mut pulls: Vec<Pull> = Vec::new();
     for target in TARGETS {

@@ -4,7 +4,8 @@
 //!   Cattaneo-Mindlin, `mu p` for slip), one file per example, one panel per run, one curve per
 //!   increment.
 //! * [`vtu`]: VTK XML unstructured-grid files of both bodies: displacement (point data), stress at
-//!   element centres (cell data `sx`, `sy`, `txy`, von Mises) and the body id.
+//!   element centres (cell data `sx`, `sy`, `txy`, von Mises) and the body id; of brick models
+//!   the six stresses and, as point data, the contact pressure and traction.
 //! * [`json`]: machine-readable results (serde).
 
 pub mod json;

@@ -6,6 +6,7 @@
 //! `p0` is the Hertz peak of the run's last increment. Lines are the closed forms at each
 //! increment's measured load and centre, dots the nodal multipliers; colours go from blue (first
 //! increment) to red (last).
+//! The axisymmetric and 3D examples put the distance `r` from the axis on `x`.
 
 use super::{ReportError, Result, write_file};
 use crate::examples::{ClosedForm, Example, Increment, NodeRow, Phase, Run};
