@@ -90,8 +90,8 @@ fn inside(c: &ContactMesh) -> [f64; 3] {
     let (e, _) = c.mesh.locate_face(c.a_faces[0]).unwrap();
     let mut p = [0.0; 3];
     for &n in &c.mesh.elements[e] {
-        for d in 0..3 {
-            p[d] += c.mesh.nodes[n][d] / 8.0;
+        for (p, x) in p.iter_mut().zip(c.mesh.nodes[n]) {
+            *p += x / 8.0;
         }
     }
     p
