@@ -48,3 +48,10 @@ hycon_test(solid_contact_bad_input_shared solid_contact_bad_input)
 hycon_test(solid_contact_bad_input_static solid_contact_bad_input_static)
 hycon_valgrind_test(valgrind_solid_contact_bad_input solid_contact_bad_input)
 hycon_asan_test(solid_contact_bad_input solid_contact_bad_input.c C)
+# 3D contact, host family (issue #43): a C host's own bricks (hycon_brick_stiffness), equation
+# numbering and dense Cholesky, the contact patch test of a stack through hycon_solid_host_*
+# (CSR and solve callback), checked against its closed form
+hycon_example(solid_host solid_host.c C hycon::hycon)
+hycon_test(solid_host solid_host)
+hycon_valgrind_test(valgrind_solid_host solid_host)
+hycon_asan_test(solid_host solid_host.c C)

@@ -141,10 +141,16 @@ typedef struct HyconHost HyconHost;
 // distinct models are independent.
 typedef struct HyconModel HyconModel;
 
-// A 3D contact analysis: `K` factored once, the converged state, the records. Create with
-// `hycon_solid_contact_new`, free with `hycon_solid_contact_free`. Thread safety: as
-// `HyconContact` (const queries may run concurrently on one handle).
+// A 3D contact analysis: `K` factored once (or the host's solver), the converged state, the
+// records. Create with `hycon_solid_contact_new` (model API) or
+// `hycon_solid_contact_new_host` (host API), free with `hycon_solid_contact_free`. Thread
+// safety: as `HyconContact` (const queries may run concurrently on one handle).
 typedef struct HyconSolidContact HyconSolidContact;
+
+// A 3D host's contact description (host API): its contact nodes, face pairs, symmetry planes
+// and its stiffness (CSR), solve callback or condensed operator. Create with
+// `hycon_solid_host_new`, free with `hycon_solid_host_free`. Thread safety: as `HyconModel`.
+typedef struct HyconSolidHost HyconSolidHost;
 
 // A 3D model being described (model API): brick mesh, materials, prescribed directions,
 // contact pairs of brick faces, symmetry planes. Create with `hycon_solid_model_new`, free
@@ -659,6 +665,29 @@ typedef struct HyconSolidContactNode {
     // `-n_k . R_C,k / covered weight` (`< 0` penetration; infinite when nothing is covered).
     double normal_gap;
 } HyconSolidContactNode;
+
+// Contact nodes of a 3D host (host API): ids, reference coordinates and equation numbers.
+typedef struct HyconSolidHostNodes {
+    // `n` node ids (the host's numbering).
+    const size_t *ids;
+    // `3 n` reference coordinates `x0 y0 z0 x1 ...` (finite).
+    const double *coords;
+    // `3 n` equation numbers (`u_x`, `u_y`, `u_z` per node) in `0 .. n_equations`, or
+    // `HYCON_FIXED` for a dof the host holds at zero.
+    const int64_t *equations;
+    // Number of nodes.
+    size_t n;
+} HyconSolidHostNodes;
+
+// Faces of a 3D host's contact surface (host API): face `i` has the node ids
+// `nodes[4 i .. 4 i + 4]`, counter-clockwise seen from outside its body (its outward normal
+// by the right-hand rule), the corners of a 4-node face (a brick's face, say).
+typedef struct HyconHostFaces {
+    // `4 n` node ids.
+    const size_t *nodes;
+    // Number of faces.
+    size_t n;
+} HyconHostFaces;
 
 
 
@@ -2094,6 +2123,171 @@ HyconStatus hycon_solid_contact_constraint_rows(const struct HyconSolidContact *
                                                 struct HyconConstraintEntry *out,
                                                 size_t len,
                                                 size_t *needed);
+
+// Create a 3D host description for a system of `n_equations` equations (the host's `K` after
+// its boundary conditions: symmetric positive definite), as `hycon_host_new`.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`out`), `HYCON_ERROR_INVALID_ARGUMENT` (`n_equations`
+// zero or beyond what memory can address).
+//
+// # Safety
+// `out` must point to a writable pointer.
+HyconStatus hycon_solid_host_new(struct HyconSolidHost **out, size_t n_equations);
+
+// Free a 3D host description (NULL is a no-op). Analyses made from it are independent of it.
+//
+// # Safety
+// `host` must be NULL or a live handle from `hycon_solid_host_new`, not used afterwards.
+void hycon_solid_host_free(struct HyconSolidHost *host);
+
+// Add contact nodes: ids of the host's numbering, reference coordinates (3 per node) and the
+// equation of each displacement component (`HYCON_FIXED` for one the host holds at zero).
+// Every node of a face of `hycon_solid_host_add_pair` must have been added; a node added
+// again must come with the same coordinates and equations. The nodes' order is the order of
+// the per-node results (A nodes, B nodes) and of `hycon_solid_host_contact_equations`. The
+// arrays are copied; on an error the host is unchanged.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `nodes`, an array with `n > 0`),
+// `HYCON_ERROR_INVALID_ARGUMENT` (non-finite coordinates, an equation out of range or shared
+// by two nodes, a node given before differently, a misaligned pointer).
+//
+// # Safety
+// `host` must be a live handle; `nodes` NULL or a readable view whose arrays hold the stated
+// counts.
+HyconStatus hycon_solid_host_add_nodes(struct HyconSolidHost *host,
+                                       const struct HyconSolidHostNodes *nodes);
+
+// Add a contact pair: the multiplier side `a` and the opposite side `b` as faces of 4 node ids
+// each (`HyconHostFaces`, counter-clockwise seen from outside their body), every node one
+// added by `hycon_solid_host_add_nodes`, and the Coulomb coefficient `friction >= 0` (0:
+// frictionless; the cone is circular). The pair's index (0, 1, ...) is written to `index`
+// unless it is NULL. Checked here: the friction, each side at least one face, 4 distinct
+// nodes per face, no face listed twice, no node on both sides, every node known. Checked at
+// `hycon_solid_contact_new_host`: the faces' shapes (a flat, warped or inverted face the
+// kernel cannot integrate is refused by name), a continuous frame over A, and that A and B
+// face each other. The arrays are copied; on an error the host is unchanged.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `a`, `b`, their `nodes` with `n > 0`),
+// `HYCON_ERROR_INVALID_ARGUMENT` naming the side and the face (the checks above, a
+// misaligned pointer).
+//
+// # Safety
+// `host` must be a live handle; `a`, `b` NULL or readable views holding `4 n` ids each;
+// `index` NULL or writable.
+HyconStatus hycon_solid_host_add_pair(struct HyconSolidHost *host,
+                                      const struct HyconHostFaces *a,
+                                      const struct HyconHostFaces *b,
+                                      double friction,
+                                      size_t *index);
+
+// Say which side body A of pair `pair` (an index from `hycon_solid_host_add_pair`) is on:
+// `inside` is a point inside body A (3 doubles), above A's faces rather than beyond their
+// free edges: the centroid of an element that owns an A face, say. It must lie on A's body
+// side of its nearest A face (checked at `hycon_solid_contact_new_host`), which confirms A's
+// orientation; B's follows from facing A. Needed where A and B touch (lie within half a face
+// of each other) wherever they are near each other: facing surfaces and back-to-back ones
+// then look the same. Replaces an earlier point of the pair.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `inside`), `HYCON_ERROR_INVALID_ARGUMENT` (an
+// unknown pair, a non-finite point). On an error the host is unchanged.
+//
+// # Safety
+// `host` must be a live handle; `inside` NULL or 3 readable doubles.
+HyconStatus hycon_solid_host_set_pair_inside(struct HyconSolidHost *host,
+                                             size_t pair,
+                                             const double *inside);
+
+// Declare a symmetry plane of the host's model: the plane through `point` normal to `normal`
+// (3 doubles each), as `hycon_solid_model_add_symmetry_plane`. The host holds the nodes on it
+// normal to it (their equation of that component `HYCON_FIXED`, or an identity row).
+//
+// Errors: `HYCON_ERROR_NULL_POINTER`, `HYCON_ERROR_INVALID_ARGUMENT` (a non-finite value, a
+// zero normal, a misaligned pointer).
+//
+// # Safety
+// `host` must be a live handle; `point` and `normal` NULL or 3 readable doubles each.
+HyconStatus hycon_solid_host_add_symmetry_plane(struct HyconSolidHost *host,
+                                                const double *point,
+                                                const double *normal);
+
+// Give the host's stiffness as a CSR matrix over its `n_equations` equations (copied), as
+// `hycon_host_set_csr` (the same arrays, triangles, checks and errors). Replaces an earlier
+// matrix, solver or condensed operator.
+//
+// # Safety
+// `host` must be a live handle; the arrays NULL or of the stated lengths.
+HyconStatus hycon_solid_host_set_csr(struct HyconSolidHost *host,
+                                     const size_t *row_ptr,
+                                     const size_t *columns,
+                                     const double *values,
+                                     HyconTriangle triangle);
+
+// Let the host solve with its own factorization, as `hycon_host_set_solver`
+// (`HyconSolveFn`; `user_data` must outlive every analysis made from this description; called
+// on the thread that calls into the `HyconSolidContact`). Replaces an earlier matrix, solver
+// or condensed operator.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`host`, `solve`).
+//
+// # Safety
+// `host` must be a live handle; `solve` a valid function as documented.
+HyconStatus hycon_solid_host_set_solver(struct HyconSolidHost *host,
+                                        HyconSolveFn solve,
+                                        void *user_data);
+
+// Hand over the host's condensed operator over its contact candidate equations, as
+// `hycon_host_set_condensed` (the same struct, checks and errors): every increment then takes
+// as `load` the load image `u0 = K^-1 rhs` at the `m` candidates, and the host recovers its
+// displacement itself from `hycon_solid_contact_forces` (`hycon_solid_contact_displacement`
+// and `hycon_solid_contact_displacement_increment` fail). `hycon_solid_host_contact_equations`
+// lists the equations the candidates must hold. Replaces an earlier matrix, solver or
+// condensed operator.
+//
+// # Safety
+// `host` must be a live handle; `condensed` NULL or a readable `HyconCondensed` whose arrays
+// hold the stated counts.
+HyconStatus hycon_solid_host_set_condensed(struct HyconSolidHost *host,
+                                           const struct HyconCondensed *condensed);
+
+// The host's contact equations: every equation of its contact nodes (not `HYCON_FIXED`), in
+// the order the nodes were added (`u_x`, `u_y`, `u_z`), each once: what the candidates of
+// `hycon_solid_host_set_condensed` must hold.
+//
+// Sizes and errors follow the header's size convention (`out`, `len`, `needed`).
+//
+// # Safety
+// `host` must be a live handle; `out` NULL or `len` writable values; `needed` NULL or
+// writable.
+HyconStatus hycon_solid_host_contact_equations(const struct HyconSolidHost *host,
+                                               int64_t *out,
+                                               size_t len,
+                                               size_t *needed);
+
+// Start a 3D contact analysis of a host's system (`ContactAnalysis::solid_host`): factor its
+// CSR matrix once, or build the flexibility from batched solves through its callback, or read
+// it off its condensed operator, and check the faces. The result is a `HyconSolidContact`:
+// every `hycon_solid_contact_*` function applies, with the field over the host's `n`
+// equations (`load` of an increment its right-hand side, `prescribed` NULL with length 0;
+// the load image for a condensed operator), the per-node results in the order the nodes were
+// added, node ids of the host's numbering, and the constraint rows' columns host equations.
+// `options` NULL means the defaults.
+//
+// Errors: `HYCON_ERROR_NULL_POINTER` (`out`, `host`), `HYCON_ERROR_INVALID_ARGUMENT` (no
+// pair, no stiffness, solver or condensed operator, a face the kernel cannot integrate (flat,
+// warped, inverted) or no continuous frame over A, naming the pair; a pair whose surfaces run
+// the same way or lie back to back; a pair whose surfaces touch wherever they are near each
+// other without `hycon_solid_host_set_pair_inside`; a point inside A on A's outward side; a
+// contact equation that is no candidate of the condensed operator; bad options),
+// `HYCON_ERROR_SINGULAR` (the CSR matrix or the Schur complement is not positive definite: a
+// body not held), `HYCON_ERROR_SOLVER`, `HYCON_ERROR_CALLBACK` (the solver failed or returned
+// non-finite values).
+//
+// # Safety
+// `out` must point to a writable pointer, `host` be a live handle, `options` NULL or
+// readable.
+HyconStatus hycon_solid_contact_new_host(struct HyconSolidContact **out,
+                                         const struct HyconSolidHost *host,
+                                         const struct HyconContactOptions *options);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -1076,6 +1076,119 @@ class SolidModel {
     SolidModelPtr handle_;
 };
 
+// A 3D host's contact description (host API): contact nodes with 3 equations each, pairs of
+// faces given as 4 node ids of the host's numbering, symmetry planes, and its stiffness (CSR),
+// solver or condensed operator. SolidContact::create(const SolidHost &) starts the analysis.
+struct SolidHostDeleter {
+    void operator()(HyconSolidHost *p) const noexcept { hycon_solid_host_free(p); }
+};
+using SolidHostPtr = std::unique_ptr<HyconSolidHost, SolidHostDeleter>;
+
+class SolidHost {
+  public:
+    SolidHost() noexcept = default;
+    SolidHost(SolidHostPtr handle, std::size_t n_equations) noexcept
+        : handle_(std::move(handle)), equations_(n_equations) {}
+
+    static Result<SolidHost> create(std::size_t n_equations) {
+        HyconSolidHost *raw = nullptr;
+        const Status s = Status::from(hycon_solid_host_new(&raw, n_equations));
+        if (!s.ok()) return s;
+        return SolidHost(SolidHostPtr(raw), n_equations);
+    }
+
+    // Add contact nodes: ids, 3 n reference coordinates, 3 n equations (HYCON_FIXED for a dof
+    // held at zero). Every node of a face must be added before its pair; their order is the
+    // order of the per-node results.
+    Status add_nodes(View<std::size_t> ids, View<double> coords, View<std::int64_t> equations) {
+        if (coords.size() != 3 * ids.size() || equations.size() != 3 * ids.size())
+            return detail::invalid("nodes need 3 coordinates and 3 equations each");
+        const HyconSolidHostNodes nodes = {ids.data(), coords.data(), equations.data(),
+                                           ids.size()};
+        return Status::from(hycon_solid_host_add_nodes(get(), &nodes));
+    }
+
+    // Add a pair of faces, 4 node ids each (counter-clockwise seen from outside their body;
+    // A the multiplier side); returns the pair's index.
+    Result<std::size_t> add_pair(View<std::size_t> a_faces, View<std::size_t> b_faces,
+                                 double friction) {
+        if (a_faces.size() % 4 != 0 || b_faces.size() % 4 != 0)
+            return detail::invalid("faces need 4 node ids each");
+        const HyconHostFaces a = {a_faces.data(), a_faces.size() / 4};
+        const HyconHostFaces b = {b_faces.data(), b_faces.size() / 4};
+        std::size_t index = 0;
+        const Status s =
+            Status::from(hycon_solid_host_add_pair(get(), &a, &b, friction, &index));
+        return Result<std::size_t>(s, index);
+    }
+
+    // A point inside body A of `pair` (needed where A and B touch everywhere; see
+    // hycon_solid_host_set_pair_inside).
+    Status set_pair_inside(std::size_t pair, const std::array<double, 3> &inside) {
+        return Status::from(hycon_solid_host_set_pair_inside(get(), pair, inside.data()));
+    }
+
+    // Declare the symmetry plane through `point` normal to `normal`.
+    Status add_symmetry_plane(const std::array<double, 3> &point,
+                              const std::array<double, 3> &normal) {
+        return Status::from(
+            hycon_solid_host_add_symmetry_plane(get(), point.data(), normal.data()));
+    }
+
+    // The stiffness in CSR over the n_equations equations (copied), as Host::set_csr.
+    Status set_csr(View<std::size_t> row_ptr, View<std::size_t> columns, View<double> values,
+                   HyconTriangle triangle) {
+        if (row_ptr.size() != equations_ + 1)
+            return detail::invalid("row_ptr must hold n_equations + 1 entries");
+        if (columns.size() < row_ptr.back() || values.size() < row_ptr.back())
+            return detail::invalid("columns and values must hold row_ptr[n_equations] entries");
+        return Status::from(hycon_solid_host_set_csr(get(), row_ptr.data(), columns.data(),
+                                                     values.data(), triangle));
+    }
+
+    // The host's own solver, as Host::set_solver (only a pointer to `solve` is kept).
+    template <class F>
+    Status set_solver(F &solve) {
+        return set_solver(&detail::solve_trampoline<F>, detail::erase(solve));
+    }
+    template <class F>
+    Status set_solver(const F &&) = delete;  // a temporary would dangle
+    Status set_solver(HyconSolveFn solve, void *user_data) {
+        return Status::from(hycon_solid_host_set_solver(get(), solve, user_data));
+    }
+
+    // The condensed operator over the candidate equations, as Host::set_condensed.
+    Status set_condensed(HyconCondensedKind kind, View<std::int64_t> equations,
+                         View<double> matrix) {
+        if (matrix.size() != equations.size() * equations.size())
+            return detail::invalid("the condensed matrix must hold m * m values");
+        HyconCondensed c = {};
+        c.size = sizeof(HyconCondensed);
+        c.kind = kind;
+        c.m = equations.size();
+        c.equations = equations.data();
+        c.matrix = matrix.data();
+        return Status::from(hycon_solid_host_set_condensed(get(), &c));
+    }
+
+    // The equations of the contact nodes in the order they were added (u_x, u_y, u_z).
+    Result<std::vector<std::int64_t>> contact_equations() const {
+        return detail::fetch<std::int64_t>(
+            [this](std::int64_t *out, std::size_t n, std::size_t *needed) {
+                return hycon_solid_host_contact_equations(get(), out, n, needed);
+            });
+    }
+
+    std::size_t equations() const noexcept { return equations_; }
+    HyconSolidHost *get() const noexcept { return handle_.get(); }
+    explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
+    HyconSolidHost *release() noexcept { return handle_.release(); }
+
+  private:
+    SolidHostPtr handle_;
+    std::size_t equations_ = 0;
+};
+
 // A 3D contact analysis: K factored once, the converged state, the records.
 class SolidContact : public detail::Analysis<HyconSolidContact, SolidContactPtr> {
   public:
@@ -1087,6 +1200,15 @@ class SolidContact : public detail::Analysis<HyconSolidContact, SolidContactPtr>
                                        const HyconContactOptions &options = default_options()) {
         HyconSolidContact *raw = nullptr;
         const Status s = Status::from(hycon_solid_contact_new(&raw, model.get(), &options));
+        if (!s.ok()) return s;
+        return SolidContact(SolidContactPtr(raw));
+    }
+    // Host API: loads over the host's equations (prescribed empty). The host description is
+    // copied, its solver's callable is not.
+    static Result<SolidContact> create(const SolidHost &host,
+                                       const HyconContactOptions &options = default_options()) {
+        HyconSolidContact *raw = nullptr;
+        const Status s = Status::from(hycon_solid_contact_new_host(&raw, host.get(), &options));
         if (!s.ok()) return s;
         return SolidContact(SolidContactPtr(raw));
     }

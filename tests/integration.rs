@@ -21,4 +21,5 @@ mod readme;
 mod solid;
 mod solid_c_api;
 mod solid_contact_c_api;
+mod solid_host;
 mod solid_validation;

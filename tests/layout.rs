@@ -221,6 +221,8 @@ rust_structs! {
     },
     HyconSolidBNodeResult { node, weight, force, pressure, position },
     HyconSolidContactNode { node, weight, coverage, normal, tangent, gap, normal_gap },
+    HyconSolidHostNodes { ids, coords, equations, n },
+    HyconHostFaces { nodes, n },
 }
 
 /// The opaque handle types: declared but not defined in the header, no layout to check.
@@ -229,6 +231,7 @@ const OPAQUE: &[&str] = &[
     "HyconHost",
     "HyconModel",
     "HyconSolidContact",
+    "HyconSolidHost",
     "HyconSolidModel",
 ];
 

@@ -738,13 +738,7 @@ impl ContactAnalysis {
         for (i, pair) in pairs.iter().enumerate() {
             pair.check().map_err(|e| in_pair(i, e))?;
         }
-        if !system.a_inside.is_empty() && system.a_inside.len() != pairs.len() {
-            return Err(Error::InvalidInput(format!(
-                "a_inside has {} entries for {} pairs (give none, or one per pair)",
-                system.a_inside.len(),
-                pairs.len()
-            )));
-        }
+        check_inside_count(&system.a_inside, pairs.len())?;
         // the host's point inside body A, or the centroid of its element on a segment of A
         let a_inside: Vec<Option<Vector>> = (0..pairs.len())
             .map(|i| {
@@ -755,11 +749,8 @@ impl ContactAnalysis {
             .collect();
         let sections = std::mem::take(&mut system.sections);
         let measures = host_measures(&sections, &pairs, system.elements.as_ref())?;
-        let clock = std::time::Instant::now();
-        let lazy = options.kinematics == Kinematics::Small;
-        let bodies = HostBodies::new(system, options.backend, lazy, options.threads)?;
-        let seconds = clock.elapsed().as_secs_f64();
-        check_host_dimension(&bodies, &a_inside)?;
+        let (bodies, seconds) = host_bodies(system, &options)?;
+        check_host_dimension(&bodies, &a_inside, PLANE_DIM)?;
         let n_nodes = bodies.positions().as_chunks::<2>().0.len();
         check_host_nodes(&pairs, &bodies)?;
         let pairs: Vec<ContactPair> = pairs
@@ -1090,22 +1081,52 @@ enum Side {
     Inside(Option<Vector>),
 }
 
-/// A host's contact analysis is plane or axisymmetric: its nodes and its points inside body A
-/// of 2 components.
-fn check_host_dimension(bodies: &HostBodies, a_inside: &[Option<Vector>]) -> Result<()> {
-    if bodies.dim() != PLANE_DIM {
+/// A host's points inside body A ([`HostSystem::a_inside`]): none, or one (or `None`) per pair.
+fn check_inside_count(a_inside: &[Option<Vector>], pairs: usize) -> Result<()> {
+    if a_inside.is_empty() || a_inside.len() == pairs {
+        return Ok(());
+    }
+    Err(Error::InvalidInput(format!(
+        "a_inside has {} entries for {pairs} pairs (give none, or one per pair)",
+        a_inside.len()
+    )))
+}
+
+/// A host's system as the bodies of an analysis with `options` ([`HostBodies::new`]: its
+/// nodes checked and a CSR stiffness factored, lazily under small kinematics), and the seconds
+/// that took (the host's factorization).
+fn host_bodies(system: HostSystem, options: &ContactOptions) -> Result<(HostBodies, f64)> {
+    let clock = std::time::Instant::now();
+    let lazy = options.kinematics == Kinematics::Small;
+    let bodies = HostBodies::new(system, options.backend, lazy, options.threads)?;
+    Ok((bodies, clock.elapsed().as_secs_f64()))
+}
+
+/// A host's nodes and its points inside body A have the `dim` components of its constructor:
+/// 2 for [`ContactAnalysis::host`] (plane or axisymmetric), 3 for
+/// [`ContactAnalysis::solid_host`].
+fn check_host_dimension(
+    bodies: &HostBodies,
+    a_inside: &[Option<Vector>],
+    dim: usize,
+) -> Result<()> {
+    if bodies.dim() != dim {
+        let kind = if dim == PLANE_DIM {
+            "a host's contact analysis is plane or axisymmetric (2 components per contact node)"
+        } else {
+            "a 3D host's contact analysis (faces of 4 nodes) has 3 components per contact node"
+        };
         return Err(Error::InvalidInput(format!(
-            "a host's contact analysis is plane or axisymmetric (2 components per contact \
-             node); its contact nodes have {}",
+            "{kind}; its contact nodes have {}",
             bodies.dim()
         )));
     }
     for (i, point) in a_inside.iter().enumerate() {
-        if let Some(p) = point.filter(|p| p.dim() != PLANE_DIM) {
+        if let Some(p) = point.filter(|p| p.dim() != dim) {
             return Err(in_pair(
                 i,
                 Error::InvalidInput(format!(
-                    "the point inside body A has {} components, the host's nodes {PLANE_DIM}",
+                    "the point inside body A has {} components, the host's nodes {dim}",
                     p.dim()
                 )),
             ));
@@ -1190,7 +1211,8 @@ fn check_facing(
                  segment of each other) and face each other nowhere farther apart: the \
                  geometry cannot tell facing surfaces from back-to-back ones (both polylines \
                  reversed). Say which side body A is on: a point inside it \
-                 (hycon_host_set_pair_inside; HostSystem::a_inside)",
+                 (hycon_host_set_pair_inside, hycon_solid_host_set_pair_inside; \
+                 HostSystem::a_inside)",
             f.touching
         ))),
         Side::Inside(None) => Ok(()),

@@ -21,7 +21,7 @@
 use super::*;
 use crate::contact::bodies::{
     Condensed, CondensedKind, Csr, HostElements, HostNode, HostSolve, HostStiffness, HostSystem,
-    Triangle,
+    NodeEquations, Triangle,
 };
 use crate::contact::handover::{self, Section};
 use crate::contact::iteration::{
@@ -516,10 +516,39 @@ pub struct HyconHost {
     elements: Option<HostElements>,
 }
 
-enum HostSource {
+/// How a host description (plane or 3D) holds the stiffness it was given.
+pub(super) enum HostSource {
     Csr(Csr),
     Callback(CallbackSolve),
     Condensed(Condensed),
+}
+
+impl HostSource {
+    /// The host's solve callback with its user data.
+    pub(super) fn callback(solve: HyconSolveFn, user_data: *mut c_void) -> Result<Self, Fail> {
+        match solve {
+            Some(solve) => Ok(HostSource::Callback(CallbackSolve { solve, user_data })),
+            None => Err(Fail::new(HYCON_ERROR_NULL_POINTER, "solve is NULL")),
+        }
+    }
+
+    /// The stiffness an analysis takes from a description's `source` (copied; a callback's
+    /// pointers shared); an error naming the setters (`prefix`: `hycon_host` or
+    /// `hycon_solid_host`) when none was given.
+    pub(super) fn stiffness(source: Option<&Self>, prefix: &str) -> Result<HostStiffness, Fail> {
+        match source {
+            Some(HostSource::Csr(csr)) => Ok(HostStiffness::Csr(csr.clone())),
+            Some(HostSource::Callback(c)) => Ok(HostStiffness::Solver(Box::new(CallbackSolve {
+                solve: c.solve,
+                user_data: c.user_data,
+            }))),
+            Some(HostSource::Condensed(c)) => Ok(HostStiffness::Condensed(c.clone())),
+            None => Err(Fail::invalid(format!(
+                "the host gave neither a stiffness ({prefix}_set_csr), a solver \
+                 ({prefix}_set_solver) nor its condensed operator ({prefix}_set_condensed)"
+            ))),
+        }
+    }
 }
 
 /// A contact analysis: `K` factored once (or the host's solver), the converged state, the
@@ -535,7 +564,7 @@ pub struct HyconContact {
 }
 
 /// The host's solve callback with its user data.
-struct CallbackSolve {
+pub(super) struct CallbackSolve {
     solve: unsafe extern "C" fn(*mut c_void, usize, usize, *const f64, *mut f64) -> i32,
     user_data: *mut c_void,
 }
@@ -733,8 +762,7 @@ unsafe fn read_polyline<'a>(
 }
 
 /// Read and check a host node view (`name`: the argument; `side`: how messages name its
-/// nodes) for a system of `n_equations` equations: ids, finite coordinates, and equations in
-/// range or `HYCON_FIXED` (the one place `HYCON_FIXED` is decoded).
+/// nodes) for a system of `n_equations` equations ([`host_nodes`]).
 ///
 /// # Safety
 /// `view` must be NULL or point to a readable view whose arrays hold the stated number of
@@ -747,30 +775,60 @@ unsafe fn read_host_nodes(
 ) -> Result<Vec<HostNode>, Fail> {
     // SAFETY (all reads): forwarded contract.
     let v = unsafe { handle(view, name)? };
-    let per_node = length(v.n, 2, 0, &format!("{name}.n"))?;
-    let ids = unsafe { slice(v.ids, v.n, &format!("{name}.ids"))? };
-    let xy = unsafe { doubles(v.coords, per_node, &format!("{name}.coords"))? };
-    let eqs = unsafe { slice(v.equations, per_node, &format!("{name}.equations"))? };
+    unsafe {
+        host_nodes(
+            v.ids,
+            v.coords,
+            v.equations,
+            v.n,
+            2,
+            name,
+            side,
+            n_equations,
+        )
+    }
+}
+
+/// Read and check `n` host nodes of `dim` components (`name`: the view; `side`: how messages
+/// name its nodes) for a system of `n_equations` equations: `n` ids, `dim n` finite
+/// coordinates, `dim n` equations in range or `HYCON_FIXED` (the one place `HYCON_FIXED` is
+/// decoded).
+///
+/// # Safety
+/// `ids` NULL or `n` readable ids, `coords` and `equations` NULL or `dim n` readable values.
+#[allow(clippy::too_many_arguments)] // the fields of a view, named for the messages
+pub(super) unsafe fn host_nodes(
+    ids: *const usize,
+    coords: *const f64,
+    equations: *const i64,
+    n: usize,
+    dim: usize,
+    name: &str,
+    side: &str,
+    n_equations: usize,
+) -> Result<Vec<HostNode>, Fail> {
+    let per_node = length(n, dim, 0, &format!("{name}.n"))?;
+    // SAFETY (all reads): forwarded contract.
+    let ids = unsafe { slice(ids, n, &format!("{name}.ids"))? };
+    let xyz = unsafe { doubles(coords, per_node, &format!("{name}.coords"))? };
+    let eqs = unsafe { slice(equations, per_node, &format!("{name}.equations"))? };
     ids.iter()
         .enumerate()
         .map(|(i, &id)| {
-            let mut equations = [None; 2];
-            for (d, e) in equations.iter_mut().enumerate() {
-                *e = match eqs[2 * i + d] {
-                    HYCON_FIXED => None,
-                    r if r >= 0 && (r as u64) < n_equations as u64 => Some(r as usize),
-                    r => {
-                        return Err(Fail::invalid(format!(
-                            "{side} node {id}: equation {r} is out of range (0..{n_equations} \
-                             or HYCON_FIXED)"
-                        )));
-                    }
-                };
-            }
+            let equations = (eqs[dim * i..dim * (i + 1)].iter())
+                .map(|&e| match e {
+                    HYCON_FIXED => Ok(None),
+                    r if r >= 0 && (r as u64) < n_equations as u64 => Ok(Some(r as usize)),
+                    r => Err(Fail::invalid(format!(
+                        "{side} node {id}: equation {r} is out of range (0..{n_equations} or \
+                         HYCON_FIXED)"
+                    ))),
+                })
+                .collect::<Result<Vec<_>, _>>()?;
             Ok(HostNode {
                 id,
-                position: Vector::plane(xy[2 * i], xy[2 * i + 1]),
-                equations: equations.into(),
+                position: Vector::from_components(&xyz[dim * i..dim * (i + 1)]),
+                equations: NodeEquations::new(&equations),
             })
         })
         .collect()
@@ -1120,35 +1178,39 @@ pub unsafe extern "C" fn hycon_host_free(host: *mut HyconHost) {
     unsafe { free_handle(host) }
 }
 
-impl HyconHost {
-    /// Register the nodes of one polyline: new nodes are added, known ones must agree.
-    fn merge_nodes(&mut self, nodes: &[HostNode], side: &str) -> Result<(), Fail> {
-        for node in nodes {
-            let id = node.id;
-            match self.nodes.iter().find(|n| n.id == id) {
-                Some(known) if known != node => {
+/// Register host nodes (`side` names them in messages) into `known`: new nodes are added,
+/// known ones must agree, and no two nodes share an equation. On an error `known` may hold
+/// some of the new nodes: callers merge into a copy.
+pub(super) fn merge_host_nodes(
+    known: &mut Vec<HostNode>,
+    nodes: &[HostNode],
+    side: &str,
+) -> Result<(), Fail> {
+    for node in nodes {
+        let id = node.id;
+        match known.iter().find(|n| n.id == id) {
+            Some(k) if k != node => {
+                return Err(Fail::invalid(format!(
+                    "{side} node {id} was given before with other coordinates or equations"
+                )));
+            }
+            Some(_) => {}
+            None => {
+                if let Some(other) = known.iter().find(|n| {
+                    n.equations
+                        .given()
+                        .any(|e| node.equations.given().any(|f| f == e))
+                }) {
                     return Err(Fail::invalid(format!(
-                        "{side} node {id} was given before with other coordinates or equations"
+                        "{side} node {id} shares an equation with node {}",
+                        other.id
                     )));
                 }
-                Some(_) => {}
-                None => {
-                    if let Some(other) = self.nodes.iter().find(|n| {
-                        n.equations
-                            .given()
-                            .any(|e| node.equations.given().any(|f| f == e))
-                    }) {
-                        return Err(Fail::invalid(format!(
-                            "{side} node {id} shares an equation with node {}",
-                            other.id
-                        )));
-                    }
-                    self.nodes.push(*node)
-                }
+                known.push(*node)
             }
         }
-        Ok(())
     }
+    Ok(())
 }
 
 /// Add a contact pair in the host's numbering: the polylines `a` (the multiplier side) and `b`,
@@ -1227,12 +1289,9 @@ pub unsafe extern "C" fn hycon_host_add_pair(
         }
         // all-or-nothing: merge into a copy
         let mut nodes = h.nodes.clone();
-        std::mem::swap(&mut nodes, &mut h.nodes);
-        let merged = h.merge_nodes(&a, "A").and_then(|_| h.merge_nodes(&b, "B"));
-        if let Err(e) = merged {
-            h.nodes = nodes;
-            return Err(e);
-        }
+        merge_host_nodes(&mut nodes, &a, "A")?;
+        merge_host_nodes(&mut nodes, &b, "B")?;
+        h.nodes = nodes;
         h.pairs = pairs;
         h.a_inside.push(None);
         h.sections = sections;
@@ -1321,33 +1380,49 @@ pub unsafe extern "C" fn hycon_host_set_csr(
     boundary("hycon_host_set_csr", || {
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
-        let triangle = match triangle {
-            HYCON_CSR_FULL => Triangle::Full,
-            HYCON_CSR_LOWER => Triangle::Lower,
-            HYCON_CSR_UPPER => Triangle::Upper,
-            t => {
-                return Err(Fail::invalid(format!(
-                    "triangle = {t} (expected HYCON_CSR_FULL = 1, HYCON_CSR_LOWER = 2 or \
-                     HYCON_CSR_UPPER = 3)"
-                )));
-            }
-        };
-        let n = h.equations;
-        let ptr = unsafe { slice(row_ptr, length(n, 1, 1, "n_equations")?, "row_ptr")? };
-        let nnz = ptr[n];
-        let cols = unsafe { slice(columns, nnz, "columns")? };
-        let vals = unsafe { doubles(values, nnz, "values")? };
-        let csr = Csr {
-            n,
-            row_ptr: ptr.to_vec(),
-            columns: cols.to_vec(),
-            values: vals.to_vec(),
-            triangle,
-        };
-        csr.lower()?; // check the structure now, so errors come from this call
+        let csr = unsafe { read_csr(h.equations, row_ptr, columns, values, triangle)? };
         h.stiffness = Some(HostSource::Csr(csr));
         Ok(())
     })
+}
+
+/// A host's CSR matrix of order `n` from its arrays (copied), its structure checked
+/// ([`Csr::lower`]), so that errors come from the call that gives it.
+///
+/// # Safety
+/// The arrays NULL or of the lengths `row_ptr` states.
+pub(super) unsafe fn read_csr(
+    n: usize,
+    row_ptr: *const usize,
+    columns: *const usize,
+    values: *const f64,
+    triangle: HyconTriangle,
+) -> Result<Csr, Fail> {
+    let triangle = match triangle {
+        HYCON_CSR_FULL => Triangle::Full,
+        HYCON_CSR_LOWER => Triangle::Lower,
+        HYCON_CSR_UPPER => Triangle::Upper,
+        t => {
+            return Err(Fail::invalid(format!(
+                "triangle = {t} (expected HYCON_CSR_FULL = 1, HYCON_CSR_LOWER = 2 or \
+                 HYCON_CSR_UPPER = 3)"
+            )));
+        }
+    };
+    // SAFETY (all reads): forwarded contract.
+    let ptr = unsafe { slice(row_ptr, length(n, 1, 1, "n_equations")?, "row_ptr")? };
+    let nnz = ptr[n];
+    let cols = unsafe { slice(columns, nnz, "columns")? };
+    let vals = unsafe { doubles(values, nnz, "values")? };
+    let csr = Csr {
+        n,
+        row_ptr: ptr.to_vec(),
+        columns: cols.to_vec(),
+        values: vals.to_vec(),
+        triangle,
+    };
+    csr.lower()?;
+    Ok(csr)
 }
 
 /// Let the host solve with its own factorization: `solve(user_data, n, nrhs, rhs, x)` (see
@@ -1370,10 +1445,7 @@ pub unsafe extern "C" fn hycon_host_set_solver(
     boundary("hycon_host_set_solver", || {
         // SAFETY: the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
-        let Some(solve) = solve else {
-            return Err(Fail::new(HYCON_ERROR_NULL_POINTER, "solve is NULL"));
-        };
-        h.stiffness = Some(HostSource::Callback(CallbackSolve { solve, user_data }));
+        h.stiffness = Some(HostSource::callback(solve, user_data)?);
         Ok(())
     })
 }
@@ -1408,46 +1480,60 @@ pub unsafe extern "C" fn hycon_host_set_condensed(
     boundary("hycon_host_set_condensed", || {
         // SAFETY (all reads): the caller's contract.
         let h = unsafe { handle_mut(host, "host")? };
-        check_pointer(condensed, "condensed")?;
-        // SAFETY: non-null and aligned (checked); the struct begins with its size
-        let size = unsafe { condensed.cast::<usize>().read() };
-        let known = std::mem::size_of::<HyconCondensed>();
-        if !(CONDENSED_FIRST_BLOCK..=known).contains(&size) {
-            return Err(Fail::invalid(format!(
-                "condensed.size = {size}: expected sizeof(HyconCondensed) = {known}"
-            )));
-        }
-        let c = unsafe { handle(condensed, "condensed")? };
-        let kind = match c.kind {
-            HYCON_CONDENSED_STIFFNESS => CondensedKind::Stiffness,
-            HYCON_CONDENSED_FLEXIBILITY => CondensedKind::Flexibility,
-            k => {
-                return Err(Fail::invalid(format!(
-                    "condensed.kind = {k} is unknown (HYCON_CONDENSED_STIFFNESS = 1, \
-                     HYCON_CONDENSED_FLEXIBILITY = 2)"
-                )));
-            }
-        };
-        let m = c.m;
-        let values = length(m, m, 0, "condensed.m")?;
-        let equations = unsafe { slice(c.equations, m, "condensed.equations")? };
-        let matrix = unsafe { slice(c.matrix, values, "condensed.matrix")? };
-        let equations = equations
-            .iter()
-            .map(|&e| {
-                usize::try_from(e)
-                    .map_err(|_| Fail::invalid(format!("candidate equation {e} is out of range")))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        let condensed = Condensed {
-            kind,
-            equations,
-            matrix: matrix.to_vec(),
-        };
-        condensed.check(h.equations)?;
+        let condensed = unsafe { read_condensed(condensed, h.equations)? };
         h.stiffness = Some(HostSource::Condensed(condensed));
         Ok(())
     })
+}
+
+/// A host's condensed operator from its view (copied) for a system of `n_equations`
+/// equations, checked ([`Condensed::check`]).
+///
+/// # Safety
+/// `condensed` NULL or a readable `HyconCondensed` whose arrays hold the stated counts.
+pub(super) unsafe fn read_condensed(
+    condensed: *const HyconCondensed,
+    n_equations: usize,
+) -> Result<Condensed, Fail> {
+    check_pointer(condensed, "condensed")?;
+    // SAFETY: non-null and aligned (checked); the struct begins with its size
+    let size = unsafe { condensed.cast::<usize>().read() };
+    let known = std::mem::size_of::<HyconCondensed>();
+    if !(CONDENSED_FIRST_BLOCK..=known).contains(&size) {
+        return Err(Fail::invalid(format!(
+            "condensed.size = {size}: expected sizeof(HyconCondensed) = {known}"
+        )));
+    }
+    // SAFETY (all reads): forwarded contract.
+    let c = unsafe { handle(condensed, "condensed")? };
+    let kind = match c.kind {
+        HYCON_CONDENSED_STIFFNESS => CondensedKind::Stiffness,
+        HYCON_CONDENSED_FLEXIBILITY => CondensedKind::Flexibility,
+        k => {
+            return Err(Fail::invalid(format!(
+                "condensed.kind = {k} is unknown (HYCON_CONDENSED_STIFFNESS = 1, \
+                 HYCON_CONDENSED_FLEXIBILITY = 2)"
+            )));
+        }
+    };
+    let m = c.m;
+    let values = length(m, m, 0, "condensed.m")?;
+    let equations = unsafe { slice(c.equations, m, "condensed.equations")? };
+    let matrix = unsafe { slice(c.matrix, values, "condensed.matrix")? };
+    let equations = equations
+        .iter()
+        .map(|&e| {
+            usize::try_from(e)
+                .map_err(|_| Fail::invalid(format!("candidate equation {e} is out of range")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let condensed = Condensed {
+        kind,
+        equations,
+        matrix: matrix.to_vec(),
+    };
+    condensed.check(n_equations)?;
+    Ok(condensed)
 }
 
 /// The host's contact equations: every equation of a node of its pairs (not `HYCON_FIXED`),
@@ -1470,14 +1556,27 @@ pub unsafe extern "C" fn hycon_host_contact_equations(
     boundary("hycon_host_contact_equations", || {
         // SAFETY (all): the caller's contract.
         let h = unsafe { handle(host, "host")? };
-        let equations: Vec<i64> = h
-            .nodes
-            .iter()
-            .flat_map(|n| n.equations.given())
-            .map(|e| e as i64)
-            .collect();
-        unsafe { fill(out, len, needed, "out", equations.len(), || Ok(equations)) }
+        unsafe { contact_equations(&h.nodes, out, len, needed) }
     })
+}
+
+/// Write the equations of host `nodes` (not `HYCON_FIXED`), in node order, by the size
+/// convention.
+///
+/// # Safety
+/// `out` NULL or `len` writable values; `needed` NULL or writable.
+pub(super) unsafe fn contact_equations(
+    nodes: &[HostNode],
+    out: *mut i64,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), Fail> {
+    let equations: Vec<i64> = (nodes.iter())
+        .flat_map(|n| n.equations.given())
+        .map(|e| e as i64)
+        .collect();
+    // SAFETY: forwarded contract.
+    unsafe { fill(out, len, needed, "out", equations.len(), || Ok(equations)) }
 }
 
 /// Optionally hand over the elements of body A along the A polylines (at least those owning an
@@ -1567,21 +1666,7 @@ pub unsafe extern "C" fn hycon_contact_new_host(
                 "the host has no contact pair (hycon_host_add_pair)",
             ));
         }
-        let stiffness = match &h.stiffness {
-            Some(HostSource::Csr(csr)) => HostStiffness::Csr(csr.clone()),
-            Some(HostSource::Callback(c)) => HostStiffness::Solver(Box::new(CallbackSolve {
-                solve: c.solve,
-                user_data: c.user_data,
-            })),
-            Some(HostSource::Condensed(c)) => HostStiffness::Condensed(c.clone()),
-            None => {
-                return Err(Fail::invalid(
-                    "the host gave neither a stiffness (hycon_host_set_csr), a solver \
-                     (hycon_host_set_solver) nor its condensed operator \
-                     (hycon_host_set_condensed)",
-                ));
-            }
-        };
+        let stiffness = HostSource::stiffness(h.stiffness.as_ref(), "hycon_host")?;
         let system = HostSystem {
             equations: h.equations,
             nodes: h.nodes.clone(),

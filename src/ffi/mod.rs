@@ -67,12 +67,14 @@ mod loads;
 mod results;
 mod solid;
 mod solid_contact;
+mod solid_host;
 
 pub use contact::*;
 pub use elements::*;
 pub use loads::*;
 pub use solid::*;
 pub use solid_contact::*;
+pub use solid_host::*;
 
 // ------------------------------------------------------------------------------------------
 // Version

@@ -144,11 +144,12 @@ pub struct HyconSolidModel {
     symmetry: Vec<SymmetryPlane>,
 }
 
-/// A 3D contact analysis: `K` factored once, the converged state, the records. Create with
-/// `hycon_solid_contact_new`, free with `hycon_solid_contact_free`. Thread safety: as
-/// `HyconContact` (const queries may run concurrently on one handle).
+/// A 3D contact analysis: `K` factored once (or the host's solver), the converged state, the
+/// records. Create with `hycon_solid_contact_new` (model API) or
+/// `hycon_solid_contact_new_host` (host API), free with `hycon_solid_contact_free`. Thread
+/// safety: as `HyconContact` (const queries may run concurrently on one handle).
 pub struct HyconSolidContact {
-    analysis: ContactAnalysis,
+    pub(super) analysis: ContactAnalysis,
 }
 
 // ------------------------------------------------------------------------------------------

@@ -390,14 +390,17 @@ pub struct HostSystem {
     /// alone cannot tell facing surfaces from back-to-back ones (both reversed): such a pair
     /// needs it, unless [`elements`](Self::elements) has an element on a segment of A (its
     /// centroid is then taken). A point given is checked to lie on A's body side of its
-    /// polyline (see [`check_a_inside`](crate::contact::iteration::check_a_inside)).
+    /// polyline (see [`check_a_inside`](crate::contact::iteration::check_a_inside)). A 3D
+    /// host ([`ContactAnalysis::solid_host`](crate::contact::iteration::ContactAnalysis::solid_host))
+    /// gives points of 3 components, checked to lie on A's body side of its nearest A face.
     pub a_inside: Vec<Option<Vector>>,
     /// The section of each contact pair's A side, in the order of the pairs: its analysis kind
     /// (all pairs of one kind) and thickness. The contact integrals are weighted by its
     /// measure (the thickness in plane analysis, `2 pi r` in axisymmetry), so that the
     /// tractions are pressures and the contact forces are in the units of the host's stiffness
     /// (per thickness, or over the full circle); the [`elements`](Self::elements) along A are
-    /// of their pair's section (checked, see [`handover`](crate::contact::handover)).
+    /// of their pair's section (checked, see [`handover`](crate::contact::handover)). Empty
+    /// for a 3D host, as are its [`elements`](Self::elements).
     pub sections: Vec<crate::contact::handover::Section>,
 }
 

@@ -9,11 +9,15 @@
 //! a slip node the column `n + mu (d_1 s_1 + d_2 s_2)`.
 
 use super::surfaces::PairNodes;
-use super::{ContactAnalysis, ContactOptions, Kinematics, contact_dofs, in_pair};
-use crate::contact::bodies::SolidBodies;
+use super::{
+    ContactAnalysis, ContactOptions, Kinematics, check_host_dimension, check_inside_count,
+    contact_dofs, host_bodies, in_pair,
+};
+use crate::contact::bodies::{Bodies, HostBodies, HostSystem, SolidBodies};
 use crate::contact::faces::{FaceGeometry, SymmetryPlane};
 use crate::contact::friction::{Coulomb, FrictionLaw};
 use crate::contact::geometry::ContactGeometry;
+use crate::contact::space::Vector;
 use crate::error::{Error, Result};
 use crate::solid::geometry::FACES;
 use crate::solid::mesh::SolidMesh;
@@ -46,8 +50,39 @@ impl FacePair {
     /// # Errors
     /// [`Error::InvalidInput`] naming the side, the face and what is wrong.
     pub fn check_on(&self, mesh: &SolidMesh) -> Result<()> {
-        Coulomb::new(self.friction)?;
         let index = boundary_faces(mesh);
+        self.check_faces(|face| check_face(mesh, &index, face))
+    }
+
+    /// Check the pair without a mesh, as a host's faces are (node ids of its numbering):
+    /// friction finite and `>= 0`, each side at least one face, every face of 4 distinct
+    /// nodes, no face listed twice in the pair, no node on both sides. (Whether the nodes are
+    /// the host's, at finite positions, and faces the mortar kernel cannot integrate are
+    /// refused by [`ContactAnalysis::solid_host`] and [`FaceGeometry::new`].)
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the side, the face and what is wrong, or the shared node.
+    pub fn check(&self) -> Result<()> {
+        self.check_faces(distinct_corners)?;
+        let b: BTreeSet<usize> = self.b.iter().flatten().copied().collect();
+        for (i, face) in self.a.iter().enumerate() {
+            if let Some(k) = face.iter().find(|k| b.contains(k)) {
+                return Err(Error::InvalidInput(format!(
+                    "node {k} of A face {i} {face:?} is also on side B: A and B must be \
+                     surfaces of different bodies"
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The checks shared by [`check_on`](Self::check_on) and [`check`](Self::check), with
+    /// `face_check` saying what is wrong with one face.
+    fn check_faces(
+        &self,
+        face_check: impl Fn(&[usize; 4]) -> std::result::Result<(), String>,
+    ) -> Result<()> {
+        Coulomb::new(self.friction)?;
         let mut seen = BTreeSet::new();
         for (side, faces) in [("A", &self.a), ("B", &self.b)] {
             if faces.is_empty() {
@@ -56,7 +91,7 @@ impl FacePair {
                 )));
             }
             for (i, face) in faces.iter().enumerate() {
-                check_face(mesh, &index, face)
+                face_check(face)
                     .map_err(|m| Error::InvalidInput(format!("{side} face {i} {face:?}: {m}")))?;
                 if !seen.insert(sorted(face)) {
                     return Err(Error::InvalidInput(format!(
@@ -66,6 +101,14 @@ impl FacePair {
             }
         }
         Ok(())
+    }
+}
+
+/// A face of 4 distinct node ids; the message names the repeated one.
+fn distinct_corners(face: &[usize; 4]) -> std::result::Result<(), String> {
+    match (1..4).find(|&i| face[..i].contains(&face[i])) {
+        Some(i) => Err(format!("node {} appears twice", face[i])),
+        None => Ok(()),
     }
 }
 
@@ -148,14 +191,88 @@ impl ContactAnalysis {
         for (i, pair) in pairs.iter().enumerate() {
             pair.check_on(&model.mesh).map_err(|e| in_pair(i, e))?;
         }
-        let x = model.mesh.nodes.as_flattened();
+        let parts = FaceParts::new(&pairs, model.mesh.nodes.as_flattened(), symmetry)?;
+        let dofs = contact_dofs(&parts.nodes, SOLID_DIM);
+        let lazy = options.kinematics == Kinematics::Small;
+        let bodies = SolidBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
+        parts.setup(Box::new(bodies), dofs, options, None)
+    }
+
+    /// A 3D contact analysis of a host's system: its contact nodes with 3 equations each
+    /// ([`HostSystem::nodes`], positions of 3 components), its stiffness as a CSR matrix
+    /// factored here, a solve callback or its condensed operator (as for
+    /// [`host`](Self::host)), `pairs` of faces given as 4 node ids of the host's numbering
+    /// (counter-clockwise seen from outside their body), the `symmetry` planes (the host holds
+    /// the nodes on them normal to them) and the options. The host has no brick mesh, so the
+    /// faces are checked as far as that allows ([`FacePair::check`], every node one of the
+    /// contact nodes, [`FaceGeometry::new`]: no flat, warped or inverted face, a continuous
+    /// frame); which side body A is on comes from its faces' order, confirmed by a point
+    /// inside body A ([`HostSystem::a_inside`], 3 components) where given, and needed where
+    /// A and B touch wherever they are near each other. Loads are the host's right-hand sides
+    /// ([`increment`](Self::increment) with empty `qp`), or the load image of its condensed
+    /// operator; displacements its equations. A pair's A nodes are reported in the order of
+    /// the host's node list, B's likewise.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a bad option or node (those of [`HostBodies::new`]), a bad
+    /// pair (naming it), host sections or elements (plane concepts: a 3D host gives none), a
+    /// point inside A on A's outward side; those of the factorization (a body not held:
+    /// [`Error::Singular`]) or of the callback ([`Error::Callback`]).
+    pub fn solid_host(
+        mut system: HostSystem,
+        pairs: Vec<FacePair>,
+        symmetry: &[SymmetryPlane],
+        options: ContactOptions,
+    ) -> Result<Self> {
+        options.validate()?;
+        for (i, pair) in pairs.iter().enumerate() {
+            pair.check().map_err(|e| in_pair(i, e))?;
+        }
+        check_inside_count(&system.a_inside, pairs.len())?;
+        if !system.sections.is_empty() || system.elements.is_some() {
+            return Err(Error::InvalidInput(
+                "a 3D host gives no sections and no elements (plane and axisymmetric concepts: \
+                 its contact integrals are over the faces' areas, its tractions the multipliers)"
+                    .into(),
+            ));
+        }
+        let mut a_inside = std::mem::take(&mut system.a_inside);
+        a_inside.resize(pairs.len(), None);
+        let (bodies, seconds) = host_bodies(system, &options)?;
+        check_host_dimension(&bodies, &a_inside, SOLID_DIM)?;
+        let pairs = (pairs.iter().enumerate())
+            .map(|(i, p)| local_pair(p, &bodies).map_err(|e| in_pair(i, e)))
+            .collect::<Result<Vec<_>>>()?;
+        let parts = FaceParts::new(&pairs, bodies.positions(), symmetry)?;
+        let dofs = (0..bodies.positions().len()).collect();
+        let mut analysis = parts.setup(Box::new(bodies), dofs, options, Some(a_inside))?;
+        analysis.driver.timings.factorization = seconds;
+        Ok(analysis)
+    }
+}
+
+/// What the 3D constructors build from their face pairs alike: each pair's geometry, nodes
+/// and friction law.
+struct FaceParts {
+    geometries: Vec<FaceGeometry>,
+    nodes: Vec<PairNodes>,
+    laws: Vec<Box<dyn FrictionLaw>>,
+}
+
+impl FaceParts {
+    /// The parts of `pairs` (checked) at the positions `x` (3 per node, indexed by the pairs'
+    /// node ids) with the `symmetry` planes.
+    ///
+    /// # Errors
+    /// Those of [`FaceGeometry::new`], naming the pair.
+    fn new(pairs: &[FacePair], x: &[f64], symmetry: &[SymmetryPlane]) -> Result<Self> {
         let geometries = (pairs.iter().enumerate())
             .map(|(i, p)| {
                 FaceGeometry::new(p.a.clone(), p.b.clone(), x, None, symmetry)
                     .map_err(|e| in_pair(i, e))
             })
             .collect::<Result<Vec<_>>>()?;
-        let node_pairs: Vec<PairNodes> = (geometries.iter())
+        let nodes = (geometries.iter())
             .map(|g| PairNodes {
                 a: g.a_nodes().to_vec(),
                 b: g.b_nodes().to_vec(),
@@ -164,20 +281,55 @@ impl ContactAnalysis {
         let laws = (pairs.iter())
             .map(|p| Ok(Box::new(Coulomb::new(p.friction)?) as Box<dyn FrictionLaw>))
             .collect::<Result<_>>()?;
-        let dofs = contact_dofs(&node_pairs, SOLID_DIM);
-        let lazy = options.kinematics == Kinematics::Small;
-        let bodies = SolidBodies::new(model, &dofs, options.backend, lazy, options.threads)?;
-        let geometries = (geometries.into_iter())
+        Ok(FaceParts {
+            geometries,
+            nodes,
+            laws,
+        })
+    }
+
+    /// The analysis of these parts on `bodies` ([`ContactAnalysis::setup`]).
+    fn setup(
+        self,
+        bodies: Box<dyn Bodies>,
+        dofs: Vec<usize>,
+        options: ContactOptions,
+        a_inside: Option<Vec<Option<Vector>>>,
+    ) -> Result<ContactAnalysis> {
+        let geometries = (self.geometries.into_iter())
             .map(|g| Box::new(g) as Box<dyn ContactGeometry>)
             .collect();
-        Self::setup(
-            Box::new(bodies),
-            node_pairs,
-            laws,
-            geometries,
-            dofs,
-            options,
-            None,
+        ContactAnalysis::setup(
+            bodies, self.nodes, self.laws, geometries, dofs, options, a_inside,
         )
     }
+}
+
+/// A host's face pair with its node ids translated into the bodies' local numbering.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming the side, the face and a node that is not one of the host's
+/// contact nodes.
+fn local_pair(pair: &FacePair, bodies: &HostBodies) -> Result<FacePair> {
+    let side = |faces: &[[usize; 4]], name: &str| {
+        (faces.iter().enumerate())
+            .map(|(i, face)| {
+                let mut local = [0; 4];
+                for (l, &k) in local.iter_mut().zip(face) {
+                    *l = bodies.local(k).ok_or_else(|| {
+                        Error::InvalidInput(format!(
+                            "{name} face {i} {face:?}: node {k} is not one of the host's \
+                             contact nodes"
+                        ))
+                    })?;
+                }
+                Ok(local)
+            })
+            .collect::<Result<Vec<_>>>()
+    };
+    Ok(FacePair {
+        a: side(&pair.a, "A")?,
+        b: side(&pair.b, "B")?,
+        friction: pair.friction,
+    })
 }
