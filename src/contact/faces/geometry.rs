@@ -182,10 +182,10 @@ fn centre_frame(q: &Quad) -> (Vector3<f64>, Vector3<f64>, f64) {
 /// The two sides face each other somewhere, at any distance: some A face and some B face have
 /// normals opposed by more than 60 degrees (`n_A . n_B < -1/2`, as
 /// [`ContactGeometry::facing`] judges a node) and each lies in front of the other, or
-/// within half its size behind it (touching). Otherwise no motion of the bodies that keeps
-/// their orientation closes the pair: the faces were given on the wrong sides (the back of a
-/// body, the same side twice). `O(|A| |B|)` at worst, where it fails; it stops at the first
-/// facing pair.
+/// within half its size behind it (touching). Otherwise the pair closes only if a body turns
+/// over or passes through the other: the faces were given on the wrong sides (the back of a
+/// body, faces turned the same way). `O(|A| |B|)` at worst, where it fails; it stops at the
+/// first facing pair.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] saying that the sides never face each other.
