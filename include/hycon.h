@@ -1935,8 +1935,10 @@ HyconStatus hycon_solid_model_prescribe(struct HyconSolidModel *model,
 // Errors: `HYCON_ERROR_NULL_POINTER` (`model`, `a`, `b`, or their `faces` with `n > 0`);
 // `HYCON_ERROR_INVALID_ARGUMENT` naming the side and the face for an unknown brick or local
 // face, a side without faces, a face that is not a boundary face of the mesh (shared by two
-// bricks) or is listed twice, a bad friction coefficient, a misaligned pointer. (A and B
-// sharing a node and faces the kernel cannot integrate are refused by
+// bricks) or is listed twice, a side that is not one connected surface (faces joined by
+// shared edges, at most two on an edge), both sides on one body (bricks joined by shared
+// nodes), a bad friction coefficient, a misaligned pointer. (Faces the kernel cannot
+// integrate, warped beyond 45 degrees, and sides that never face each other are refused by
 // `hycon_solid_contact_new`.) On an error the model is unchanged.
 //
 // # Safety
@@ -1969,8 +1971,10 @@ HyconStatus hycon_solid_model_add_symmetry_plane(struct HyconSolidModel *model,
 //
 // Errors: `HYCON_ERROR_SINGULAR` (a body not held against rigid motion),
 // `HYCON_ERROR_INVALID_ARGUMENT` naming the pair (bad options, A and B sharing a node, a
-// contact face the kernel cannot integrate, no continuous tangent frame over a pair: split
-// the surface into pairs, a symmetry plane no model node lies on), `HYCON_ERROR_SOLVER`.
+// contact face the kernel cannot integrate (degenerate, warped beyond 45 degrees), sides that
+// never face each other (no A face and B face with opposed normals each in front of the
+// other, at any distance), no continuous tangent frame over a pair: split the surface into
+// pairs, a symmetry plane no model node lies on), `HYCON_ERROR_SOLVER`.
 //
 // # Safety
 // `out` must point to a writable pointer, `model` be a live handle, `options` NULL or

@@ -753,7 +753,7 @@ mod solid_analysis {
     }
 
     /// The constructor's checks, each named: friction, an empty side, a node out of range, a
-    /// face listed clockwise, an interior face, a face listed twice, a node on both sides, a
+    /// face listed clockwise, an interior face, a face listed twice, a side in two pieces, a
     /// non-finite position, a bad symmetry plane.
     #[test]
     fn bad_pairs_are_named() {
@@ -802,14 +802,16 @@ mod solid_analysis {
         let mut p = pair(&c, 0.0);
         p.a.push(p.a[0]);
         bad(p, "listed twice");
-        // a side face of the block at its bottom edge shares two nodes with A
+        // a side face of the block at its bottom edge shares two nodes with A, and none with
+        // B's faces: B is no longer one surface (A and B sharing a node is refused by
+        // `FaceGeometry::new` too: `face_geometry::bad_faces_are_named`)
         let side = (FACES.iter())
             .map(|f| f.map(|k| e0[k]))
             .find(|f| f.iter().all(|&k| c.mesh.nodes[k][0] == -0.5))
             .unwrap();
         let mut p = pair(&c, 0.0);
         p.b.push(side);
-        bad(p, "belongs to both sides");
+        bad(p, "contact side B is not one connected surface");
         let mut m = model(&c);
         m.mesh.nodes[c.a_faces[0][0]][2] = f64::NAN;
         let e = refused(m, pair(&c, 0.0), &[]);

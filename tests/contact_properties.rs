@@ -26,6 +26,10 @@
 //! (`u_r = 0` held on the axis). Their rigid motions are the translations along the axis: the
 //! properties are the zero increment, an axial translation, unit scaling and renumbering, to
 //! the same tolerances.
+//!
+//! The 3D analysis on random presses of a turned block on a flat (32 cases, module `solid`):
+//! a rigid motion, unit scaling and renumbering, to round-off as the press's own condition
+//! measures it.
 
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, ContactPair, Kinematics};
 use hycon::element::Formulation;
@@ -35,7 +39,7 @@ use hycon::{Analysis, Error, Material};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
-use crate::common::block;
+use crate::common::{block, permutation};
 
 /// One random problem.
 #[derive(Debug, Clone)]
@@ -324,19 +328,6 @@ fn tolerance(p: &Problem) -> f64 {
         Kinematics::Small => 1e-8,
         Kinematics::Finite => 1e-5,
     }
-}
-
-/// A permutation of `0..n` from `seed` (Fisher-Yates with a small LCG).
-fn permutation(n: usize, seed: u64) -> Vec<usize> {
-    let mut perm: Vec<usize> = (0..n).collect();
-    let mut state = seed | 1;
-    for i in (1..n).rev() {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        perm.swap(i, (state >> 33) as usize % (i + 1));
-    }
-    perm
 }
 
 /// The problem's node count.
@@ -628,5 +619,135 @@ fn a_rotation_changes_no_threshold() {
         };
         let got = run(&p, &rotated).unwrap();
         assert!(same(&base.0, &got.0, 1.0, 1e-10), "rotated by {angle} rad");
+    }
+}
+
+/// The 3D analysis (`ContactAnalysis::solid`) on random presses of a turned block on a flat
+/// ([`press3d`](crate::common::press3d)): random meshes of either brick, turn, block size, gap,
+/// press, slide in both directions, moduli, Poisson's ratios and friction, under small
+/// kinematics (32 cases). Every press converges, and a rigid motion (a random rotation and a
+/// translation up to 1e2), unit scaling and renumbering (with the bricks and faces listed in
+/// another order, each face from another corner) give its results, mapped back: the tractions
+/// (as vectors), forces, weights, normals and every node's displacement, and with them the
+/// tangents where the variant keeps the reference axis; to 1e-8 of each quantity's scale or
+/// ten times the change that moving every coordinate by `4 eps |X|` makes (`|X|` the size of
+/// the variant's coordinates), whichever is larger: a measure of the press's own condition.
+/// Near the stick-slip boundary a slip node's direction is that of a nearly vanishing
+/// 2-vector, which amplifies round-off far beyond the plane's `1e4 eps |X| / approach` (a
+/// press with two such nodes changed by 7e-8 of its tractions when moved by 13, and by 3e-8
+/// with its coordinates moved by `2 eps |X|` at random). A press that round-off changes by
+/// more than 1e-5 fails the test (its states would flip: an ill-posed press).
+mod solid {
+    use crate::common::permutation;
+    use crate::common::press3d::{Press, Variant, difference, run};
+    use hycon::contact::iteration::ContactOptions;
+    use hycon::solid::BrickFormulation;
+    use hycon::solid::contact_meshes::BlockOnFlat;
+    use nalgebra::Rotation3;
+    use proptest::prelude::*;
+    use proptest::test_runner::RngSeed;
+
+    /// A block of `1..=3 x 1..=3` bricks, `0.4..1` wide and `0.3..1` high, turned `0..90`
+    /// degrees, `0..1e-3` above a flat of `1.6 x 1.6 x 0.5` in `1..=4 x 1..=4` bricks (it covers
+    /// the turned block), pressed by the gap and `1e-4..1e-2` more, then slid by up to a fifth
+    /// of that along `x` and `y`.
+    fn press() -> impl Strategy<Value = Press> {
+        (
+            (1usize..=3, 1usize..=3, 1usize..=4, 1usize..=4),
+            (0.0f64..90.0, 0.4f64..1.0, 0.4f64..1.0, 0.3f64..1.0),
+            (0.0f64..1e-3, 1e-4f64..1e-2, -0.2f64..0.2, -0.2f64..0.2),
+            (-2.0f64..2.0, -0.2f64..0.45, -0.2f64..0.45),
+            (prop_oneof![Just(0.0), 0.05f64..0.6], any::<bool>()),
+        )
+            .prop_map(
+                |(
+                    (ax, ay, bx, by),
+                    (angle, lx, ly, lz),
+                    (gap, depth, sx, sy),
+                    (log_ratio, nu0, nu1),
+                    (friction, hybrid),
+                )| {
+                    let press = gap + depth;
+                    Press {
+                        meshes: BlockOnFlat {
+                            size: [lx, ly, lz],
+                            cells: [ax, ay, 1],
+                            flat: [1.6, 1.6, 0.5],
+                            flat_cells: [bx, by, 1],
+                            angle,
+                        },
+                        gap,
+                        moduli: [1.0, 10f64.powf(log_ratio)],
+                        poisson: [nu0, nu1],
+                        friction,
+                        formulation: if hybrid {
+                            BrickFormulation::Hybrid18
+                        } else {
+                            BrickFormulation::H8
+                        },
+                        steps: vec![[0.0, 0.0, -press], [sx * depth, sy * depth, -press]],
+                    }
+                },
+            )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig {
+            cases: 32,
+            rng_seed: RngSeed::Fixed(0x0068_7963_6f33),
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        })]
+
+        #[test]
+        fn variants_agree_in_3d(
+            p in press(),
+            angles in (-3.1f64..3.1, -1.5f64..1.5, -3.1f64..3.1),
+            translation in (-1e2f64..1e2, -1e2f64..1e2, -1e2f64..1e2),
+            scales in (-3i32..=3, -3i32..=3),
+            seed in any::<u64>(),
+        ) {
+            let options = ContactOptions::default;
+            let base = run(&p, &Variant::identity(), options());
+            prop_assert!(base.is_ok(), "the press fails: {base:?}");
+            let base = base.unwrap();
+            let t = [translation.0, translation.1, translation.2];
+            // round-off: what moving every coordinate by 4 eps |X| does to this press (ten times
+            // it), |X| its coordinates' size, or 1e-8 of each quantity's scale
+            let round_off = |size: f64| -> std::result::Result<f64, TestCaseError> {
+                let noise = Variant { noise: 4.0 * f64::EPSILON * size, ..Variant::identity() };
+                let got = run(&p, &noise, options());
+                prop_assert!(got.is_ok(), "coordinates moved by round-off: {got:?}");
+                let d = difference(&base, &got.unwrap(), false);
+                // (a press that round-off changes by more is ill-posed: its states flip)
+                prop_assert!(d <= 1e-5, "coordinates moved by round-off: relative change {d:e}");
+                Ok(1e-8f64.max(10.0 * d))
+            };
+            let within = round_off(3.0)?;
+            let rigid = round_off(t.iter().map(|v| v * v).sum::<f64>().sqrt() + 3.0)?;
+            let n = p.meshes.build().unwrap().mesh.n_nodes();
+            let variants = [
+                ("rigid motion", Variant {
+                    rotation: Rotation3::from_euler_angles(angles.0, angles.1, angles.2),
+                    translation: t,
+                    ..Variant::identity()
+                }, false, rigid),
+                ("unit scaling", Variant {
+                    length_scale: 10f64.powi(scales.0),
+                    modulus_scale: 10f64.powi(scales.1),
+                    ..Variant::identity()
+                }, true, within),
+                ("renumbering", Variant {
+                    perm: Some(permutation(n, seed)),
+                    ..Variant::identity()
+                }, true, within),
+            ];
+            for (what, v, tangents, tolerance) in variants {
+                let got = run(&p, &v, options());
+                prop_assert!(got.is_ok(), "{what}: {got:?}");
+                let d = difference(&base, &got.unwrap(), tangents);
+                prop_assert!(d <= tolerance, "{what}: relative difference {d:e}");
+            }
+        }
     }
 }

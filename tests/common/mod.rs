@@ -3,6 +3,21 @@
 
 use hycon::mesh::Mesh;
 
+pub mod press3d;
+
+/// A permutation of `0..n` from `seed` (Fisher-Yates with a small LCG).
+pub fn permutation(n: usize, seed: u64) -> Vec<usize> {
+    let mut perm: Vec<usize> = (0..n).collect();
+    let mut state = seed | 1;
+    for i in (1..n).rev() {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        perm.swap(i, (state >> 33) as usize % (i + 1));
+    }
+    perm
+}
+
 /// A grid block from `origin` of `size` in `cells` quads of material `material` into `mesh`;
 /// its node ids row by row.
 pub fn block(

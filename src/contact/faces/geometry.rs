@@ -33,6 +33,7 @@
 use super::clip::{AuxPlane, check_face, point, v3};
 use super::mortar::inverse_bilinear;
 use super::surface::{SurfaceFaces, SurfaceMortar};
+use super::topology::{check_surface, edges};
 use super::{CORNERS, Quad, SurfaceFrames, SymmetryPlane};
 use crate::contact::geometry::{
     Adjacency, BNodeDistance, ContactGeometry, ContactNode, ContactSurface, Facing, FacingTally,
@@ -90,14 +91,6 @@ fn vector_area(q: &Quad) -> Vector3<f64> {
     (v3(q[2]) - v3(q[0])).cross(&(v3(q[3]) - v3(q[1]))) * 0.5
 }
 
-/// The edges of a face as node-id pairs, smaller first.
-fn edges(f: &[usize; 4]) -> impl Iterator<Item = (usize, usize)> + '_ {
-    (0..4).map(|i| {
-        let (p, q) = (f[i], f[(i + 1) % 4]);
-        (p.min(q), p.max(q))
-    })
-}
-
 /// Where point `p` projects on face `q` along the face's auxiliary normal `n_0`.
 struct OnFace {
     /// Natural coordinates of the projection (unclamped; outside `[-1, 1]^2` off the face).
@@ -144,7 +137,8 @@ impl OnFace {
 }
 
 /// The checks of [`FaceGeometry::new`] on the faces at `x`: each side has a face, node ids in
-/// range, no node on both sides, every face passing [`check_face`].
+/// range, each side one surface ([`check_surface`]), no node on both sides, every face passing
+/// [`check_face`], and the sides facing each other somewhere ([`check_facing_somewhere`]).
 fn check_pair(a_faces: &[[usize; 4]], b_faces: &[[usize; 4]], x: &[[f64; 3]]) -> Result<()> {
     let sides = [("A", a_faces), ("B", b_faces)];
     let mut corners = Vec::new();
@@ -155,6 +149,7 @@ fn check_pair(a_faces: &[[usize; 4]], b_faces: &[[usize; 4]], x: &[[f64; 3]]) ->
             )));
         }
         corners.push(SurfaceFaces { x, faces }.corners(side)?);
+        check_surface(side, faces)?;
     }
     let b = nodes_of(b_faces);
     if let Some(&k) = a_faces
@@ -175,7 +170,41 @@ fn check_pair(a_faces: &[[usize; 4]], b_faces: &[[usize; 4]], x: &[[f64; 3]]) ->
             check_face(quad, &format!("{side} face {i}"))?;
         }
     }
-    Ok(())
+    check_facing_somewhere(&corners[0], &corners[1])
+}
+
+/// A face's unit normal at its centre, its centre and its size (the square root of its area).
+fn centre_frame(q: &Quad) -> (Vector3<f64>, Vector3<f64>, f64) {
+    let plane = AuxPlane::of(q);
+    (plane.normal, plane.origin, vector_area(q).norm().sqrt())
+}
+
+/// The two sides face each other somewhere, at any distance: some A face and some B face have
+/// normals opposed by more than 60 degrees (`n_A . n_B < -1/2`, as
+/// [`ContactGeometry::facing`] judges a node) and each lies in front of the other, or
+/// within half its size behind it (touching). Otherwise the pair closes only if a body turns
+/// over or passes through the other: the faces were given on the wrong sides (the back of a
+/// body, faces turned the same way). `O(|A| |B|)` at worst, where it fails; it stops at the
+/// first facing pair.
+///
+/// # Errors
+/// [`Error::InvalidInput`] saying that the sides never face each other.
+fn check_facing_somewhere(a: &[Quad], b: &[Quad]) -> Result<()> {
+    let b_frames: Vec<_> = b.iter().map(centre_frame).collect();
+    let face = |(na, ca, ha): &(Vector3<f64>, Vector3<f64>, f64)| {
+        b_frames.iter().any(|(nb, cb, hb)| {
+            na.dot(nb) < -0.5 && (cb - ca).dot(na) >= -0.5 * ha && (ca - cb).dot(nb) >= -0.5 * hb
+        })
+    };
+    if a.iter().map(centre_frame).any(|f| face(&f)) {
+        return Ok(());
+    }
+    Err(Error::InvalidInput(
+        "the sides never face each other: no B face lies in front of an A face with its \
+         normal against A's (every B face turns the same way as the A faces near it, or lies \
+         behind them); check which faces are on side A (the multiplier side) and which on B"
+            .into(),
+    ))
 }
 
 /// How A's faces connect.
@@ -251,9 +280,11 @@ impl FaceGeometry {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] for `x` not 3 values per node, no A or no B face, a node id out
-    /// of range (naming the face and the node), a failing face (degenerate, warped; naming
-    /// it), a node of both A and B (naming it and a face of each), and the errors of
-    /// [`SurfaceFrames::new`] for A's frames at `x` (naming the node).
+    /// of range (naming the face and the node), a side that is not one connected surface
+    /// ([`check_surface`]), a node of both A and B (naming it and a face of each), a failing
+    /// face (degenerate, warped; naming it), sides that never face each other (at any
+    /// distance: no A face and B face with opposed normals each in front of the other), and
+    /// the errors of [`SurfaceFrames::new`] for A's frames at `x` (naming the node).
     pub fn new(
         a_faces: Vec<[usize; 4]>,
         b_faces: Vec<[usize; 4]>,

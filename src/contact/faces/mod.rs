@@ -57,6 +57,7 @@
 //!   face pair and of one face.
 //! * [`pairing`]: the candidate (A face, B face) pairs by a bounding-box grid.
 //! * [`surface`]: the integrals assembled over two surfaces (per node), with coverage.
+//! * [`topology`]: one side's faces form one connected surface; connected pieces.
 //!
 //! # Reference
 //! M. A. Puso and T. A. Laursen, "A mortar segment-to-segment contact method for large
@@ -68,6 +69,7 @@ pub mod geometry;
 pub mod mortar;
 pub mod pairing;
 pub mod surface;
+pub mod topology;
 
 pub use clip::{AuxPlane, Overlap, overlap};
 pub use frames::{NodeFrame, SurfaceFrames, SymmetryPlane};
@@ -75,6 +77,7 @@ pub use geometry::FaceGeometry;
 pub use mortar::{FaceMass, FacePair, face_mass, face_pair};
 pub use pairing::pair_faces;
 pub use surface::{SurfaceFaces, SurfaceMortar};
+pub use topology::{Pieces, check_surface};
 
 /// A brick face: 4 corners, counter-clockwise seen from outside (see the module docs).
 pub type Quad = [[f64; 3]; 4];

@@ -14,7 +14,7 @@ use super::{
     contact_dofs, host_bodies, in_pair,
 };
 use crate::contact::bodies::{Bodies, HostBodies, HostSystem, SolidBodies};
-use crate::contact::faces::{FaceGeometry, SymmetryPlane};
+use crate::contact::faces::{FaceGeometry, Pieces, SymmetryPlane, check_surface};
 use crate::contact::friction::{Coulomb, FrictionLaw};
 use crate::contact::geometry::ContactGeometry;
 use crate::contact::space::Vector;
@@ -43,20 +43,24 @@ pub struct FacePair {
 impl FacePair {
     /// Check the pair against `mesh`: friction finite and `>= 0`, each side at least one face,
     /// every face a boundary face of one brick listed outward (counter-clockwise seen from
-    /// outside, from any corner), no face listed twice in the pair, finite node positions.
-    /// (A and B sharing a node, and faces the mortar kernel cannot integrate, are refused by
-    /// [`FaceGeometry::new`].)
+    /// outside, from any corner), no face listed twice in the pair, finite node positions,
+    /// each side one connected surface ([`check_surface`]: so on one body), the two sides on
+    /// different bodies (the mesh's connected pieces, bricks joined by shared nodes). (A and
+    /// B sharing a node, faces the mortar kernel cannot integrate and sides that never face
+    /// each other are refused by [`FaceGeometry::new`].)
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming the side, the face and what is wrong.
     pub fn check_on(&self, mesh: &SolidMesh) -> Result<()> {
         let index = boundary_faces(mesh);
-        self.check_faces(|face| check_face(mesh, &index, face))
+        self.check_faces(|face| check_face(mesh, &index, face))?;
+        check_bodies(mesh, &self.a, &self.b)
     }
 
     /// Check the pair without a mesh, as a host's faces are (node ids of its numbering):
     /// friction finite and `>= 0`, each side at least one face, every face of 4 distinct
-    /// nodes, no face listed twice in the pair, no node on both sides. (Whether the nodes are
+    /// nodes, no face listed twice in the pair, each side one connected surface
+    /// ([`check_surface`]), no node on both sides. (Whether the nodes are
     /// the host's, at finite positions, and faces the mortar kernel cannot integrate are
     /// refused by [`ContactAnalysis::solid_host`] and [`FaceGeometry::new`].)
     ///
@@ -99,6 +103,7 @@ impl FacePair {
                     )));
                 }
             }
+            check_surface(side, faces)?;
         }
         Ok(())
     }
@@ -110,6 +115,28 @@ fn distinct_corners(face: &[usize; 4]) -> std::result::Result<(), String> {
         Some(i) => Err(format!("node {} appears twice", face[i])),
         None => Ok(()),
     }
+}
+
+/// Sides `a` and `b` (checked faces of `mesh`, each one connected surface) lie on different
+/// bodies: the connected pieces of the mesh, bricks joined by shared nodes.
+///
+/// # Errors
+/// [`Error::InvalidInput`] when one body holds both sides, naming a face of each.
+fn check_bodies(mesh: &SolidMesh, a: &[[usize; 4]], b: &[[usize; 4]]) -> Result<()> {
+    let mut bodies = Pieces::new(mesh.n_nodes());
+    for brick in &mesh.elements {
+        for k in &brick[1..] {
+            bodies.join(brick[0], *k);
+        }
+    }
+    if bodies.root(a[0][0]) == bodies.root(b[0][0]) {
+        return Err(Error::InvalidInput(format!(
+            "both sides are on one body (its bricks join A face 0 {:?} to B face 0 {:?} \
+             through shared nodes): a pair joins two bodies",
+            a[0], b[0]
+        )));
+    }
+    Ok(())
 }
 
 /// A face's node ids sorted: its key in [`boundary_faces`].
@@ -178,9 +205,10 @@ impl ContactAnalysis {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming the pair for a bad option, a bad face set
-    /// ([`FacePair::check_on`]), a node in both sides, a face the kernel cannot integrate or
-    /// a surface without a continuous tangent frame ([`FaceGeometry::new`]), a bad symmetry
-    /// plane; the errors of the factorization (a body not held: [`Error::Singular`]).
+    /// ([`FacePair::check_on`]), a node in both sides, a face the kernel cannot integrate,
+    /// sides that never face each other or a surface without a continuous tangent frame
+    /// ([`FaceGeometry::new`]), a bad symmetry plane; the errors of the factorization (a body
+    /// not held: [`Error::Singular`]).
     pub fn solid(
         model: SolidModel,
         pairs: Vec<FacePair>,
