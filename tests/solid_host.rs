@@ -683,11 +683,12 @@ fn bad_host_input_is_named_in_the_core() {
         refused(|_, p| p.a[0][1] = 1_000_000),
         "node 1000000 is not one of the host's contact nodes",
     );
-    // the A faces reversed: A and B run the same way; both reversed (back to back, which
-    // touching faces cannot tell): the point inside A lies on A's outward side
+    // the A faces reversed: A and B turn the same way, so they never face each other; both
+    // reversed (back to back, which touching faces cannot tell): the point inside A lies on
+    // A's outward side
     check(
         refused(|_, p| p.a.iter_mut().for_each(|f| f.reverse())),
-        "A and B run the same way",
+        "the sides never face each other",
     );
     check(
         refused(|_, p| {
