@@ -362,6 +362,19 @@ impl HertzSphere {
         let s = 1.0 - (r / self.radius).powi(2);
         if s > 0.0 { self.peak * s.sqrt() } else { 0.0 }
     }
+
+    /// The Hertz pressure with the moments `m1 = integral p r dr` and `m3 = integral p r^3 dr`
+    /// of a computed pressure (per radian: `integral p dA = 2 pi m1`, `integral p r^2 dA =
+    /// 2 pi m3`): for Hertz `m3 / m1 = 2 a^2 / 5` and `m1 = p0 a^2 / 3`, so
+    /// `a = sqrt(5 m3 / (2 m1))` and `p0 = 3 m1 / a^2 = 6 m1^2 / (5 m3)` (the same as
+    /// `3 P / (2 pi a^2)` with `P = 2 pi m1`). How the axisymmetric and the 3D spheres report
+    /// their contact radius and peak.
+    pub fn from_moments(m1: f64, m3: f64) -> Self {
+        HertzSphere {
+            radius: (2.5 * m3 / m1).sqrt(),
+            peak: 1.2 * m1 * m1 / m3,
+        }
+    }
 }
 
 /// A sphere (radius `R`) pressed onto a half-space, axisymmetric: the sphere as the quarter
@@ -521,12 +534,9 @@ pub struct SphereComparison {
     pub hertz: HertzSphere,
     /// Peak pressure read at the axis: the multiplier of the node at `r = 0`.
     pub peak: f64,
-    /// Peak pressure from the moments on `r dr`: for Hertz `M1 = integral p r dr = p0 a^2 / 3`,
-    /// so `p0 = 3 M1 / a^2 = 6 M1^2 / (5 M3)` with `a` from [`radius`](Self::radius) (the same
-    /// as `3 P / (2 pi a^2)`, `P = 2 pi M1`).
+    /// Peak pressure from the moments on `r dr` ([`HertzSphere::from_moments`]).
     pub peak_from_moments: f64,
-    /// Contact radius from the pressure's moments on `r dr`: for Hertz
-    /// `integral p r^3 dr / integral p r dr = 2 a^2 / 5`, so `a = sqrt(5 M3 / (2 M1))`.
+    /// Contact radius from the pressure's moments on `r dr` ([`HertzSphere::from_moments`]).
     pub radius: f64,
     /// `||p_h - p_H|| / ||p_H||` in L2 over `r dr` (the surface measure), `p_h` linear
     /// between the A nodes.
@@ -539,7 +549,7 @@ pub struct SphereComparison {
 }
 
 /// 5-point Gauss-Legendre on [0, 1]: (abscissa, weight).
-const GAUSS5: [(f64, f64); 5] = [
+pub(crate) const GAUSS5: [(f64, f64); 5] = [
     (0.046_910_077_030_668, 0.118_463_442_528_095),
     (0.230_765_344_947_158, 0.239_314_335_249_683),
     (0.5, 0.284_444_444_444_444_4),
@@ -576,27 +586,44 @@ impl SphereScene {
             .map(|n| -(n.frame.normal().dot(&n.force)))
             .sum();
         let hertz = HertzSphere::new(load, 1.0, self.e_star);
-        let sorted = |pressure: &dyn Fn(&NodeResult) -> f64| -> Vec<[f64; 2]> {
-            let mut points: Vec<[f64; 2]> = nodes
-                .iter()
-                .map(|n| [self.model.mesh.nodes[n.node][0], pressure(n)])
-                .collect();
-            points.sort_by(|u, v| u[0].total_cmp(&v[0]));
-            points
-        };
-        let points = sorted(&|n| -n.tn);
-        let from_forces = sorted(&|n| -(n.frame.normal().dot(&n.force)) / n.weight);
+        let points = self.profile(&nodes, |n| -n.tn);
+        let from_forces = self.profile(&nodes, |n| -(n.frame.normal().dot(&n.force)) / n.weight);
         let m = moments(&points, &hertz);
+        let fit = HertzSphere::from_moments(m.m1, m.m3);
         Ok(SphereComparison {
             load,
             hertz,
             peak: points[0][1],
-            peak_from_moments: 1.2 * m.m1 * m.m1 / m.m3,
-            radius: (2.5 * m.m3 / m.m1).sqrt(),
+            peak_from_moments: fit.peak,
+            radius: fit.radius,
             l2_error: m.l2_error,
             l2_error_forces: moments(&from_forces, &hertz).l2_error,
             active: nodes.iter().filter(|n| n.tn < 0.0).count(),
         })
+    }
+}
+
+impl SphereScene {
+    /// The contact pressure `-tn` (the multipliers) at the A nodes, `[r, p]` sorted by `r`.
+    ///
+    /// # Errors
+    /// Those of `ContactAnalysis::node_results` (no converged increment).
+    pub fn pressure_profile(&self, analysis: &ContactAnalysis) -> Result<Vec<[f64; 2]>> {
+        Ok(self.profile(&analysis.node_results(0)?, |n| -n.tn))
+    }
+
+    /// `[r, pressure(node)]` of the A nodes `nodes`, sorted by `r`.
+    fn profile(
+        &self,
+        nodes: &[NodeResult],
+        pressure: impl Fn(&NodeResult) -> f64,
+    ) -> Vec<[f64; 2]> {
+        let mut points: Vec<[f64; 2]> = nodes
+            .iter()
+            .map(|n| [self.model.mesh.nodes[n.node][0], pressure(n)])
+            .collect();
+        points.sort_by(|u, v| u[0].total_cmp(&v[0]));
+        points
     }
 }
 

@@ -369,14 +369,33 @@ enum Bench {
         positions: usize,
     },
     /// Hertz's sphere in 3D (`hycon_lab::hertz3d`): the quarter paraboloid cap on a block,
-    /// frictionless, pressed by Hertz's approach of the target radius, per a/h: the contact
-    /// radius and the peak pressure against Hertz at the computed load, the pressure within
-    /// a/2, the load against Hertz's for the approach (above it by the finite bodies'
-    /// stiffening), and the time.
+    /// frictionless, pressed by Hertz's approach of the target radius, per modulus ratio,
+    /// block size and a/h: the contact radius and the peak from the pressure's moments, the
+    /// centre node's pressure and the L2 error of the pressure against Hertz at the computed
+    /// load; the load against Hertz's for the approach (above it by the finite bodies'
+    /// stiffening) and against the finite bodies' reference; the time split against a linear
+    /// analysis of the same model; with --radial the pressure along x against hycon's
+    /// axisymmetric sphere at the same load.
     Hertz3d {
         /// Faces per target contact radius at the centre, comma separated.
         #[arg(long, value_delimiter = ',', default_values_t = [4, 8])]
         a_over_h: Vec<usize>,
+        /// E_cap / E_block, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [1.0, 0.01])]
+        modulus_ratio: Vec<f64>,
+        /// The block's half-width and depth in a, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [16.0])]
+        block: Vec<f64>,
+        /// The cap's half-width and height in a, comma separated (at most 12 at R/a = 16).
+        #[arg(long, value_delimiter = ',', default_values_t = [8.0])]
+        cap: Vec<f64>,
+        /// Also compare the pressure along x with the axisymmetric sphere's.
+        #[arg(long)]
+        radial: bool,
+        /// Runs of the contact analysis and of the linear analysis per row; each time split
+        /// the fastest (the errors are the same every run).
+        #[arg(long, default_value_t = 1)]
+        repeats: usize,
     },
     /// What skipping unneeded work saves, on the reference Hertz scene (frictionless, a = R/64,
     /// calibration + 3 increments): each figure the fastest of --repeats runs.
@@ -986,32 +1005,130 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
     Ok(())
 }
 
-/// `bench sphere-edge`: a row per run, a summary per n and R/a, the rate over n per R/a.
-/// `hycon bench hertz3d`: one row per a/h.
-fn hertz3d(a_over_h: &[usize]) -> AnyResult {
-    println!(
-        "{:>4} {:>7} {:>6} {:>8} {:>8} {:>10} {:>8} {:>8}",
-        "a/h", "active", "iters", "a %", "p0 %", "p(r<a/2)%", "P %", "seconds"
-    );
-    for &n in a_over_h {
-        let clock = std::time::Instant::now();
-        let mut cap = hycon_lab::hertz3d::QuarterCap::new(
-            n,
-            hycon::contact::iteration::ContactOptions::default(),
-        )?;
-        let c = cap.press()?;
-        let [radius, peak, load] = c.errors().map(|e| 100.0 * e);
-        println!(
-            "{n:>4} {:>7} {:>6} {radius:>+8.3} {peak:>+8.3} {:>10.3} {load:>+8.3} {:>8.2}",
-            c.active,
-            c.iterations,
-            100.0 * c.interior,
-            clock.elapsed().as_secs_f64()
-        );
+/// `hycon bench hertz3d`: one row per modulus ratio, cap and block size (`[caps, blocks]`)
+/// and a/h, each followed by the time split, the fastest of `repeats` runs of each analysis
+/// (and the radial comparison with `radial`).
+fn hertz3d(
+    a_over_h: &[usize],
+    ratios: &[f64],
+    [caps, blocks]: [&[f64]; 2],
+    radial: bool,
+    repeats: usize,
+) -> AnyResult {
+    use hycon::solid::contact_meshes::{CapModel, CapOnBlock};
+    use hycon_lab::hertz3d::QuarterCap;
+    let sizes = caps
+        .iter()
+        .flat_map(|&c| blocks.iter().map(move |&b| (c, b)));
+    for &ratio in ratios {
+        for (cap_extent, block) in sizes.clone() {
+            println!(
+                "E_cap/E_block = {ratio:e}, block {block} a wide and deep, cap {cap_extent} a"
+            );
+            println!(
+                "{:>4} {:>7} {:>7} {:>5} {:>8} {:>8} {:>8} {:>7} {:>9} {:>8} {:>8} {:>8} {:>7}",
+                "a/h",
+                "dofs",
+                "active",
+                "iters",
+                "a %",
+                "p0 %",
+                "p(0) %",
+                "L2 %",
+                "p(<a/2)%",
+                "P-PH %",
+                "cP/d %",
+                "P-P* %",
+                "seconds"
+            );
+            for &n in a_over_h {
+                let spec = CapOnBlock {
+                    block_extent: block,
+                    cap_extent,
+                    ..CapOnBlock::new(CapModel::Quarter, n)
+                };
+                // the errors are the same every run: the last run's kept, the fastest times
+                let mut runs = Vec::new();
+                let mut last = None;
+                for _ in 0..repeats.max(1) {
+                    drop(last.take()); // one model in memory at a time
+                    let mut cap = QuarterCap::with(spec, ratio, Default::default())?;
+                    let c = cap.press()?;
+                    let linear = cap.linear(c.load)?;
+                    runs.push((cap.analysis.timings(), linear));
+                    last = Some((cap, c));
+                }
+                let (cap, c) = last.expect("one run at least");
+                let phases = (runs.iter().map(|r| r.0))
+                    .min_by(|a, b| a.total().total_cmp(&b.total()))
+                    .expect("one run at least");
+                let linear = (runs.iter().map(|r| r.1))
+                    .min_by(|a, b| a.total().total_cmp(&b.total()))
+                    .expect("one run at least");
+                let seconds = phases.total();
+                let check = cap.load_check(&c, &linear);
+                let [radius, peak, load] = c.errors().map(|e| 100.0 * e);
+                println!(
+                    "{n:>4} {:>7} {:>7} {:>5} {radius:>+8.3} {:>+8.3} {peak:>+8.3} {:>7.3} \
+                     {:>9.3} {load:>+8.3} {:>+8.3} {:>+8.3} {seconds:>7.2}",
+                    3 * cap.mesh.mesh.n_nodes(),
+                    c.active,
+                    c.iterations,
+                    100.0 * c.peak_error(),
+                    100.0 * c.l2_error,
+                    100.0 * c.interior,
+                    100.0 * check.finite_share / check.approach,
+                    100.0 * check.error(),
+                );
+                print_time_split(
+                    &hycon_lab::hertz3d::time_split(phases, &linear),
+                    &format!(
+                        "; ordering {}, nnz(L) {:.3e}, fastest of {}",
+                        linear.ordering,
+                        linear.nnz_l as f64,
+                        repeats.max(1)
+                    ),
+                );
+                if radial {
+                    print_radial(&cap.radial_comparison(&c)?, &c);
+                }
+            }
+        }
     }
     Ok(())
 }
 
+/// The pressure along x against the axisymmetric sphere's: one line per node, the largest
+/// difference.
+fn print_radial(r: &hycon_lab::hertz3d::RadialComparison, c: &hycon_lab::hertz3d::CapComparison) {
+    let p0 = c.hertz.peak;
+    println!(
+        "   along x against the axisymmetric sphere at P_axi/P - 1 = {:+.1e} (its a {:+.3}%, p0 \
+         {:+.3}%, L2 {:.3}%; nodes {:.1e} h apart):",
+        r.load_mismatch(),
+        100.0 * (r.axisymmetric.radius / r.axisymmetric.hertz.radius - 1.0),
+        100.0 * (r.axisymmetric.peak_from_moments / r.axisymmetric.hertz.peak - 1.0),
+        100.0 * r.axisymmetric.l2_error,
+        r.offset
+    );
+    println!(
+        "   {:>7} {:>9} {:>9} {:>9} {:>9}",
+        "x/a", "p3d/p0", "paxi/p0", "pH/p0", "diff/p0"
+    );
+    for [x, p3, pa, ph] in &r.rows {
+        println!(
+            "   {:>7.4} {:>9.5} {:>9.5} {:>9.5} {:>+9.5}",
+            x / c.hertz.radius,
+            p3 / p0,
+            pa / p0,
+            ph / p0,
+            (p3 - pa) / p0
+        );
+    }
+    println!("   largest |p3d - paxi| / p0 = {:.4}", r.max_difference(p0));
+}
+
+/// `bench sphere-edge`: a row per run, a summary per n and R/a, the rate over n per R/a.
 fn sphere_edge(ns: &[usize], r_over_a: &[usize], positions: usize) -> AnyResult {
     println!(
         "{:>4} {:>4} {:>8} {:>5} {:>8} {:>8} {:>8} {:>8}",
@@ -1157,7 +1274,14 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             r_over_a,
             positions,
         } => sphere_edge(&n, &r_over_a, positions)?,
-        Bench::Hertz3d { a_over_h } => hertz3d(&a_over_h)?,
+        Bench::Hertz3d {
+            a_over_h,
+            modulus_ratio,
+            block,
+            cap,
+            radial,
+            repeats,
+        } => hertz3d(&a_over_h, &modulus_ratio, [&cap, &block], radial, repeats)?,
         Bench::Presses {
             count,
             seed,
@@ -1548,12 +1672,16 @@ fn print_run(run: &Run) {
         row += &format!(" | {:>7.4} s", inc.seconds);
         println!("{row}");
     }
-    let t = &run.timings;
+    print_time_split(&run.timings, " (calibration included)");
+}
+
+/// The time split of an analysis against a linear analysis of the same model, two lines
+/// (`note` after the increment count).
+fn print_time_split(t: &hycon_lab::examples::TimeSplit, note: &str) {
     let p = &t.phases;
     println!(
         "   time: assembly {:.3} s, factorization {:.3} s ({}x), flexibility {:.3} s, load solves \
-         {:.3} s, iterations {:.3} s, recovery {:.3} s; total {:.3} s over {} increments \
-         (calibration included)",
+         {:.3} s, iterations {:.3} s, recovery {:.3} s; total {:.3} s over {} increments{note}",
         p.assembly,
         p.factorization,
         t.factorizations,

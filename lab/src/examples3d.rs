@@ -30,9 +30,7 @@ use crate::examples::{
 };
 use crate::hertz3d::{self, QuarterCap};
 use crate::mindlin3d::{HalfCap, Pull};
-use crate::solid_scene::{Multipliers, SolidScene};
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, NodeResult};
-use hycon::solid::Isotropic;
 use hycon::solid::contact_meshes::{CapModel, CapOnBlock};
 use hycon::solid::model::{SolidModel, SolidSystem};
 use hycon::{Error, Result};
@@ -299,27 +297,20 @@ fn finish(
 pub fn hertz(case: &CapCase, mut progress: Progress<'_>) -> Result<Example> {
     check(case)?;
     let spec = CapOnBlock::new(CapModel::Quarter, case.a_over_h);
-    let material = Isotropic::new(hertz3d::YOUNGS, hertz3d::POISSON)?;
-    let scene = SolidScene::new(spec.build()?, material, &[2], Multipliers::Upper, 0.0)?;
+    let mesh = spec.build()?;
     let label = "quarter model".to_string();
     say(&mut progress, || {
         format!(
             "{label}: {} nodes, {} bricks; factoring K",
-            scene.model.mesh.n_nodes(),
-            scene.model.mesh.n_elements()
+            mesh.mesh.n_nodes(),
+            mesh.mesh.n_elements()
         )
     });
     let (mut cap, setup_seconds) = timed(
-        || {
-            Ok(QuarterCap {
-                spec,
-                mesh: scene.mesh.clone(),
-                analysis: scene.analysis(ContactOptions::default())?,
-            })
-        },
+        || QuarterCap::with_mesh(spec, mesh, 1.0, ContactOptions::default()),
         |cap| &cap.analysis,
     )?;
-    let setup = setup(&spec, &scene.model, &cap.analysis, 0.0)?;
+    let setup = setup(&spec, &cap.model, &cap.analysis, 0.0)?;
     let clock = Instant::now();
     let c = cap.press()?;
     let seconds = clock.elapsed().as_secs_f64();
@@ -337,7 +328,7 @@ pub fn hertz(case: &CapCase, mut progress: Progress<'_>) -> Result<Example> {
         radius: c.radius,
         stick: None,
         results: &results,
-        model: &scene.model,
+        model: &cap.model,
         setup: &setup,
     };
     let increment = state.increment(fields_now(&cap.analysis, &results, case.fields)?);
@@ -347,11 +338,11 @@ pub fn hertz(case: &CapCase, mut progress: Progress<'_>) -> Result<Example> {
             increment.iterations, increment.active
         )
     });
-    let qp = scene.prescribed([0.0, 0.0, -approach]);
+    let qp = cap.pressed();
     let run = finish(
         (label, String::new(), setup),
         vec![increment],
-        (&cap.analysis, scene.model, qp),
+        (&cap.analysis, cap.model.clone(), qp),
         (case.fields, setup_seconds),
     )?;
     Ok(Example {

@@ -173,7 +173,7 @@ impl HalfCap {
         // all three directions, the multipliers on the flat block's top (module docs)
         let scene = SolidScene::new(
             spec.build()?,
-            Isotropic::new(YOUNGS, poisson)?,
+            [Isotropic::new(YOUNGS, poisson)?; 2],
             &[0, 1, 2],
             Multipliers::Lower,
             mu,

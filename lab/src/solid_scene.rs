@@ -2,7 +2,7 @@
 //! into the [`SolidModel`] of its two bodies, one contact pair and its symmetry planes, the
 //! supports every 3D scene of the lab takes:
 //!
-//! * both bodies of one [`Isotropic`] material, 18-beta hybrid bricks;
+//! * each body of its [`Isotropic`] material (the upper body first), 18-beta hybrid bricks;
 //! * the lower body's bottom (`b_bottom`) held in all three directions;
 //! * the upper body's top (`a_top`) prescribed in the directions the scene moves it (the values
 //!   come with each increment);
@@ -42,7 +42,7 @@ pub struct SolidScene {
 }
 
 impl SolidScene {
-    /// The scene of `mesh`: both bodies of `material`, the upper body's top prescribed in
+    /// The scene of `mesh`: the bodies of `materials` (upper, lower), the upper body's top prescribed in
     /// `top` (0, 1, 2 = x, y, z), the multipliers on `multipliers`, friction `mu`.
     ///
     /// # Errors
@@ -50,14 +50,14 @@ impl SolidScene {
     /// [`Error::InvalidInput`] for a symmetry plane not normal to `x`, `y` or `z`.
     pub fn new(
         mesh: ContactMesh,
-        material: Isotropic,
+        materials: [Isotropic; 2],
         top: &[usize],
         multipliers: Multipliers,
         mu: f64,
     ) -> Result<Self> {
         let mut model = SolidModel::new(
             mesh.mesh.clone(),
-            vec![material, material],
+            materials.to_vec(),
             BrickFormulation::Hybrid18,
         )?;
         model.prescribe(&mesh.b_bottom, &[0, 1, 2])?;

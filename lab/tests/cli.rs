@@ -703,11 +703,19 @@ fn bench_brick_prints_the_table_and_writes_the_plot() {
     assert!(!bad.status.success());
 }
 
-/// `hycon bench hertz3d` prints one row per a/h: the 3D Hertz comparison of
-/// `hycon_lab::hertz3d` (the numbers themselves are checked in `contact_hertz3d`).
+/// `hycon bench hertz3d` prints one row per a/h, then the time split: the 3D Hertz
+/// comparison of `hycon_lab::hertz3d` (the numbers themselves are checked in
+/// `contact_hertz3d`).
 #[test]
 fn bench_hertz3d_prints_the_comparison() {
-    let out = hycon(&["bench", "hertz3d", "--a-over-h", "4"]);
+    let out = hycon(&[
+        "bench",
+        "hertz3d",
+        "--a-over-h",
+        "4",
+        "--modulus-ratio",
+        "1",
+    ]);
     assert!(
         out.status.success(),
         "{}",
@@ -720,10 +728,23 @@ fn bench_hertz3d_prints_the_comparison() {
         .unwrap_or_else(|| panic!("{text}"))
         .split_whitespace()
         .collect();
-    assert_eq!(row.len(), 8, "{text}");
-    assert_eq!(row[1], "15", "active A nodes: {text}");
-    let radius: f64 = row[3].parse().unwrap();
-    assert!((radius - 1.52).abs() < 0.01, "{text}");
+    assert_eq!(row.len(), 13, "{text}");
+    assert_eq!(row[2], "15", "active A nodes: {text}");
+    let radius: f64 = row[4].parse().unwrap();
+    assert!((radius + 1.0).abs() < 0.01, "{text}");
+    assert!(
+        text.contains("x a linear analysis of the same model"),
+        "{text}"
+    );
+    let bad = hycon(&[
+        "bench",
+        "hertz3d",
+        "--a-over-h",
+        "4",
+        "--modulus-ratio",
+        "-1",
+    ]);
+    assert!(!bad.status.success());
 }
 
 /// `hycon sphere3d` (the main job's 3D examples, at the main job's `a/h = 4`): the JSON array

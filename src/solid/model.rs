@@ -27,6 +27,8 @@ use faer::sparse::SparseColMatRef;
 #[derive(Debug)]
 pub struct SolidSystem {
     system: FactoredSystem,
+    /// `[assembly, analysis + factorization]` seconds of [`with_trailing_on`](Self::with_trailing_on).
+    seconds: [f64; 2],
 }
 
 impl SolidSystem {
@@ -43,38 +45,50 @@ impl SolidSystem {
         backend: Backend,
         rule: OrderingRule<'_>,
     ) -> Result<Self> {
-        Self::analyze(mesh, dofs, backend, &[], rule)
+        let pattern = Self::pattern(mesh, &dofs);
+        Ok(SolidSystem {
+            system: FactoredSystem::analyze(dofs, pattern, backend, &[], rule)?,
+            seconds: [0.0; 2],
+        })
     }
 
     /// The system of `model` (its prescribed dofs left out), assembled and factored with
     /// `backend`, the free ones among the global dofs `trailing` eliminated last so that
     /// [`condensed_flexibility`](Self::condensed_flexibility) reads their flexibility off the
     /// factor (as the plane [`LinearSystem::with_trailing_on`](crate::model::LinearSystem::with_trailing_on)).
-    /// Loads then go through [`solve_for`](Self::solve_for).
+    /// Loads then go through [`solve_for`](Self::solve_for). The seconds of the assembly (the
+    /// pattern and its values) and of the factorization (symbolic and numeric) are kept
+    /// ([`setup_seconds`](Self::setup_seconds)).
     pub fn with_trailing_on(
         model: &SolidModel,
         trailing: &[usize],
         backend: Backend,
     ) -> Result<Self> {
         backend.check_available()?;
+        let clock = std::time::Instant::now();
         let dofs = model.dof_map()?;
-        let mut system = Self::analyze(&model.mesh, dofs, backend, trailing, OrderingRule::Auto)?;
-        system.refactorize(model)?;
-        Ok(system)
+        let mut pattern = Self::pattern(&model.mesh, &dofs);
+        elements::assemble(&model.elements(), &mut pattern, &dofs, |_, _| ())?;
+        let assembly = clock.elapsed().as_secs_f64();
+        let mut system =
+            FactoredSystem::analyze(dofs, pattern, backend, trailing, OrderingRule::Auto)?;
+        system.factor()?;
+        Ok(SolidSystem {
+            system,
+            seconds: [assembly, clock.elapsed().as_secs_f64() - assembly],
+        })
     }
 
-    fn analyze(
-        mesh: &SolidMesh,
-        dofs: DofMap,
-        backend: Backend,
-        trailing: &[usize],
-        rule: OrderingRule<'_>,
-    ) -> Result<Self> {
+    /// Wall-clock seconds of `[assembly, analysis + factorization]` when the system was built
+    /// by [`with_trailing_on`](Self::with_trailing_on) (zero otherwise).
+    pub fn setup_seconds(&self) -> [f64; 2] {
+        self.seconds
+    }
+
+    /// The lower-triangle pattern of `K_ff` from the node adjacency of `mesh`.
+    fn pattern(mesh: &SolidMesh, dofs: &DofMap) -> SparsePattern {
         let elements = mesh.elements.iter().map(|e| &e[..]);
-        let pattern = SparsePattern::from_elements(mesh.n_nodes(), elements, &dofs);
-        Ok(SolidSystem {
-            system: FactoredSystem::analyze(dofs, pattern, backend, trailing, rule)?,
-        })
+        SparsePattern::from_elements(mesh.n_nodes(), elements, dofs)
     }
 
     /// The dof map.

@@ -3,6 +3,7 @@
 //! the contact dofs last (eager) or with `F` built lazily within their reach, as for the plane
 //! [`ModelBodies`](super::ModelBodies). What the 3D contact iteration plugs in.
 
+use super::SetupSeconds;
 use super::model::{OwnBodies, OwnModel};
 use crate::assembly::DofMap;
 use crate::error::Result;
@@ -39,6 +40,14 @@ impl OwnModel for SolidModel {
 
     fn solve(&self, system: &mut SolidSystem, f: &[f64], qp: &[f64]) -> Result<Vec<f64>> {
         system.solve_for(self, f, qp)
+    }
+
+    fn setup_seconds(system: &SolidSystem) -> SetupSeconds {
+        let [assembly, factorization] = system.setup_seconds();
+        SetupSeconds {
+            assembly,
+            factorization,
+        }
     }
 }
 
