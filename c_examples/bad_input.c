@@ -1,5 +1,6 @@
 /* Bad-input tests of the hycon C API, as a C host would hit them (strict C99). One
  * `bool test_x(void)` per case; main counts failures and prints OK when there are none. */
+#include "expect.h"
 #include "hycon.h"
 
 #include <math.h>
@@ -10,50 +11,13 @@
 /* a good unit square, counter-clockwise */
 static const double square[8] = {0, 0, 1, 0, 1, 1, 0, 1};
 static const HyconMaterial steel = {210e3, 0.3, 1.0, HYCON_PLANE_STRAIN};
-static const double sentinel = 12345.0;
-
-#define EXPECT(cond)                                                                           \
-    do {                                                                                       \
-        if (!(cond)) {                                                                         \
-            fprintf(stderr, "  %s:%d: expectation failed: %s\n", __FILE__, __LINE__, #cond);   \
-            return false;                                                                      \
-        }                                                                                      \
-    } while (0)
-
-/* The call returned `want` and the last error message contains `part`. */
-static bool status_is(HyconStatus got, HyconStatus want, const char *part) {
-    char message[512];
-    hycon_last_error_message(message, sizeof message);
-    if (got != want) {
-        fprintf(stderr, "  got %s (%d), expected %s: %s\n", hycon_status_name(got), (int)got,
-                hycon_status_name(want), message);
-        return false;
-    }
-    if (part != NULL && strstr(message, part) == NULL) {
-        fprintf(stderr, "  message \"%s\" lacks \"%s\"\n", message, part);
-        return false;
-    }
-    return true;
-}
-
-static void fill(double *a, size_t n) {
-    size_t i;
-    for (i = 0; i < n; ++i) a[i] = sentinel;
-}
-
-static bool untouched(const double *a, size_t n) {
-    size_t i;
-    for (i = 0; i < n; ++i)
-        if (a[i] != sentinel) return false;
-    return true;
-}
 
 static bool test_version(void) {
     int32_t v[3] = {-1, -1, -1};
     EXPECT(hycon_version(v) == HYCON_OK);
     EXPECT(v[0] == HYCON_VERSION_MAJOR && v[1] == HYCON_VERSION_MINOR &&
            v[2] == HYCON_VERSION_PATCH);
-    EXPECT(status_is(hycon_version(NULL), HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(STATUS(hycon_version(NULL), HYCON_ERROR_NULL_POINTER, "out"));
     return true;
 }
 
@@ -79,7 +43,8 @@ static bool test_good_stiffness(void) {
         fill(big, HYCON_MAX_DOF * HYCON_MAX_DOF);
         EXPECT(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, big,
                                        HYCON_MAX_DOF * HYCON_MAX_DOF) == HYCON_OK);
-        EXPECT(big[63] != sentinel && untouched(big + 64, HYCON_MAX_DOF * HYCON_MAX_DOF - 64));
+        EXPECT(big[63] != EXPECT_SENTINEL &&
+               untouched(big + 64, HYCON_MAX_DOF * HYCON_MAX_DOF - 64));
     }
     return true;
 }
@@ -87,14 +52,14 @@ static bool test_good_stiffness(void) {
 static bool test_null_pointers(void) {
     double k[64];
     fill(k, 64);
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, NULL, &steel, k, 64),
-                     HYCON_ERROR_NULL_POINTER, "coords"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, NULL, k, 64),
-                     HYCON_ERROR_NULL_POINTER, "material"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, NULL, 64),
-                     HYCON_ERROR_NULL_POINTER, "k_out"));
-    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_Q4, 4, NULL), HYCON_ERROR_NULL_POINTER,
-                     "coords"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, NULL, &steel, k, 64),
+                  HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, NULL, k, 64),
+                  HYCON_ERROR_NULL_POINTER, "material"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, NULL, 64),
+                  HYCON_ERROR_NULL_POINTER, "k_out"));
+    EXPECT(STATUS(hycon_element_check(HYCON_ELEMENT_Q4, 4, NULL), HYCON_ERROR_NULL_POINTER,
+                  "coords"));
     EXPECT(untouched(k, 64));
     return true;
 }
@@ -102,32 +67,32 @@ static bool test_null_pointers(void) {
 static bool test_short_output(void) {
     double k[64];
     fill(k, 64);
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, k, 63),
-                     HYCON_ERROR_BUFFER_TOO_SMALL, "64 needed"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, k, 63),
+                  HYCON_ERROR_BUFFER_TOO_SMALL, "64 needed"));
     EXPECT(untouched(k, 64));
     /* (NULL, 0) is an empty array: too small, not a null-pointer error */
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, NULL, 0),
-                     HYCON_ERROR_BUFFER_TOO_SMALL, "k_out"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &steel, NULL, 0),
+                  HYCON_ERROR_BUFFER_TOO_SMALL, "k_out"));
     return true;
 }
 
 static bool test_bad_kind_and_node_count(void) {
     double k[144];
     const double hexagon[12] = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1};
-    EXPECT(status_is(hycon_element_stiffness(0, 4, square, &steel, k, 144),
-                     HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 0"));
-    EXPECT(status_is(hycon_element_stiffness(42, 4, square, &steel, k, 144),
-                     HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 42"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 3, square, &steel, k, 144),
-                     HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, 6, hexagon, &steel, k,
+    EXPECT(STATUS(hycon_element_stiffness(0, 4, square, &steel, k, 144),
+                  HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 0"));
+    EXPECT(STATUS(hycon_element_stiffness(42, 4, square, &steel, k, 144),
+                  HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind 42"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 3, square, &steel, k, 144),
+                  HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, 6, hexagon, &steel, k,
                                              144),
-                     HYCON_ERROR_BAD_ELEMENT, "6 nodes"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 7, hexagon, &steel, k, 144),
-                     HYCON_ERROR_BAD_ELEMENT, "7 nodes"));
+                  HYCON_ERROR_BAD_ELEMENT, "6 nodes"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 7, hexagon, &steel, k, 144),
+                  HYCON_ERROR_BAD_ELEMENT, "7 nodes"));
     /* a 6-node hybrid transition element is fine */
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 6, hexagon, &steel, k, 144),
-                     HYCON_OK, NULL));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 6, hexagon, &steel, k, 144),
+                  HYCON_OK, NULL));
     return true;
 }
 
@@ -136,11 +101,11 @@ static bool test_non_finite_coordinates(void) {
     memcpy(c, square, sizeof c);
     c[3] = NAN;
     fill(k, 64);
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, c, &steel, k, 64),
-                     HYCON_ERROR_INVALID_ARGUMENT, "coords[3]"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, c, &steel, k, 64),
+                  HYCON_ERROR_INVALID_ARGUMENT, "coords[3]"));
     c[3] = INFINITY;
-    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_Q4, 4, c), HYCON_ERROR_INVALID_ARGUMENT,
-                     "not finite"));
+    EXPECT(STATUS(hycon_element_check(HYCON_ELEMENT_Q4, 4, c), HYCON_ERROR_INVALID_ARGUMENT,
+                  "not finite"));
     EXPECT(untouched(k, 64));
     return true;
 }
@@ -154,14 +119,14 @@ static bool test_bad_shapes(void) {
     for (kind = HYCON_ELEMENT_HYBRID; kind <= HYCON_ELEMENT_Q4; ++kind) {
         double k[64];
         fill(k, 64);
-        EXPECT(status_is(hycon_element_stiffness(kind, 4, clockwise, &steel, k, 64),
-                         HYCON_ERROR_BAD_ELEMENT, "inverted"));
-        EXPECT(status_is(hycon_element_check(kind, 4, flat), HYCON_ERROR_BAD_ELEMENT, NULL));
-        EXPECT(status_is(hycon_element_check(kind, 4, coincident), HYCON_ERROR_BAD_ELEMENT,
-                         NULL));
-        EXPECT(status_is(hycon_element_stiffness(kind, 4, dart, &steel, k, 64),
-                         HYCON_ERROR_BAD_ELEMENT, "non-convex"));
-        EXPECT(status_is(hycon_element_check(kind, 4, square), HYCON_OK, NULL));
+        EXPECT(STATUS(hycon_element_stiffness(kind, 4, clockwise, &steel, k, 64),
+                      HYCON_ERROR_BAD_ELEMENT, "inverted"));
+        EXPECT(STATUS(hycon_element_check(kind, 4, flat), HYCON_ERROR_BAD_ELEMENT, NULL));
+        EXPECT(STATUS(hycon_element_check(kind, 4, coincident), HYCON_ERROR_BAD_ELEMENT,
+                      NULL));
+        EXPECT(STATUS(hycon_element_stiffness(kind, 4, dart, &steel, k, 64),
+                      HYCON_ERROR_BAD_ELEMENT, "non-convex"));
+        EXPECT(STATUS(hycon_element_check(kind, 4, square), HYCON_OK, NULL));
         EXPECT(untouched(k, 64));
     }
     return true;
@@ -180,8 +145,8 @@ static bool test_bad_material(void) {
     m[5].poisson = -1.0;
     fill(k, 64);
     for (i = 0; i < 6; ++i)
-        EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m[i], k, 64),
-                         HYCON_ERROR_INVALID_MATERIAL, "material"));
+        EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m[i], k, 64),
+                      HYCON_ERROR_INVALID_MATERIAL, "material"));
     EXPECT(untouched(k, 64));
     return true;
 }
@@ -197,30 +162,30 @@ static bool test_material_scale(void) {
     fill(k, 64);
     for (i = 0; i < 3; ++i) {
         m.youngs = tiny_e[i];
-        EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m, k, 64),
-                         HYCON_ERROR_INVALID_MATERIAL, "other units"));
+        EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m, k, 64),
+                      HYCON_ERROR_INVALID_MATERIAL, "other units"));
     }
     for (i = 0; i < 2; ++i) {
         m.youngs = huge_e[i];
-        EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &m, k, 64),
-                         HYCON_ERROR_INVALID_MATERIAL, "Young's modulus"));
+        EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, square, &m, k, 64),
+                      HYCON_ERROR_INVALID_MATERIAL, "Young's modulus"));
     }
     m = steel;
     m.thickness = 1e-300;
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m, k, 64),
-                     HYCON_ERROR_INVALID_MATERIAL, "thickness"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, square, &m, k, 64),
+                  HYCON_ERROR_INVALID_MATERIAL, "thickness"));
     EXPECT(untouched(k, 64));
     /* the ends of the range on elements scaled by 1e-20 and 1e20: finite, nonzero diagonal */
     for (i = 0; i < 8; ++i) scaled[i] = 1e-20 * square[i];
     m = steel;
     m.youngs = 1e-100;
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, scaled, &m, k, 64),
-                     HYCON_OK, NULL));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, scaled, &m, k, 64),
+                  HYCON_OK, NULL));
     EXPECT(isfinite(k[0]) && k[0] > 0.0);
     for (i = 0; i < 8; ++i) scaled[i] = 1e20 * square[i];
     m.youngs = 1e100;
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, scaled, &m, k, 64),
-                     HYCON_OK, NULL));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 4, scaled, &m, k, 64),
+                  HYCON_OK, NULL));
     EXPECT(isfinite(k[0]) && k[0] > 0.0);
     return true;
 }
@@ -233,12 +198,12 @@ static bool test_transition_corners(void) {
     /* the same outlines with straight edges: 4 corners plus mid-side nodes */
     const double five[10] = {0, 0, 1, 0, 2, 0, 2, 1, 0, 1};
     const double six[12] = {0, 0, 1, 0, 2, 0, 2, 1, 1, 1, 0, 1};
-    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 5, pentagon),
-                     HYCON_ERROR_BAD_ELEMENT, "5 corners"));
-    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 6, hexagon),
-                     HYCON_ERROR_BAD_ELEMENT, "6 corners"));
-    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 5, five), HYCON_OK, NULL));
-    EXPECT(status_is(hycon_element_check(HYCON_ELEMENT_HYBRID, 6, six), HYCON_OK, NULL));
+    EXPECT(STATUS(hycon_element_check(HYCON_ELEMENT_HYBRID, 5, pentagon),
+                  HYCON_ERROR_BAD_ELEMENT, "5 corners"));
+    EXPECT(STATUS(hycon_element_check(HYCON_ELEMENT_HYBRID, 6, hexagon),
+                  HYCON_ERROR_BAD_ELEMENT, "6 corners"));
+    EXPECT(STATUS(hycon_element_check(HYCON_ELEMENT_HYBRID, 5, five), HYCON_OK, NULL));
+    EXPECT(STATUS(hycon_element_check(HYCON_ELEMENT_HYBRID, 6, six), HYCON_OK, NULL));
     return true;
 }
 
@@ -275,29 +240,29 @@ static bool test_stress_routines(void) {
     fill(s, 3);
     fill(t, 2);
     fill(beta, HYCON_MAX_BETA);
-    EXPECT(status_is(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, NAN, 0.5, s),
-                     HYCON_ERROR_INVALID_ARGUMENT, "px"));
-    EXPECT(status_is(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, NULL, 0.5, 0.5,
+    EXPECT(STATUS(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, NAN, 0.5, s),
+                  HYCON_ERROR_INVALID_ARGUMENT, "px"));
+    EXPECT(STATUS(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, NULL, 0.5, 0.5,
                                           s),
-                     HYCON_ERROR_NULL_POINTER, "q"));
-    EXPECT(status_is(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 0.5, 0.5,
+                  HYCON_ERROR_NULL_POINTER, "q"));
+    EXPECT(STATUS(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 0.5, 0.5,
                                           NULL),
-                     HYCON_ERROR_NULL_POINTER, "out"));
-    EXPECT(status_is(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 4,
+                  HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(STATUS(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 4,
                                                  0.5, t),
-                     HYCON_ERROR_INVALID_ARGUMENT, "edge 4"));
-    EXPECT(status_is(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 1,
+                  HYCON_ERROR_INVALID_ARGUMENT, "edge 4"));
+    EXPECT(STATUS(hycon_element_edge_traction(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, 1,
                                                  1.5, t),
-                     HYCON_ERROR_INVALID_ARGUMENT, "outside [0, 1]"));
-    EXPECT(status_is(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                  HYCON_ERROR_INVALID_ARGUMENT, "outside [0, 1]"));
+    EXPECT(STATUS(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
                                                  beta, 3, &n_beta),
-                     HYCON_ERROR_BUFFER_TOO_SMALL, "7 needed"));
+                  HYCON_ERROR_BUFFER_TOO_SMALL, "7 needed"));
     /* the size convention: *needed is written on HYCON_ERROR_BUFFER_TOO_SMALL, out is not */
     EXPECT(n_beta == 7 && untouched(s, 3) && untouched(t, 2) && untouched(beta, 3));
     n_beta = 99;
-    EXPECT(status_is(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+    EXPECT(STATUS(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
                                                  NULL, 3, &n_beta),
-                     HYCON_ERROR_NULL_POINTER, "out is NULL"));
+                  HYCON_ERROR_NULL_POINTER, "out is NULL"));
     EXPECT(n_beta == 99);
     /* the size query (NULL, 0) writes only *needed */
     EXPECT(hycon_element_stress_params(HYCON_ELEMENT_HYBRID, 4, square, &steel, q, NULL, 0,
@@ -352,19 +317,19 @@ static bool test_axisymmetric(void) {
     fill(s, 5);
     EXPECT(hycon_element_stress(HYCON_ELEMENT_HYBRID, 4, ring, &axi, q, 0.5, 0.5, s) ==
            HYCON_OK);
-    EXPECT(isfinite(s[0]) && isfinite(s[3]) && s[4] == sentinel);
+    EXPECT(isfinite(s[0]) && isfinite(s[3]) && s[4] == EXPECT_SENTINEL);
     EXPECT(hycon_element_stress_components(&axi, &count) == HYCON_OK && count == 4);
     EXPECT(hycon_element_stress_components(&steel, &count) == HYCON_OK && count == 3);
     fill(k, len);
     thick.thickness = 2.0;
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, ring, &thick, k, len),
-                     HYCON_ERROR_INVALID_MATERIAL, "2 pi r"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, 4, ring, &axi, k, len),
-                     HYCON_ERROR_BAD_ELEMENT, "axisymmetric"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 5, five, &axi, k, len),
-                     HYCON_ERROR_BAD_ELEMENT, "4-node elements only"));
-    EXPECT(status_is(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, left, &axi, k, len),
-                     HYCON_ERROR_BAD_ELEMENT, "negative radius"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, ring, &thick, k, len),
+                  HYCON_ERROR_INVALID_MATERIAL, "2 pi r"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_PIAN_SUMIHARA, 4, ring, &axi, k, len),
+                  HYCON_ERROR_BAD_ELEMENT, "axisymmetric"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_HYBRID, 5, five, &axi, k, len),
+                  HYCON_ERROR_BAD_ELEMENT, "4-node elements only"));
+    EXPECT(STATUS(hycon_element_stiffness(HYCON_ELEMENT_Q4, 4, left, &axi, k, len),
+                  HYCON_ERROR_BAD_ELEMENT, "negative radius"));
     EXPECT(untouched(k, len));
     return true;
 }
@@ -381,88 +346,88 @@ static bool test_load_routines(void) {
     static const HyconSolidMaterial solid = {210e3, 0.3};
     const double p2[2] = {1.0, 1.0}, p4[4] = {1.0, 1.0, 1.0, 1.0};
     const double nan2[2] = {1.0, NAN}, nan4[4] = {0.0, 0.0, INFINITY, 0.0};
-    double f[HYCON_BRICK_DOF], v = sentinel, s[6], bad_cube[24], q24[24];
+    double f[HYCON_BRICK_DOF], v = EXPECT_SENTINEL, s[6], bad_cube[24], q24[24];
     size_t i;
     for (i = 0; i < 24; ++i) q24[i] = 0.0;
     fill(f, HYCON_BRICK_DOF);
     fill(s, 6);
     /* edge loads */
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, NULL, &steel, 0, p2, NULL,
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, NULL, &steel, 0, p2, NULL,
                                              f, 8),
-                     HYCON_ERROR_NULL_POINTER, "coords"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, NULL, 0, p2, NULL,
+                  HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, NULL, 0, p2, NULL,
                                              f, 8),
-                     HYCON_ERROR_NULL_POINTER, "material"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, &steel, 0, p2,
+                  HYCON_ERROR_NULL_POINTER, "material"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, &steel, 0, p2,
                                              NULL, NULL, 8),
-                     HYCON_ERROR_NULL_POINTER, "out"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, &steel, 0, p2,
+                  HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_HYBRID, 4, square, &steel, 0, p2,
                                              NULL, f, 7),
-                     HYCON_ERROR_BUFFER_TOO_SMALL, "8 needed"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 4, p2, NULL, f,
+                  HYCON_ERROR_BUFFER_TOO_SMALL, "8 needed"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 4, p2, NULL, f,
                                              8),
-                     HYCON_ERROR_INVALID_ARGUMENT, "edge 4"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, nan2, NULL,
+                  HYCON_ERROR_INVALID_ARGUMENT, "edge 4"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, nan2, NULL,
                                              f, 8),
-                     HYCON_ERROR_INVALID_ARGUMENT, "pressure[1]"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, NULL, nan4,
+                  HYCON_ERROR_INVALID_ARGUMENT, "pressure[1]"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, NULL, nan4,
                                              f, 8),
-                     HYCON_ERROR_INVALID_ARGUMENT, "traction[2]"));
-    EXPECT(status_is(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, clockwise, &steel, 0, p2, NULL,
+                  HYCON_ERROR_INVALID_ARGUMENT, "traction[2]"));
+    EXPECT(STATUS(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, clockwise, &steel, 0, p2, NULL,
                                              f, 8),
-                     HYCON_ERROR_BAD_ELEMENT, "inverted"));
-    EXPECT(status_is(hycon_element_edge_load(0, 4, square, &steel, 0, p2, NULL, f, 8),
-                     HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind"));
+                  HYCON_ERROR_BAD_ELEMENT, "inverted"));
+    EXPECT(STATUS(hycon_element_edge_load(0, 4, square, &steel, 0, p2, NULL, f, 8),
+                  HYCON_ERROR_INVALID_ARGUMENT, "unknown element kind"));
     /* volume and quality */
-    EXPECT(status_is(hycon_element_volume(HYCON_ELEMENT_Q4, 4, square, &steel, NULL),
-                     HYCON_ERROR_NULL_POINTER, "out"));
-    EXPECT(status_is(hycon_element_volume(HYCON_ELEMENT_Q4, 3, square, &steel, &v),
-                     HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
-    EXPECT(status_is(hycon_element_quality(HYCON_ELEMENT_Q4, 4, clockwise, &v),
-                     HYCON_ERROR_BAD_ELEMENT, "inverted"));
-    EXPECT(status_is(hycon_element_quality(HYCON_ELEMENT_Q4, 4, NULL, &v),
-                     HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(STATUS(hycon_element_volume(HYCON_ELEMENT_Q4, 4, square, &steel, NULL),
+                  HYCON_ERROR_NULL_POINTER, "out"));
+    EXPECT(STATUS(hycon_element_volume(HYCON_ELEMENT_Q4, 3, square, &steel, &v),
+                  HYCON_ERROR_BAD_ELEMENT, "3 nodes"));
+    EXPECT(STATUS(hycon_element_quality(HYCON_ELEMENT_Q4, 4, clockwise, &v),
+                  HYCON_ERROR_BAD_ELEMENT, "inverted"));
+    EXPECT(STATUS(hycon_element_quality(HYCON_ELEMENT_Q4, 4, NULL, &v),
+                  HYCON_ERROR_NULL_POINTER, "coords"));
     /* stress at natural coordinates */
-    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+    EXPECT(STATUS(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
                                                   1.5, 0.0, s),
-                     HYCON_ERROR_INVALID_ARGUMENT, "outside [-1, 1]"));
-    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                  HYCON_ERROR_INVALID_ARGUMENT, "outside [-1, 1]"));
+    EXPECT(STATUS(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
                                                   0.0, NAN, s),
-                     HYCON_ERROR_INVALID_ARGUMENT, "not finite"));
-    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, NULL,
+                  HYCON_ERROR_INVALID_ARGUMENT, "not finite"));
+    EXPECT(STATUS(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, NULL,
                                                   0.0, 0.0, s),
-                     HYCON_ERROR_NULL_POINTER, "q"));
-    EXPECT(status_is(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
+                  HYCON_ERROR_NULL_POINTER, "q"));
+    EXPECT(STATUS(hycon_element_stress_natural(HYCON_ELEMENT_HYBRID, 4, square, &steel, q,
                                                   0.0, 0.0, NULL),
-                     HYCON_ERROR_NULL_POINTER, "out"));
+                  HYCON_ERROR_NULL_POINTER, "out"));
     /* bricks */
-    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, cube, 6, p4, NULL, f, 24),
-                     HYCON_ERROR_INVALID_ARGUMENT, "face 6"));
-    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, cube, 0, p4, NULL, f, 23),
-                     HYCON_ERROR_BUFFER_TOO_SMALL, "24 needed"));
-    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, cube, 0, nan4, NULL, f, 24),
-                     HYCON_ERROR_INVALID_ARGUMENT, "pressure[2]"));
-    EXPECT(status_is(hycon_brick_face_load(HYCON_BRICK_H8, NULL, 0, p4, NULL, f, 24),
-                     HYCON_ERROR_NULL_POINTER, "coords"));
-    EXPECT(status_is(hycon_brick_face_load(7, cube, 0, p4, NULL, f, 24),
-                     HYCON_ERROR_INVALID_ARGUMENT, "unknown brick kind"));
+    EXPECT(STATUS(hycon_brick_face_load(HYCON_BRICK_H8, cube, 6, p4, NULL, f, 24),
+                  HYCON_ERROR_INVALID_ARGUMENT, "face 6"));
+    EXPECT(STATUS(hycon_brick_face_load(HYCON_BRICK_H8, cube, 0, p4, NULL, f, 23),
+                  HYCON_ERROR_BUFFER_TOO_SMALL, "24 needed"));
+    EXPECT(STATUS(hycon_brick_face_load(HYCON_BRICK_H8, cube, 0, nan4, NULL, f, 24),
+                  HYCON_ERROR_INVALID_ARGUMENT, "pressure[2]"));
+    EXPECT(STATUS(hycon_brick_face_load(HYCON_BRICK_H8, NULL, 0, p4, NULL, f, 24),
+                  HYCON_ERROR_NULL_POINTER, "coords"));
+    EXPECT(STATUS(hycon_brick_face_load(7, cube, 0, p4, NULL, f, 24),
+                  HYCON_ERROR_INVALID_ARGUMENT, "unknown brick kind"));
     for (i = 0; i < 24; ++i) bad_cube[i] = cube[i];
     bad_cube[5] = NAN;
-    EXPECT(status_is(hycon_brick_volume(HYCON_BRICK_H8, bad_cube, &v),
-                     HYCON_ERROR_INVALID_ARGUMENT, "coords[5]"));
-    EXPECT(status_is(hycon_brick_volume(HYCON_BRICK_H8, cube, NULL), HYCON_ERROR_NULL_POINTER,
-                     "out"));
+    EXPECT(STATUS(hycon_brick_volume(HYCON_BRICK_H8, bad_cube, &v),
+                  HYCON_ERROR_INVALID_ARGUMENT, "coords[5]"));
+    EXPECT(STATUS(hycon_brick_volume(HYCON_BRICK_H8, cube, NULL), HYCON_ERROR_NULL_POINTER,
+                  "out"));
     bad_cube[5] = 0.0;
     bad_cube[20] = -1.0; /* node 6 below the bottom face: Jacobian not positive */
-    EXPECT(status_is(hycon_brick_quality(HYCON_BRICK_HYBRID18, bad_cube, &v),
-                     HYCON_ERROR_BAD_ELEMENT, NULL));
-    EXPECT(status_is(hycon_brick_stress_natural(HYCON_BRICK_HYBRID18, cube, &solid, q24, 0.0,
+    EXPECT(STATUS(hycon_brick_quality(HYCON_BRICK_HYBRID18, bad_cube, &v),
+                  HYCON_ERROR_BAD_ELEMENT, NULL));
+    EXPECT(STATUS(hycon_brick_stress_natural(HYCON_BRICK_HYBRID18, cube, &solid, q24, 0.0,
                                                 -1.5, 0.0, s),
-                     HYCON_ERROR_INVALID_ARGUMENT, "outside [-1, 1]"));
-    EXPECT(status_is(hycon_brick_stress_natural(HYCON_BRICK_HYBRID18, cube, NULL, q24, 0.0, 0.0,
+                  HYCON_ERROR_INVALID_ARGUMENT, "outside [-1, 1]"));
+    EXPECT(STATUS(hycon_brick_stress_natural(HYCON_BRICK_HYBRID18, cube, NULL, q24, 0.0, 0.0,
                                                 0.0, s),
-                     HYCON_ERROR_NULL_POINTER, "material"));
-    EXPECT(untouched(f, HYCON_BRICK_DOF) && untouched(s, 6) && v == sentinel);
+                  HYCON_ERROR_NULL_POINTER, "material"));
+    EXPECT(untouched(f, HYCON_BRICK_DOF) && untouched(s, 6) && v == EXPECT_SENTINEL);
     /* the good calls write exactly their outputs */
     EXPECT(hycon_element_edge_load(HYCON_ELEMENT_Q4, 4, square, &steel, 0, p2, NULL, f,
                                    HYCON_BRICK_DOF) == HYCON_OK);

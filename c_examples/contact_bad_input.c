@@ -9,6 +9,7 @@
  * to right), B = the lower block's top (right to left), each with its body on the left. The
  * host-assembly variant assembles the same mesh itself (hycon_element_stiffness), eliminates
  * the prescribed dofs and solves with a dense Cholesky factor in a solve callback. */
+#include "expect.h"
 #include "hycon.h"
 
 #include <float.h>
@@ -19,46 +20,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ---------------------------------------------------------------------------------------- */
-/* Checks */
-
-#define EXPECT(cond)                                                                           \
-    do {                                                                                       \
-        if (!(cond)) {                                                                         \
-            fprintf(stderr, "  %s:%d: expectation failed: %s\n", __FILE__, __LINE__, #cond);   \
-            return false;                                                                      \
-        }                                                                                      \
-    } while (0)
-
-/* The call returned `want` and the last error message contains `part` (and, for an error,
- * names the function `fn`). */
-static bool status_is_in(HyconStatus got, HyconStatus want, const char *fn, const char *part) {
-    char message[1024];
-    hycon_last_error_message(message, sizeof message);
-    if (got != want) {
-        fprintf(stderr, "  got %s (%d), expected %s: \"%s\"\n", hycon_status_name(got), (int)got,
-                hycon_status_name(want), message);
-        return false;
-    }
-    if (part != NULL && strstr(message, part) == NULL) {
-        fprintf(stderr, "  message \"%s\" lacks \"%s\"\n", message, part);
-        return false;
-    }
-    if (want != HYCON_OK && fn != NULL && strstr(message, fn) != message) {
-        fprintf(stderr, "  message \"%s\" does not start with the function name %s\n", message,
-                fn);
-        return false;
-    }
-    if (want == HYCON_OK && message[0] != '\0') {
-        fprintf(stderr, "  success left the message \"%s\"\n", message);
-        return false;
-    }
-    return true;
-}
-#define STATUS(call, want, part) status_is_in((call), (want), NULL, (part))
-/* as STATUS, and the message starts with the name of the function called */
-#define STATUS_FN(fn, args, want, part) status_is_in(fn args, (want), #fn, (part))
-
 /* The input views, built in place (C99 compound literals) so that a call reads like the
  * argument list it stands for. */
 #define BLOCK(offsets, nodes, n_elements, materials, kind)                                     \
@@ -66,32 +27,6 @@ static bool status_is_in(HyconStatus got, HyconStatus want, const char *fn, cons
 #define LINE(nodes, n) (&(HyconPolyline){(nodes), (n)})
 #define HOST_NODES(ids, coords, equations, n)                                                  \
     (&(HyconHostNodes){(ids), (coords), (equations), (n)})
-
-static const double sentinel = 12345.0;
-static const unsigned char sentinel_byte = 0xA5;
-
-static void fill(double *a, size_t n) {
-    size_t i;
-    for (i = 0; i < n; ++i) a[i] = sentinel;
-}
-static bool untouched(const double *a, size_t n) {
-    size_t i;
-    for (i = 0; i < n; ++i)
-        if (a[i] != sentinel) return false;
-    return true;
-}
-static void fill_bytes(void *p, size_t n) { memset(p, sentinel_byte, n); }
-static bool bytes_untouched(const void *p, size_t n) {
-    const unsigned char *b = (const unsigned char *)p;
-    size_t i;
-    for (i = 0; i < n; ++i)
-        if (b[i] != sentinel_byte) return false;
-    return true;
-}
-
-/* A handle output initialised to this marker must still hold it after a failed `_new`. */
-static char marker_storage;
-#define MARKER(type) ((type *)(void *)&marker_storage)
 
 /* ---------------------------------------------------------------------------------------- */
 /* The two-block model */

@@ -8,6 +8,7 @@
  * (brick 0, nodes 0-7) on [0, 1]^2 x [1, 2], touching along z = 1 with nodes of their own.
  * B's bottom is held, A's top moved down; the pair is A's bottom (brick 0, local face 4) on B's
  * top (brick 1, local face 5). */
+#include "expect.h"
 #include "hycon.h"
 
 #include <math.h>
@@ -16,55 +17,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#define EXPECT(cond)                                                                           \
-    do {                                                                                       \
-        if (!(cond)) {                                                                         \
-            fprintf(stderr, "  %s:%d: expectation failed: %s\n", __FILE__, __LINE__, #cond);   \
-            return false;                                                                      \
-        }                                                                                      \
-    } while (0)
-
-/* The call returned `want` and the last error message contains `part` (and, for an error,
- * starts with the function's name `fn`). */
-static bool status_is_in(HyconStatus got, HyconStatus want, const char *fn, const char *part) {
-    char message[1024];
-    hycon_last_error_message(message, sizeof message);
-    if (got != want) {
-        fprintf(stderr, "  got %s (%d), expected %s: \"%s\"\n", hycon_status_name(got), (int)got,
-                hycon_status_name(want), message);
-        return false;
-    }
-    if (part != NULL && strstr(message, part) == NULL) {
-        fprintf(stderr, "  message \"%s\" lacks \"%s\"\n", message, part);
-        return false;
-    }
-    if (want != HYCON_OK && fn != NULL && strstr(message, fn) != message) {
-        fprintf(stderr, "  message \"%s\" does not start with the function name %s\n", message,
-                fn);
-        return false;
-    }
-    if (want == HYCON_OK && message[0] != '\0') {
-        fprintf(stderr, "  success left the message \"%s\"\n", message);
-        return false;
-    }
-    return true;
-}
-#define STATUS_FN(fn, args, want, part) status_is_in(fn args, (want), #fn, (part))
-
 #define BRICKS(nodes, n, materials, kind) (&(HyconBrickBlock){(nodes), (n), (materials), (kind)})
 #define FACES(faces, n) (&(HyconBrickFaces){(faces), (n)})
-
-static const unsigned char sentinel_byte = 0xA5;
-static void fill_bytes(void *p, size_t n) { memset(p, sentinel_byte, n); }
-static bool bytes_untouched(const void *p, size_t n) {
-    const unsigned char *b = (const unsigned char *)p;
-    size_t i;
-    for (i = 0; i < n; ++i)
-        if (b[i] != sentinel_byte) return false;
-    return true;
-}
-static char marker_storage;
-#define MARKER(type) ((type *)(void *)&marker_storage)
 
 /* ---------------------------------------------------------------------------------------- */
 /* The two-cube model */

@@ -12,7 +12,13 @@
  * a/h = 4 the Rust scene measured radius +1.52%, p0 +0.59%, P +5.79% (the finite bodies'
  * stiffening, not the mesh's: lab/tests/contact_hertz3d.rs); the checks are the Rust test's
  * (radius within 3%, p0 within 2%, P above Hertz by less than 10%), and B's forces must balance
- * A's. Usage: solid_hertz [a/h] (default 4). */
+ * A's. The valgrind run takes a/h = 2 (some 7400 dofs; 1 min 56 s at a/h = 4) with the coarse
+ * mesh's tolerances (a/h < 4: radius within 12%, p0 within 10%, P above Hertz by less than
+ * 10%; measured at a/h = 2: radius +9.87%, p0 -2.26%, P +4.33%; at a/h = 3: +2.33%, +7.99%,
+ * +4.50%). The ASan+UBSan run takes a/h = 4: there the automatic ordering's nested-dissection
+ * trial finds the sanitizer runtime and keeps AMD instead of loading METIS (whose dlopen with
+ * RTLD_DEEPBIND the runtime refuses: src/solver/ordering.rs). Usage: solid_hertz [a/h]
+ * (2..16, default 4). */
 #include "hycon.h"
 
 #include <math.h>
@@ -76,6 +82,7 @@ int main(int argc, char **argv) {
     const size_t a_over_h = argc > 1 ? (size_t)strtoul(argv[1], NULL, 10) : 4;
     const double a = radius / 16.0, h = a / (double)a_over_h, zone = 1.5 * a * (1.0 + 1e-12);
     const size_t uniform = (size_t)ceil(1.5 * (double)a_over_h);
+    const int coarse = a_over_h < 4; /* the memory-checked runs' mesh: looser tolerances */
     double cl[256], bl[256];
     size_t nc, nb, n_nodes, n_bricks = 0, i, j, k, n_a = 0, n_b = 0, top_k;
     double *coords, *load, *prescribed, *u;
@@ -93,8 +100,8 @@ int main(int argc, char **argv) {
     const double delta = a * a / radius, origin[3] = {0.0, 0.0, 0.0};
     const double x_normal[3] = {1.0, 0.0, 0.0}, y_normal[3] = {0.0, 1.0, 0.0};
 
-    if (a_over_h == 0 || a_over_h > 16) {
-        printf("FAILED: a/h in 1..16\n");
+    if (a_over_h < 2 || a_over_h > 16) {
+        printf("FAILED: a/h in 2..16\n");
         return 1;
     }
     nc = lines(h, uniform, 8.0 * a, 1.3, cl, 256);   /* the cap's lines in x, y and height */
@@ -247,8 +254,10 @@ int main(int argc, char **argv) {
                100.0 * (a_fem / hertz_a - 1.0));
         printf("peak p0  %.6e  Hertz at P %.6e  (%+.2f%%)\n", p0, hertz_p0,
                100.0 * (p0 / hertz_p0 - 1.0));
-        ok &= check(fabs(a_fem / hertz_a - 1.0) < 0.03, "contact radius within 3% of Hertz");
-        ok &= check(fabs(p0 / hertz_p0 - 1.0) < 0.02, "peak pressure within 2% of Hertz");
+        ok &= check(fabs(a_fem / hertz_a - 1.0) < (coarse ? 0.12 : 0.03),
+                    "contact radius within 3% of Hertz (12% at a/h < 4)");
+        ok &= check(fabs(p0 / hertz_p0 - 1.0) < (coarse ? 0.10 : 0.02),
+                    "peak pressure within 2% of Hertz (10% at a/h < 4)");
         ok &= check(load_p > hertz_load && load_p < 1.10 * hertz_load,
                     "load above Hertz's by less than the finite bodies' 10%");
         free(results);

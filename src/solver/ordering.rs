@@ -18,7 +18,10 @@
 //! METIS. A METIS already loaded by the host under the same name is used as it is, with its
 //! own index width: [`idx_width`] finds 32- or 64-bit `idx_t` from how much
 //! `METIS_SetDefaultOptions` writes. Without METIS the automatic rule keeps AMD and says so
-//! ([`FillOrdering::AmdWithoutMetis`]).
+//! ([`FillOrdering::AmdWithoutMetis`]). Under a sanitizer runtime (a host built with
+//! AddressSanitizer, ThreadSanitizer, MemorySanitizer or LeakSanitizer) METIS is not loaded:
+//! the runtime intercepts `dlopen` and ends the process on `RTLD_DEEPBIND`, and without that
+//! flag METIS could bind to a host's own METIS of another index width; AMD is used instead.
 //!
 //! # The rule
 //! [`OrderingRule::Auto`] computes the symbolic factorization with AMD; when it needs at least
@@ -272,6 +275,14 @@ fn metis() -> std::result::Result<&'static Metis, String> {
 fn load_metis() -> std::result::Result<Metis, String> {
     #[cfg(target_env = "gnu")]
     const FLAGS: c_int = libc::RTLD_NOW | libc::RTLD_LOCAL | libc::RTLD_DEEPBIND;
+    #[cfg(target_env = "gnu")]
+    if sanitizer_runtime() {
+        return Err(
+            "libmetis.so.5 is not loaded under a sanitizer runtime, which refuses \
+                    dlopen with RTLD_DEEPBIND"
+                .into(),
+        );
+    }
     #[cfg(not(target_env = "gnu"))]
     const FLAGS: c_int = libc::RTLD_NOW | libc::RTLD_LOCAL;
     // SAFETY: dlopen with a NUL-terminated name; the handle is kept for the process's life.
@@ -308,6 +319,22 @@ fn load_metis() -> std::result::Result<Metis, String> {
         idx64: bits == 64,
         lock: Mutex::new(()),
     })
+}
+
+/// Whether a sanitizer runtime with its own allocator (ASan, TSan, MSan, HWASan, LSan; not
+/// UBSan alone, which lets `RTLD_DEEPBIND` through) is in the process: its interface function
+/// `__sanitizer_get_allocated_size` is a global symbol.
+#[cfg(target_env = "gnu")]
+fn sanitizer_runtime() -> bool {
+    // SAFETY: dlsym in the global scope with a NUL-terminated name; the result is only
+    // compared with NULL.
+    let symbol = unsafe {
+        libc::dlsym(
+            libc::RTLD_DEFAULT,
+            c"__sanitizer_get_allocated_size".as_ptr(),
+        )
+    };
+    !symbol.is_null()
 }
 
 /// Width of METIS's `idx_t` in bits, from `METIS_SetDefaultOptions`, which sets its
