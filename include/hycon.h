@@ -153,8 +153,9 @@ typedef struct HyconSolidContact HyconSolidContact;
 typedef struct HyconSolidHost HyconSolidHost;
 
 // A 3D model being described (model API): brick mesh, materials, prescribed directions,
-// contact pairs of brick faces, symmetry planes. Create with `hycon_solid_model_new`, free
-// with `hycon_solid_model_free`. Thread safety: as `HyconModel`.
+// contact pairs of brick faces, symmetry planes, an optional rigid plate. Create with
+// `hycon_solid_model_new`, free with `hycon_solid_model_free`. Thread safety: as
+// `HyconModel`.
 typedef struct HyconSolidModel HyconSolidModel;
 
 // Result of every status-returning function: `0` OK, `< 0` error, `> 0` warning.
@@ -1915,8 +1916,8 @@ void hycon_solid_model_free(struct HyconSolidModel *model);
 // (`prescribed` of `hycon_solid_contact_increment`). Contact nodes may be prescribed too.
 //
 // Errors: `HYCON_ERROR_INVALID_ARGUMENT` for an unknown node id, unknown `directions`, or a
-// displacement component prescribed twice (listed twice in `nodes`, or prescribed by an
-// earlier call); on an error nothing is prescribed.
+// displacement component prescribed twice (listed twice in `nodes`, prescribed by an earlier
+// call, or tied to the plate); on an error nothing is prescribed.
 //
 // # Safety
 // `model` must be a live handle; `nodes` NULL or `n` readable ids.
@@ -1964,6 +1965,26 @@ HyconStatus hycon_solid_model_add_symmetry_plane(struct HyconSolidModel *model,
                                                  const double *point,
                                                  const double *normal);
 
+// Tie `nodes` (a face of one body, none of them a contact node) to a rigid plate whose x, y
+// and z translations are driven per increment by `hycon_solid_contact_increment_with_plate`,
+// each by displacement or by force, as `hycon_model_set_plate` does in the plane. The nodes
+// are prescribed in x, y and z by this call. A body held only by the plate and by contact
+// (a pressed sphere) then takes a prescribed force. With symmetry planes the plate does not
+// move across them: a translation with a component along a plane's normal must be driven by
+// displacement 0 (a quarter model's plate moves along z only), so the plate holds its nodes
+// on a symmetry plane: prescribe the other nodes on the planes, not those.
+//
+// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for no nodes, an unknown node id, or a node already
+// prescribed in a direction (by `hycon_solid_model_prescribe`, twice in `nodes`, or by an
+// earlier plate: a model has one plate); on an error the model is unchanged. A plate node
+// that is a contact node is refused by `hycon_solid_contact_new`.
+//
+// # Safety
+// `model` must be a live handle; `nodes` NULL or `n` readable ids.
+HyconStatus hycon_solid_model_set_plate(struct HyconSolidModel *model,
+                                        const size_t *nodes,
+                                        size_t n);
+
 // Start a 3D contact analysis of a model (copied: the model may be freed or changed
 // afterwards): validate, assemble, factor `K` once and set up the contact boundary's
 // flexibility. `options` NULL means the defaults (`search_distance` is relative to the mean A
@@ -1974,7 +1995,8 @@ HyconStatus hycon_solid_model_add_symmetry_plane(struct HyconSolidModel *model,
 // contact face the kernel cannot integrate (degenerate, warped beyond 45 degrees), sides that
 // never face each other (no A face and B face with opposed normals each in front of the
 // other, at any distance), no continuous tangent frame over a pair: split the surface into
-// pairs, a symmetry plane no model node lies on), `HYCON_ERROR_SOLVER`.
+// pairs, a symmetry plane no model node lies on, a plate node that is a contact node),
+// `HYCON_ERROR_SOLVER`.
 //
 // # Safety
 // `out` must point to a writable pointer, `model` be a live handle, `options` NULL or
@@ -2003,6 +2025,37 @@ HyconStatus hycon_solid_contact_increment(struct HyconSolidContact *contact,
                                           const double *prescribed,
                                           size_t prescribed_len,
                                           struct HyconIncrementInfo *info);
+
+// As `hycon_solid_contact_increment` for a model with a plate (`hycon_solid_model_set_plate`):
+// `control` and `value` (3 entries each, x, y, z) drive the plate's translations
+// (`HYCON_PLATE_DISPLACEMENT`: total displacement; `HYCON_PLATE_FORCE`: total force on the
+// plate, its motion solved for), as `hycon_contact_increment_with_plate` in the plane.
+//
+// Errors: those of `hycon_solid_contact_increment`; `HYCON_ERROR_INVALID_ARGUMENT` without a
+// plate, for an unknown control, a non-finite value, or a translation with a component along
+// a symmetry plane's normal that is not a displacement of 0; `HYCON_ERROR_SINGULAR` for a
+// force-controlled translation that no constraint of the contact set resists (control it by
+// displacement). On an error the analysis is as before the call.
+//
+// # Safety
+// As `hycon_solid_contact_increment`; `control` and `value` must hold 3 values each.
+HyconStatus hycon_solid_contact_increment_with_plate(struct HyconSolidContact *contact,
+                                                     const double *load,
+                                                     size_t load_len,
+                                                     const double *prescribed,
+                                                     size_t prescribed_len,
+                                                     const HyconPlateControl *control,
+                                                     const double *value,
+                                                     struct HyconIncrementInfo *info);
+
+// The converged plate displacement and the force the plate exerts on the body (3 values each,
+// x, y, z), as `hycon_contact_plate`. `HYCON_ERROR_INVALID_ARGUMENT` without a plate.
+//
+// # Safety
+// `contact` must be a live handle; `displacement` and `force` must hold 3 writable doubles.
+HyconStatus hycon_solid_contact_plate(const struct HyconSolidContact *contact,
+                                      double *displacement,
+                                      double *force);
 
 // The displacement of the last converged increment over the `3 n_nodes` dofs (zero before the
 // first), as `hycon_contact_displacement`; its size query gives the field length, also the

@@ -756,6 +756,13 @@ struct PlateState {
     std::array<double, 2> force{};
 };
 
+// The converged plate state of a 3D model: displacement and the force it exerts on the body
+// (x, y, z).
+struct SolidPlateState {
+    std::array<double, 3> displacement{};
+    std::array<double, 3> force{};
+};
+
 // Sizes of a pair's polylines.
 struct PairSize {
     std::size_t a = 0;
@@ -1057,6 +1064,11 @@ class SolidModel {
             hycon_solid_model_add_symmetry_plane(get(), point.data(), normal.data()));
     }
 
+    // Tie `nodes` to a rigid plate driven by SolidContact::increment_with_plate.
+    Status set_plate(View<std::size_t> nodes) {
+        return Status::from(hycon_solid_model_set_plate(get(), nodes.data(), nodes.size()));
+    }
+
     HyconSolidModel *get() const noexcept { return handle_.get(); }
     explicit operator bool() const noexcept { return static_cast<bool>(handle_); }
     // Give up ownership (the caller then frees with hycon_solid_model_free).
@@ -1211,6 +1223,26 @@ class SolidContact : public detail::Analysis<HyconSolidContact, SolidContactPtr>
         const Status s = Status::from(hycon_solid_contact_new_host(&raw, host.get(), &options));
         if (!s.ok()) return s;
         return SolidContact(SolidContactPtr(raw));
+    }
+
+    // One increment of a model with a plate, its x, y and z translations driven by `x`, `y`
+    // and `z`.
+    Result<HyconIncrementInfo> increment_with_plate(View<double> load, View<double> prescribed,
+                                                    PlateDrive x, PlateDrive y, PlateDrive z) {
+        const HyconPlateControl control[3] = {x.control, y.control, z.control};
+        const double value[3] = {x.value, y.value, z.value};
+        HyconIncrementInfo info{};
+        const Status s = Status::from(hycon_solid_contact_increment_with_plate(
+            get(), load.data(), load.size(), prescribed.data(), prescribed.size(), control, value,
+            &info));
+        return Result<HyconIncrementInfo>(s, info);
+    }
+
+    Result<SolidPlateState> plate() const {
+        SolidPlateState p;
+        const Status s = Status::from(
+            hycon_solid_contact_plate(get(), p.displacement.data(), p.force.data()));
+        return Result<SolidPlateState>(s, p);
     }
 
     // Node counts of the A and B sides of `pair` (the size queries of the node results).

@@ -8,6 +8,7 @@ mod common;
 mod axisymmetric;
 mod c_api;
 mod contact3d_geometry;
+mod contact3d_plate;
 mod contact3d_validation;
 mod contact_cutback;
 mod contact_geometry;

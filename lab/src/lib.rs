@@ -12,6 +12,7 @@
 //! * [`closed3d`]: the closed forms of the 3D contact validation (Hertz's sphere, its approach,
 //!   Cattaneo-Mindlin's partial slip of a sphere).
 //! * [`mindlin3d`]: Cattaneo-Mindlin's partial slip in 3D (the half cap on its mirror block).
+//! * [`plate3d`]: the rigid plate in 3D: Hertz at a given force, Mindlin at a given shear.
 //! * [`examples`]: the paper's examples on that scene (Hertz, sliding, Cattaneo-Mindlin).
 //! * [`examples3d`]: the main job's 3D examples (Hertz's sphere, Cattaneo-Mindlin) in the same
 //!   result structs.
@@ -34,6 +35,7 @@ pub mod examples3d;
 pub mod gmsh;
 pub mod hertz3d;
 pub mod mindlin3d;
+pub mod plate3d;
 pub mod presses;
 pub mod report;
 pub mod scene;

@@ -283,7 +283,13 @@ impl HalfCap {
         ray
     }
 
-    fn results(&self, info: IncrementInfo) -> Result<Pull> {
+    /// The state after the increment `info` of [`analysis`](Self::analysis) (which may be
+    /// another analysis of this mesh, e.g. `hycon_lab::plate3d`'s with the cap's top tied to a
+    /// rigid plate; `displacement` is then this cap's prescribed motion, 0).
+    ///
+    /// # Errors
+    /// Those of the node results.
+    pub fn results(&self, info: IncrementInfo) -> Result<Pull> {
         let nodes = self.analysis.node_results(0)?;
         // the contact force on the cap: minus that on the block (A)
         let total = |c: usize| -2.0 * nodes.iter().map(|r| r.force.components()[c]).sum::<f64>();

@@ -16,6 +16,7 @@ mod contact_hertz;
 mod contact_hertz3d;
 mod contact_host;
 mod contact_mindlin3d;
+mod contact_plate3d;
 mod contact_robustness;
 mod contact_settle;
 mod contact_slide3d;

@@ -78,7 +78,6 @@ pub use super::plane::facing::check_a_inside;
 use super::plane::mortar::SurfaceMeasure;
 use super::space::{Frame, Vector};
 pub use super::tangent::{SlipDirection, Tangential, Traction};
-use crate::assembly::dof;
 use crate::error::{ContactError, Error, Result};
 use crate::model::Model;
 use crate::solver::Backend;

@@ -1790,27 +1790,15 @@ pub unsafe extern "C" fn hycon_contact_increment_with_plate(
     boundary("hycon_contact_increment_with_plate", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle_mut(contact, "contact")? };
-        let info = optional(info, "info")?;
-        let f = unsafe { slice(load, load_len, "load")? };
-        let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
-        let kinds = unsafe { slice(control, 2, "control")? };
-        let values = unsafe { doubles(value, 2, "value")? };
-        let mut plate = [PlateControl::Displacement(0.0); 2];
-        for d in 0..2 {
-            plate[d] = match kinds[d] {
-                HYCON_PLATE_DISPLACEMENT => PlateControl::Displacement(values[d]),
-                HYCON_PLATE_FORCE => PlateControl::Force(values[d]),
-                k => {
-                    return Err(Fail::invalid(format!(
-                        "control[{d}] = {k} (expected HYCON_PLATE_DISPLACEMENT = 1 or \
-                         HYCON_PLATE_FORCE = 2)"
-                    )));
-                }
-            };
+        unsafe {
+            increment_with_plate(
+                &mut c.analysis,
+                (load, load_len),
+                (prescribed, prescribed_len),
+                (control, value, 2),
+                info,
+            )
         }
-        let done = c.analysis.increment_with_plate(f, qp, &plate)?;
-        unsafe { put(info, info_to_c(done)) };
-        Ok(())
     })
 }
 
@@ -1828,17 +1816,7 @@ pub unsafe extern "C" fn hycon_contact_plate(
     boundary("hycon_contact_plate", || {
         // SAFETY (all): the caller's contract.
         let c = unsafe { handle(contact, "contact")? };
-        let Some((u, f)) = c.analysis.plate() else {
-            return Err(Fail::invalid("this analysis has no plate"));
-        };
-        check_pointer(displacement.cast_const(), "displacement")?;
-        check_pointer(force.cast_const(), "force")?;
-        // SAFETY: both checked non-null and aligned, writable for 2 doubles (contract).
-        unsafe {
-            write_doubles(displacement, u.components());
-            write_doubles(force, f.components());
-        }
-        Ok(())
+        unsafe { plate(&c.analysis, displacement, force) }
     })
 }
 
@@ -2231,6 +2209,65 @@ pub(super) unsafe fn increment(
     let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
     let done = analysis.increment(f, qp)?;
     unsafe { put(info, info_to_c(done)) };
+    Ok(())
+}
+
+/// One increment with the plate driven per direction (`hycon_contact_increment_with_plate`,
+/// `hycon_solid_contact_increment_with_plate`): `control` and `value` hold one entry per
+/// direction, `dim` of them (2 in the plane, 3 in 3D).
+///
+/// # Safety
+/// Arrays NULL or of the stated lengths (`control` and `value` `dim` entries); `info` NULL or
+/// writable.
+pub(super) unsafe fn increment_with_plate(
+    analysis: &mut ContactAnalysis,
+    (load, load_len): (*const f64, usize),
+    (prescribed, prescribed_len): (*const f64, usize),
+    (control, value, dim): (*const HyconPlateControl, *const f64, usize),
+    info: *mut HyconIncrementInfo,
+) -> Result<(), Fail> {
+    let info = optional(info, "info")?;
+    // SAFETY (all): the caller's contract.
+    let f = unsafe { slice(load, load_len, "load")? };
+    let qp = unsafe { slice(prescribed, prescribed_len, "prescribed")? };
+    let kinds = unsafe { slice(control, dim, "control")? };
+    let values = unsafe { doubles(value, dim, "value")? };
+    let plate = (kinds.iter().zip(values).enumerate())
+        .map(|(d, (&kind, &v))| match kind {
+            HYCON_PLATE_DISPLACEMENT => Ok(PlateControl::Displacement(v)),
+            HYCON_PLATE_FORCE => Ok(PlateControl::Force(v)),
+            k => Err(Fail::invalid(format!(
+                "control[{d}] = {k} (expected HYCON_PLATE_DISPLACEMENT = 1 or \
+                 HYCON_PLATE_FORCE = 2)"
+            ))),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let done = analysis.increment_with_plate(f, qp, &plate)?;
+    unsafe { put(info, info_to_c(done)) };
+    Ok(())
+}
+
+/// The converged plate displacement and force, one value per direction each
+/// (`hycon_contact_plate`, `hycon_solid_contact_plate`).
+///
+/// # Safety
+/// `displacement` and `force` writable for one double per direction of the analysis.
+pub(super) unsafe fn plate(
+    analysis: &ContactAnalysis,
+    displacement: *mut f64,
+    force: *mut f64,
+) -> Result<(), Fail> {
+    let Some((u, f)) = analysis.plate() else {
+        return Err(Fail::invalid("this analysis has no plate"));
+    };
+    check_pointer(displacement.cast_const(), "displacement")?;
+    check_pointer(force.cast_const(), "force")?;
+    // SAFETY: both checked non-null and aligned, writable for one double per direction
+    // (contract).
+    unsafe {
+        write_doubles(displacement, u.components());
+        write_doubles(force, f.components());
+    }
     Ok(())
 }
 

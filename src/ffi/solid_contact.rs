@@ -13,8 +13,8 @@
 use super::contact::{
     self, HYCON_NODE_FRICTIONLESS, HYCON_NODE_OPEN, HYCON_NODE_SLIP, HYCON_NODE_STICK, HYCON_X,
     HYCON_XYZ, HYCON_Y, HYCON_Z, HyconConstraintEntry, HyconContactOptions, HyconCouplingEntry,
-    HyconDirections, HyconIncrementInfo, HyconIterationRecord, HyconNodeState, HyconTimings,
-    read_options,
+    HyconDirections, HyconIncrementInfo, HyconIterationRecord, HyconNodeState, HyconPlateControl,
+    HyconTimings, read_options,
 };
 use super::solid::{HyconBrickKind, HyconSolidMaterial, brick_formulation, read_solid_material};
 use super::{
@@ -136,12 +136,14 @@ pub struct HyconSolidContactNode {
 // Handles
 
 /// A 3D model being described (model API): brick mesh, materials, prescribed directions,
-/// contact pairs of brick faces, symmetry planes. Create with `hycon_solid_model_new`, free
-/// with `hycon_solid_model_free`. Thread safety: as `HyconModel`.
+/// contact pairs of brick faces, symmetry planes, an optional rigid plate. Create with
+/// `hycon_solid_model_new`, free with `hycon_solid_model_free`. Thread safety: as
+/// `HyconModel`.
 pub struct HyconSolidModel {
     model: SolidModel,
     pairs: Vec<FacePair>,
     symmetry: Vec<SymmetryPlane>,
+    plate: Option<Vec<usize>>,
 }
 
 /// A 3D contact analysis: `K` factored once (or the host's solver), the converged state, the
@@ -313,6 +315,7 @@ pub unsafe extern "C" fn hycon_solid_model_new(
             model,
             pairs: Vec::new(),
             symmetry: Vec::new(),
+            plate: None,
         };
         // SAFETY: the caller's contract on `out`.
         unsafe { hand_out(out, handed)? };
@@ -335,8 +338,8 @@ pub unsafe extern "C" fn hycon_solid_model_free(model: *mut HyconSolidModel) {
 /// (`prescribed` of `hycon_solid_contact_increment`). Contact nodes may be prescribed too.
 ///
 /// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for an unknown node id, unknown `directions`, or a
-/// displacement component prescribed twice (listed twice in `nodes`, or prescribed by an
-/// earlier call); on an error nothing is prescribed.
+/// displacement component prescribed twice (listed twice in `nodes`, prescribed by an earlier
+/// call, or tied to the plate); on an error nothing is prescribed.
 ///
 /// # Safety
 /// `model` must be a live handle; `nodes` NULL or `n` readable ids.
@@ -428,6 +431,41 @@ pub unsafe extern "C" fn hycon_solid_model_add_symmetry_plane(
     })
 }
 
+/// Tie `nodes` (a face of one body, none of them a contact node) to a rigid plate whose x, y
+/// and z translations are driven per increment by `hycon_solid_contact_increment_with_plate`,
+/// each by displacement or by force, as `hycon_model_set_plate` does in the plane. The nodes
+/// are prescribed in x, y and z by this call. A body held only by the plate and by contact
+/// (a pressed sphere) then takes a prescribed force. With symmetry planes the plate does not
+/// move across them: a translation with a component along a plane's normal must be driven by
+/// displacement 0 (a quarter model's plate moves along z only), so the plate holds its nodes
+/// on a symmetry plane: prescribe the other nodes on the planes, not those.
+///
+/// Errors: `HYCON_ERROR_INVALID_ARGUMENT` for no nodes, an unknown node id, or a node already
+/// prescribed in a direction (by `hycon_solid_model_prescribe`, twice in `nodes`, or by an
+/// earlier plate: a model has one plate); on an error the model is unchanged. A plate node
+/// that is a contact node is refused by `hycon_solid_contact_new`.
+///
+/// # Safety
+/// `model` must be a live handle; `nodes` NULL or `n` readable ids.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_solid_model_set_plate(
+    model: *mut HyconSolidModel,
+    nodes: *const usize,
+    n: usize,
+) -> HyconStatus {
+    boundary("hycon_solid_model_set_plate", || {
+        // SAFETY (both): the caller's contract.
+        let m = unsafe { handle_mut(model, "model")? };
+        let ids = unsafe { slice(nodes, n, "nodes")? };
+        if ids.is_empty() {
+            return Err(Fail::invalid("a plate needs at least one node"));
+        }
+        m.model.prescribe(ids, &[0, 1, 2])?;
+        m.plate = Some(ids.to_vec());
+        Ok(())
+    })
+}
+
 /// Start a 3D contact analysis of a model (copied: the model may be freed or changed
 /// afterwards): validate, assemble, factor `K` once and set up the contact boundary's
 /// flexibility. `options` NULL means the defaults (`search_distance` is relative to the mean A
@@ -438,7 +476,8 @@ pub unsafe extern "C" fn hycon_solid_model_add_symmetry_plane(
 /// contact face the kernel cannot integrate (degenerate, warped beyond 45 degrees), sides that
 /// never face each other (no A face and B face with opposed normals each in front of the
 /// other, at any distance), no continuous tangent frame over a pair: split the surface into
-/// pairs, a symmetry plane no model node lies on), `HYCON_ERROR_SOLVER`.
+/// pairs, a symmetry plane no model node lies on, a plate node that is a contact node),
+/// `HYCON_ERROR_SOLVER`.
 ///
 /// # Safety
 /// `out` must point to a writable pointer, `model` be a live handle, `options` NULL or
@@ -453,8 +492,13 @@ pub unsafe extern "C" fn hycon_solid_contact_new(
         // SAFETY (all): the caller's contract.
         let m = unsafe { handle(model, "model")? };
         let (opts, monitor) = unsafe { read_options(options)? };
-        let mut analysis =
-            ContactAnalysis::solid(m.model.clone(), m.pairs.clone(), &m.symmetry, opts)?;
+        let (model, pairs) = (m.model.clone(), m.pairs.clone());
+        let mut analysis = match &m.plate {
+            Some(plate) => {
+                ContactAnalysis::solid_with_plate(model, pairs, &m.symmetry, opts, plate.clone())?
+            }
+            None => ContactAnalysis::solid(model, pairs, &m.symmetry, opts)?,
+        };
         analysis.set_monitor(monitor);
         unsafe { hand_out(out, HyconSolidContact { analysis }) }
     })
@@ -503,6 +547,64 @@ pub unsafe extern "C" fn hycon_solid_contact_increment(
                 info,
             )
         }
+    })
+}
+
+/// As `hycon_solid_contact_increment` for a model with a plate (`hycon_solid_model_set_plate`):
+/// `control` and `value` (3 entries each, x, y, z) drive the plate's translations
+/// (`HYCON_PLATE_DISPLACEMENT`: total displacement; `HYCON_PLATE_FORCE`: total force on the
+/// plate, its motion solved for), as `hycon_contact_increment_with_plate` in the plane.
+///
+/// Errors: those of `hycon_solid_contact_increment`; `HYCON_ERROR_INVALID_ARGUMENT` without a
+/// plate, for an unknown control, a non-finite value, or a translation with a component along
+/// a symmetry plane's normal that is not a displacement of 0; `HYCON_ERROR_SINGULAR` for a
+/// force-controlled translation that no constraint of the contact set resists (control it by
+/// displacement). On an error the analysis is as before the call.
+///
+/// # Safety
+/// As `hycon_solid_contact_increment`; `control` and `value` must hold 3 values each.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn hycon_solid_contact_increment_with_plate(
+    contact: *mut HyconSolidContact,
+    load: *const f64,
+    load_len: usize,
+    prescribed: *const f64,
+    prescribed_len: usize,
+    control: *const HyconPlateControl,
+    value: *const f64,
+    info: *mut HyconIncrementInfo,
+) -> HyconStatus {
+    boundary("hycon_solid_contact_increment_with_plate", || {
+        // SAFETY (all): the caller's contract.
+        let c = unsafe { handle_mut(contact, "contact")? };
+        unsafe {
+            contact::increment_with_plate(
+                &mut c.analysis,
+                (load, load_len),
+                (prescribed, prescribed_len),
+                (control, value, 3),
+                info,
+            )
+        }
+    })
+}
+
+/// The converged plate displacement and the force the plate exerts on the body (3 values each,
+/// x, y, z), as `hycon_contact_plate`. `HYCON_ERROR_INVALID_ARGUMENT` without a plate.
+///
+/// # Safety
+/// `contact` must be a live handle; `displacement` and `force` must hold 3 writable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hycon_solid_contact_plate(
+    contact: *const HyconSolidContact,
+    displacement: *mut f64,
+    force: *mut f64,
+) -> HyconStatus {
+    boundary("hycon_solid_contact_plate", || {
+        // SAFETY (all): the caller's contract.
+        let c = unsafe { handle(contact, "contact")? };
+        unsafe { contact::plate(&c.analysis, displacement, force) }
     })
 }
 

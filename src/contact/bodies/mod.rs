@@ -32,7 +32,7 @@ pub use host::{
 pub use model::{ModelBodies, OwnBodies, OwnModel};
 pub use solid::SolidBodies;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::model::Model;
 use crate::solver::{Backend, Reach, SparseCholesky};
 use faer::Mat;
@@ -269,8 +269,25 @@ pub trait Bodies: Send + Sync + std::fmt::Debug {
         None
     }
 
-    /// The plane model, if these are hycon's own plane bodies: plane-specific (the rigid
-    /// plate's stiffness scale and forces, [`ContactAnalysis::model`]).
+    /// Element forces `K q` over the field for displacements `q` over the field (the rigid
+    /// plate's forces: the reactions `K q - f` at its nodes): hycon's own models; an error for
+    /// a host's system, whose elements hycon does not have.
+    fn internal_forces(&self, _q: &[f64]) -> Result<Vec<f64>> {
+        Err(Error::InvalidInput(
+            "this analysis runs on a host's system: hycon has no elements to take forces from"
+                .into(),
+        ))
+    }
+
+    /// A stiffness (force per length) of the bodies' scale, against which the rigid plate's own
+    /// stiffness counts as zero: the largest `E t` of a plane model, the largest `E` times the
+    /// mesh's extent of a brick model; `None` for a host.
+    fn stiffness_scale(&self) -> Option<f64> {
+        None
+    }
+
+    /// The plane model, if these are hycon's own plane bodies: plane-specific
+    /// ([`ContactAnalysis::model`], stress recovery).
     ///
     /// [`ContactAnalysis::model`]: crate::contact::iteration::ContactAnalysis::model
     fn as_model(&self) -> Option<&Model> {

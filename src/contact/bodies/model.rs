@@ -37,6 +37,10 @@ pub trait OwnModel: Send + Sync + 'static {
     fn setup_seconds(_system: &Self::System) -> SetupSeconds {
         SetupSeconds::default()
     }
+    /// Element forces `K q` over all dofs ([`Bodies::internal_forces`]).
+    fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>>;
+    /// A stiffness (force per length) of the bodies' scale ([`Bodies::stiffness_scale`]).
+    fn stiffness_scale(&self) -> f64;
     /// The plane model, for what stays plane-specific ([`Bodies::as_model`]).
     fn as_plane(&self) -> Option<&Model> {
         None
@@ -160,6 +164,14 @@ impl<M: OwnModel> Bodies for OwnBodies<M> {
         load_key(f, qp, |d| M::dofs(&system).equation(d).is_some())
     }
 
+    fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
+        self.model.internal_forces(q)
+    }
+
+    fn stiffness_scale(&self) -> Option<f64> {
+        Some(self.model.stiffness_scale())
+    }
+
     fn as_model(&self) -> Option<&Model> {
         self.model.as_plane()
     }
@@ -209,6 +221,17 @@ impl OwnModel for Model {
             assembly,
             factorization,
         }
+    }
+
+    fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
+        Model::internal_forces(self, q)
+    }
+
+    /// The largest `E t` of the materials.
+    fn stiffness_scale(&self) -> f64 {
+        (self.materials.iter())
+            .map(|m| m.youngs * m.thickness)
+            .fold(0.0, f64::max)
     }
 
     fn as_plane(&self) -> Option<&Model> {

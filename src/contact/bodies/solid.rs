@@ -49,6 +49,28 @@ impl OwnModel for SolidModel {
             factorization,
         }
     }
+
+    fn internal_forces(&self, q: &[f64]) -> Result<Vec<f64>> {
+        SolidModel::internal_forces(self, q)
+    }
+
+    /// The largest `E` of the materials times the mesh's largest extent along an axis.
+    fn stiffness_scale(&self) -> f64 {
+        let nodes = &self.mesh.nodes;
+        let extent = (0..3)
+            .map(|d| {
+                let (lo, hi) = (nodes.iter())
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                        (lo.min(p[d]), hi.max(p[d]))
+                    });
+                hi - lo
+            })
+            .fold(0.0, f64::max);
+        let youngs = (self.materials.iter())
+            .map(|m| m.youngs)
+            .fold(0.0, f64::max);
+        youngs * extent
+    }
 }
 
 #[cfg(test)]

@@ -45,7 +45,7 @@ use super::small_system::SmallSystem;
 use super::surfaces::Pairing;
 use super::{
     CONDITION_LIMIT, ContactAnalysis, ContactSurface, IncrementInfo, IterationRecord, Kinematics,
-    Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads, model_of,
+    Monitor, NodeData, NodeState, PlateControl, Timings, Traction, loads,
 };
 use crate::contact::space::Vector;
 use crate::error::{ContactError, Error, Result};
@@ -527,7 +527,7 @@ impl ContactAnalysis {
         } = {
             let (bodies, plate, dim) = (&*self.bodies, &self.plate, self.dim());
             let force = |u0: &[f64]| match plate {
-                Some(p) => plate_force(model_of(bodies)?, &p.nodes, u0, f, dim),
+                Some(p) => plate_force(bodies, &p.nodes, u0, f),
                 None => Ok(Vector::zero(dim)),
             };
             self.boundary.load_solve(bodies, (f, qp), number, force)?

@@ -1,12 +1,24 @@
 //! The rigid loading plate: a face tied to the plate's translations (one per direction: two
-//! in the plane), each displacement- or force-controlled per increment; force control borders the small system with the plate's
-//! force balance (docs/method.md, "Floating bodies and the rigid plate").
+//! in the plane, three in 3D), each displacement- or force-controlled per increment; force
+//! control borders the small system with the plate's force balance (docs/method.md, "Floating
+//! bodies and the rigid plate"). One body for the plane and the brick models: what the plate
+//! needs of them (solves, element forces, a stiffness scale) comes through [`Bodies`].
 
 use super::{
-    ContactAnalysis, ContactOptions, ContactPair, ContactSurface, DMatrix, Error, IncrementInfo,
-    Model, NodeState, PlateControl, Result, Sparse, close_nearest, dof, dot,
+    ContactAnalysis, ContactOptions, ContactPair, ContactSurface, DMatrix, Error, FacePair,
+    IncrementInfo, Model, NodeState, PlateControl, Result, Sparse, close_nearest, dot,
 };
+use crate::contact::bodies::Bodies;
+use crate::contact::faces::SymmetryPlane;
 use crate::contact::space::{MAX_DIM, Vector};
+use crate::solid::model::SolidModel;
+
+/// A symmetry plane's normal component beyond which the plate's translation in that direction
+/// crosses the plane (normals are unit vectors).
+const ACROSS: f64 = 1e-9;
+
+/// The names of the directions, for messages.
+const AXES: [&str; MAX_DIM] = ["x", "y", "z"];
 
 /// The plate's control of each of its `dim` translations.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -68,6 +80,8 @@ pub(super) struct Plate {
     /// Converged plate displacement and force.
     pub(super) displacement: Vector,
     pub(super) force: Vector,
+    /// The model's symmetry planes: the plate may not move across them.
+    pub(super) symmetry: Vec<SymmetryPlane>,
 }
 
 impl Plate {
@@ -90,9 +104,10 @@ impl Plate {
         for (&d, &m) in directions.iter().zip(solved) {
             motion[d] = m;
         }
+        let dim = motion.dim();
         for &node in &self.nodes {
             for (d, &m) in motion.components().iter().enumerate() {
-                prescribed[dof(node, d)] = m;
+                prescribed[dim * node + d] = m;
             }
         }
         let force_controlled = |e: usize| matches!(control.as_slice()[e], PlateControl::Force(_));
@@ -114,20 +129,20 @@ pub(super) fn dot_dense(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// The force the tied nodes `plate` exert on the body in the field `q` under loads `f`: the sum
-/// of the reactions `K q - f` at their dofs, `dim` directions.
+/// The force the tied nodes `plate` exert on the bodies in the field `q` under loads `f`: the
+/// sum of the reactions `K q - f` at their dofs, one per direction.
 pub(super) fn plate_force(
-    model: &Model,
+    bodies: &dyn Bodies,
     plate: &[usize],
     q: &[f64],
     f: &[f64],
-    dim: usize,
 ) -> Result<Vector> {
-    let r = model.internal_forces(q)?;
+    let dim = bodies.dim();
+    let r = bodies.internal_forces(q)?;
     let mut force = Vector::zero(dim);
     for &node in plate {
         for (d, out) in force.components_mut().iter_mut().enumerate() {
-            *out += r[dof(node, d)] - f[dof(node, d)];
+            *out += r[dim * node + d] - f[dim * node + d];
         }
     }
     Ok(force)
@@ -172,7 +187,7 @@ impl Border {
                  contact set acts along it (open nodes resist nothing; frictionless and \
                  slipping nodes do not resist tangential motion): control it by \
                  displacement",
-                ["x", "y", "z"][d]
+                AXES[d]
             )));
         }
         for (a, &d) in self.directions.iter().enumerate() {
@@ -214,21 +229,56 @@ impl ContactAnalysis {
     /// translation joins the small contact system as extra unknowns with the plate's force
     /// balance as extra equations (a bordered system): a body held only by the plate and by
     /// contact, like a pressed disk, then takes a prescribed load. Costs two solves.
+    ///
+    /// # Errors
+    /// Those of [`new`](Self::new); [`Error::InvalidInput`] for a plate node that does not
+    /// exist, is not prescribed in x and y, or is a contact node.
     pub fn with_plate(
         model: Model,
         pairs: Vec<ContactPair>,
         options: ContactOptions,
         plate: Vec<usize>,
     ) -> Result<Self> {
-        let mut analysis = Self::new(model, pairs, options)?;
-        let n = analysis.bodies.field_len();
-        let dim = analysis.dim();
+        Self::new(model, pairs, options)?.tied_to_plate(plate, Vec::new())
+    }
+
+    /// As [`ContactAnalysis::solid`], with the nodes `plate` (prescribed in x, y and z in the
+    /// model, none of them a contact node) tied to a rigid plate whose three translations are
+    /// displacement- or force-controlled in each increment
+    /// ([`increment_with_plate`](Self::increment_with_plate)), as
+    /// [`with_plate`](Self::with_plate) does for a plane model: Hertz at a given force `P`,
+    /// Mindlin at a given shear `Q`. The plate of a model cut by `symmetry` planes does not
+    /// move across them: a translation with a component along a plane's normal must be
+    /// displacement-controlled to zero (a quarter model's plate moves along the axis only).
+    ///
+    /// # Errors
+    /// Those of [`solid`](Self::solid); [`Error::InvalidInput`] for a plate node that does not
+    /// exist, is not prescribed in x, y and z, or is a contact node.
+    pub fn solid_with_plate(
+        model: SolidModel,
+        pairs: Vec<FacePair>,
+        symmetry: &[SymmetryPlane],
+        options: ContactOptions,
+        plate: Vec<usize>,
+    ) -> Result<Self> {
+        Self::solid(model, pairs, symmetry, options)?.tied_to_plate(plate, symmetry.to_vec())
+    }
+
+    /// Tie the nodes `plate` to a rigid plate (the common part of
+    /// [`with_plate`](Self::with_plate) and [`solid_with_plate`](Self::solid_with_plate)):
+    /// check them, then solve once per direction for the contact dofs' response `w_d` to a
+    /// unit plate translation (contact open, no load) and the plate stiffness `D[e, d]`, the
+    /// force the plate exerts in direction `e` in that field.
+    fn tied_to_plate(mut self, plate: Vec<usize>, symmetry: Vec<SymmetryPlane>) -> Result<Self> {
+        let n = self.bodies.field_len();
+        let dim = self.dim();
         for &node in &plate {
-            let held = node < n / dim && (0..dim).all(|d| !analysis.bodies.is_free(dof(node, d)));
-            if !held || analysis.boundary.slot[dof(node, 0)].is_some() {
+            let held = node < n / dim && (0..dim).all(|d| !self.bodies.is_free(dim * node + d));
+            if !held || self.boundary.slot[dim * node].is_some() {
                 return Err(Error::InvalidInput(format!(
-                    "plate node {node} must exist, be prescribed in x and y, and not be a \
-                     contact node"
+                    "plate node {node} must exist, be prescribed in {}, and not be a contact \
+                     node",
+                    if dim == 2 { "x and y" } else { "x, y and z" }
                 )));
             }
         }
@@ -238,23 +288,24 @@ impl ContactAnalysis {
         for d in 0..dim {
             let mut qp = zero.clone();
             for &node in &plate {
-                qp[dof(node, d)] = 1.0;
+                qp[dim * node + d] = 1.0;
             }
-            let q = analysis.bodies.solve(&zero, &qp)?;
-            response[d] = analysis.boundary.dofs.iter().map(|&i| q[i]).collect();
-            let force = plate_force(analysis.model()?, &plate, &q, &zero, dim)?;
+            let q = self.bodies.solve(&zero, &qp)?;
+            response[d] = self.boundary.dofs.iter().map(|&i| q[i]).collect();
+            let force = plate_force(&*self.bodies, &plate, &q, &zero)?;
             for (e, &v) in force.components().iter().enumerate() {
                 stiffness[(e, d)] = v;
             }
         }
-        analysis.plate = Some(Plate {
+        self.plate = Some(Plate {
             nodes: plate,
             response,
             stiffness,
             displacement: Vector::zero(dim),
             force: Vector::zero(dim),
+            symmetry,
         });
-        Ok(analysis)
+        Ok(self)
     }
 
     /// The border of the small system for the force-controlled plate directions, if any.
@@ -268,13 +319,7 @@ impl ContactAnalysis {
                 rhs.push(f - force0[d]);
             }
         }
-        let stiffness_scale = self
-            .bodies
-            .as_model()?
-            .materials
-            .iter()
-            .map(|m| m.youngs * m.thickness)
-            .fold(0.0, f64::max);
+        let stiffness_scale = self.bodies.stiffness_scale()?;
         (!directions.is_empty()).then(|| Border {
             directions,
             response: plate.response.clone(),
@@ -300,10 +345,15 @@ impl ContactAnalysis {
         self.plate.as_ref().map(|p| (p.displacement, p.force))
     }
 
-    /// One load increment of an analysis built [`with_plate`](Self::with_plate): as
-    /// [`increment`](Self::increment), with the plate's translations driven by `control`, one
-    /// per direction (x and y in the plane; the values `qp` holds at the plate nodes are
-    /// ignored).
+    /// One load increment of an analysis built [`with_plate`](Self::with_plate) or
+    /// [`solid_with_plate`](Self::solid_with_plate): as [`increment`](Self::increment), with
+    /// the plate's translations driven by `control`, one per direction (x and y in the plane,
+    /// x, y and z in 3D; the values `qp` holds at the plate nodes are ignored).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] without a plate, for the wrong number of controls, a non-finite
+    /// value, a translation across a symmetry plane that is not `Displacement(0.0)`, or a
+    /// prescribed vector of the wrong length; the errors of [`increment`](Self::increment).
     pub fn increment_with_plate(
         &mut self,
         f: &[f64],
@@ -329,6 +379,7 @@ impl ContactAnalysis {
                 "non-finite plate control {control:?}"
             )));
         }
+        self.check_symmetry(control)?;
         let n = self.bodies.field_len();
         if qp.len() != n {
             return Err(Error::InvalidInput(format!(
@@ -349,13 +400,36 @@ impl ContactAnalysis {
         let Some(plate) = &self.plate else {
             return;
         };
+        let dim = self.dim();
         for &node in &plate.nodes {
             for (d, c) in control.as_slice().iter().enumerate() {
-                qp[dof(node, d)] = match c {
+                qp[dim * node + d] = match c {
                     PlateControl::Displacement(u) => *u,
                     PlateControl::Force(_) => 0.0,
                 };
             }
         }
+    }
+
+    /// The plate does not move across a symmetry plane of the model: every direction `d` in
+    /// which a plane's normal has a component (beyond [`ACROSS`]) must be
+    /// `Displacement(0.0)`.
+    fn check_symmetry(&self, control: &[PlateControl]) -> Result<()> {
+        let Some(plate) = &self.plate else {
+            return Ok(());
+        };
+        for plane in &plate.symmetry {
+            for (d, c) in control.iter().enumerate() {
+                if plane.normal[d].abs() > ACROSS && *c != PlateControl::Displacement(0.0) {
+                    return Err(Error::InvalidInput(format!(
+                        "the plate's {} translation ({c:?}) would cross the symmetry plane \
+                         through {:?} with normal {:?}: a symmetric plate does not move \
+                         across it, so control {} by Displacement(0.0)",
+                        AXES[d], plane.point, plane.normal, AXES[d]
+                    )));
+                }
+            }
+        }
+        Ok(())
     }
 }
