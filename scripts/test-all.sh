@@ -59,6 +59,10 @@ else
 fi
 
 export CARGO_TERM_COLOR=${CARGO_TERM_COLOR:-never}
+# A full run gains nothing from incremental compilation, which costs CPU on a build from scratch:
+# the workspace crates' test build took 237 s of CPU without it against 254 s with it (0.11.0,
+# `cargo nextest run --no-run` after `cargo clean -p hycon -p hycon-lab`, /usr/bin/time).
+export CARGO_INCREMENTAL=${CARGO_INCREMENTAL:-0}
 build=$root/build
 stage=$build/stage
 
