@@ -9,7 +9,8 @@
 //!   symmetry planes `x = 0` and `y = 0`), pressed by Hertz's approach `a^2 / R` of the target
 //!   radius `a` in one increment ([`QuarterCap::press`]), frictionless. The full model's load
 //!   `P` is 4 times the quarter's; Hertz's `a` and `p0` at that load are compared with the
-//!   radius from the moments of the contact forces and the multiplier at the centre node.
+//!   radius from the pressure's moments (`HertzSphere::from_moments`) and the multiplier at the
+//!   centre node.
 //! * [`cattaneo_mindlin`]: the half cap of [`crate::mindlin3d`] on its mirror block
 //!   (`R / a = 256`, the multipliers on the block's top, symmetry plane `y = 0`), Coulomb's
 //!   `mu`: pressed as above, then its top moved along `x` ([`HalfCap::pull_to`], one increment
@@ -350,7 +351,7 @@ pub fn hertz(case: &CapCase, mut progress: Progress<'_>) -> Result<Example> {
         title: format!(
             "Hertz sphere in 3D, quarter model of a paraboloid cap on a block, frictionless, \
              pressed by a^2/R to a = R/{}, a/h = {}, hybrid bricks, small kinematics; a from \
-             the moments of the contact forces, p0 at the centre node",
+             the pressure's moments, p0 at the centre node",
             spec.radius_over_contact, spec.a_over_h
         ),
         kinematics: hycon::contact::iteration::Kinematics::Small.name(),
