@@ -108,7 +108,7 @@ fn mindlin_at_a_given_shear() {
     assert_eq!(rays(&pressed), rays(&displaced));
     let w = PlateControl::Displacement(u.components()[2]);
     let mut slope = None;
-    for ratio in [0.05, 0.10, 0.15] {
+    for ratio in [0.05, 0.10, 0.15, 0.5, 0.875] {
         let q = ratio * MU * p;
         let info = press(&mut cap.analysis, [PlateControl::Force(q / 2.0), held, w]).unwrap();
         let pulled = cap.results(info).unwrap();
@@ -125,8 +125,10 @@ fn mindlin_at_a_given_shear() {
             assert!(ray.is_stick_disk(), "{pulled:?}");
             assert!((ray.radius() - c).abs() < h, "{ray:?}, Mindlin {c}, h {h}");
         }
-        let s = *slope.get_or_insert(u.components()[0] / q);
-        assert!(relative(u.components()[0] / q, s) < 1e-9, "{u:?}");
+        if ratio <= 0.15 {
+            let s = *slope.get_or_insert(u.components()[0] / q);
+            assert!(relative(u.components()[0] / q, s) < 1e-9, "{u:?}");
+        }
     }
 }
 
