@@ -366,7 +366,13 @@ fn bad_plate_input_is_refused() {
     loose.prescribe(rest, &[0, 1, 2]).unwrap();
     loose.prescribe(&[*last], &[2]).unwrap();
     let options = ContactOptions::default();
-    match ContactAnalysis::solid_with_plate(loose, vec![pair(&c, FRICTION)], &[], options, top.clone()) {
+    match ContactAnalysis::solid_with_plate(
+        loose,
+        vec![pair(&c, FRICTION)],
+        &[],
+        options,
+        top.clone(),
+    ) {
         Err(Error::InvalidInput(m)) => {
             assert!(
                 m.contains(&format!("plate node {last}")) && m.contains("prescribed in x, y and z"),
