@@ -686,10 +686,7 @@ mod tests {
             (x >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         };
         let g = DMatrix::from_fn(unknowns.len(), 2, |i, a| {
-            let along = match (unknowns[i].2, a) {
-                (Row::Normal, 0) | (Row::Tangent(0), 1) => true,
-                _ => false,
-            };
+            let along = matches!((unknowns[i].2, a), (Row::Normal, 0) | (Row::Tangent(0), 1));
             let v = draw();
             if along { 0.5 + v.abs() } else { 0.1 * v }
         });
