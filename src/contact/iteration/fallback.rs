@@ -36,6 +36,10 @@
 //! start ([`ContactAnalysis::linearized_states`]), proposes the states of every iteration
 //! (the driver's `Proposer::Linearized`; docs/method.md, "The solver order on a face"): the
 //! slip directions are then the trial tractions' at every iterate.
+//!
+//! Under a force-controlled rigid plate the conditions are bordered by the plate's
+//! force-controlled translations `U` and its force balance ([`PlateBorder`]; docs/method.md,
+//! "Floating bodies and the rigid plate"), as the iteration's small system is.
 
 use super::driver::Attempt;
 use super::small_system::{Row, SmallSystem};
