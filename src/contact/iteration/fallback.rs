@@ -726,7 +726,8 @@ mod tests {
     /// flexibilities of `contact_plate3d` and `contact3d_plate` settle): the semi-smooth Newton
     /// method over `t` and `U` satisfies the contact conditions and the balance to round-off,
     /// and where `D` is positive definite its tractions are those of the condensed conditions
-    /// ([`PlateBorder::condensed`]) solved by projected Gauss-Seidel. A solution made to be
+    /// ([`PlateBorder::condensed`]) solved by projected Gauss-Seidel, and its `U` the one the
+    /// balance gives them ([`PlateBorder::motion`]). A solution made to be
     /// one (every node closed and sticking, `rho = 0`: `r = S^T t + G U`,
     /// `rhs = D U - H^T t`) is found again exactly. A wrong sign of `G`, `H` or `D` in
     /// the step, or a condensation that takes `D^-1` the wrong way, breaks them.
@@ -772,6 +773,9 @@ mod tests {
                             border: None,
                         };
                         let t = condensed.projected(vec![0.0; m], 1_000_000);
+                        // U recovered from the balance
+                        let u = b.motion(&t).unwrap();
+                        let t: Vec<f64> = t.into_iter().chain(u.iter().copied()).collect();
                         let largest = t.iter().fold(0.0f64, |a, v| a.max(v.abs()));
                         for (a, b) in x.iter().zip(&t) {
                             assert!((a - b).abs() < 1e-8 * largest, "seed {seed}: {a} {b}");
