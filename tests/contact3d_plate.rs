@@ -1,11 +1,11 @@
 //! The rigid plate on a solid model (issue #43, force control in 3D), from Rust
 //! (`ContactAnalysis::solid_with_plate`) and through the C ABI (`hycon_solid_model_set_plate`,
 //! `hycon_solid_contact_increment_with_plate`, `hycon_solid_contact_plate`) as a C host calls
-//! it: a block turned by 30 degrees on a flat (frictionless: with friction its press slips and
-//! settles only from the fallback's states, which a force-controlled increment does not have
-//! yet), its top tied to the plate, pressed by displacement and then by the force that press
-//! took. The C results are the Rust
-//! ones to the bit; bad input gets its error. (Hertz and Mindlin at a given load:
+//! it: a block turned by 30 degrees on a flat, frictionless and with friction (its press then
+//! slips: the force-controlled increment settles through the linearized conditions bordered
+//! by the plate's force-controlled translation), its top tied to the plate, pressed by
+//! displacement and then by the force that press took. The C results are the Rust ones to the
+//! bit; bad input gets its error. (Hertz and Mindlin at a given load:
 //! `lab/tests/contact_plate3d.rs`.)
 
 use hycon::contact::faces::SymmetryPlane;
@@ -18,6 +18,8 @@ use hycon::solid::{BrickFormulation, Isotropic};
 use std::ptr::{null, null_mut};
 
 const FRICTION: f64 = 0.0;
+/// The friction coefficient of the press that slips.
+const SLIPPING: f64 = 0.3;
 const PRESS: f64 = 1e-3;
 
 fn message() -> String {
@@ -42,11 +44,11 @@ fn scene() -> ContactMesh {
     .unwrap()
 }
 
-fn pair(c: &ContactMesh) -> FacePair {
+fn pair(c: &ContactMesh, friction: f64) -> FacePair {
     FacePair {
         a: c.a_faces.clone(),
         b: c.b_faces.clone(),
-        friction: FRICTION,
+        friction,
     }
 }
 
@@ -65,10 +67,10 @@ fn model(c: &ContactMesh, top: &[usize]) -> SolidModel {
 }
 
 /// The Rust analysis with the block's top tied to the plate.
-fn rust_analysis(c: &ContactMesh) -> ContactAnalysis {
+fn rust_analysis(c: &ContactMesh, friction: f64) -> ContactAnalysis {
     let (options, top) = (ContactOptions::default(), c.a_top.clone());
-    ContactAnalysis::solid_with_plate(model(c, &[0, 1, 2]), vec![pair(c)], &[], options, top)
-        .unwrap()
+    let pairs = vec![pair(c, friction)];
+    ContactAnalysis::solid_with_plate(model(c, &[0, 1, 2]), pairs, &[], options, top).unwrap()
 }
 
 /// The faces as `(brick, local face)` values, flat.
@@ -81,9 +83,9 @@ fn brick_faces(c: &ContactMesh, faces: &[[usize; 4]]) -> Vec<usize> {
         .collect()
 }
 
-/// The C model: mesh, materials, the flat's bottom held, the pair, the plate on `plate`
-/// (checked to succeed).
-fn c_model(c: &ContactMesh, plate: &[usize]) -> *mut HyconSolidModel {
+/// The C model: mesh, materials, the flat's bottom held, the pair with `friction`, the plate
+/// on `plate` (checked to succeed).
+fn c_model(c: &ContactMesh, plate: &[usize], friction: f64) -> *mut HyconSolidModel {
     let coords = c.mesh.nodes.as_flattened();
     let bricks = c.mesh.elements.as_flattened();
     let material = [HyconSolidMaterial {
@@ -116,7 +118,7 @@ fn c_model(c: &ContactMesh, plate: &[usize]) -> *mut HyconSolidModel {
         let bottom = &c.b_bottom;
         let s = hycon_solid_model_prescribe(model, bottom.as_ptr(), bottom.len(), HYCON_XYZ);
         assert_eq!(s, HYCON_OK, "{}", message());
-        let s = hycon_solid_model_add_pair(model, &view(&a), &view(&b), FRICTION, null_mut());
+        let s = hycon_solid_model_add_pair(model, &view(&a), &view(&b), friction, null_mut());
         assert_eq!(s, HYCON_OK, "{}", message());
         let s = hycon_solid_model_set_plate(model, plate.as_ptr(), plate.len());
         assert_eq!(s, HYCON_OK, "{}", message());
@@ -124,9 +126,9 @@ fn c_model(c: &ContactMesh, plate: &[usize]) -> *mut HyconSolidModel {
     model
 }
 
-/// A C analysis of `c_model(c, plate)` (checked to succeed).
-fn c_analysis(c: &ContactMesh, plate: &[usize]) -> *mut HyconSolidContact {
-    let model = c_model(c, plate);
+/// A C analysis of `c_model(c, plate, friction)` (checked to succeed).
+fn c_analysis(c: &ContactMesh, plate: &[usize], friction: f64) -> *mut HyconSolidContact {
+    let model = c_model(c, plate, friction);
     let mut contact = null_mut();
     // SAFETY: live handles.
     unsafe {
@@ -178,11 +180,26 @@ fn c_plate(contact: *const HyconSolidContact) -> ([f64; 3], [f64; 3]) {
 /// that reads the controls in another order, the second.
 #[test]
 fn force_control_from_c_is_the_rust_one() {
+    assert_eq!(force_control_from_c(FRICTION), 0);
+}
+
+/// The same with friction `mu = 0.3`: the press slips (measured: 8 of the 9 closed nodes),
+/// and at the force the displacement-controlled press took the force-controlled one comes
+/// down by the same `PRESS` (to `1e-10`: the linearized conditions bordered by the plate's
+/// z translation settle it), from C to the bit.
+#[test]
+fn a_frictional_press_that_slips_at_a_given_force() {
+    assert!(force_control_from_c(SLIPPING) > 0);
+}
+
+/// The press of `force_control_from_c_is_the_rust_one` with `friction`: the number of slip
+/// nodes of the force-controlled increment.
+fn force_control_from_c(friction: f64) -> usize {
     let c = scene();
     let n = 3 * c.mesh.n_nodes();
     let zero = vec![0.0; n];
     let held = PlateControl::Displacement(0.0);
-    let mut displaced = rust_analysis(&c);
+    let mut displaced = rust_analysis(&c, friction);
     let down = [held, held, PlateControl::Displacement(-PRESS)];
     displaced.increment_with_plate(&zero, &zero, &down).unwrap();
     let (u, force) = displaced.plate().unwrap();
@@ -190,17 +207,15 @@ fn force_control_from_c_is_the_rust_one() {
     let f = force.components()[2];
     assert!(f < 0.0, "{force:?}");
 
-    let mut forced = rust_analysis(&c);
+    let mut forced = rust_analysis(&c, friction);
     let by_force = [held, held, PlateControl::Force(f)];
-    forced
-        .increment_with_plate(&zero, &zero, &by_force)
-        .unwrap();
+    let info = (forced.increment_with_plate(&zero, &zero, &by_force)).unwrap();
     let (u, force) = forced.plate().unwrap();
     assert!((force.components()[2] / f - 1.0).abs() < 1e-12, "{force:?}");
     assert!((u.components()[2] / -PRESS - 1.0).abs() < 1e-10, "{u:?}");
     assert_eq!(&u.components()[..2], [0.0, 0.0]);
 
-    let contact = c_analysis(&c, &c.a_top);
+    let contact = c_analysis(&c, &c.a_top, friction);
     let control = [
         HYCON_PLATE_DISPLACEMENT,
         HYCON_PLATE_DISPLACEMENT,
@@ -234,6 +249,8 @@ fn force_control_from_c_is_the_rust_one() {
     assert_eq!(s, HYCON_OK, "{}", message());
     assert_eq!(q, forced.displacement().unwrap());
     unsafe { hycon_solid_contact_free(contact) };
+    println!("friction {friction}: {info:?}");
+    info.slip
 }
 
 /// Bad input, each refused with its status and a message saying what is wrong, and nothing
@@ -250,7 +267,7 @@ fn bad_plate_input_is_refused() {
     unsafe {
         let s = hycon_solid_model_set_plate(null_mut(), top.as_ptr(), top.len());
         assert_eq!(s, HYCON_ERROR_NULL_POINTER);
-        let described = c_model(&c, top);
+        let described = c_model(&c, top, FRICTION);
         let s = hycon_solid_model_set_plate(described, null(), 2);
         assert_eq!(s, HYCON_ERROR_NULL_POINTER, "{}", message());
         let s = hycon_solid_model_set_plate(described, top.as_ptr(), 0);
@@ -268,7 +285,7 @@ fn bad_plate_input_is_refused() {
     }
     // a contact node on the plate: refused when the analysis is built
     let contact_node = c.a_faces[0][0];
-    let on_contact = c_model(&c, &[&top[..], &[contact_node]].concat());
+    let on_contact = c_model(&c, &[&top[..], &[contact_node]].concat(), FRICTION);
     let mut contact = null_mut();
     // SAFETY: live handles.
     unsafe {
@@ -284,7 +301,7 @@ fn bad_plate_input_is_refused() {
         message()
     );
 
-    let contact = c_analysis(&c, top);
+    let contact = c_analysis(&c, top, FRICTION);
     let disp = HYCON_PLATE_DISPLACEMENT;
     let s = c_increment(contact, n, [disp, disp, 7], [0.0; 3]);
     assert_eq!(s, HYCON_ERROR_INVALID_ARGUMENT);
@@ -323,7 +340,7 @@ fn bad_plate_input_is_refused() {
     // without a plate
     let rust = ContactAnalysis::solid(
         model(&c, &[0, 1, 2]),
-        vec![pair(&c)],
+        vec![pair(&c, FRICTION)],
         &[],
         ContactOptions::default(),
     )
@@ -349,7 +366,13 @@ fn bad_plate_input_is_refused() {
     loose.prescribe(rest, &[0, 1, 2]).unwrap();
     loose.prescribe(&[*last], &[2]).unwrap();
     let options = ContactOptions::default();
-    match ContactAnalysis::solid_with_plate(loose, vec![pair(&c)], &[], options, top.clone()) {
+    match ContactAnalysis::solid_with_plate(
+        loose,
+        vec![pair(&c, FRICTION)],
+        &[],
+        options,
+        top.clone(),
+    ) {
         Err(Error::InvalidInput(m)) => {
             assert!(
                 m.contains(&format!("plate node {last}")) && m.contains("prescribed in x, y and z"),
@@ -373,7 +396,7 @@ fn a_plate_does_not_cross_a_symmetry_plane() {
     let options = ContactOptions::default();
     let mut analysis = ContactAnalysis::solid_with_plate(
         model(&c, &[0, 1, 2]),
-        vec![pair(&c)],
+        vec![pair(&c, FRICTION)],
         &[plane],
         options,
         c.a_top.clone(),

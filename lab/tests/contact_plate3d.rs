@@ -62,20 +62,20 @@ const NU: f64 = 0.3;
 /// Mindlin's half cap at `a/h = 4`, `nu = 0.3`, `mu = 0.3` (`hycon_lab::mindlin3d`, the
 /// multipliers on the flat block), the cap's top tied to the plate: pressed by the load `P`
 /// that `HalfCap::press` reaches at Hertz's approach (x held), then sheared along `x` by
-/// `Q / (mu P) = 0.05, 0.10, 0.15` (force-controlled; z held at the approach the press found,
-/// y by the symmetry plane). The force-controlled press reaches `P` to round-off at the
-/// displacement-controlled press's approach (`1e-12`) with the same stick radii; each shear
-/// makes the total friction force `Q` to round-off, leaves `P` within `1e-6` (the approach is
-/// held, normal and tangential barely couple), and keeps the stick radius on the three rays
-/// (leading, trailing, across `Q`) a disk within one node spacing of Mindlin's
+/// `Q / (mu P) = 0.05, 0.10, 0.15, 0.5, 0.875` (force-controlled; z held at the approach the
+/// press found, y by the symmetry plane). The force-controlled press reaches `P` to round-off
+/// at the displacement-controlled press's approach (`1e-12`) with the same stick radii; each
+/// shear makes the total friction force `Q` to round-off, leaves `P` within `1e-6` (the
+/// approach is held, normal and tangential barely couple), and keeps the stick radius on the
+/// three rays (leading, trailing, across `Q`) a disk within one node spacing of Mindlin's
 /// `a (1 - Q / (mu P))^(1/3)`. The plate's x displacement grows in proportion to `Q` while
-/// nothing slips (measured: the three shears all stick, 2 iterations each).
+/// nothing slips (the first three shears: 2 iterations each).
 ///
-/// Beyond `Q / (mu P) = 0.15` nodes begin to slip and the paper's rules do not settle the
-/// increment (as for the displacement-controlled pulls of `contact_mindlin3d`, which converge
-/// only from the fallback's states), and the fallback does not take a force-controlled plate
-/// (the bordered system): Mindlin's partial slip at a given `Q`, e.g. `0.5 mu P`, is not
-/// reached yet.
+/// Beyond `Q / (mu P) = 0.15` nodes slip: the shear is solved with the contact conditions
+/// linearized at each iterate and bordered by the plate's force-controlled x translation (the
+/// cap is held in x only by the plate and by contact: `D = 0`). Measured: at 0.5 the stick
+/// radius 3.5 h against Mindlin's 3.32 h (3 iterations), at 0.875 1.5 h against 2.09 h
+/// (6 iterations).
 #[test]
 fn mindlin_at_a_given_shear() {
     let mut cap = HalfCap::new(4, NU, MU).unwrap();
@@ -108,7 +108,7 @@ fn mindlin_at_a_given_shear() {
     assert_eq!(rays(&pressed), rays(&displaced));
     let w = PlateControl::Displacement(u.components()[2]);
     let mut slope = None;
-    for ratio in [0.05, 0.10, 0.15] {
+    for ratio in [0.05, 0.10, 0.15, 0.5, 0.875] {
         let q = ratio * MU * p;
         let info = press(&mut cap.analysis, [PlateControl::Force(q / 2.0), held, w]).unwrap();
         let pulled = cap.results(info).unwrap();
@@ -125,8 +125,10 @@ fn mindlin_at_a_given_shear() {
             assert!(ray.is_stick_disk(), "{pulled:?}");
             assert!((ray.radius() - c).abs() < h, "{ray:?}, Mindlin {c}, h {h}");
         }
-        let s = *slope.get_or_insert(u.components()[0] / q);
-        assert!(relative(u.components()[0] / q, s) < 1e-9, "{u:?}");
+        if ratio <= 0.15 {
+            let s = *slope.get_or_insert(u.components()[0] / q);
+            assert!(relative(u.components()[0] / q, s) < 1e-9, "{u:?}");
+        }
     }
 }
 

@@ -197,7 +197,7 @@ pub(super) struct Attempt<'a> {
     control: Option<Controls>,
     /// The load solve at the contact dofs.
     pub(super) u0c: &'a [f64],
-    border: Option<&'a Border>,
+    pub(super) border: Option<&'a Border>,
     force0: Vector,
     /// The load (`f` and `q_p`) the increment's locks are kept with.
     load: &'a [f64],
@@ -566,7 +566,7 @@ impl ContactAnalysis {
             flexibility_before: self.boundary.flexibility_seconds,
         };
         let mut records = Vec::new();
-        let proposer = self.first_proposer(border.is_some());
+        let proposer = self.first_proposer();
         let b_nodes = match proposer {
             Proposer::Rules => b_nodes,
             Proposer::Linearized => BNodes::AtConvergence,
@@ -575,7 +575,7 @@ impl ContactAnalysis {
         match first {
             Err(e)
                 if self.driver.fallback
-                    && border.is_none()
+                    && (border.is_none() || self.dim() == 3)
                     && proposer == Proposer::Rules
                     && Failure::of(&e).fallback_may_settle() =>
             {
@@ -628,17 +628,17 @@ impl ContactAnalysis {
     }
 
     /// How an increment's iteration proposes states first (docs/method.md, "The solver
-    /// order"): on faces (3D) with friction and without a plate, the linearized conditions
-    /// ([`Proposer::Linearized`]); the paper's rules otherwise. On a face the rules' slip
-    /// directions follow the slip from iterate to iterate, a fixed point that under finite
-    /// kinematics does not settle while the geometry follows the iterate (the block pressed on
-    /// the flat of `hycon_lab::slide3d`: 60 iterations, `R` still 0.05 to 0.4), and that takes
-    /// 23 to 62 iterations where it settles; the linearized conditions settle the same presses
-    /// in 3 or 4 (measured in docs/method.md). A plate's border rows are not in the
-    /// fallback's dense matrix, so a plate keeps the rules.
-    fn first_proposer(&self, plate: bool) -> Proposer {
+    /// order"): on faces (3D) with friction, the linearized conditions
+    /// ([`Proposer::Linearized`], bordered by a force-controlled plate's translations); the
+    /// paper's rules otherwise. On a face the rules' slip directions follow the slip from
+    /// iterate to iterate, a fixed point that under finite kinematics does not settle while
+    /// the geometry follows the iterate (the block pressed on the flat of
+    /// `hycon_lab::slide3d`: 60 iterations, `R` still 0.05 to 0.4), and that takes 23 to 62
+    /// iterations where it settles; the linearized conditions settle the same presses in 3 or
+    /// 4 (measured in docs/method.md).
+    fn first_proposer(&self) -> Proposer {
         let friction = (self.surfaces.laws.iter()).any(|law| !law.is_frictionless());
-        if self.dim() == 3 && friction && !plate {
+        if self.dim() == 3 && friction {
             Proposer::Linearized
         } else {
             Proposer::Rules
@@ -727,6 +727,7 @@ impl ContactAnalysis {
                         probe: &uc_new,
                         startc,
                         u0c,
+                        border,
                     };
                     self.linearized_states(&surfaces, states, at)?
                 }

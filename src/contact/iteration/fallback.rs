@@ -36,12 +36,16 @@
 //! start ([`ContactAnalysis::linearized_states`]), proposes the states of every iteration
 //! (the driver's `Proposer::Linearized`; docs/method.md, "The solver order on a face"): the
 //! slip directions are then the trial tractions' at every iterate.
+//!
+//! Under a force-controlled rigid plate the conditions are bordered by the plate's
+//! force-controlled translations `U` and its force balance ([`PlateBorder`]; docs/method.md,
+//! "Floating bodies and the rigid plate"), as the iteration's small system is.
 
 use super::driver::Attempt;
-use super::small_system::Row;
+use super::small_system::{Row, SmallSystem};
 use super::{
-    ContactAnalysis, ContactSurface, DMatrix, DVector, FrictionLaw, NodeState, Result, Tangential,
-    closed_at_rest, column, dot, linearized_state, plate,
+    Border, ContactAnalysis, ContactSurface, DMatrix, DVector, FrictionLaw, NodeState, Result,
+    Tangential, closed_at_rest, column, dot, linearized_state, plate,
 };
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use plate::dot_dense;
@@ -82,6 +86,7 @@ impl ContactAnalysis {
             probe: attempt.u0c,
             startc,
             u0c: attempt.u0c,
+            border: attempt.border,
         };
         self.linearized_states(&surfaces, &states, at)
     }
@@ -103,6 +108,7 @@ impl ContactAnalysis {
             probe,
             startc,
             u0c,
+            border,
         } = at;
         let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
         let mut candidates: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
@@ -153,7 +159,8 @@ impl ContactAnalysis {
             .map(|&(p, k, _)| self.node_law(p, k))
             .collect();
         let frame_tangents = |p: usize, k: usize| surfaces[p].nodes[k].frame.tangents().len();
-        let linearized = Linearized::new(&system.unknowns, &laws, frame_tangents, s, r);
+        let mut linearized = Linearized::new(&system.unknowns, &laws, frame_tangents, s, r);
+        linearized.border = border.map(|b| PlateBorder::new(b, &system));
         let t = linearized.solution();
         let tn_max = (linearized.nodes.iter()).fold(0.0f64, |m, node| m.max(t[node.normal].abs()));
         let mut out: Vec<Vec<NodeState>> = candidates
@@ -173,21 +180,92 @@ impl ContactAnalysis {
 /// Where [`ContactAnalysis::linearized_states`] linearizes the contact conditions: the
 /// iterate `uc` (the geometry's), the displacement `probe` at which open nodes are judged
 /// penetrating, the increment's start `startc` (the slips' origin) and the load solve `u0c`,
-/// all at the contact dofs.
-#[derive(Debug, Clone, Copy)]
+/// all at the contact dofs, and the border of a force-controlled plate (`u0c` holds its
+/// force-controlled translations at zero: they are unknowns, [`PlateBorder`]).
+#[derive(Clone, Copy)]
 pub(super) struct Linearization<'a> {
     pub(super) uc: &'a [f64],
     pub(super) probe: &'a [f64],
     pub(super) startc: &'a [f64],
     pub(super) u0c: &'a [f64],
+    pub(super) border: Option<&'a Border>,
 }
 
-/// The fallback's linearized conditions `S t - r = rho` (module docs), node by node.
+/// The fallback's linearized conditions `S t - r = rho` (module docs), node by node; with a
+/// force-controlled plate, `S t + G U - r = rho` and the plate's balance ([`PlateBorder`]).
 struct Linearized<'a> {
     s: DMatrix<f64>,
     r: Vec<f64>,
     /// The candidate nodes.
     nodes: Vec<Candidate<'a>>,
+    border: Option<PlateBorder>,
+}
+
+/// The force-controlled translations `U` of a plate as unknowns of the linearized conditions
+/// (docs/method.md, "Floating bodies and the rigid plate"): with `w_d` the contact dofs'
+/// response to a unit translation in direction `d`, the contact residuals gain
+/// `G U` (`G_ia = row_i . w_d`), and the plate's balance `D U - H^T t = F - F0`
+/// (`H_ja = col_j . w_d`, `D` the plate's stiffness over the force-controlled directions)
+/// joins the conditions, as in the iteration's bordered small system (`Border::fill`). `D`
+/// is zero for a body held only by the plate and by contact: the balance is then a
+/// constraint on the tractions with `U` its multiplier, so the semi-smooth Newton method
+/// solves for `t` and `U` together.
+struct PlateBorder {
+    g: DMatrix<f64>,
+    h: DMatrix<f64>,
+    d: DMatrix<f64>,
+    rhs: Vec<f64>,
+    /// The bodies' stiffness scale, against which `D` counts as singular.
+    stiffness_scale: f64,
+}
+
+impl PlateBorder {
+    /// The border of `system`'s conditions for the plate directions of `border`.
+    fn new(border: &Border, system: &SmallSystem) -> Self {
+        let directions = &border.directions;
+        let k = directions.len();
+        let response = |sparse: &[super::Sparse]| {
+            DMatrix::from_fn(sparse.len(), k, |i, a| {
+                dot(&sparse[i], &border.response[directions[a]])
+            })
+        };
+        PlateBorder {
+            g: response(&system.rows),
+            h: response(&system.cols),
+            d: DMatrix::from_fn(k, k, |a, c| {
+                border.stiffness[(directions[a], directions[c])]
+            }),
+            rhs: border.rhs.clone(),
+            stiffness_scale: border.stiffness_scale,
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.rhs.len()
+    }
+
+    /// The conditions with `U` condensed out where `D` is positive definite (not small
+    /// against the bodies' stiffness): `U = D^-1 (F - F0 + H^T t)`, so
+    /// `S' = S + H D^-T G^T` (in the columns' convention of [`Linearized::residual`]) and
+    /// `r' = r - G D^-1 (F - F0)`. `None` for a floating body (`D` singular).
+    fn condensed(&self, s: &DMatrix<f64>, r: &[f64]) -> Option<(DMatrix<f64>, Vec<f64>)> {
+        let smallest = self.d.clone().symmetric_eigen().eigenvalues.min();
+        if smallest <= 1e-10 * self.stiffness_scale {
+            return None;
+        }
+        let inverse = self.d.clone().try_inverse()?;
+        let s = s + &self.h * inverse.transpose() * self.g.transpose();
+        let shift = &self.g * &inverse * DVector::from_column_slice(&self.rhs);
+        let r = r.iter().zip(shift.iter()).map(|(a, b)| a - b).collect();
+        Some((s, r))
+    }
+
+    /// `U = D^-1 (F - F0 + H^T t)`.
+    fn motion(&self, t: &[f64]) -> Option<DVector<f64>> {
+        let ht = self.h.transpose() * DVector::from_column_slice(t);
+        let rhs = DVector::from_column_slice(&self.rhs) + ht;
+        self.d.clone().lu().solve(&rhs)
+    }
 }
 
 /// A candidate node of the linearized conditions: its unknowns and its friction law.
@@ -240,12 +318,14 @@ impl Candidate<'_> {
 /// What a semi-smooth Newton step ([`Linearized::active_set`]) takes for an unknown: its own
 /// row of `S t = r` (`rho = 0`: a closed normal, a sticking tangent), zero (open), or the
 /// tangential traction on the cone (`ts_i = c_i tn`, `c` the law's slip coefficients, with
-/// the index of the node's normal unknown).
+/// the index of the node's normal unknown); a plate's translation takes its balance
+/// ([`PlateBorder`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Condition {
     Row,
     Zero,
     Cone(usize, f64),
+    Balance,
 }
 
 /// Whether a step makes the same choice as the last: the same kind of condition per unknown,
@@ -300,13 +380,21 @@ impl<'a> Linearized<'a> {
                 node
             })
             .collect();
-        Self { s, r, nodes }
+        Self {
+            s,
+            r,
+            nodes,
+            border: None,
+        }
     }
 
     /// The solution: a rough start by projected Gauss-Seidel ([`START_SWEEPS`]), then exact
     /// by the semi-smooth Newton method; where that does not settle, Gauss-Seidel on to
     /// convergence (within [`FALLBACK_WORK`]).
     fn solution(&self) -> Vec<f64> {
+        if let Some(border) = &self.border {
+            return self.bordered_solution(border);
+        }
         let m = self.r.len();
         let start = self.projected(vec![0.0; m], START_SWEEPS);
         self.active_set(start.clone()).unwrap_or_else(|| {
@@ -315,10 +403,47 @@ impl<'a> Linearized<'a> {
         })
     }
 
-    /// `rho = S t - r`.
-    fn residual(&self, t: &[f64]) -> Vec<f64> {
-        (0..self.r.len())
-            .map(|i| dot_dense(column(&self.s, i), t) - self.r[i])
+    /// With a plate border: the contact tractions `t` and the plate's translations `U`
+    /// together, by the semi-smooth Newton method from the solution with every candidate
+    /// closed and sticking; where that does not settle, the condensed conditions'
+    /// ([`PlateBorder::condensed`]) solution, or for a floating body that start.
+    fn bordered_solution(&self, border: &PlateBorder) -> Vec<f64> {
+        let m = self.r.len();
+        let mut all = vec![Condition::Row; m];
+        all.resize(m + border.len(), Condition::Balance);
+        let Some(start) = self.step(&all) else {
+            return vec![0.0; m + border.len()];
+        };
+        if let Some(x) = self.active_set(start.clone()) {
+            return x;
+        }
+        let condensed = border.condensed(&self.s, &self.r).map(|(s, r)| Linearized {
+            s,
+            r,
+            nodes: self.nodes.clone(),
+            border: None,
+        });
+        condensed
+            .and_then(|c| {
+                let t = c.solution();
+                let u = border.motion(&t)?;
+                Some(t.into_iter().chain(u.iter().copied()).collect())
+            })
+            .unwrap_or(start)
+    }
+
+    /// `rho = S t - r` over the contact unknowns (`S t + G U - r` with a plate border, `x`
+    /// then `t` followed by `U`).
+    fn residual(&self, x: &[f64]) -> Vec<f64> {
+        let m = self.r.len();
+        (0..m)
+            .map(|i| {
+                let rho = dot_dense(column(&self.s, i), x) - self.r[i];
+                match &self.border {
+                    None => rho,
+                    Some(b) => rho + dot_dense(b.g.row(i).transpose().as_slice(), &x[m..]),
+                }
+            })
             .collect()
     }
 
@@ -388,10 +513,12 @@ impl<'a> Linearized<'a> {
     /// within [`ACTIVE_SET_STEPS`] or a step's matrix is singular.
     fn active_set(&self, mut t: Vec<f64>) -> Option<Vec<f64>> {
         let (s, m) = (&self.s, self.r.len());
+        let k = self.border.as_ref().map_or(0, PlateBorder::len);
         let mut last: Vec<Condition> = Vec::new();
         for _ in 0..ACTIVE_SET_STEPS {
             let rho = self.residual(&t);
             let mut conditions = vec![Condition::Zero; m];
+            conditions.resize(m + k, Condition::Balance);
             for node in &self.nodes {
                 let i = node.normal;
                 let an = t[i] - rho[i] / s[(i, i)];
@@ -419,26 +546,46 @@ impl<'a> Linearized<'a> {
             if same_conditions(&conditions, &last) {
                 return Some(t);
             }
-            let mut a = DMatrix::zeros(m, m);
-            let mut g = DVector::zeros(m);
-            for (j, condition) in conditions.iter().enumerate() {
-                match *condition {
-                    Condition::Row => {
-                        // S is symmetric: row j is column j
-                        a.row_mut(j).copy_from(&s.column(j).transpose());
-                        g[j] = self.r[j];
-                    }
-                    Condition::Zero => a[(j, j)] = 1.0,
-                    Condition::Cone(normal, c) => {
-                        a[(j, j)] = 1.0;
-                        a[(j, normal)] = -c;
-                    }
-                }
-            }
-            t = a.lu().solve(&g)?.iter().copied().collect();
+            t = self.step(&conditions)?;
             last = conditions;
         }
         None
+    }
+
+    /// One semi-smooth Newton step: the solution of the linear `conditions`, one per unknown
+    /// (with a plate border, the plate's balance rows after the contact unknowns). `None`
+    /// when they are singular.
+    fn step(&self, conditions: &[Condition]) -> Option<Vec<f64>> {
+        let (s, m, n) = (&self.s, self.r.len(), conditions.len());
+        let mut a = DMatrix::zeros(n, n);
+        let mut g = DVector::zeros(n);
+        for (j, condition) in conditions.iter().enumerate() {
+            match *condition {
+                Condition::Row => {
+                    // S is symmetric: row j is column j
+                    a.view_mut((j, 0), (1, m))
+                        .copy_from(&s.column(j).transpose());
+                    if let Some(b) = &self.border {
+                        a.view_mut((j, m), (1, b.len())).copy_from(&b.g.row(j));
+                    }
+                    g[j] = self.r[j];
+                }
+                Condition::Balance => {
+                    // the plate's balance `D U - H^T t = F - F0`
+                    let (b, row) = (self.border.as_ref()?, j - m);
+                    a.view_mut((j, 0), (1, m))
+                        .copy_from(&(-b.h.column(row)).transpose());
+                    a.view_mut((j, m), (1, b.len())).copy_from(&b.d.row(row));
+                    g[j] = b.rhs[row];
+                }
+                Condition::Zero => a[(j, j)] = 1.0,
+                Condition::Cone(normal, c) => {
+                    a[(j, j)] = 1.0;
+                    a[(j, normal)] = -c;
+                }
+            }
+        }
+        Some(a.lu().solve(&g)?.iter().copied().collect())
     }
 }
 
@@ -527,6 +674,140 @@ mod tests {
                 |t: &[f64]| (c.nodes.iter().map(|n| t[n.normal] < 0.0)).collect::<Vec<bool>>();
             assert!(states(&exact).contains(&true) && states(&exact).contains(&false));
         }
+    }
+
+    /// A border of two plate directions on `unknowns` from `seed`, as a plate that presses
+    /// (its first direction moves every node into contact: `G_ia > 0` on normal rows) and
+    /// shears (its second moves the nodes along their first tangent) with `rhs = (1, 0.1)`,
+    /// less than `mu = 0.3` times the press: `G = H` drawn so, `D` zero (a floating body)
+    /// or `G^T G + I` (held by the plate's stiffness too).
+    fn plate_border(unknowns: &[(usize, usize, Row)], seed: u64, floating: bool) -> PlateBorder {
+        let mut x = seed ^ 0x9e37_79b9_7f4a_7c15;
+        let mut draw = move || {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (x >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let g = DMatrix::from_fn(unknowns.len(), 2, |i, a| {
+            let along = matches!((unknowns[i].2, a), (Row::Normal, 0) | (Row::Tangent(0), 1));
+            let v = draw();
+            if along { 0.5 + v.abs() } else { 0.1 * v }
+        });
+        let d = if floating {
+            DMatrix::zeros(2, 2)
+        } else {
+            g.transpose() * &g + DMatrix::identity(2, 2)
+        };
+        PlateBorder {
+            h: g.clone(),
+            g,
+            d,
+            rhs: vec![1.0, 0.1],
+            stiffness_scale: 1.0,
+        }
+    }
+
+    /// The plate's balance residual `D U - H^T t - rhs` at `x = (t, U)`, largest.
+    fn imbalance(b: &PlateBorder, x: &[f64]) -> f64 {
+        let m = x.len() - b.len();
+        let (t, u) = (
+            DVector::from_column_slice(&x[..m]),
+            DVector::from_column_slice(&x[m..]),
+        );
+        let r = &b.d * u - b.h.transpose() * t - DVector::from_column_slice(&b.rhs);
+        r.amax()
+    }
+
+    /// The conditions bordered by two plate directions, floating (`D = 0`: the balance a
+    /// constraint on the tractions) and held (`D` positive definite), over a flexibility whose
+    /// diagonal dominates (with `S` of the other tests, for a floating body, the method cycles
+    /// between slip directions for some seeds: it is not globally convergent; the bodies'
+    /// flexibilities of `contact_plate3d` and `contact3d_plate` settle): the semi-smooth Newton
+    /// method over `t` and `U` satisfies the contact conditions and the balance to round-off,
+    /// and where `D` is positive definite its tractions are those of the condensed conditions
+    /// ([`PlateBorder::condensed`]) solved by projected Gauss-Seidel, and its `U` the one the
+    /// balance gives them ([`PlateBorder::motion`]). A solution made to be
+    /// one (every node closed and sticking, `rho = 0`: `r = S^T t + G U`,
+    /// `rhs = D U - H^T t`) is found again exactly. A wrong sign of `G`, `H` or `D` in
+    /// the step, or a condensation that takes `D^-1` the wrong way, breaks them.
+    #[test]
+    fn the_bordered_conditions_balance_the_plate() {
+        const OWN: f64 = 10.0;
+        let law = Coulomb::new(0.3).unwrap();
+        let (mut slipping, mut open) = (0, 0);
+        for seed in 1..=10 {
+            for floating in [true, false] {
+                let (unknowns, s, r) = problem(8, seed, 2);
+                let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
+                // a flexibility whose diagonal (each node's own) dominates, as a body's does
+                let s = &s + DMatrix::identity(s.nrows(), s.nrows()) * OWN;
+                let mut c = Linearized::new(&unknowns, &laws, |_, _| 2, s, r);
+                let m = c.r.len();
+                c.border = Some(plate_border(&unknowns, seed, floating));
+                let b = c.border.as_ref().unwrap();
+                let x = c.active_set(c.bordered_solution(b)).expect("settles");
+                assert!(
+                    violation(&c, &x) < 1e-12,
+                    "seed {seed}: {}",
+                    violation(&c, &x)
+                );
+                assert!(
+                    imbalance(b, &x) < 1e-12,
+                    "seed {seed}: {}",
+                    imbalance(b, &x)
+                );
+                for n in c.nodes.iter().filter(|n| n.tangents == 2) {
+                    let on_cone = x[n.normal] < 0.0
+                        && n.tangential(&x).norm() >= (1.0 - 1e-9) * law.stick_limit(x[n.normal]);
+                    slipping += usize::from(on_cone);
+                    open += usize::from(x[n.normal] == 0.0);
+                }
+                match b.condensed(&c.s, &c.r) {
+                    None => assert!(floating),
+                    Some((s, r)) => {
+                        let condensed = Linearized {
+                            s,
+                            r,
+                            nodes: c.nodes.clone(),
+                            border: None,
+                        };
+                        let t = condensed.projected(vec![0.0; m], 1_000_000);
+                        // U recovered from the balance
+                        let u = b.motion(&t).unwrap();
+                        let t: Vec<f64> = t.into_iter().chain(u.iter().copied()).collect();
+                        let largest = t.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                        for (a, b) in x.iter().zip(&t) {
+                            assert!((a - b).abs() < 1e-8 * largest, "seed {seed}: {a} {b}");
+                        }
+                    }
+                }
+                // a made solution: every node closed and sticking well inside the cone
+                let b = c.border.take().unwrap();
+                let made: Vec<f64> = (0..m + 2)
+                    .map(|j| match unknowns.get(j) {
+                        Some((_, _, Row::Normal)) => -1.0 - 0.1 * j as f64,
+                        Some(_) => 0.01 * (j as f64 - 3.0),
+                        None => 0.5 - j as f64,
+                    })
+                    .collect();
+                let (t, u) = (
+                    DVector::from_column_slice(&made[..m]),
+                    DVector::from_column_slice(&made[m..]),
+                );
+                c.r = (c.s.transpose() * &t + &b.g * &u).iter().copied().collect();
+                let rhs = &b.d * &u - b.h.transpose() * &t;
+                c.border = Some(PlateBorder {
+                    rhs: rhs.iter().copied().collect(),
+                    ..b
+                });
+                let x = c.solution();
+                for (a, b) in x.iter().zip(&made) {
+                    assert!((a - b).abs() < 1e-10, "seed {seed}: {a} against {b}");
+                }
+            }
+        }
+        assert!(slipping > 0 && open > 0, "{slipping} slip, {open} open");
     }
 
     /// A face node whose first tangent is dropped by symmetry has one tangential unknown,
