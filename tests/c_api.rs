@@ -2,6 +2,7 @@
 //! pointers, lengths and integer enums, including every bad-input path. The C and C++ programs
 //! of `c_examples/` are compiled and run by CMake's ctest (shared, static, valgrind, ASan).
 
+use crate::common::last_error;
 use hycon::element::{self, ElementMatrix, Formulation};
 use hycon::ffi::*;
 use hycon::{Analysis, Material};
@@ -16,21 +17,6 @@ const STEEL: HyconMaterial = HyconMaterial {
     analysis: HYCON_PLANE_STRAIN,
 };
 const SENTINEL: f64 = 12345.0;
-
-/// This thread's last error message, read with the size-query protocol.
-fn last_error() -> String {
-    // SAFETY: (NULL, 0) is the documented size query.
-    let needed = unsafe { hycon_last_error_message(ptr::null_mut(), 0) };
-    let mut buf = vec![0 as std::ffi::c_char; needed];
-    // SAFETY: `buf` holds `needed` writable bytes.
-    let again = unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    assert_eq!(again, needed);
-    // SAFETY: the function NUL-terminated the buffer.
-    unsafe { CStr::from_ptr(buf.as_ptr()) }
-        .to_str()
-        .unwrap()
-        .to_owned()
-}
 
 /// Assert a status and that the last error message contains `part`.
 #[track_caller]

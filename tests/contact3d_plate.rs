@@ -8,11 +8,12 @@
 //! bit; bad input gets its error. (Hertz and Mindlin at a given load:
 //! `lab/tests/contact_plate3d.rs`.)
 
+use crate::common::{last_error, turned_block_on_flat};
 use hycon::contact::faces::SymmetryPlane;
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, PlateControl};
 use hycon::error::Error;
 use hycon::ffi::*;
-use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
+use hycon::solid::contact_meshes::ContactMesh;
 use hycon::solid::model::SolidModel;
 use hycon::solid::{BrickFormulation, Isotropic};
 use std::ptr::{null, null_mut};
@@ -21,28 +22,6 @@ const FRICTION: f64 = 0.0;
 /// The friction coefficient of the press that slips.
 const SLIPPING: f64 = 0.3;
 const PRESS: f64 = 1e-3;
-
-fn message() -> String {
-    let mut buf = [0 as std::ffi::c_char; 512];
-    // SAFETY: a writable buffer of the stated length.
-    unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    // SAFETY: the library writes a NUL-terminated string.
-    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
-        .to_string_lossy()
-        .into_owned()
-}
-
-fn scene() -> ContactMesh {
-    BlockOnFlat {
-        size: [1.0, 1.0, 0.5],
-        cells: [2, 2, 1],
-        flat: [3.0, 3.0, 1.0],
-        flat_cells: [3, 3, 1],
-        angle: 30.0,
-    }
-    .build()
-    .unwrap()
-}
 
 fn pair(c: &ContactMesh, friction: f64) -> FacePair {
     FacePair {
@@ -114,14 +93,14 @@ fn c_model(c: &ContactMesh, plate: &[usize], friction: f64) -> *mut HyconSolidMo
             material.as_ptr(),
             material.len(),
         );
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
         let bottom = &c.b_bottom;
         let s = hycon_solid_model_prescribe(model, bottom.as_ptr(), bottom.len(), HYCON_XYZ);
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
         let s = hycon_solid_model_add_pair(model, &view(&a), &view(&b), friction, null_mut());
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
         let s = hycon_solid_model_set_plate(model, plate.as_ptr(), plate.len());
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
     }
     model
 }
@@ -134,7 +113,7 @@ fn c_analysis(c: &ContactMesh, plate: &[usize], friction: f64) -> *mut HyconSoli
     unsafe {
         let s = hycon_solid_contact_new(&mut contact, model, null());
         hycon_solid_model_free(model);
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
     }
     contact
 }
@@ -168,7 +147,7 @@ fn c_plate(contact: *const HyconSolidContact) -> ([f64; 3], [f64; 3]) {
     let (mut u, mut f) = ([0.0; 3], [0.0; 3]);
     // SAFETY: a live handle, 3 writable doubles each.
     let s = unsafe { hycon_solid_contact_plate(contact, u.as_mut_ptr(), f.as_mut_ptr()) };
-    assert_eq!(s, HYCON_OK, "{}", message());
+    assert_eq!(s, HYCON_OK, "{}", last_error());
     (u, f)
 }
 
@@ -195,7 +174,7 @@ fn a_frictional_press_that_slips_at_a_given_force() {
 /// The press of `force_control_from_c_is_the_rust_one` with `friction`: the number of slip
 /// nodes of the force-controlled increment.
 fn force_control_from_c(friction: f64) -> usize {
-    let c = scene();
+    let c = turned_block_on_flat();
     let n = 3 * c.mesh.n_nodes();
     let zero = vec![0.0; n];
     let held = PlateControl::Displacement(0.0);
@@ -222,7 +201,7 @@ fn force_control_from_c(friction: f64) -> usize {
         HYCON_PLATE_FORCE,
     ];
     let s = c_increment(contact, n, control, [0.0, 0.0, f]);
-    assert_eq!(s, HYCON_OK, "{}", message());
+    assert_eq!(s, HYCON_OK, "{}", last_error());
     let (cu, cf) = c_plate(contact);
     assert_eq!(
         (cu.as_slice(), cf.as_slice()),
@@ -231,12 +210,12 @@ fn force_control_from_c(friction: f64) -> usize {
     let mut len = 0;
     // SAFETY (both): a live handle, buffers of the stated lengths.
     let s = unsafe { hycon_solid_contact_node_results(contact, 0, null_mut(), 0, &mut len) };
-    assert_eq!(s, HYCON_OK, "{}", message());
+    assert_eq!(s, HYCON_OK, "{}", last_error());
     let mut nodes = vec![HyconSolidNodeResult::default(); len];
     let s = unsafe {
         hycon_solid_contact_node_results(contact, 0, nodes.as_mut_ptr(), len, null_mut())
     };
-    assert_eq!(s, HYCON_OK, "{}", message());
+    assert_eq!(s, HYCON_OK, "{}", last_error());
     let expect = forced.node_results(0).unwrap();
     assert_eq!(nodes.len(), expect.len());
     for (got, r) in nodes.iter().zip(&expect) {
@@ -246,7 +225,7 @@ fn force_control_from_c(friction: f64) -> usize {
     let mut q = vec![0.0; n];
     // SAFETY: a live handle, a buffer of the stated length.
     let s = unsafe { hycon_solid_contact_displacement(contact, q.as_mut_ptr(), n, null_mut()) };
-    assert_eq!(s, HYCON_OK, "{}", message());
+    assert_eq!(s, HYCON_OK, "{}", last_error());
     assert_eq!(q, forced.displacement().unwrap());
     unsafe { hycon_solid_contact_free(contact) };
     println!("friction {friction}: {info:?}");
@@ -260,7 +239,7 @@ fn force_control_from_c(friction: f64) -> usize {
 /// increment or a plate query without a plate; from Rust, a plate node not prescribed in z.
 #[test]
 fn bad_plate_input_is_refused() {
-    let c = scene();
+    let c = turned_block_on_flat();
     let n = 3 * c.mesh.n_nodes();
     let top = &c.a_top;
     // SAFETY (all calls): handles live or NULL as stated, arrays of the stated lengths.
@@ -269,18 +248,26 @@ fn bad_plate_input_is_refused() {
         assert_eq!(s, HYCON_ERROR_NULL_POINTER);
         let described = c_model(&c, top, FRICTION);
         let s = hycon_solid_model_set_plate(described, null(), 2);
-        assert_eq!(s, HYCON_ERROR_NULL_POINTER, "{}", message());
+        assert_eq!(s, HYCON_ERROR_NULL_POINTER, "{}", last_error());
         let s = hycon_solid_model_set_plate(described, top.as_ptr(), 0);
         assert_eq!(s, HYCON_ERROR_INVALID_ARGUMENT);
-        assert!(message().contains("at least one node"), "{}", message());
+        assert!(
+            last_error().contains("at least one node"),
+            "{}",
+            last_error()
+        );
         let unknown = [c.mesh.n_nodes()];
         let s = hycon_solid_model_set_plate(described, unknown.as_ptr(), 1);
         assert_eq!(s, HYCON_ERROR_INVALID_ARGUMENT);
-        assert!(message().contains("unknown node"), "{}", message());
+        assert!(last_error().contains("unknown node"), "{}", last_error());
         // a second plate on the same nodes: already prescribed
         let s = hycon_solid_model_set_plate(described, top.as_ptr(), top.len());
         assert_eq!(s, HYCON_ERROR_INVALID_ARGUMENT);
-        assert!(message().contains("prescribed twice"), "{}", message());
+        assert!(
+            last_error().contains("prescribed twice"),
+            "{}",
+            last_error()
+        );
         hycon_solid_model_free(described);
     }
     // a contact node on the plate: refused when the analysis is built
@@ -295,17 +282,17 @@ fn bad_plate_input_is_refused() {
         assert!(contact.is_null());
     }
     assert!(
-        message().contains(&format!("plate node {contact_node}"))
-            && message().contains("contact node"),
+        last_error().contains(&format!("plate node {contact_node}"))
+            && last_error().contains("contact node"),
         "{}",
-        message()
+        last_error()
     );
 
     let contact = c_analysis(&c, top, FRICTION);
     let disp = HYCON_PLATE_DISPLACEMENT;
     let s = c_increment(contact, n, [disp, disp, 7], [0.0; 3]);
     assert_eq!(s, HYCON_ERROR_INVALID_ARGUMENT);
-    assert!(message().contains("control[2] = 7"), "{}", message());
+    assert!(last_error().contains("control[2] = 7"), "{}", last_error());
     let s = c_increment(
         contact,
         n,
@@ -314,9 +301,9 @@ fn bad_plate_input_is_refused() {
     );
     assert_eq!(s, HYCON_ERROR_INVALID_ARGUMENT);
     assert!(
-        message().contains("value[2] = NaN is not finite"),
+        last_error().contains("value[2] = NaN is not finite"),
         "{}",
-        message()
+        last_error()
     );
     let zero = vec![0.0; n];
     // SAFETY: a live handle, arrays of the stated lengths, NULL controls.
@@ -332,7 +319,7 @@ fn bad_plate_input_is_refused() {
             null_mut(),
         )
     };
-    assert_eq!(s, HYCON_ERROR_NULL_POINTER, "{}", message());
+    assert_eq!(s, HYCON_ERROR_NULL_POINTER, "{}", last_error());
     // nothing converged: the plate at rest
     assert_eq!(c_plate(contact), ([0.0; 3], [0.0; 3]));
     unsafe { hycon_solid_contact_free(contact) };
@@ -389,7 +376,7 @@ fn bad_plate_input_is_refused() {
 /// other nodes), the plate's x driven by force 0 or by a displacement is refused, y and z free.
 #[test]
 fn a_plate_does_not_cross_a_symmetry_plane() {
-    let c = scene();
+    let c = turned_block_on_flat();
     let n = 3 * c.mesh.n_nodes();
     let zero = vec![0.0; n];
     let plane = SymmetryPlane::new(c.mesh.nodes[c.a_top[0]], [1.0, 0.0, 0.0]).unwrap();

@@ -1,6 +1,7 @@
 //! The brick routines of the C ABI, called as a C host would: statuses, messages, the size
 //! convention, and the numbers against the Rust kernels.
 
+use crate::common::last_error;
 use hycon::ffi::*;
 use hycon::solid::{self, BrickFormulation, Isotropic};
 use std::ptr::{null, null_mut};
@@ -9,16 +10,6 @@ const CUBE: [f64; 24] = [
     0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 2.0, 1.0, 0.0, 0.0, 1.0, 0.0, //
     0.0, 0.0, 1.5, 2.0, 0.0, 1.5, 2.0, 1.0, 1.5, 0.0, 1.0, 1.5,
 ];
-
-fn message() -> String {
-    let mut buf = [0 as std::ffi::c_char; 512];
-    // SAFETY: a writable buffer of the stated length.
-    unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    // SAFETY: the library writes a NUL-terminated string.
-    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
-        .to_string_lossy()
-        .into_owned()
-}
 
 fn nodes() -> [[f64; 3]; 8] {
     std::array::from_fn(|k| [CUBE[3 * k], CUBE[3 * k + 1], CUBE[3 * k + 2]])
@@ -38,7 +29,7 @@ fn stiffness_matches_the_kernel() {
         let mut k = vec![0.0; 576];
         // SAFETY: arrays of the documented sizes.
         let status = unsafe { hycon_brick_stiffness(kind, CUBE.as_ptr(), &m, k.as_mut_ptr(), 576) };
-        assert_eq!(status, HYCON_OK, "{}", message());
+        assert_eq!(status, HYCON_OK, "{}", last_error());
         let mut expect = solid::BrickMatrix::zeros();
         solid::stiffness_into(f, &nodes(), &iso, &mut expect).unwrap();
         for i in 0..24 {
@@ -50,7 +41,7 @@ fn stiffness_matches_the_kernel() {
         // SAFETY: as above, with a shorter length.
         let status = unsafe { hycon_brick_stiffness(kind, CUBE.as_ptr(), &m, k.as_mut_ptr(), 575) };
         assert_eq!(status, HYCON_ERROR_BUFFER_TOO_SMALL);
-        assert!(message().contains("576"), "{}", message());
+        assert!(last_error().contains("576"), "{}", last_error());
     }
 }
 
@@ -82,7 +73,7 @@ fn stresses_and_tractions_from_a_uniform_stretch() {
                 s.as_mut_ptr(),
             )
         };
-        assert_eq!(status, HYCON_OK, "{}", message());
+        assert_eq!(status, HYCON_OK, "{}", last_error());
         assert!((s[0] - sxx).abs() < 1e-12 && (s[1] - lambda * 1e-3).abs() < 1e-12);
         let mut t = [0.0; 3];
         // face 1 is xi = +1 (x = 2): traction (sxx, 0, 0)
@@ -99,7 +90,7 @@ fn stresses_and_tractions_from_a_uniform_stretch() {
                 t.as_mut_ptr(),
             )
         };
-        assert_eq!(status, HYCON_OK, "{}", message());
+        assert_eq!(status, HYCON_OK, "{}", last_error());
         assert!((t[0] - sxx).abs() < 1e-12 && t[1].abs() < 1e-12 && t[2].abs() < 1e-12);
         // SAFETY: as above.
         let status = unsafe {
@@ -180,7 +171,7 @@ fn bad_inputs_are_statuses() {
         unsafe { hycon_brick_check(HYCON_BRICK_H8, swapped.as_ptr()) },
         HYCON_ERROR_BAD_ELEMENT
     );
-    assert!(message().contains("inverted"), "{}", message());
+    assert!(last_error().contains("inverted"), "{}", last_error());
     let mut nan = CUBE;
     nan[5] = f64::NAN;
     // SAFETY: a valid array.
@@ -242,7 +233,7 @@ fn shape_policy_warns_or_rejects() {
         )
     };
     assert_eq!(status, HYCON_WARNING_SHAPE);
-    let text = message();
+    let text = last_error();
     assert!(
         text.starts_with("hycon_brick_shape: warning: Jacobian not positive at local node 7")
             && text.contains("face 0 is warped by 48.0 degrees"),
@@ -274,9 +265,9 @@ fn shape_policy_warns_or_rejects() {
     };
     assert_eq!(status, HYCON_ERROR_BAD_ELEMENT);
     assert!(
-        message().starts_with("hycon_brick_shape: Jacobian not positive at local node 7 ("),
+        last_error().starts_with("hycon_brick_shape: Jacobian not positive at local node 7 ("),
         "{}",
-        message()
+        last_error()
     );
     assert_eq!(strict.warnings, -1, "report untouched on error");
     // a clean brick: OK under both, no warnings, empty message
@@ -285,7 +276,7 @@ fn shape_policy_warns_or_rejects() {
         let status =
             unsafe { hycon_brick_shape(HYCON_BRICK_HYBRID18, CUBE.as_ptr(), policy, &mut report) };
         assert_eq!(
-            (status, report.warnings, message()),
+            (status, report.warnings, last_error()),
             (HYCON_OK, 0, String::new())
         );
         assert!((report.warp_degrees).abs() < 1e-12 && report.corner_jacobian > 0.0);
@@ -296,9 +287,9 @@ fn shape_policy_warns_or_rejects() {
     let status = unsafe { hycon_brick_shape(HYCON_BRICK_H8, CUBE.as_ptr(), 0, &mut report) };
     assert_eq!(status, HYCON_ERROR_INVALID_ARGUMENT);
     assert!(
-        message().contains("unknown shape policy 0"),
+        last_error().contains("unknown shape policy 0"),
         "{}",
-        message()
+        last_error()
     );
     let misaligned = std::ptr::from_mut(&mut report)
         .cast::<u8>()
@@ -332,9 +323,9 @@ fn shape_policy_warns_or_rejects() {
     let status = unsafe { hycon_brick_check(HYCON_BRICK_H8, FRONT.as_ptr()) };
     assert_eq!(status, HYCON_WARNING_SHAPE);
     assert!(
-        message().starts_with("hycon_brick_check: warning: "),
+        last_error().starts_with("hycon_brick_check: warning: "),
         "{}",
-        message()
+        last_error()
     );
 
     // the element routines: the warning, and the kernel's numbers
@@ -362,8 +353,8 @@ fn shape_policy_warns_or_rejects() {
         // SAFETY: arrays of the documented sizes.
         let status =
             unsafe { hycon_brick_stiffness(kind, FRONT.as_ptr(), &m, k.as_mut_ptr(), 576) };
-        assert_eq!(status, HYCON_WARNING_SHAPE, "{}", message());
-        assert!(message().starts_with("hycon_brick_stiffness: warning: Jacobian"));
+        assert_eq!(status, HYCON_WARNING_SHAPE, "{}", last_error());
+        assert!(last_error().starts_with("hycon_brick_stiffness: warning: Jacobian"));
         let mut expect = solid::BrickMatrix::zeros();
         let shape = solid::stiffness_into(f, &x, &iso, &mut expect).unwrap();
         assert_eq!(shape.warnings().count(), 2);
@@ -461,7 +452,7 @@ fn shape_policy_warns_or_rejects() {
                 24,
             )
         };
-        assert_eq!(status, HYCON_WARNING_SHAPE, "{}", message());
-        assert!(message().starts_with("hycon_brick_face_load: warning: "));
+        assert_eq!(status, HYCON_WARNING_SHAPE, "{}", last_error());
+        assert!(last_error().starts_with("hycon_brick_face_load: warning: "));
     }
 }

@@ -3,9 +3,10 @@
 //! from Rust on the same model: the C results are the Rust ones copied, to the bit, with
 //! friction and slip (a block turned by 30 degrees pressed on a flat, then dragged along x).
 
+use crate::common::{last_error, turned_block_on_flat};
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeState};
 use hycon::ffi::*;
-use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
+use hycon::solid::contact_meshes::ContactMesh;
 use hycon::solid::model::SolidModel;
 use hycon::solid::{BrickFormulation, Isotropic};
 use std::ptr::{null, null_mut};
@@ -13,28 +14,6 @@ use std::ptr::{null, null_mut};
 const FRICTION: f64 = 0.3;
 const PRESS: f64 = 1e-3;
 const DRAG: f64 = 2e-2;
-
-fn message() -> String {
-    let mut buf = [0 as std::ffi::c_char; 512];
-    // SAFETY: a writable buffer of the stated length.
-    unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    // SAFETY: the library writes a NUL-terminated string.
-    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
-        .to_string_lossy()
-        .into_owned()
-}
-
-fn scene() -> ContactMesh {
-    BlockOnFlat {
-        size: [1.0, 1.0, 0.5],
-        cells: [2, 2, 1],
-        flat: [3.0, 3.0, 1.0],
-        flat_cells: [3, 3, 1],
-        angle: 30.0,
-    }
-    .build()
-    .unwrap()
-}
 
 /// The total prescribed values of an increment: the block's top down by `PRESS` and along x by
 /// `drag`; the flat's bottom held.
@@ -121,16 +100,16 @@ fn c_analysis(c: &ContactMesh) -> *mut HyconSolidContact {
             material.as_ptr(),
             material.len(),
         );
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
         for nodes in [&c.b_bottom, &c.a_top] {
             let s = hycon_solid_model_prescribe(model, nodes.as_ptr(), nodes.len(), HYCON_XYZ);
-            assert_eq!(s, HYCON_OK, "{}", message());
+            assert_eq!(s, HYCON_OK, "{}", last_error());
         }
         let s = hycon_solid_model_add_pair(model, &fa, &fb, FRICTION, &mut index);
-        assert_eq!((s, index), (HYCON_OK, 0), "{}", message());
+        assert_eq!((s, index), (HYCON_OK, 0), "{}", last_error());
         let s = hycon_solid_contact_new(&mut contact, model, null());
         hycon_solid_model_free(model);
-        assert_eq!(s, HYCON_OK, "{}", message());
+        assert_eq!(s, HYCON_OK, "{}", last_error());
         let load = vec![0.0; 3 * c.mesh.n_nodes()];
         for drag in [0.0, DRAG] {
             let qp = prescribed(c, drag);
@@ -143,7 +122,7 @@ fn c_analysis(c: &ContactMesh) -> *mut HyconSolidContact {
                 qp.len(),
                 &mut info,
             );
-            assert_eq!(s, HYCON_OK, "{}", message());
+            assert_eq!(s, HYCON_OK, "{}", last_error());
         }
     }
     contact
@@ -152,20 +131,20 @@ fn c_analysis(c: &ContactMesh) -> *mut HyconSolidContact {
 /// A size-convention query filled into a vector.
 fn fetch<T: Default + Clone>(query: impl Fn(*mut T, usize, *mut usize) -> HyconStatus) -> Vec<T> {
     let mut n = 0;
-    assert_eq!(query(null_mut(), 0, &mut n), HYCON_OK, "{}", message());
+    assert_eq!(query(null_mut(), 0, &mut n), HYCON_OK, "{}", last_error());
     let mut out = vec![T::default(); n];
     assert_eq!(
         query(out.as_mut_ptr(), n, null_mut()),
         HYCON_OK,
         "{}",
-        message()
+        last_error()
     );
     out
 }
 
 #[test]
 fn the_c_results_are_the_rust_ones() {
-    let c = scene();
+    let c = turned_block_on_flat();
     let rust = rust_analysis(&c);
     let contact = c_analysis(&c);
     // SAFETY (all queries): a live handle and buffers of the stated lengths.

@@ -8,6 +8,7 @@
 //! (`1e-10` of each quantity's largest value: the two paths factor `K` in different orders);
 //! bad input is named, each case with its own check.
 
+use crate::common::last_error;
 use faer::Mat;
 use hycon::contact::bodies::{
     Condensed, CondensedKind, Csr, HostNode, HostSolve, HostStiffness, HostSystem, Triangle,
@@ -455,16 +456,6 @@ fn a_host_of_the_quarter_cap_gets_the_models_results() {
 // ------------------------------------------------------------------------------------------
 // Through the C ABI
 
-fn message() -> String {
-    let mut buf = [0 as std::ffi::c_char; 512];
-    // SAFETY: a writable buffer of the stated length.
-    unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    // SAFETY: the library writes a NUL-terminated string.
-    unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) }
-        .to_string_lossy()
-        .into_owned()
-}
-
 /// The C solve callback: `user_data` is a `ModelHost`.
 unsafe extern "C" fn solve(
     user_data: *mut c_void,
@@ -537,10 +528,10 @@ fn c_host(s: &Scene, h: &ModelHost, arrays: &CArrays) -> *mut HyconSolidHost {
     unsafe {
         assert_eq!(hycon_solid_host_new(&mut host, h.csr.n), HYCON_OK);
         let s1 = hycon_solid_host_add_nodes(host, &arrays.nodes());
-        assert_eq!(s1, HYCON_OK, "{}", message());
+        assert_eq!(s1, HYCON_OK, "{}", last_error());
         let (fa, fb) = (CArrays::faces(&arrays.a), CArrays::faces(&arrays.b));
         let s2 = hycon_solid_host_add_pair(host, &fa, &fb, s.pair.friction, &mut index);
-        assert_eq!((s2, index), (HYCON_OK, 0), "{}", message());
+        assert_eq!((s2, index), (HYCON_OK, 0), "{}", last_error());
         let p = s.inside.unwrap();
         assert_eq!(
             hycon_solid_host_set_pair_inside(host, 0, p.as_ptr()),
@@ -552,7 +543,7 @@ fn c_host(s: &Scene, h: &ModelHost, arrays: &CArrays) -> *mut HyconSolidHost {
                 plane.point.as_ptr(),
                 plane.normal.as_ptr(),
             );
-            assert_eq!(st, HYCON_OK, "{}", message());
+            assert_eq!(st, HYCON_OK, "{}", last_error());
         }
     }
     host
@@ -561,13 +552,13 @@ fn c_host(s: &Scene, h: &ModelHost, arrays: &CArrays) -> *mut HyconSolidHost {
 /// A size-convention query filled into a vector.
 fn fetch<T: Default + Clone>(query: impl Fn(*mut T, usize, *mut usize) -> HyconStatus) -> Vec<T> {
     let mut n = 0;
-    assert_eq!(query(null_mut(), 0, &mut n), HYCON_OK, "{}", message());
+    assert_eq!(query(null_mut(), 0, &mut n), HYCON_OK, "{}", last_error());
     let mut out = vec![T::default(); n];
     assert_eq!(
         query(out.as_mut_ptr(), n, null_mut()),
         HYCON_OK,
         "{}",
-        message()
+        last_error()
     );
     out
 }
@@ -596,7 +587,7 @@ fn the_c_host_gives_the_rust_hosts_results() {
                 ),
                 _ => hycon_solid_host_set_solver(c, Some(solve), std::ptr::from_mut(&mut h).cast()),
             };
-            assert_eq!(st, HYCON_OK, "{}", message());
+            assert_eq!(st, HYCON_OK, "{}", last_error());
             let equations = fetch(|o, l, n| hycon_solid_host_contact_equations(c, o, l, n));
             assert_eq!(
                 equations,
@@ -607,7 +598,7 @@ fn the_c_host_gives_the_rust_hosts_results() {
             );
             let st = hycon_solid_contact_new_host(&mut contact, c, null());
             hycon_solid_host_free(c);
-            assert_eq!(st, HYCON_OK, "{}", message());
+            assert_eq!(st, HYCON_OK, "{}", last_error());
             for load in &rhs {
                 let mut info = HyconIncrementInfo::default();
                 let st = hycon_solid_contact_increment(
@@ -618,7 +609,7 @@ fn the_c_host_gives_the_rust_hosts_results() {
                     0,
                     &mut info,
                 );
-                assert_eq!(st, HYCON_OK, "{}", message());
+                assert_eq!(st, HYCON_OK, "{}", last_error());
             }
             let nodes = fetch(|o, l, n| hycon_solid_contact_node_results(contact, 0, o, l, n));
             let u = fetch(|o, l, n| hycon_solid_contact_displacement(contact, o, l, n));
@@ -742,8 +733,8 @@ fn bad_c_host_input_is_named() {
     let h = ModelHost::new(&s);
     let arrays = CArrays::new(&s, &h);
     let expect = |status: HyconStatus, code: HyconStatus, what: &str| {
-        assert_eq!(status, code, "{}", message());
-        let m = message();
+        assert_eq!(status, code, "{}", last_error());
+        let m = last_error();
         assert!(m.contains(what), "{m}");
     };
     // SAFETY: live handles and arrays of the stated lengths, or NULL where a test says so.
@@ -881,7 +872,7 @@ fn bad_c_host_input_is_named() {
             h.csr.values.as_ptr(),
             HYCON_CSR_UPPER,
         );
-        assert_eq!(st, HYCON_OK, "{}", message());
+        assert_eq!(st, HYCON_OK, "{}", last_error());
         // touching everywhere without the point inside A
         expect(
             hycon_solid_contact_new_host(&mut contact, host, null()),

@@ -1,9 +1,41 @@
 //! Helpers shared by the integration test modules of the product (the lab's own live in
 //! `lab/tests/common`; these tests cannot use the lab, which depends on the product).
 
+use hycon::ffi::hycon_last_error_message;
 use hycon::mesh::Mesh;
+use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
+use std::ffi::CStr;
 
 pub mod press3d;
+
+/// This thread's last error message of the C ABI, read with the size-query protocol.
+pub fn last_error() -> String {
+    // SAFETY: (NULL, 0) is the documented size query.
+    let needed = unsafe { hycon_last_error_message(std::ptr::null_mut(), 0) };
+    let mut buf = vec![0 as std::ffi::c_char; needed];
+    // SAFETY: `buf` holds `needed` writable bytes.
+    let again = unsafe { hycon_last_error_message(buf.as_mut_ptr(), buf.len()) };
+    assert_eq!(again, needed);
+    // SAFETY: the function NUL-terminated the buffer.
+    unsafe { CStr::from_ptr(buf.as_ptr()) }
+        .to_str()
+        .unwrap()
+        .to_owned()
+}
+
+/// A block of 2 x 2 x 1 bricks (1 x 1 x 0.5) turned 30 degrees about the normal on a flat of
+/// 3 x 3 x 1 bricks (3 x 3 x 1): every overlap of their faces a general polygon.
+pub fn turned_block_on_flat() -> ContactMesh {
+    BlockOnFlat {
+        size: [1.0, 1.0, 0.5],
+        cells: [2, 2, 1],
+        flat: [3.0, 3.0, 1.0],
+        flat_cells: [3, 3, 1],
+        angle: 30.0,
+    }
+    .build()
+    .unwrap()
+}
 
 /// A permutation of `0..n` from `seed` (Fisher-Yates with a small LCG).
 pub fn permutation(n: usize, seed: u64) -> Vec<usize> {
