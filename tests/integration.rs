@@ -18,6 +18,7 @@ mod elements;
 mod header_fresh;
 mod layout;
 mod loads;
+mod local_problem;
 mod mesh;
 mod readme;
 mod solid;

@@ -105,6 +105,7 @@ use active_set::{
 use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
 use driver::{Converged, Driver};
+pub(crate) use fallback::solve_conditions;
 pub use loads::LOAD_LIMIT;
 use plate::{Border, Plate};
 pub use results::ConstraintRows;

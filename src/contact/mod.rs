@@ -25,6 +25,8 @@
 //! * [`tangent`]: a node's tangent space for any dimension: tractions, slip directions.
 //! * [`iteration`]: the contact-set iteration with `K` factored once (stick, slip, open), and
 //!   its results.
+//! * [`local`]: the local frictional contact problem of one increment (FCLIB's), its
+//!   natural-map residual and hycon's solvers of it.
 
 pub mod bodies;
 pub mod faces;
@@ -32,6 +34,7 @@ pub mod friction;
 pub mod geometry;
 pub mod handover;
 pub mod iteration;
+pub mod local;
 pub mod plane;
 pub mod space;
 pub mod tangent;

@@ -177,6 +177,28 @@ impl ContactAnalysis {
     }
 }
 
+/// The conditions `S t - r = rho` of `laws.len()` nodes, each with its normal unknown followed
+/// by `tangents` tangential ones (`S` symmetric), solved as the fallback solves them
+/// ([`Linearized::solution`]): the tractions `t`, and whether the semi-smooth Newton method
+/// settled. The solver of [`crate::contact::local`].
+pub(crate) fn solve_conditions(
+    s: DMatrix<f64>,
+    r: Vec<f64>,
+    laws: &[&dyn FrictionLaw],
+    tangents: usize,
+) -> (Vec<f64>, bool) {
+    let per_node = 1 + tangents;
+    let unknowns: Vec<(usize, usize, Row)> = (0..laws.len())
+        .flat_map(|k| {
+            std::iter::once(Row::Normal)
+                .chain((0..tangents).map(Row::Tangent))
+                .map(move |row| (0, k, row))
+        })
+        .collect();
+    let laws: Vec<&dyn FrictionLaw> = (0..unknowns.len()).map(|i| laws[i / per_node]).collect();
+    Linearized::new(&unknowns, &laws, |_, _| tangents, s, r).unbordered_solution()
+}
+
 /// Where [`ContactAnalysis::linearized_states`] linearizes the contact conditions: the
 /// iterate `uc` (the geometry's), the displacement `probe` at which open nodes are judged
 /// penetrating, the increment's start `startc` (the slips' origin) and the load solve `u0c`,
@@ -395,12 +417,21 @@ impl<'a> Linearized<'a> {
         if let Some(border) = &self.border {
             return self.bordered_solution(border);
         }
+        self.unbordered_solution().0
+    }
+
+    /// [`solution`](Self::solution) without a plate border, with whether the semi-smooth
+    /// Newton method settled (else the tractions are projected Gauss-Seidel's last sweep).
+    fn unbordered_solution(&self) -> (Vec<f64>, bool) {
         let m = self.r.len();
         let start = self.projected(vec![0.0; m], START_SWEEPS);
-        self.active_set(start.clone()).unwrap_or_else(|| {
-            let sweeps = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
-            self.projected(start, sweeps.max(FALLBACK_WINDOW))
-        })
+        match self.active_set(start.clone()) {
+            Some(t) => (t, true),
+            None => {
+                let sweeps = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
+                (self.projected(start, sweeps.max(FALLBACK_WINDOW)), false)
+            }
+        }
     }
 
     /// With a plate border: the contact tractions `t` and the plate's translations `U`

@@ -1,0 +1,185 @@
+//! The local frictional contact problem of one increment, as the Friction Contact Library
+//! (FCLIB) states it and Siconos' `fc3d` solvers take it (docs/method.md, "The local
+//! problem").
+//!
+//! Over `n` contacts of `d` components each (`d = 3` on a face, `2` in the plane), normal
+//! first, the reactions `r` and the relative displacements (FCLIB's velocities) `u` are
+//! related by the condensed operator `W` and the free term `q`:
+//!
+//! `u = W r + q`,
+//!
+//! and at every contact `i` the reaction lies in the Coulomb cone
+//! `K_i = { r : |r_T| <= mu_i r_N }`, the modified displacement
+//! `û_i = u_i + mu_i |u_T,i| e_N` in its dual cone `K_i* = { v : mu_i |v_T| <= v_N }`, and
+//! `r_i . û_i = 0`: open (`r = 0`, `u_N >= 0`), sticking (`r` inside the cone, `u = 0`) or
+//! slipping (`r` on the cone, `u_N = 0`, `u_T` against `r_T`).
+//!
+//! hycon's own conditions (the fallback's `S t - rho = r`, `tn <= 0`, `rho_n <= 0`: compression
+//! and closure negative) are this problem with the normal components' signs turned:
+//! `r = D t`, `u = D rho`, `W = D S D`, `q = -D r_h`, `D = diag(-1, 1, .., 1)` per contact.
+
+use crate::contact::friction::{Coulomb, FrictionLaw};
+use crate::contact::iteration::solve_conditions;
+use crate::error::{Error, Result};
+use nalgebra::{DMatrix, DVector};
+
+/// FCLIB's local problem (module docs): `u = W r + q` over contacts of `dim` components,
+/// normal first, with a Coulomb coefficient per contact.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LocalProblem {
+    dim: usize,
+    w: DMatrix<f64>,
+    q: Vec<f64>,
+    mu: Vec<f64>,
+}
+
+/// A solution of a [`LocalProblem`] by one of hycon's solvers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LocalSolve {
+    /// The reactions `r`, `dim` per contact, normal first.
+    pub r: Vec<f64>,
+    /// The relative displacements `u = W r + q`.
+    pub u: Vec<f64>,
+    /// Whether the solver met its own stopping rule (else `r` is its last iterate).
+    pub settled: bool,
+    /// The natural-map residual of `r` ([`LocalProblem::natural_map_residual`]).
+    pub residual: f64,
+}
+
+impl LocalProblem {
+    /// The problem `u = W r + q` over `mu.len()` contacts of `dim` components each.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] unless `dim` is 2 or 3, `W` is square of side
+    /// `dim * mu.len()` and symmetric (to `1e-12` of its largest entry: hycon's solvers use its
+    /// rows as its columns), `q` has that length, every value is finite and every `mu >= 0`.
+    pub fn new(dim: usize, w: DMatrix<f64>, q: Vec<f64>, mu: Vec<f64>) -> Result<Self> {
+        let invalid = |what: String| Err(Error::InvalidInput(format!("local problem: {what}")));
+        if dim != 2 && dim != 3 {
+            return invalid(format!("{dim} components per contact: FCLIB takes 2 or 3"));
+        }
+        let m = dim * mu.len();
+        if w.nrows() != m || w.ncols() != m || q.len() != m {
+            return invalid(format!(
+                "W is {}x{} and q has {} entries, {} contacts of {dim} need {m}",
+                w.nrows(),
+                w.ncols(),
+                q.len(),
+                mu.len()
+            ));
+        }
+        if let Some(i) = mu.iter().position(|m| !(m.is_finite() && *m >= 0.0)) {
+            return invalid(format!(
+                "mu of contact {i} is {}, not finite and >= 0",
+                mu[i]
+            ));
+        }
+        if w.iter().chain(&q).any(|v| !v.is_finite()) {
+            return invalid("W or q holds a value that is not finite".into());
+        }
+        let largest = w.amax();
+        let asymmetry = (&w - w.transpose()).amax();
+        if asymmetry > 1e-12 * largest {
+            return invalid(format!(
+                "W is not symmetric (|W - W^T| reaches {asymmetry:.3e} of its largest entry \
+                 {largest:.3e})"
+            ));
+        }
+        Ok(LocalProblem { dim, w, q, mu })
+    }
+
+    /// Components per contact (2 or 3).
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// The number of contacts.
+    pub fn contacts(&self) -> usize {
+        self.mu.len()
+    }
+
+    /// The condensed operator `W`.
+    pub fn w(&self) -> &DMatrix<f64> {
+        &self.w
+    }
+
+    /// The free term `q`.
+    pub fn q(&self) -> &[f64] {
+        &self.q
+    }
+
+    /// The Coulomb coefficient of each contact.
+    pub fn mu(&self) -> &[f64] {
+        &self.mu
+    }
+
+    /// `u = W r + q`.
+    pub fn velocity(&self, r: &[f64]) -> Vec<f64> {
+        let u = &self.w * DVector::from_column_slice(r) + DVector::from_column_slice(&self.q);
+        u.iter().copied().collect()
+    }
+
+    /// The natural-map residual of the reactions `r`, as Siconos' `fc3d_compute_error` states
+    /// it: `sqrt(sum_i |r_i - P_K_i(r_i - û_i)|^2) / |q|` (not divided where `|q|` is zero),
+    /// `û_i = u_i + mu_i |u_T,i| e_N` with `u = W r + q`, `P_K_i` the closest point of the
+    /// Coulomb cone. It vanishes exactly at a solution.
+    pub fn natural_map_residual(&self, r: &[f64]) -> f64 {
+        let u = self.velocity(r);
+        let d = self.dim;
+        let sum: f64 = (0..self.contacts())
+            .map(|i| {
+                let (ri, ui) = (&r[i * d..(i + 1) * d], &u[i * d..(i + 1) * d]);
+                let ut = ui[1..].iter().map(|v| v * v).sum::<f64>().sqrt();
+                let mut x: Vec<f64> = (0..d).map(|j| ri[j] - ui[j]).collect();
+                x[0] -= self.mu[i] * ut;
+                let p = project_on_cone(&x, self.mu[i]);
+                (0..d).map(|j| (ri[j] - p[j]).powi(2)).sum::<f64>()
+            })
+            .sum();
+        let norm_q = self.q.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let error = sum.sqrt();
+        if norm_q > f64::EPSILON {
+            error / norm_q
+        } else {
+            error
+        }
+    }
+
+    /// The solution by the semi-smooth Newton method on the conditions (the primal-dual
+    /// active set method, started by projected Gauss-Seidel sweeps: the fallback's solver,
+    /// docs/method.md "The fallback"), in hycon's signs (module docs) and back.
+    pub fn solve_newton(&self) -> LocalSolve {
+        let d = self.dim;
+        let flip = |j: usize| if j % d == 0 { -1.0 } else { 1.0 };
+        let m = self.q.len();
+        let s = DMatrix::from_fn(m, m, |i, j| flip(i) * self.w[(i, j)] * flip(j));
+        let rh: Vec<f64> = (0..m).map(|j| -flip(j) * self.q[j]).collect();
+        let laws: Vec<Coulomb> = (self.mu.iter())
+            .map(|&mu| Coulomb::new(mu).expect("checked by new"))
+            .collect();
+        let laws: Vec<&dyn FrictionLaw> = laws.iter().map(|l| l as &dyn FrictionLaw).collect();
+        let (t, settled) = solve_conditions(s, rh, &laws, d - 1);
+        let r: Vec<f64> = t.iter().enumerate().map(|(j, v)| flip(j) * v).collect();
+        LocalSolve {
+            u: self.velocity(&r),
+            residual: self.natural_map_residual(&r),
+            r,
+            settled,
+        }
+    }
+}
+
+/// The closest point of the cone `|x_T| <= mu x_N` to `x` (normal first).
+fn project_on_cone(x: &[f64], mu: f64) -> Vec<f64> {
+    let (n, t) = (x[0], x[1..].iter().map(|v| v * v).sum::<f64>().sqrt());
+    if t <= mu * n {
+        return x.to_vec();
+    }
+    if mu * t <= -n {
+        return vec![0.0; x.len()];
+    }
+    let n_cone = (n + mu * t) / (1.0 + mu * mu);
+    let mut p = vec![n_cone; 1];
+    p.extend(x[1..].iter().map(|v| mu * n_cone * v / t));
+    p
+}
