@@ -150,7 +150,7 @@ impl LocalProblem {
     /// docs/method.md "The fallback"), in hycon's signs (module docs) and back.
     pub fn solve_newton(&self) -> LocalSolve {
         let d = self.dim;
-        let flip = |j: usize| if j % d == 0 { -1.0 } else { 1.0 };
+        let flip = |j: usize| if j.is_multiple_of(d) { -1.0 } else { 1.0 };
         let m = self.q.len();
         let s = DMatrix::from_fn(m, m, |i, j| flip(i) * self.w[(i, j)] * flip(j));
         let rh: Vec<f64> = (0..m).map(|j| -flip(j) * self.q[j]).collect();
