@@ -79,13 +79,13 @@
 #define HYCON_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define HYCON_VERSION_MINOR 12
+#define HYCON_VERSION_MINOR 13
 
 // Patch version of the library this header belongs to.
 #define HYCON_VERSION_PATCH 0
 
 // The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-#define HYCON_VERSION 1200
+#define HYCON_VERSION 1300
 
 // Largest node count of one element.
 #define HYCON_MAX_NODES 6

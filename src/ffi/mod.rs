@@ -96,11 +96,11 @@ const fn parse_component(s: &str) -> i32 {
 /// Major version of the library this header belongs to (from `Cargo.toml`).
 pub const HYCON_VERSION_MAJOR: i32 = 0;
 /// Minor version of the library this header belongs to.
-pub const HYCON_VERSION_MINOR: i32 = 12;
+pub const HYCON_VERSION_MINOR: i32 = 13;
 /// Patch version of the library this header belongs to.
 pub const HYCON_VERSION_PATCH: i32 = 0;
 /// The version as one number, `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if` tests.
-pub const HYCON_VERSION: i32 = 1200;
+pub const HYCON_VERSION: i32 = 1300;
 
 // The literals above are what cbindgen can put into the header; `version_checks` (evaluated at
 // compile time in `hycon_version`) compares them with the single source, `version` in
