@@ -17,9 +17,9 @@ use crate::hertz3d::QuarterCap;
 use crate::mindlin3d::HalfCap;
 use crate::scene::DiskOnBlock;
 use crate::slide3d::Slide;
-use hycon::Result;
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions};
 use hycon::contact::local::LocalProblem;
+use hycon::error::{Error, Result};
 use nalgebra::DMatrix;
 
 /// One problem of a set: its class, a name unique in the class, the problem and, where it
@@ -172,4 +172,26 @@ pub fn random(contacts: usize, dim: usize, seed: u64) -> NamedProblem {
 /// Random problems (`dim = 3`) of each size in `sizes`, seed `seed`.
 pub fn randoms(sizes: &[usize], seed: u64) -> Vec<NamedProblem> {
     sizes.iter().map(|&n| random(n, 3, seed)).collect()
+}
+
+/// The classes (module docs), in the order [`class`] knows them.
+pub const CLASSES: [&str; 5] = ["hertz3d", "mindlin3d", "slide3d", "plane", "random"];
+
+/// The problems of class `name` at their test sizes: the quarter and half caps at
+/// `a/h = 4`, random problems of 4, 16, 64 and 256 contacts (seed 1).
+///
+/// # Errors
+/// [`Error::InvalidInput`] for a name not in [`CLASSES`]; those of the scenes.
+pub fn class(name: &str) -> Result<Vec<NamedProblem>> {
+    match name {
+        "hertz3d" => hertz3d(4),
+        "mindlin3d" => mindlin3d(4),
+        "slide3d" => slide3d(),
+        "plane" => plane(),
+        "random" => Ok(randoms(&[4, 16, 64, 256], 1)),
+        _ => Err(Error::InvalidInput(format!(
+            "no local problem class `{name}`: the classes are {}",
+            CLASSES.join(", ")
+        ))),
+    }
 }

@@ -151,3 +151,22 @@ fn random_problems_are_solved_in_any_units() {
         }
     }
 }
+
+/// The classes by name: each problem carries its class; an unknown name is refused, naming the
+/// classes.
+#[test]
+fn classes_are_found_by_name() {
+    let random = local_problems::class("random").unwrap();
+    let sizes: Vec<usize> = random.iter().map(|p| p.problem.contacts()).collect();
+    assert_eq!(sizes, [4, 16, 64, 256]);
+    assert!(
+        random
+            .iter()
+            .all(|p| p.class == "random" && p.solution.is_none())
+    );
+    let error = local_problems::class("hertz2d").unwrap_err().to_string();
+    assert!(
+        error.contains("hertz3d, mindlin3d, slide3d, plane, random"),
+        "{error}"
+    );
+}
