@@ -24,6 +24,8 @@
 //! * `fclib` (feature `fclib`): FCLIB's local problem files out and in, through libfclib.
 //! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).
 //! * [`scenefile`]: TOML scene files over Gmsh meshes (`hycon run`).
+//! * [`local_problems`]: named sets of FCLIB local problems: increments of the 3D and plane
+//!   scenes exported with their converged reactions, random well-posed problems.
 //! * [`slide3d`]: a block dragged over a flat at an angle to its mesh lines (3D friction).
 #![warn(missing_docs)]
 
@@ -37,6 +39,7 @@ pub mod examples3d;
 pub mod fclib;
 pub mod gmsh;
 pub mod hertz3d;
+pub mod local_problems;
 pub mod mindlin3d;
 pub mod plate3d;
 pub mod presses;

@@ -25,6 +25,7 @@ mod contact_sliding;
 mod fclib;
 mod guard;
 mod linear;
+mod local_problems;
 mod scene_findings;
 mod scenes;
 mod stress_suite;
