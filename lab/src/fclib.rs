@@ -132,11 +132,13 @@ fn with_fclib_local<T>(
         info: ptr::null_mut(),
     };
     let texts = info.map(|i| [&i.title, &i.description, &i.math_info].map(|t| c_text(t)));
-    let mut record = texts.as_ref().map(|[title, description, math_info]| sys::fclib_info {
-        title: title.as_ptr().cast_mut(),
-        description: description.as_ptr().cast_mut(),
-        math_info: math_info.as_ptr().cast_mut(),
-    });
+    let mut record = texts
+        .as_ref()
+        .map(|[title, description, math_info]| sys::fclib_info {
+            title: title.as_ptr().cast_mut(),
+            description: description.as_ptr().cast_mut(),
+            math_info: math_info.as_ptr().cast_mut(),
+        });
     let (mut q, mut mu) = (problem.q().to_vec(), problem.mu().to_vec());
     let mut local = sys::fclib_local {
         W: &mut w,
@@ -166,7 +168,10 @@ pub fn write_local(
     let fail = |what: String| Err(Error::Io(path.into(), what));
     let m = problem.q().len();
     if let Some(r) = solution.filter(|r| r.len() != m) {
-        return fail(format!("the solution has {} entries, W has {m} rows", r.len()));
+        return fail(format!(
+            "the solution has {} entries, W has {m} rows",
+            r.len()
+        ));
     }
     if m * m > c_int::MAX as usize {
         return fail(format!("W of side {m} is beyond FCLIB's 32-bit indices"));
@@ -265,11 +270,14 @@ pub fn read_local_with_info(
     };
     // SAFETY: null or a record of NUL-terminated strings read by libfclib.
     let info = unsafe {
-        local.info.as_ref().map_or_else(Metadata::default, |i| Metadata {
-            title: text(i.title),
-            description: text(i.description),
-            math_info: text(i.math_info),
-        })
+        local
+            .info
+            .as_ref()
+            .map_or_else(Metadata::default, |i| Metadata {
+                title: text(i.title),
+                description: text(i.description),
+                math_info: text(i.math_info),
+            })
     };
     let problem = LocalProblem::new(d, w, q, mu).map_err(|e| Error::Problem(path.into(), e))?;
     Ok((problem, solution, info))
@@ -390,7 +398,11 @@ unsafe fn dense(mat: &sys::fclib_matrix) -> Result<DMatrix<f64>, String> {
             };
             let mut entries = Vec::with_capacity(nz);
             for k in 0..nz {
-                entries.push((index(i[k], m, "row index")?, index(p[k], n, "column index")?, x[k]));
+                entries.push((
+                    index(i[k], m, "row index")?,
+                    index(p[k], n, "column index")?,
+                    x[k],
+                ));
             }
             entries
         }
@@ -548,7 +560,11 @@ impl H5File {
         let [p, i, x] = match nz {
             -1 | -2 => [side + 1, nzmax, nzmax],
             nz if nz >= 0 && nonnegative(nz) <= nzmax => [nonnegative(nz); 3],
-            nz => return Err(format!("{group}: nz = {nz} (nzmax {nzmax}) is no FCLIB storage")),
+            nz => {
+                return Err(format!(
+                    "{group}: nz = {nz} (nzmax {nzmax}) is no FCLIB storage"
+                ));
+            }
         };
         self.sized(&field("p"), p)?;
         self.sized(&field("i"), i)?;

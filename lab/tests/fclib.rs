@@ -5,10 +5,11 @@
 
 use hycon::contact::local::LocalProblem;
 use hycon_lab::fclib::{self, Error, Metadata};
+use hycon_lab::local_problems;
 use nalgebra::DMatrix;
 use std::ffi::{CString, c_char, c_int, c_uint};
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Output};
 
 /// A scratch directory of this test (removed on drop).
 struct Scratch(PathBuf);
@@ -100,7 +101,10 @@ fn metadata(title: &str) -> Metadata {
 
 fn largest_difference(a: &[f64], b: &[f64]) -> f64 {
     let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let diff = a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    let diff = a
+        .iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
     diff / scale
 }
 
@@ -121,7 +125,11 @@ fn round_trip_is_bit_identical_and_solves_to_the_stored_reactions() {
     fclib::write_local(&path, &problem, Some(&r), &metadata("known 12")).unwrap();
     let (back, solution, info) = fclib::read_local_with_info(&path).unwrap();
     assert_eq!(back, problem, "W, q, mu and dim read back bit for bit");
-    assert_eq!(solution.as_deref(), Some(r.as_slice()), "the stored r, bit for bit");
+    assert_eq!(
+        solution.as_deref(),
+        Some(r.as_slice()),
+        "the stored r, bit for bit"
+    );
     assert_eq!(info, metadata("known 12"));
     // hycon's Newton method on the problem read back finds the stored reactions
     let solve = back.solve_newton();
@@ -129,6 +137,40 @@ fn round_trip_is_bit_identical_and_solves_to_the_stored_reactions() {
     assert!(solve.residual < 1e-12, "residual {:.3e}", solve.residual);
     let diff = largest_difference(&solve.r, &r);
     assert!(diff < 1e-10, "largest difference {diff:.3e} of max |r|");
+}
+
+#[test]
+fn a_3d_increment_round_trips_and_solves_to_the_analysis_reactions() {
+    // the half cap pulled to Q / (mu P) = 0.5: sticking inside, slipping around (mu = 0.3)
+    let dir = Scratch::new("mindlin3d");
+    let named = local_problems::mindlin3d(3)
+        .unwrap()
+        .pop()
+        .expect("the pull");
+    let r = named.solution.expect("an analysis' reactions");
+    let path = dir.file("pull.hdf5");
+    fclib::write_local(&path, &named.problem, Some(&r), &metadata(&named.name)).unwrap();
+    let (back, solution) = fclib::read_local(&path).unwrap();
+    assert_eq!(
+        back, named.problem,
+        "W, q, mu and dim read back bit for bit"
+    );
+    assert_eq!(solution.as_deref(), Some(r.as_slice()));
+    let stored = back.natural_map_residual(&r);
+    let solve = back.solve_newton();
+    assert!(solve.settled, "residual {:.3e}", solve.residual);
+    assert!(
+        solve.residual <= stored.max(1e-12),
+        "{:.3e} > {stored:.3e}",
+        solve.residual
+    );
+    let diff = largest_difference(&solve.r, &r);
+    assert!(diff < 1e-9, "largest difference {diff:.3e} of max |r|");
+    let slipping = (0..back.contacts()).filter(|&c| {
+        let rc = &r[3 * c..3 * c + 3];
+        rc[0] > 0.0 && (rc[1].hypot(rc[2]) - back.mu()[c] * rc[0]).abs() < 1e-9 * rc[0]
+    });
+    assert!(slipping.count() > 0, "the pull has slipping contacts");
 }
 
 #[test]
@@ -140,7 +182,10 @@ fn writing_again_replaces_the_file_and_a_solution_is_optional() {
     let (second, _) = known_problem(4, 12);
     fclib::write_local(&path, &second, None, &metadata("second")).unwrap();
     let (back, solution, info) = fclib::read_local_with_info(&path).unwrap();
-    assert_eq!((back, solution, info.title), (second, None, "second".into()));
+    assert_eq!(
+        (back, solution, info.title),
+        (second, None, "second".into())
+    );
 }
 
 #[test]
@@ -150,7 +195,8 @@ fn a_solution_of_the_wrong_length_is_refused() {
     let err = fclib::write_local(&dir.file("p.hdf5"), &problem, Some(&r[1..]), &metadata("p"))
         .unwrap_err();
     assert!(
-        err.to_string().contains("the solution has 8 entries, W has 9 rows"),
+        err.to_string()
+            .contains("the solution has 8 entries, W has 9 rows"),
         "{err}"
     );
 }
@@ -160,7 +206,11 @@ fn fclib_merit_agrees_with_hycons_residual_up_to_the_normalisation() {
     // libfclib 3.1: sqrt(sum |r_i - P_K(r_i - û_i)|^2) / (1 + sqrt(|q|)); hycon (Siconos'
     // fc3d_compute_error): the same sum's root over |q|
     let (problem, r) = known_problem(10, 21);
-    let off: Vec<f64> = r.iter().enumerate().map(|(i, v)| v + 0.01 * (i % 5) as f64).collect();
+    let off: Vec<f64> = r
+        .iter()
+        .enumerate()
+        .map(|(i, v)| v + 0.01 * (i % 5) as f64)
+        .collect();
     let norm_q = problem.q().iter().map(|v| v * v).sum::<f64>().sqrt();
     let merit = fclib::merit(&problem, &off).expect("3D");
     let hycon = problem.natural_map_residual(&off);
@@ -182,12 +232,16 @@ fn fclib_has_no_merit_in_2d() {
 #[test]
 fn a_plane_problem_round_trips() {
     let dir = Scratch::new("plane");
-    let w = DMatrix::from_row_slice(4, 4, &[
-        2.0, 0.5, 0.25, 0.0, //
-        0.5, 1.5, 0.0, 0.125, //
-        0.25, 0.0, 2.5, -0.5, //
-        0.0, 0.125, -0.5, 1.0,
-    ]);
+    let w = DMatrix::from_row_slice(
+        4,
+        4,
+        &[
+            2.0, 0.5, 0.25, 0.0, //
+            0.5, 1.5, 0.0, 0.125, //
+            0.25, 0.0, 2.5, -0.5, //
+            0.0, 0.125, -0.5, 1.0,
+        ],
+    );
     let problem = LocalProblem::new(2, w, vec![-1.0, 0.3, 0.2, -0.1], vec![0.2, 0.5]).unwrap();
     let solve = problem.solve_newton();
     assert!(solve.residual < 1e-12);
@@ -208,7 +262,10 @@ fn missing_and_foreign_files_are_refused() {
     std::fs::write(&text, "u = W r + q\n").unwrap();
     let foreign = fclib::read_local(&text).unwrap_err();
     assert!(matches!(foreign, Error::Format(..)), "{foreign}");
-    assert!(foreign.to_string().contains("not an HDF5 file"), "{foreign}");
+    assert!(
+        foreign.to_string().contains("not an HDF5 file"),
+        "{foreign}"
+    );
 }
 
 /// The HDF5 calls that damage a valid file (hdf5_serial is linked through hycon-lab).
@@ -244,7 +301,10 @@ mod hdf5 {
 
     /// Deletes `dataset` from the HDF5 file at `path`, and writes `values` in its place.
     pub fn replace(path: &Path, dataset: &str, values: Option<Values>) {
-        let (file, name) = (CString::new(path.to_str().unwrap()).unwrap(), CString::new(dataset).unwrap());
+        let (file, name) = (
+            CString::new(path.to_str().unwrap()).unwrap(),
+            CString::new(dataset).unwrap(),
+        );
         // SAFETY: NUL-terminated names, buffers of the lengths given.
         unsafe {
             let id = H5Fopen(file.as_ptr(), 1, 0);
@@ -291,7 +351,13 @@ fn damaged_files_are_refused_with_what_is_wrong() {
         ),
         (
             "short-q",
-            Box::new(|p| replace(p, "/fclib_local/vectors/q", Some(Values::Doubles(&[1.0; 5])))),
+            Box::new(|p| {
+                replace(
+                    p,
+                    "/fclib_local/vectors/q",
+                    Some(Values::Doubles(&[1.0; 5])),
+                )
+            }),
             "/fclib_local/vectors/q has 5 entries, 6 expected",
         ),
         (
@@ -326,7 +392,10 @@ fn bad_indices_and_an_unsymmetric_w_are_refused() {
     let err = damaged("index", |p| {
         replace(p, "/fclib_local/W/i", Some(Values::Ints(&rows)))
     });
-    assert!(err.to_string().contains("W: row index 6 out of range 0..6"), "{err}");
+    assert!(
+        err.to_string().contains("W: row index 6 out of range 0..6"),
+        "{err}"
+    );
     // W's entry (1, 0) changed, not (0, 1): LocalProblem::new's message
     let err = damaged("unsymmetric", |p| {
         let (problem, _) = known_problem(2, 9);
@@ -336,4 +405,114 @@ fn bad_indices_and_an_unsymmetric_w_are_refused() {
     });
     assert!(matches!(err, Error::Problem(..)), "{err}");
     assert!(err.to_string().contains("W is not symmetric"), "{err}");
+}
+
+fn hycon(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hycon"))
+        .args(args)
+        .output()
+        .expect("run hycon")
+}
+
+/// The line of `name` in a command's output, split in cells.
+fn cells<'a>(stdout: &'a str, name: &str) -> Vec<&'a str> {
+    let line = stdout.lines().find(|l| l.starts_with(name));
+    let line = line.unwrap_or_else(|| panic!("no line {name}: {stdout}"));
+    line.split_whitespace().collect()
+}
+
+#[test]
+fn the_commands_write_and_solve_the_problem_sets() {
+    let dir = Scratch::new("cli");
+    let out = dir.0.to_str().expect("utf-8 temp dir");
+    let args = [
+        "fclib",
+        "write",
+        "--class",
+        "plane,random",
+        "--contacts",
+        "5,20",
+        "--out",
+        out,
+    ];
+    let run = hycon(&args);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    // name, contacts, dim
+    let problems = [
+        ("plane-disk-press", "19", 2),
+        ("plane-disk-slide", "19", 2),
+        ("random-d3-n5-s1", "5", 3),
+        ("random-d3-n20-s1", "20", 3),
+    ];
+    for (name, contacts, _) in problems {
+        let line = cells(&stdout, name);
+        assert_eq!(line[1], contacts, "{line:?}");
+        let residual: f64 = line[3].parse().unwrap();
+        assert!(residual < 1e-10, "the stored solution's residual: {line:?}");
+    }
+    let files: Vec<String> = problems
+        .iter()
+        .map(|p| format!("{out}/{}.hdf5", p.0))
+        .collect();
+    for solver in ["newton", "rules"] {
+        let mut args = vec!["fclib", "solve", "--solver", solver];
+        args.extend(files.iter().map(String::as_str));
+        let run = hycon(&args);
+        let stdout = String::from_utf8_lossy(&run.stdout);
+        assert!(
+            run.status.success(),
+            "{stdout}{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        for (name, contacts, dim) in problems {
+            let line = cells(&stdout, name);
+            assert_eq!((line[1], line[3]), (contacts, solver), "{line:?}");
+            // libfclib's merit function is 3D only
+            assert_eq!(line[9] == "-", dim == 2, "{line:?}");
+            // the rules settle on the plane problems, not (yet) on every random one
+            if solver == "newton" || dim == 2 {
+                assert_eq!(line[4], "yes", "{line:?}");
+                let versus: f64 = line[11].parse().unwrap();
+                assert!(versus < 1e-9, "{line:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn solve_reports_a_bad_file_and_solves_the_others() {
+    let dir = Scratch::new("cli-bad");
+    let (problem, r) = known_problem(4, 2);
+    let good = dir.file("good.hdf5");
+    fclib::write_local(&good, &problem, Some(&r), &metadata("good")).unwrap();
+    let text = dir.file("text.hdf5");
+    std::fs::write(&text, "not hdf5").unwrap();
+    let run = hycon(&[
+        "fclib",
+        "solve",
+        good.to_str().unwrap(),
+        text.to_str().unwrap(),
+    ]);
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr),
+    );
+    assert!(!run.status.success());
+    assert!(
+        stdout.lines().any(|l| l.starts_with("good.hdf5")),
+        "{stdout}"
+    );
+    assert!(
+        stderr.contains("text.hdf5: not an FCLIB local problem hycon reads: not an HDF5 file"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("1 of 2 files could not be read"),
+        "{stderr}"
+    );
 }

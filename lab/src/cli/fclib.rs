@@ -29,10 +29,13 @@ pub enum Fclib {
         #[arg(long, default_value_t = 1)]
         seed: u64,
     },
-    /// Solve FCLIB local problem files with hycon's solver. Prints per file: contacts, the
-    /// range of mu, the solver, its time, hycon's natural-map residual (Siconos'
+    /// Solve FCLIB local problem files with hycon's solvers. Prints per file: contacts, the
+    /// range of mu, the solver, whether it settled, its iterations (and the Newton method's
+    /// projected Gauss-Seidel sweeps), its time, hycon's natural-map residual (Siconos'
     /// fc3d_compute_error), libfclib's merit function (3D) and, where the file has a
-    /// solution, the largest difference of the reactions from it relative to its max |r|.
+    /// solution, that solution's residual and the largest difference of hycon's reactions
+    /// from it relative to its max |r|. Exits with 1 if a file cannot be read (the others
+    /// are solved).
     Solve {
         /// The FCLIB files (HDF5 with /fclib_local).
         #[arg(required = true)]
@@ -63,6 +66,8 @@ pub enum Class {
 pub enum Solver {
     /// The semi-smooth Newton method (the fallback's solver, docs/method.md).
     Newton,
+    /// The paper's rules with the 3D direction update (docs/method.md, "The rules").
+    Rules,
 }
 
 /// Runs `hycon fclib ...` with its files under `out` (`write`'s directory, default
@@ -84,9 +89,11 @@ pub fn run(command: Fclib, out: Option<&Path>) -> Result<(), Box<dyn std::error:
     #[cfg(not(feature = "fclib"))]
     {
         let _ = (command, out);
-        Err("this hycon was built without FCLIB: build it with `cargo build --release -p \
+        Err(
+            "this hycon was built without FCLIB: build it with `cargo build --release -p \
              hycon-lab --features fclib` (needs libfclib-dev and libclang-dev)"
-            .into())
+                .into(),
+        )
     }
 }
 
@@ -102,7 +109,12 @@ mod with_feature {
     type AnyResult<T = ()> = Result<T, Box<dyn std::error::Error>>;
 
     /// The problems of `classes`, in their order.
-    fn problems(classes: &[Class], a_over_h: usize, contacts: &[usize], seed: u64) -> AnyResult<Vec<NamedProblem>> {
+    fn problems(
+        classes: &[Class],
+        a_over_h: usize,
+        contacts: &[usize],
+        seed: u64,
+    ) -> AnyResult<Vec<NamedProblem>> {
         let mut all = Vec::new();
         for class in classes {
             all.extend(match class {
@@ -175,26 +187,46 @@ mod with_feature {
     fn run_solver(problem: &LocalProblem, solver: Solver) -> LocalSolve {
         match solver {
             Solver::Newton => problem.solve_newton(),
+            Solver::Rules => problem.solve_rules(),
         }
     }
 
     fn solver_name(solver: Solver) -> &'static str {
         match solver {
             Solver::Newton => "newton",
+            Solver::Rules => "rules",
         }
     }
 
-    /// The largest `|a - b|` over the largest `|b|` (the absolute difference where `b` is 0).
-    fn relative_difference(a: &[f64], b: &[f64]) -> f64 {
+    /// The largest `|a - b|` over the largest `|b|`, or `b = 0` where `b` is zero.
+    fn relative_difference(a: &[f64], b: &[f64]) -> String {
         let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let diff = a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-        if scale > 0.0 { diff / scale } else { diff }
+        let diff = a
+            .iter()
+            .zip(b)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        if scale > 0.0 {
+            format!("{:.3e}", diff / scale)
+        } else {
+            "r* = 0".into()
+        }
     }
 
     pub fn solve(files: &[PathBuf], solver: Solver) -> AnyResult {
         println!(
-            "{:<40} {:>8} {:>13} {:>7} {:>8} {:>8} {:>10} {:>10} {:>10}",
-            "file", "contacts", "mu", "solver", "settled", "ms", "residual", "merit", "vs stored"
+            "{:<40} {:>8} {:>9} {:>6} {:>7} {:>5} {:>6} {:>8} {:>10} {:>10} {:>10} {:>10}",
+            "file",
+            "contacts",
+            "mu",
+            "solver",
+            "settled",
+            "iter",
+            "sweeps",
+            "ms",
+            "residual",
+            "merit",
+            "stored res",
+            "vs stored"
         );
         let mut failed = 0;
         for path in files {
@@ -209,20 +241,36 @@ mod with_feature {
             let start = Instant::now();
             let solve = run_solver(&problem, solver);
             let ms = start.elapsed().as_secs_f64() * 1e3;
-            let (lo, hi) = problem.mu().iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &m| {
-                (lo.min(m), hi.max(m))
+            let (lo, hi) = problem
+                .mu()
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(lo, hi), &m| {
+                    (lo.min(m), hi.max(m))
+                });
+            let mu = if lo == hi {
+                format!("{lo}")
+            } else {
+                format!("{lo}..{hi}")
+            };
+            let merit = fclib::merit(&problem, &solve.r).map_or("-".into(), |m| format!("{m:.3e}"));
+            let (stored, versus) = stored.map_or(("-".into(), "-".into()), |r| {
+                (
+                    format!("{:.3e}", problem.natural_map_residual(&r)),
+                    relative_difference(&solve.r, &r),
+                )
             });
-            let mu = if lo == hi { format!("{lo}") } else { format!("{lo}..{hi}") };
-            let merit = fclib::merit(&problem, &solve.r)
-                .map_or("-".into(), |m| format!("{m:.3e}"));
-            let versus = stored
-                .map_or("-".into(), |r| format!("{:.3e}", relative_difference(&solve.r, &r)));
-            let name = path.file_name().unwrap_or(path.as_os_str()).to_string_lossy();
+            let name = path
+                .file_name()
+                .unwrap_or(path.as_os_str())
+                .to_string_lossy();
             println!(
-                "{name:<40} {:>8} {mu:>13} {:>7} {:>8} {ms:>8.1} {:>10.3e} {merit:>10} {versus:>10}",
+                "{name:<40} {:>8} {mu:>9} {:>6} {:>7} {:>5} {:>6} {ms:>8.1} {:>10.3e} {merit:>10} \
+                 {stored:>10} {versus:>10}",
                 problem.contacts(),
                 solver_name(solver),
                 if solve.settled { "yes" } else { "no" },
+                solve.iterations,
+                solve.sweeps,
                 solve.residual,
             );
         }
