@@ -3,6 +3,7 @@
 //! against hycon's residual, damaged and foreign files refused with clear errors, and the
 //! `hycon fclib` commands.
 
+use hdf5::Values;
 use hycon::contact::local::LocalProblem;
 use hycon_lab::fclib::{self, Error, Metadata};
 use hycon_lab::local_problems;
@@ -294,6 +295,7 @@ mod hdf5 {
     }
 
     /// The values of a replaced dataset.
+    #[derive(Clone, Copy)]
     pub enum Values<'a> {
         Doubles(&'a [f64]),
         Ints(&'a [c_int]),
@@ -325,84 +327,69 @@ mod hdf5 {
     }
 }
 
-/// A valid file of a 2-contact problem, then damaged by `damage`: the error it reads with.
-fn damaged(name: &str, damage: impl FnOnce(&Path)) -> Error {
+/// A valid file of a 2-contact problem, then `dataset` replaced by `values` (deleted if none):
+/// the error it reads with.
+fn damaged(name: &str, dataset: &str, values: Option<Values>) -> Error {
     let dir = Scratch::new(name);
     let path = dir.file("p.hdf5");
     let (problem, r) = known_problem(2, 9);
     fclib::write_local(&path, &problem, Some(&r), &metadata(name)).unwrap();
-    damage(&path);
+    hdf5::replace(&path, dataset, values);
     fclib::read_local(&path).unwrap_err()
 }
 
 #[test]
 fn damaged_files_are_refused_with_what_is_wrong() {
-    use hdf5::{Values, replace};
-    let cases: [(&str, Box<dyn FnOnce(&Path)>, &str); 6] = [
+    let cases = [
+        ("/fclib_local", None, "no /fclib_local group"),
         (
-            "no-group",
-            Box::new(|p| replace(p, "/fclib_local", None)),
-            "no /fclib_local group",
-        ),
-        (
-            "no-mu",
-            Box::new(|p| replace(p, "/fclib_local/vectors/mu", None)),
+            "/fclib_local/vectors/mu",
+            None,
             "no dataset /fclib_local/vectors/mu",
         ),
         (
-            "short-q",
-            Box::new(|p| {
-                replace(
-                    p,
-                    "/fclib_local/vectors/q",
-                    Some(Values::Doubles(&[1.0; 5])),
-                )
-            }),
+            "/fclib_local/vectors/q",
+            Some(Values::Doubles(&[1.0; 5])),
             "/fclib_local/vectors/q has 5 entries, 6 expected",
         ),
         (
-            "short-solution",
-            Box::new(|p| replace(p, "/solution/r", Some(Values::Doubles(&[1.0; 4])))),
+            "/solution/r",
+            Some(Values::Doubles(&[1.0; 4])),
             "/solution/r has 4 entries, 6 expected",
         ),
         (
-            "storage",
-            Box::new(|p| replace(p, "/fclib_local/W/nz", Some(Values::Ints(&[-3])))),
+            "/fclib_local/W/nz",
+            Some(Values::Ints(&[-3])),
             "nz = -3 (nzmax 36) is no FCLIB storage",
         ),
         (
-            "spacedim",
-            Box::new(|p| replace(p, "/fclib_local/spacedim", Some(Values::Ints(&[4])))),
+            "/fclib_local/spacedim",
+            Some(Values::Ints(&[4])),
             "spacedim is 4, not 2 or 3",
         ),
     ];
-    for (name, damage, message) in cases {
-        let err = damaged(name, damage);
-        assert!(matches!(err, Error::Format(..)), "{name}: {err}");
-        assert!(err.to_string().contains(message), "{name}: {err}");
+    for (k, (dataset, values, message)) in cases.into_iter().enumerate() {
+        let err = damaged(&format!("damaged-{k}"), dataset, values);
+        assert!(matches!(err, Error::Format(..)), "{dataset}: {err}");
+        assert!(err.to_string().contains(message), "{dataset}: {err}");
     }
 }
 
 #[test]
 fn bad_indices_and_an_unsymmetric_w_are_refused() {
-    use hdf5::{Values, replace};
     // the 2-contact W is full (36 entries, CSC): row index 6 is out of range
     let mut rows: Vec<c_int> = (0..6).cycle().take(36).collect();
     rows[7] = 6;
-    let err = damaged("index", |p| {
-        replace(p, "/fclib_local/W/i", Some(Values::Ints(&rows)))
-    });
+    let err = damaged("index", "/fclib_local/W/i", Some(Values::Ints(&rows)));
     assert!(
         err.to_string().contains("W: row index 6 out of range 0..6"),
         "{err}"
     );
     // W's entry (1, 0) changed, not (0, 1): LocalProblem::new's message
-    let err = damaged("unsymmetric", |p| {
-        let (problem, _) = known_problem(2, 9);
-        let mut x: Vec<f64> = problem.w().iter().copied().collect();
-        x[1] += 0.5;
-        replace(p, "/fclib_local/W/x", Some(Values::Doubles(&x)));
-    });
+    let (problem, _) = known_problem(2, 9);
+    let mut x: Vec<f64> = problem.w().iter().copied().collect();
+    x[1] += 0.5;
+    let err = damaged("unsymmetric", "/fclib_local/W/x", Some(Values::Doubles(&x)));
     assert!(matches!(err, Error::Problem(..)), "{err}");
     assert!(err.to_string().contains("W is not symmetric"), "{err}");
 }

@@ -9,9 +9,10 @@ use std::path::{Path, PathBuf};
 #[derive(Subcommand)]
 #[cfg_attr(not(feature = "fclib"), allow(dead_code))]
 pub enum Fclib {
-    /// Write the problem sets' increments (hycon_lab::local_problems) as FCLIB local problem
-    /// files, one .hdf5 per problem in --out DIR (default out/fclib), each with its solution
-    /// record: the analysis' converged reactions, or for a random problem hycon's Newton
+    /// Write the problem sets as FCLIB local problem files, each with its solution.
+    ///
+    /// The problem sets are hycon_lab::local_problems' increments and random problems: one
+    /// .hdf5 per problem in --out DIR (default out/fclib), each with FCLIB's solution record: the analysis' converged reactions, or for a random problem hycon's Newton
     /// solution. Prints a line per file: name, contacts, nonzeros of W, natural-map residual
     /// of the stored solution.
     Write {
@@ -29,7 +30,9 @@ pub enum Fclib {
         #[arg(long, default_value_t = 1)]
         seed: u64,
     },
-    /// Solve FCLIB local problem files with hycon's solvers. Prints per file: contacts, the
+    /// Solve FCLIB local problem files with hycon's solvers.
+    ///
+    /// Prints per file: contacts, the
     /// range of mu, the solver, whether it settled, its iterations (and the Newton method's
     /// projected Gauss-Seidel sweeps), its time, hycon's natural-map residual (Siconos'
     /// fc3d_compute_error), libfclib's merit function (3D) and, where the file has a
