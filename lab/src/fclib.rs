@@ -13,7 +13,8 @@
 //! libfclib ends the process (`exit(1)`) when an HDF5 call fails inside it, and reads datasets
 //! into buffers sized by other datasets: [`read_local`] therefore checks the file's structure
 //! and every size with HDF5 itself first, so a damaged or foreign file is an [`Error`], never a
-//! crash. The HDF5 serial library is not thread-safe: every call into it holds one lock.
+//! crash. (Writing, only a failure after the file was created, such as a full disk, would end
+//! the process.) Every call into libfclib and HDF5 holds one lock.
 
 use hycon::contact::local::LocalProblem;
 use nalgebra::DMatrix;
@@ -240,12 +241,12 @@ pub fn read_local_with_info(
     };
     // SAFETY: the file's structure and sizes were checked above, so libfclib neither fails an
     // HDF5 call nor overruns a buffer; the result is freed by the guard.
-    let local = FclibLocal(unsafe { sys::fclib_read_local(c_path.as_ptr()) });
-    if local.0.is_null() {
+    let owned = FclibLocal(unsafe { sys::fclib_read_local(c_path.as_ptr()) });
+    if owned.0.is_null() {
         return Err(format("fclib_read_local failed".into()));
     }
-    // SAFETY: non-null, filled by fclib_read_local.
-    let local = unsafe { &*local.0 };
+    // SAFETY: non-null, filled by fclib_read_local, freed when `owned` drops.
+    let local = unsafe { &*owned.0 };
     let m = nonnegative(unsafe { (*local.W).m });
     let d = nonnegative(local.spacedim);
     // SAFETY: W was checked and read by libfclib with the checked sizes.
@@ -285,7 +286,7 @@ pub fn read_local_with_info(
 
 /// libfclib's merit function `fclib_merit_local(problem, MERIT_1, r)` of the reactions `r`:
 /// the natural map's norm over `1 + sqrt(|q|)` (docs/fclib.md, "Residuals"). `None` where
-/// libfclib 3.1 has none: 2D problems.
+/// libfclib 3.1 has none (2D problems) and for an `r` without one entry per row of `W`.
 pub fn merit(problem: &LocalProblem, r: &[f64]) -> Option<f64> {
     if problem.dim() != 3 || r.len() != problem.q().len() {
         return None;
