@@ -5,8 +5,8 @@
 #
 # Needs the Rust toolchain (with clippy and rustfmt) and gcc/g++. On Debian it first installs
 # what else it needs (cmake, ninja-build, libsuitesparse-dev, libclang-dev, pkg-config,
-# valgrind, g++, petsc-dev and openmpi-bin for the PETSc example) with apt-get when any is
-# missing: as root, or through sudo.
+# valgrind, g++, petsc-dev and openmpi-bin for the PETSc example, libfclib-dev for the FCLIB
+# round trip) with apt-get when any is missing: as root, or through sudo.
 # Order: tests first (their summaries are printed as they finish), then the static checks
 # (clippy, rustfmt, rustdoc). Every step shares cargo's target/ directory. hycon is compiled
 # four times, each for what only it can check: dev with CHOLMOD for every Rust test (one
@@ -41,7 +41,7 @@ summary() {
 }
 trap summary EXIT
 
-packages=(cmake ninja-build libsuitesparse-dev libmetis5 libclang-dev pkg-config valgrind g++ petsc-dev openmpi-bin)
+packages=(cmake ninja-build libsuitesparse-dev libmetis5 libclang-dev pkg-config valgrind g++ petsc-dev openmpi-bin libfclib-dev)
 missing=()
 for p in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
@@ -70,7 +70,7 @@ stage=$build/stage
 # its own process; plain `cargo test` (binaries one after another) where it is not installed.
 # Neither runs doctests: the crates have none (a ```rust block in a doc comment would need
 # `cargo test --doc` here).
-features=(--workspace --features hycon-lab/suitesparse)
+features=(--workspace --features hycon-lab/suitesparse,hycon-lab/fclib)
 if cargo nextest --version >/dev/null 2>&1; then
     step "cargo nextest run ${features[*]} (unit, integration, C API, header, layout, faer against CHOLMOD, accuracy guard)"
     cargo nextest run --locked "${features[@]}" --no-fail-fast

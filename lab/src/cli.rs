@@ -17,6 +17,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
+mod fclib;
+
 #[derive(Parser)]
 #[command(
     name = "hycon",
@@ -197,6 +199,11 @@ enum Command {
     Bench {
         #[command(subcommand)]
         what: Bench,
+    },
+    /// FCLIB local problem files out and in (needs the build feature `fclib`, docs/fclib.md).
+    Fclib {
+        #[command(subcommand)]
+        what: fclib::Fclib,
     },
 }
 
@@ -705,6 +712,7 @@ pub fn main() -> ExitCode {
             plane_strain,
         } => beam(element.into(), load, nx, ny, distortion, nu, plane_strain),
         Command::Bench { what } => bench(what, out.as_deref()),
+        Command::Fclib { what } => fclib::run(what, out.as_deref()),
         Command::Run {
             scene,
             dry_run,

@@ -21,6 +21,7 @@
 //! * [`bench`](mod@bench): the measurements behind the performance figures of docs/performance.md.
 //! * [`presses`]: random two-block presses, counted by how the contact iteration ends.
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
+//! * `fclib` (feature `fclib`): FCLIB's local problem files out and in, through libfclib.
 //! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).
 //! * [`scenefile`]: TOML scene files over Gmsh meshes (`hycon run`).
 //! * [`local_problems`]: named sets of FCLIB local problems: increments of the 3D and plane
@@ -34,6 +35,8 @@ pub mod cases;
 pub mod closed3d;
 pub mod examples;
 pub mod examples3d;
+#[cfg(feature = "fclib")]
+pub mod fclib;
 pub mod gmsh;
 pub mod hertz3d;
 pub mod local_problems;

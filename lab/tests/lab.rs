@@ -21,6 +21,8 @@ mod contact_robustness;
 mod contact_settle;
 mod contact_slide3d;
 mod contact_sliding;
+#[cfg(feature = "fclib")]
+mod fclib;
 mod guard;
 mod linear;
 mod local_problems;
