@@ -24,6 +24,8 @@
 //! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).
 //! * [`scenefile`]: TOML scene files over Gmsh meshes (`hycon run`).
 //! * [`slide3d`]: a block dragged over a flat at an angle to its mesh lines (3D friction).
+//! * `siconos` (feature `siconos`): Siconos' `fc3d` solvers on hycon's local problems, side
+//!   by side with hycon's (`hycon bench siconos`).
 #![warn(missing_docs)]
 
 pub mod axisymmetric;
@@ -40,5 +42,7 @@ pub mod presses;
 pub mod report;
 pub mod scene;
 pub mod scenefile;
+#[cfg(feature = "siconos")]
+pub mod siconos;
 pub mod slide3d;
 pub mod solid_scene;

@@ -25,4 +25,6 @@ mod guard;
 mod linear;
 mod scene_findings;
 mod scenes;
+#[cfg(feature = "siconos")]
+mod siconos;
 mod stress_suite;
