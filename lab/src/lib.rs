@@ -23,6 +23,8 @@
 //! * [`report`]: output writers: SVG plots, VTU files of both bodies, JSON.
 //! * [`gmsh`]: a Gmsh MSH 4.1 ASCII reader (quadrilaterals, lines, points, physical groups).
 //! * [`scenefile`]: TOML scene files over Gmsh meshes (`hycon run`).
+//! * [`local_problems`]: named sets of FCLIB local problems: increments of the 3D and plane
+//!   scenes exported with their converged reactions, random well-posed problems.
 //! * [`slide3d`]: a block dragged over a flat at an angle to its mesh lines (3D friction).
 //! * `siconos` (feature `siconos`): Siconos' `fc3d` solvers on hycon's local problems, side
 //!   by side with hycon's (`hycon bench siconos`).
@@ -36,6 +38,7 @@ pub mod examples;
 pub mod examples3d;
 pub mod gmsh;
 pub mod hertz3d;
+pub mod local_problems;
 pub mod mindlin3d;
 pub mod plate3d;
 pub mod presses;

@@ -23,6 +23,7 @@ mod contact_slide3d;
 mod contact_sliding;
 mod guard;
 mod linear;
+mod local_problems;
 mod scene_findings;
 mod scenes;
 #[cfg(feature = "siconos")]

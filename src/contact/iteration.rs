@@ -89,6 +89,7 @@ mod active_set;
 mod boundary;
 mod checks;
 mod driver;
+mod export;
 mod fallback;
 mod loads;
 #[cfg(feature = "oracles")]

@@ -46,6 +46,36 @@ pub struct LocalSolve {
     pub residual: f64,
 }
 
+/// The local problem of a converged increment of a contact analysis
+/// ([`ContactAnalysis::local_problem`](crate::contact::iteration::ContactAnalysis::local_problem)),
+/// with the analysis' converged reactions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LocalExport {
+    /// The problem, one contact per entry of `contacts`.
+    pub problem: LocalProblem,
+    /// The converged reactions in FCLIB's signs (`r_N = -tn >= 0`), `dim` per contact.
+    pub solution: Vec<f64>,
+    /// Which A node each contact is.
+    pub contacts: Vec<LocalContact>,
+    /// The number of the converged increment.
+    pub increment: usize,
+    /// The natural-map residual of `solution` ([`LocalProblem::natural_map_residual`]): how
+    /// exactly the converged reactions solve the problem (the analysis judges its own
+    /// convergence to `1e-4` per condition, docs/method.md "The checks at convergence").
+    pub residual: f64,
+}
+
+/// One contact of a [`LocalExport`]: an A node of a contact pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LocalContact {
+    /// The pair's index.
+    pub pair: usize,
+    /// The node's index along the pair's A side.
+    pub node: usize,
+    /// The caller's id of the node.
+    pub id: usize,
+}
+
 impl LocalProblem {
     /// The problem `u = W r + q` over `mu.len()` contacts of `dim` components each.
     ///

@@ -39,6 +39,7 @@
 use super::active_set::{ActiveSet, BNodes, Commit, Convergence, Iterate, Locks, count};
 use super::boundary::{self, Solution};
 use super::checks::{self, change_ratio};
+use super::export::IncrementStart;
 use super::fallback::Linearization;
 use super::plate::{Border, Controls, Plate, plate_force};
 use super::small_system::SmallSystem;
@@ -86,6 +87,9 @@ pub(super) struct Driver {
     pub(super) field: OnceLock<(Vec<f64>, f64)>,
     /// Seconds of displacement recoveries not kept in `field` (displacement increments).
     pub(super) recovery: Mutex<f64>,
+    /// Where the last increment converged from, for its local problem (`export.rs`); `None`
+    /// before the first increment and after a failed one.
+    pub(super) linearized: Option<IncrementStart>,
 }
 
 impl Driver {
@@ -106,6 +110,7 @@ impl Driver {
             previous: None,
             field: OnceLock::new(),
             recovery: Mutex::new(0.0),
+            linearized: None,
         }
     }
 
@@ -520,6 +525,7 @@ impl ContactAnalysis {
         control: Option<Controls>,
     ) -> Result<IncrementInfo> {
         let number = self.driver.increment + 1;
+        self.driver.linearized = None;
         let loads::Solved {
             u0c,
             plate_force: force0,
@@ -810,6 +816,11 @@ impl ContactAnalysis {
                     prescribed,
                     contact: forces,
                 };
+                self.driver.linearized = Some(IncrementStart {
+                    startc: startc.clone(),
+                    u0c: u0c.to_vec(),
+                    border: border.cloned(),
+                });
                 self.driver.settled = control.is_none().then(|| Settled {
                     load: load.to_vec(),
                     locks: set.locks().clone(),

@@ -111,41 +111,21 @@ impl ContactAnalysis {
             border,
         } = at;
         let closed_state = |p: usize, k: usize| closed_at_rest(self.node_law(p, k));
-        let mut candidates: Vec<Vec<NodeState>> = Vec::with_capacity(surfaces.len());
-        for (p, surface) in surfaces.iter().enumerate() {
-            let nodes = &surface.nodes;
-            let penetrates: Vec<bool> = nodes
-                .iter()
-                .enumerate()
-                .map(|(k, node)| {
-                    if states[p][k] != NodeState::Open {
-                        return true;
-                    }
-                    if !node.is_covered() {
-                        return false;
-                    }
-                    let row = self.boundary.directed(&node.coupling, &node.frame.normal());
-                    let rg = node.gap.dot(&node.frame.normal());
-                    rg + dot(&row, probe) - dot(&row, uc) > 0.0
-                })
-                .collect();
-            let adjacency = self.surfaces.geometries[p].adjacency();
-            let candidate = |k: usize| {
-                nodes[k].is_covered()
-                    && (penetrates[k] || adjacency.neighbours(k).iter().any(|&j| penetrates[j]))
-            };
-            candidates.push(
-                (0..nodes.len())
-                    .map(|k| {
-                        if candidate(k) {
+        let candidates: Vec<Vec<NodeState>> = (self.candidates(surfaces, states, uc, probe))
+            .iter()
+            .enumerate()
+            .map(|(p, chosen)| {
+                (chosen.iter().enumerate())
+                    .map(|(k, &c)| {
+                        if c {
                             closed_state(p, k)
                         } else {
                             NodeState::Open
                         }
                     })
-                    .collect(),
-            );
-        }
+                    .collect()
+            })
+            .collect();
         let laws = &self.surfaces.laws;
         let system = (self.boundary).build_system(surfaces, laws, &candidates, uc, startc);
         let s = (self.boundary).dense_matrix(&mut *self.bodies, &self.surfaces, &system)?;
@@ -174,6 +154,44 @@ impl ContactAnalysis {
                 linearized_state(t[node.normal], ts, node.law, -FALLBACK_TOLERANCE * tn_max);
         }
         Ok(out)
+    }
+
+    /// The candidate nodes of the linearized conditions, per pair, per A node: covered, and
+    /// closed in `states` or penetrating at `probe` (by the gap linearized at the iterate
+    /// `uc`, geometry `surfaces`), or a neighbour along A of such a node (module docs).
+    pub(super) fn candidates(
+        &self,
+        surfaces: &[ContactSurface],
+        states: &[Vec<NodeState>],
+        uc: &[f64],
+        probe: &[f64],
+    ) -> Vec<Vec<bool>> {
+        let mut candidates = Vec::with_capacity(surfaces.len());
+        for (p, surface) in surfaces.iter().enumerate() {
+            let nodes = &surface.nodes;
+            let penetrates: Vec<bool> = nodes
+                .iter()
+                .enumerate()
+                .map(|(k, node)| {
+                    if states[p][k] != NodeState::Open {
+                        return true;
+                    }
+                    if !node.is_covered() {
+                        return false;
+                    }
+                    let row = self.boundary.directed(&node.coupling, &node.frame.normal());
+                    let rg = node.gap.dot(&node.frame.normal());
+                    rg + dot(&row, probe) - dot(&row, uc) > 0.0
+                })
+                .collect();
+            let adjacency = self.surfaces.geometries[p].adjacency();
+            let candidate = |k: usize| {
+                nodes[k].is_covered()
+                    && (penetrates[k] || adjacency.neighbours(k).iter().any(|&j| penetrates[j]))
+            };
+            candidates.push((0..nodes.len()).map(candidate).collect());
+        }
+        candidates
     }
 }
 
@@ -232,7 +250,7 @@ struct Linearized<'a> {
 /// is zero for a body held only by the plate and by contact: the balance is then a
 /// constraint on the tractions with `U` its multiplier, so the semi-smooth Newton method
 /// solves for `t` and `U` together.
-struct PlateBorder {
+pub(super) struct PlateBorder {
     g: DMatrix<f64>,
     h: DMatrix<f64>,
     d: DMatrix<f64>,
@@ -243,7 +261,7 @@ struct PlateBorder {
 
 impl PlateBorder {
     /// The border of `system`'s conditions for the plate directions of `border`.
-    fn new(border: &Border, system: &SmallSystem) -> Self {
+    pub(super) fn new(border: &Border, system: &SmallSystem) -> Self {
         let directions = &border.directions;
         let k = directions.len();
         let response = |sparse: &[super::Sparse]| {
@@ -270,7 +288,11 @@ impl PlateBorder {
     /// against the bodies' stiffness): `U = D^-1 (F - F0 + H^T t)`, so
     /// `S' = S + H D^-T G^T` (in the columns' convention of [`Linearized::residual`]) and
     /// `r' = r - G D^-1 (F - F0)`. `None` for a floating body (`D` singular).
-    fn condensed(&self, s: &DMatrix<f64>, r: &[f64]) -> Option<(DMatrix<f64>, Vec<f64>)> {
+    pub(super) fn condensed(
+        &self,
+        s: &DMatrix<f64>,
+        r: &[f64],
+    ) -> Option<(DMatrix<f64>, Vec<f64>)> {
         let smallest = self.d.clone().symmetric_eigen().eigenvalues.min();
         if smallest <= 1e-10 * self.stiffness_scale {
             return None;

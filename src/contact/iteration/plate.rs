@@ -149,6 +149,7 @@ pub(super) fn plate_force(
 }
 
 /// The plate's force-controlled translations as extra unknowns of the small system.
+#[derive(Debug, Clone)]
 pub(super) struct Border {
     /// Force-controlled directions (0 = x, 1 = y, 2 = z).
     pub(super) directions: Vec<usize>,
