@@ -6,7 +6,6 @@
 use hycon::contact::local::LocalProblem;
 use hycon_lab::siconos::ffi::{FrictionContactProblem, NumericsMatrix, SolverOptions};
 use hycon_lab::siconos::{SiconosProblem, SiconosSolver};
-use nalgebra::DMatrix;
 use std::mem::{offset_of, size_of};
 use std::process::Command;
 
@@ -260,31 +259,10 @@ fn the_declarations_match_the_installed_headers() {
     assert_eq!(c, e);
 }
 
-/// A seeded problem of `contacts` contacts: `W = B^T B + I / 10` from a uniform `B`, `q`
-/// pressing every contact (`q_N` in `[-1, -0.1]`) and shearing it (`q_T` in `[-0.5, 0.5]`),
-/// `mu = 0.3`: sticking and slipping contacts occur.
+/// The lab's random well-posed problem of `contacts` contacts (`local_problems::random`):
+/// open, sticking and slipping contacts, some frictionless.
 fn random_problem(contacts: usize, seed: u64) -> LocalProblem {
-    let mut x = seed;
-    let mut draw = || {
-        x = x
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let m = 3 * contacts;
-    let b = DMatrix::from_fn(m, m, |_, _| draw() - 0.5);
-    let w = b.transpose() * &b + DMatrix::identity(m, m) * 0.1;
-    let w = (&w + w.transpose()) * 0.5;
-    let q = (0..m)
-        .map(|j| {
-            if j % 3 == 0 {
-                -0.1 - 0.9 * draw()
-            } else {
-                draw() - 0.5
-            }
-        })
-        .collect();
-    LocalProblem::new(3, w, q, vec![0.3; contacts]).unwrap()
+    hycon_lab::local_problems::random(contacts, 3, seed).problem
 }
 
 #[test]
