@@ -88,6 +88,7 @@ use std::sync::PoisonError;
 mod active_set;
 mod boundary;
 mod checks;
+mod condensed;
 mod driver;
 mod export;
 mod fallback;
@@ -105,6 +106,7 @@ use active_set::{
 };
 use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};
+pub(crate) use condensed::solve_by_rules;
 use driver::{Converged, Driver};
 pub(crate) use fallback::solve_conditions;
 pub use loads::LOAD_LIMIT;

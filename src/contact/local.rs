@@ -19,7 +19,7 @@
 //! `r = D t`, `u = D rho`, `W = D S D`, `q = -D r_h`, `D = diag(-1, 1, .., 1)` per contact.
 
 use crate::contact::friction::{Coulomb, FrictionLaw};
-use crate::contact::iteration::solve_conditions;
+use crate::contact::iteration::{solve_by_rules, solve_conditions};
 use crate::error::{Error, Result};
 use nalgebra::{DMatrix, DVector};
 
@@ -44,6 +44,12 @@ pub struct LocalSolve {
     pub settled: bool,
     /// The natural-map residual of `r` ([`LocalProblem::natural_map_residual`]).
     pub residual: f64,
+    /// The iterations: the semi-smooth Newton steps ([`LocalProblem::solve_newton`]) or the
+    /// rules' iterations ([`LocalProblem::solve_rules`]), each one dense linear solve.
+    pub iterations: usize,
+    /// The projected Gauss-Seidel sweeps (the Newton method's start, and its continuation
+    /// where it does not settle; none for the rules).
+    pub sweeps: usize,
 }
 
 /// The local problem of a converged increment of a contact analysis
@@ -179,22 +185,58 @@ impl LocalProblem {
     /// active set method, started by projected Gauss-Seidel sweeps: the fallback's solver,
     /// docs/method.md "The fallback"), in hycon's signs (module docs) and back.
     pub fn solve_newton(&self) -> LocalSolve {
-        let d = self.dim;
-        let flip = |j: usize| if j.is_multiple_of(d) { -1.0 } else { 1.0 };
+        let (s, rh, laws) = self.hycon_form();
+        let laws: Vec<&dyn FrictionLaw> = laws.iter().map(|l| l as &dyn FrictionLaw).collect();
+        let solve = solve_conditions(s, rh, &laws, self.dim - 1);
+        self.solved(&solve.t, solve.settled, solve.steps, solve.sweeps)
+    }
+
+    /// The solution by the paper's rules (the contact-set iteration of docs/method.md, "The
+    /// rules", with the 3D direction update, on the condensed conditions; docs/method.md "The
+    /// local problem"), from every contact open, in hycon's signs (module docs) and back.
+    /// `settled` is false when the states cycle or do not repeat within 200 iterations.
+    pub fn solve_rules(&self) -> LocalSolve {
+        let (s, rh, laws) = self.hycon_form();
+        let laws: Vec<&dyn FrictionLaw> = laws.iter().map(|l| l as &dyn FrictionLaw).collect();
+        let solve = solve_by_rules(s, rh, &laws, self.dim - 1);
+        self.solved(&solve.t, solve.settled, solve.iterations, 0)
+    }
+
+    /// The sign of component `j` between FCLIB's and hycon's signs: `-1` on a normal.
+    fn flip(&self, j: usize) -> f64 {
+        if j.is_multiple_of(self.dim) {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+
+    /// The problem in hycon's signs (module docs): `S = D W D`, `r_h = -D q` and a Coulomb law
+    /// per contact.
+    fn hycon_form(&self) -> (DMatrix<f64>, Vec<f64>, Vec<Coulomb>) {
         let m = self.q.len();
-        let s = DMatrix::from_fn(m, m, |i, j| flip(i) * self.w[(i, j)] * flip(j));
-        let rh: Vec<f64> = (0..m).map(|j| -flip(j) * self.q[j]).collect();
+        let s = DMatrix::from_fn(m, m, |i, j| self.flip(i) * self.w[(i, j)] * self.flip(j));
+        let rh: Vec<f64> = (0..m).map(|j| -self.flip(j) * self.q[j]).collect();
         let laws: Vec<Coulomb> = (self.mu.iter())
             .map(|&mu| Coulomb::new(mu).expect("checked by new"))
             .collect();
-        let laws: Vec<&dyn FrictionLaw> = laws.iter().map(|l| l as &dyn FrictionLaw).collect();
-        let (t, settled) = solve_conditions(s, rh, &laws, d - 1);
-        let r: Vec<f64> = t.iter().enumerate().map(|(j, v)| flip(j) * v).collect();
+        (s, rh, laws)
+    }
+
+    /// The solve of hycon's tractions `t`, in FCLIB's signs.
+    fn solved(&self, t: &[f64], settled: bool, iterations: usize, sweeps: usize) -> LocalSolve {
+        let r: Vec<f64> = t
+            .iter()
+            .enumerate()
+            .map(|(j, v)| self.flip(j) * v)
+            .collect();
         LocalSolve {
             u: self.velocity(&r),
             residual: self.natural_map_residual(&r),
             r,
             settled,
+            iterations,
+            sweeps,
         }
     }
 }

@@ -197,14 +197,23 @@ impl ContactAnalysis {
 
 /// The conditions `S t - r = rho` of `laws.len()` nodes, each with its normal unknown followed
 /// by `tangents` tangential ones (`S` symmetric), solved as the fallback solves them
-/// ([`Linearized::solution`]): the tractions `t`, and whether the semi-smooth Newton method
-/// settled. The solver of [`crate::contact::local`].
+/// ([`Linearized::solution`]). The solver of [`crate::contact::local`].
 pub(crate) fn solve_conditions(
     s: DMatrix<f64>,
     r: Vec<f64>,
     laws: &[&dyn FrictionLaw],
     tangents: usize,
-) -> (Vec<f64>, bool) {
+) -> ConditionsSolve {
+    let (unknowns, laws) = node_unknowns(laws, tangents);
+    Linearized::new(&unknowns, &laws, |_, _| tangents, s, r).unbordered_solution()
+}
+
+/// The unknowns of `laws.len()` nodes of one pair, each its normal followed by `tangents`
+/// tangential ones, and the law of each unknown.
+pub(super) fn node_unknowns<'a>(
+    laws: &[&'a dyn FrictionLaw],
+    tangents: usize,
+) -> (Vec<(usize, usize, Row)>, Vec<&'a dyn FrictionLaw>) {
     let per_node = 1 + tangents;
     let unknowns: Vec<(usize, usize, Row)> = (0..laws.len())
         .flat_map(|k| {
@@ -213,8 +222,22 @@ pub(crate) fn solve_conditions(
                 .map(move |row| (0, k, row))
         })
         .collect();
-    let laws: Vec<&dyn FrictionLaw> = (0..unknowns.len()).map(|i| laws[i / per_node]).collect();
-    Linearized::new(&unknowns, &laws, |_, _| tangents, s, r).unbordered_solution()
+    let laws = (0..unknowns.len()).map(|i| laws[i / per_node]).collect();
+    (unknowns, laws)
+}
+
+/// The fallback's solution of the conditions ([`Linearized::unbordered_solution`]).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ConditionsSolve {
+    /// The tractions.
+    pub(crate) t: Vec<f64>,
+    /// Whether the semi-smooth Newton method settled (else `t` is projected Gauss-Seidel's
+    /// last sweep).
+    pub(crate) settled: bool,
+    /// The semi-smooth Newton steps taken.
+    pub(crate) steps: usize,
+    /// The projected Gauss-Seidel sweeps taken (the start's and any after the Newton steps).
+    pub(crate) sweeps: usize,
 }
 
 /// Where [`ContactAnalysis::linearized_states`] linearizes the contact conditions: the
@@ -233,11 +256,11 @@ pub(super) struct Linearization<'a> {
 
 /// The fallback's linearized conditions `S t - r = rho` (module docs), node by node; with a
 /// force-controlled plate, `S t + G U - r = rho` and the plate's balance ([`PlateBorder`]).
-struct Linearized<'a> {
+pub(super) struct Linearized<'a> {
     s: DMatrix<f64>,
     r: Vec<f64>,
     /// The candidate nodes.
-    nodes: Vec<Candidate<'a>>,
+    pub(super) nodes: Vec<Candidate<'a>>,
     border: Option<PlateBorder>,
 }
 
@@ -314,22 +337,22 @@ impl PlateBorder {
 
 /// A candidate node of the linearized conditions: its unknowns and its friction law.
 #[derive(Debug, Clone, Copy)]
-struct Candidate<'a> {
+pub(super) struct Candidate<'a> {
     /// The index of its normal unknown.
-    normal: usize,
+    pub(super) normal: usize,
     /// How many tangential unknowns follow it (0 without friction, one per kept tangent).
-    tangents: usize,
+    pub(super) tangents: usize,
     /// The frame tangent `s_i` of each tangential unknown (`i` of `Row::Tangent(i)`: a
     /// tangent dropped by symmetry has no unknown).
     components: [usize; MAX_TANGENTS],
     /// How many tangents its frame has (the length of its tangential vectors).
     frame_tangents: usize,
-    law: &'a dyn FrictionLaw,
+    pub(super) law: &'a dyn FrictionLaw,
 }
 
 impl Candidate<'_> {
     /// Its tangential unknowns `j` with the frame tangent `i` of each.
-    fn tangent_unknowns(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+    pub(super) fn tangent_unknowns(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
         (self.normal + 1..self.normal + 1 + self.tangents).zip(self.components)
     }
 
@@ -344,13 +367,13 @@ impl Candidate<'_> {
     }
 
     /// Its tangential traction in `t`.
-    fn tangential(&self, t: &[f64]) -> Tangential {
+    pub(super) fn tangential(&self, t: &[f64]) -> Tangential {
         self.trial(|j| t[j])
     }
 
     /// The tangential vector of `value` over its tangential unknowns, one component per
     /// frame tangent (zero along a dropped one).
-    fn trial(&self, value: impl Fn(usize) -> f64) -> Tangential {
+    pub(super) fn trial(&self, value: impl Fn(usize) -> f64) -> Tangential {
         let mut v = Tangential::zero(self.frame_tangents);
         for (j, i) in self.tangent_unknowns() {
             v.components_mut()[i] = value(j);
@@ -365,7 +388,7 @@ impl Candidate<'_> {
 /// the index of the node's normal unknown); a plate's translation takes its balance
 /// ([`PlateBorder`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Condition {
+pub(super) enum Condition {
     Row,
     Zero,
     Cone(usize, f64),
@@ -394,7 +417,7 @@ impl<'a> Linearized<'a> {
     /// The conditions over `unknowns` (a node's tangential unknowns, one per kept tangent,
     /// follow its normal one), `laws` per unknown, `frame_tangents(p, k)` the number of
     /// tangents of node `k` of pair `p`.
-    fn new(
+    pub(super) fn new(
         unknowns: &[(usize, usize, Row)],
         laws: &[&'a dyn FrictionLaw],
         frame_tangents: impl Fn(usize, usize) -> usize,
@@ -439,19 +462,32 @@ impl<'a> Linearized<'a> {
         if let Some(border) = &self.border {
             return self.bordered_solution(border);
         }
-        self.unbordered_solution().0
+        self.unbordered_solution().t
     }
 
     /// [`solution`](Self::solution) without a plate border, with whether the semi-smooth
-    /// Newton method settled (else the tractions are projected Gauss-Seidel's last sweep).
-    fn unbordered_solution(&self) -> (Vec<f64>, bool) {
+    /// Newton method settled (else the tractions are projected Gauss-Seidel's last sweep) and
+    /// the steps and sweeps it took.
+    fn unbordered_solution(&self) -> ConditionsSolve {
         let m = self.r.len();
-        let start = self.projected(vec![0.0; m], START_SWEEPS);
-        match self.active_set(start.clone()) {
-            Some(t) => (t, true),
+        let (start, sweeps) = self.projected(vec![0.0; m], START_SWEEPS);
+        let (outcome, steps) = self.counted_active_set(start.clone());
+        match outcome {
+            Some(t) => ConditionsSolve {
+                t,
+                settled: true,
+                steps,
+                sweeps,
+            },
             None => {
-                let sweeps = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
-                (self.projected(start, sweeps.max(FALLBACK_WINDOW)), false)
+                let more = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
+                let (t, after) = self.projected(start, more.max(FALLBACK_WINDOW));
+                ConditionsSolve {
+                    t,
+                    settled: false,
+                    steps,
+                    sweeps: sweeps + after,
+                }
             }
         }
     }
@@ -487,7 +523,7 @@ impl<'a> Linearized<'a> {
 
     /// `rho = S t - r` over the contact unknowns (`S t + G U - r` with a plate border, `x`
     /// then `t` followed by `U`).
-    fn residual(&self, x: &[f64]) -> Vec<f64> {
+    pub(super) fn residual(&self, x: &[f64]) -> Vec<f64> {
         let m = self.r.len();
         (0..m)
             .map(|i| {
@@ -508,8 +544,10 @@ impl<'a> Linearized<'a> {
     /// than [`FALLBACK_TOLERANCE`] of the largest, within `sweeps`, or until a window of
     /// [`FALLBACK_WINDOW`] sweeps brings the change no lower. `S` is symmetric positive
     /// definite here (every column is its row).
-    fn projected(&self, mut t: Vec<f64>, sweeps: usize) -> Vec<f64> {
+    /// Returns the tractions and the sweeps taken.
+    fn projected(&self, mut t: Vec<f64>, sweeps: usize) -> (Vec<f64>, usize) {
         let s = &self.s;
+        let mut taken = 0;
         let mut rho = self.residual(&t);
         let update = |t: &mut [f64], rho: &mut [f64], i: usize, value: f64| {
             let change = value - t[i];
@@ -524,6 +562,7 @@ impl<'a> Linearized<'a> {
         // the relative change at the last window's end
         let mut last_window = f64::INFINITY;
         for sweep in 1..=sweeps {
+            taken = sweep;
             let mut largest_change = 0.0f64;
             for node in &self.nodes {
                 let i = node.normal;
@@ -551,7 +590,7 @@ impl<'a> Linearized<'a> {
                 last_window = relative;
             }
         }
-        t
+        (t, taken)
     }
 
     /// The semi-smooth Newton method (the primal-dual active set method of Hüeber, Stadler
@@ -564,11 +603,16 @@ impl<'a> Linearized<'a> {
     /// solves those linear conditions; the method stops when a step's solution makes the
     /// same choice again, which it then satisfies exactly. `None` when it does not settle
     /// within [`ACTIVE_SET_STEPS`] or a step's matrix is singular.
-    fn active_set(&self, mut t: Vec<f64>) -> Option<Vec<f64>> {
+    fn active_set(&self, t: Vec<f64>) -> Option<Vec<f64>> {
+        self.counted_active_set(t).0
+    }
+
+    /// [`active_set`](Self::active_set), with the steps it took (the linear solves).
+    fn counted_active_set(&self, mut t: Vec<f64>) -> (Option<Vec<f64>>, usize) {
         let (s, m) = (&self.s, self.r.len());
         let k = self.border.as_ref().map_or(0, PlateBorder::len);
         let mut last: Vec<Condition> = Vec::new();
-        for _ in 0..ACTIVE_SET_STEPS {
+        for steps in 0..ACTIVE_SET_STEPS {
             let rho = self.residual(&t);
             let mut conditions = vec![Condition::Zero; m];
             conditions.resize(m + k, Condition::Balance);
@@ -597,18 +641,21 @@ impl<'a> Linearized<'a> {
                 }
             }
             if same_conditions(&conditions, &last) {
-                return Some(t);
+                return (Some(t), steps);
             }
-            t = self.step(&conditions)?;
+            match self.step(&conditions) {
+                Some(next) => t = next,
+                None => return (None, steps + 1),
+            }
             last = conditions;
         }
-        None
+        (None, ACTIVE_SET_STEPS)
     }
 
     /// One semi-smooth Newton step: the solution of the linear `conditions`, one per unknown
     /// (with a plate border, the plate's balance rows after the contact unknowns). `None`
     /// when they are singular.
-    fn step(&self, conditions: &[Condition]) -> Option<Vec<f64>> {
+    pub(super) fn step(&self, conditions: &[Condition]) -> Option<Vec<f64>> {
         let (s, m, n) = (&self.s, self.r.len(), conditions.len());
         let mut a = DMatrix::zeros(n, n);
         let mut g = DVector::zeros(n);
@@ -715,7 +762,7 @@ mod tests {
             let exact = c.active_set(vec![0.0; m]).expect("settles");
             assert!(violation(&c, &exact) < 1e-13, "seed {seed}");
             // the same solution as projected Gauss-Seidel's to convergence (unique here)
-            let projected = c.projected(vec![0.0; m], 1_000_000);
+            let projected = c.projected(vec![0.0; m], 1_000_000).0;
             let largest = exact.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             for (a, b) in exact.iter().zip(&projected) {
                 assert!(
@@ -825,7 +872,7 @@ mod tests {
                             nodes: c.nodes.clone(),
                             border: None,
                         };
-                        let t = condensed.projected(vec![0.0; m], 1_000_000);
+                        let t = condensed.projected(vec![0.0; m], 1_000_000).0;
                         // U recovered from the balance
                         let u = b.motion(&t).unwrap();
                         let t: Vec<f64> = t.into_iter().chain(u.iter().copied()).collect();
@@ -905,7 +952,7 @@ mod tests {
                 "seed {seed}: {}",
                 violation(&c, &exact)
             );
-            let projected = c.projected(vec![0.0; m], 1_000_000);
+            let projected = c.projected(vec![0.0; m], 1_000_000).0;
             let largest = exact.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             for (a, b) in exact.iter().zip(&projected) {
                 assert!(

@@ -115,6 +115,43 @@ fn followed(direction: SlipDirection, slip: Tangential, tolerance: f64) -> Optio
     SlipDirection::of(slip).filter(|d| !d.same_as(&direction))
 }
 
+/// The next state of a node in `state` from its `facts` after a solve, by the rules for a
+/// closed node (the module's table, rows 2 to 4; an open node stays open here, its closing is
+/// [`ActiveSet::closing`]'s): tensile (`tn > tension tn_max`) opens; stick beyond the cone
+/// slips opposing `ts`; slip whose slip reversed (`d . v < -slip_tol`) sticks unless
+/// `may_stick` is false (locked in slip), otherwise on a face its direction follows the slip
+/// ([`followed`]). The iteration's rules ([`ActiveSet::propose`]) and the paper's rules on a
+/// condensed problem (`contact::local`, `condensed.rs`) both take it.
+pub(in crate::contact::iteration) fn closed_next(
+    state: NodeState,
+    f: &NodeFacts<'_>,
+    tolerances: &Tolerances,
+    tn_max: f64,
+    may_stick: bool,
+) -> NodeState {
+    let Traction {
+        normal: tn,
+        tangential: ts,
+    } = f.traction;
+    match state {
+        NodeState::Open => state,
+        _ if tn > tolerances.tension * tn_max => NodeState::Open,
+        NodeState::Stick if ts.norm() > f.law.stick_limit(tn) * (1.0 + tolerances.friction) => {
+            NodeState::Slip {
+                direction: SlipDirection::opposing(ts),
+            }
+        }
+        NodeState::Slip { direction }
+            if may_stick && direction.along(&f.slip) < -tolerances.slip =>
+        {
+            NodeState::Stick
+        }
+        NodeState::Slip { direction } => followed(direction, f.slip, tolerances.slip)
+            .map_or(state, |direction| NodeState::Slip { direction }),
+        NodeState::Stick | NodeState::Frictionless => state,
+    }
+}
+
 /// The state of a node that closes without sliding: stick, or frictionless under a law
 /// without friction.
 pub(in crate::contact::iteration) fn closed_at_rest(law: &dyn FrictionLaw) -> NodeState {
@@ -230,29 +267,7 @@ impl ActiveSet {
             .iter()
             .fold(0.0f64, |m, f| m.max(f.traction.normal.abs()));
         for (k, f) in facts.iter().enumerate() {
-            let Traction {
-                normal: tn,
-                tangential: ts,
-            } = f.traction;
-            match states[k] {
-                NodeState::Open => {}
-                _ if tn > tolerances.tension * tn_max => next[k] = NodeState::Open,
-                NodeState::Stick => {
-                    if ts.norm() > f.law.stick_limit(tn) * (1.0 + tolerances.friction) {
-                        next[k] = NodeState::Slip {
-                            direction: SlipDirection::opposing(ts),
-                        };
-                    }
-                }
-                NodeState::Slip { direction } => {
-                    if self.may_stick((p, k)) && direction.along(&f.slip) < -tolerances.slip {
-                        next[k] = NodeState::Stick;
-                    } else if let Some(direction) = followed(direction, f.slip, tolerances.slip) {
-                        next[k] = NodeState::Slip { direction };
-                    }
-                }
-                NodeState::Frictionless => {}
-            }
+            next[k] = closed_next(states[k], f, tolerances, tn_max, self.may_stick((p, k)));
         }
         // how deep each open node penetrates; which of them close is decided by `closing`
         let mut depth = self.own_depths(p, facts, tolerances);
