@@ -535,6 +535,10 @@ enum Bench {
         /// Sweeps allowed to Siconos' NSGS.
         #[arg(long, default_value_t = 20_000)]
         nsgs_iterations: i32,
+        /// Run hycon's rules only on problems of at most this many contacts (up to 200 dense
+        /// solves each).
+        #[arg(long, default_value_t = 100)]
+        rules_max_contacts: usize,
         /// Problem classes, comma separated (hertz3d, mindlin3d, slide3d, plane, random).
         #[arg(long, value_delimiter = ',', default_values = ["hertz3d", "mindlin3d", "slide3d", "plane", "random"])]
         classes: Vec<String>,
@@ -1073,8 +1077,10 @@ fn siconos(
         }
     }
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let threads = std::env::var("OPENBLAS_NUM_THREADS").unwrap_or_else(|_| "unset".into());
     let head = format!(
-        "tolerance {:e}, best of {} runs; load average {}; BLAS mapped: {}\n",
+        "tolerance {:e}, best of {} runs; load average {}; BLAS mapped: {}; \
+         OPENBLAS_NUM_THREADS {threads}\n",
         settings.tolerance,
         settings.repeats,
         load.split_whitespace()
@@ -1370,6 +1376,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             repeats,
             newton_iterations,
             nsgs_iterations,
+            rules_max_contacts,
             classes,
         } => {
             let settings = hycon_lab::siconos_bench::BenchSettings {
@@ -1377,6 +1384,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 repeats,
                 newton_iterations,
                 nsgs_iterations,
+                rules_max_contacts,
             };
             siconos(&classes, &sizes, a_over_h, &settings, out)?
         }

@@ -23,6 +23,9 @@ pub struct BenchSettings {
     pub newton_iterations: i32,
     /// Iterations (sweeps) allowed to Siconos' NSGS.
     pub nsgs_iterations: i32,
+    /// hycon's rules run on problems of at most this many contacts (each of their up to 200
+    /// iterations is a dense solve).
+    pub rules_max_contacts: usize,
 }
 
 /// A run this long (seconds) is not repeated.
@@ -37,8 +40,11 @@ pub struct SolverRun {
     pub seconds: f64,
     /// The runs timed.
     pub runs: usize,
-    /// Iterations (Siconos' count; `None` for hycon's solvers, which do not report one).
-    pub iterations: Option<i32>,
+    /// Iterations: Siconos' count, hycon's Newton steps or rules' iterations (each one dense
+    /// linear solve).
+    pub iterations: usize,
+    /// hycon's projected Gauss-Seidel sweeps (the Newton method's start; `None` for Siconos).
+    pub sweeps: Option<usize>,
     /// Whether the solver met its own stopping rule (Siconos: info 0).
     pub settled: bool,
     /// hycon's residual of the reactions: `e / |q|`.
@@ -63,6 +69,12 @@ pub struct ProblemRuns {
     pub dim: usize,
     /// Open, sticking and slipping contacts of hycon's Newton solution.
     pub states: [usize; 3],
+    /// `|q|`.
+    pub norm_q: f64,
+    /// The largest diagonal entry of `W`.
+    pub w_diagonal: f64,
+    /// The largest reaction of hycon's Newton solution.
+    pub largest_r: f64,
     /// The solvers, hycon's Newton first.
     pub runs: Vec<SolverRun>,
 }
@@ -110,38 +122,73 @@ fn timed<T>(repeats: usize, mut solve: impl FnMut() -> T) -> (f64, T, usize) {
     (best, result, runs)
 }
 
-/// Every solver on `named`: hycon's Newton (the reference), then Siconos' (three-component
-/// problems only).
+/// hycon's `solve` on `problem`, timed, against `reference` (hycon's Newton solution).
+fn hycon_run(
+    name: &str,
+    problem: &LocalProblem,
+    siconos: Option<&SiconosProblem>,
+    repeats: usize,
+    solve: impl Fn(&LocalProblem) -> LocalSolve,
+    reference: Option<&[f64]>,
+) -> (SolverRun, LocalSolve) {
+    let (seconds, out, runs) = timed(repeats, || solve(problem));
+    let run = SolverRun {
+        solver: name.into(),
+        seconds,
+        runs,
+        iterations: out.iterations,
+        sweeps: Some(out.sweeps),
+        settled: out.settled,
+        residual_hycon: out.residual,
+        residual_siconos: siconos.map_or(f64::NAN, |s| s.compute_error(&out.r)),
+        difference: reference.map_or(0.0, |r| difference(&out.r, r)),
+    };
+    (run, out)
+}
+
+/// The name of hycon's rules in tables.
+const RULES: &str = "hycon rules";
+
+/// Every solver on `named`: hycon's Newton (the reference), hycon's rules (up to
+/// `rules_max_contacts`), then Siconos' (three-component problems only).
 pub fn compare(named: &NamedProblem, settings: &BenchSettings) -> ProblemRuns {
     let problem = &named.problem;
     let siconos = SiconosProblem::new(problem);
-    let error = |r: &[f64]| siconos.as_ref().map_or(f64::NAN, |s| s.compute_error(r));
-    let (seconds, newton, runs): (f64, LocalSolve, usize) =
-        timed(settings.repeats, || problem.solve_newton());
-    let mut out = vec![SolverRun {
-        solver: "hycon Newton".into(),
-        seconds,
-        runs,
-        iterations: None,
-        settled: newton.settled,
-        residual_hycon: newton.residual,
-        residual_siconos: error(&newton.r),
-        difference: 0.0,
-    }];
+    let repeats = settings.repeats;
+    let (newton_run, newton) = hycon_run(
+        "hycon Newton",
+        problem,
+        siconos.as_ref(),
+        repeats,
+        LocalProblem::solve_newton,
+        None,
+    );
+    let mut out = vec![newton_run];
+    if problem.contacts() <= settings.rules_max_contacts {
+        let (rules_run, _) = hycon_run(
+            RULES,
+            problem,
+            siconos.as_ref(),
+            repeats,
+            LocalProblem::solve_rules,
+            Some(&newton.r),
+        );
+        out.push(rules_run);
+    }
     if let Some(s) = &siconos {
         for solver in SiconosSolver::ALL {
             let iterations = match solver {
                 SiconosSolver::Nsgs => settings.nsgs_iterations,
                 _ => settings.newton_iterations,
             };
-            let (seconds, solve, runs) = timed(settings.repeats, || {
-                s.solve(solver, settings.tolerance, iterations)
-            });
+            let (seconds, solve, runs) =
+                timed(repeats, || s.solve(solver, settings.tolerance, iterations));
             out.push(SolverRun {
                 solver: solver.name().into(),
                 seconds,
                 runs,
-                iterations: Some(solve.iterations),
+                iterations: usize::try_from(solve.iterations).unwrap_or(0),
+                sweeps: None,
                 settled: solve.info == 0,
                 residual_hycon: problem.natural_map_residual(&solve.r),
                 residual_siconos: s.compute_error(&solve.r),
@@ -149,12 +196,17 @@ pub fn compare(named: &NamedProblem, settings: &BenchSettings) -> ProblemRuns {
             });
         }
     }
+    let norm_q = problem.q().iter().map(|v| v * v).sum::<f64>().sqrt();
+    let w = problem.w();
     ProblemRuns {
         class: named.class.clone(),
         name: named.name.clone(),
         contacts: problem.contacts(),
         dim: problem.dim(),
         states: states(problem, &newton.r),
+        norm_q,
+        w_diagonal: (0..w.nrows()).fold(0.0f64, |m, i| m.max(w[(i, i)])),
+        largest_r: newton.r.iter().fold(0.0f64, |m, v| m.max(v.abs())),
         runs: out,
     }
 }
@@ -163,7 +215,7 @@ pub fn compare(named: &NamedProblem, settings: &BenchSettings) -> ProblemRuns {
 pub fn full_table(problems: &[ProblemRuns]) -> String {
     let mut s = String::from(
         "| class | problem | contacts (open/stick/slip) | solver | time (ms) | runs | \
-         iterations | settled | residual hycon | residual Siconos | difference |\n\
+         iterations (+sweeps) | settled | residual hycon | residual Siconos | difference |\n\
          |---|---|---|---|---:|---:|---:|---|---:|---:|---:|\n",
     );
     for p in problems {
@@ -178,7 +230,10 @@ pub fn full_table(problems: &[ProblemRuns]) -> String {
                 r.solver,
                 r.seconds * 1e3,
                 r.runs,
-                r.iterations.map_or("-".into(), |i| i.to_string()),
+                match r.sweeps {
+                    Some(sweeps) => format!("{}+{sweeps}", r.iterations),
+                    None => r.iterations.to_string(),
+                },
                 if r.settled { "yes" } else { "no" },
                 r.residual_hycon,
                 r.residual_siconos,
@@ -189,46 +244,61 @@ pub fn full_table(problems: &[ProblemRuns]) -> String {
     s
 }
 
-/// The side-by-side table: a row per problem, hycon's Newton against Siconos' fastest
-/// settled solver, both residuals by `fc3d_compute_error`, and the largest reaction
-/// difference of any settled Siconos solver from hycon's.
+/// A time in milliseconds with the solver's iterations and whether it settled.
+fn time_cell(r: &SolverRun) -> String {
+    let mark = if r.settled { "" } else { ", not settled" };
+    match r.sweeps {
+        Some(sweeps) => format!("{:.3} ({}+{sweeps}{mark})", r.seconds * 1e3, r.iterations),
+        None => format!("{:.3} ({}{mark})", r.seconds * 1e3, r.iterations),
+    }
+}
+
+/// The side-by-side table: a row per problem, hycon's Newton and rules against Siconos'
+/// fastest settled solver (times with iterations, and hycon's start sweeps), the residuals by
+/// `fc3d_compute_error` (on 2D problems, which Siconos' `fc3d` does not take, hycon's
+/// `e / |q|`), and the largest reaction difference of the settled Siconos solvers and of the
+/// rules from hycon's Newton solution.
 pub fn summary_table(problems: &[ProblemRuns]) -> String {
     let mut s = String::from(
-        "| class | problem | contacts | hycon time (ms) | hycon residual | Siconos best | \
-         its time (ms) | its residual | largest difference |\n\
-         |---|---|---:|---:|---:|---|---:|---:|---:|\n",
+        "| class | problem | contacts | hycon Newton ms (steps+sweeps) | hycon rules ms \
+         (iterations) | hycon residual | Siconos best | its ms (iterations) | its residual | \
+         largest difference Siconos | rules |\n\
+         |---|---|---:|---:|---:|---:|---|---:|---:|---:|---:|\n",
     );
+    let cell = |d: Option<f64>| d.map_or("-".into(), |d| format!("{d:.1e}"));
     for p in problems {
-        let hycon = &p.runs[0];
-        let settled: Vec<&SolverRun> = p.runs[1..].iter().filter(|r| r.settled).collect();
-        let best = settled
-            .iter()
-            .min_by(|a, b| a.seconds.total_cmp(&b.seconds));
-        let largest = settled
-            .iter()
+        let newton = &p.runs[0];
+        let rules = p.runs.iter().find(|r| r.solver == RULES);
+        let settled: Vec<&SolverRun> = (p.runs.iter())
+            .filter(|r| r.sweeps.is_none() && r.settled)
+            .collect();
+        let best = (settled.iter()).min_by(|a, b| a.seconds.total_cmp(&b.seconds));
+        let largest = (settled.iter())
             .map(|r| r.difference)
             .fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))));
         let (name, time, residual) = match best {
             Some(b) => (
                 b.solver.clone(),
-                format!("{:.3}", b.seconds * 1e3),
+                time_cell(b),
                 format!("{:.1e}", b.residual_siconos),
             ),
             None if p.dim == 3 => ("none settled".into(), "-".into(), "-".into()),
             None => ("(2D: not fc3d)".into(), "-".into(), "-".into()),
         };
-        // Siconos' residual for both where Siconos solves; hycon's (`e / |q|`) on 2D problems
         let hycon_residual = match p.dim {
-            3 => format!("{:.1e}", hycon.residual_siconos),
-            _ => format!("{:.1e} (e/\\|q\\|)", hycon.residual_hycon),
+            3 => format!("{:.1e}", newton.residual_siconos),
+            _ => format!("{:.1e} (e/\\|q\\|)", newton.residual_hycon),
         };
         s += &format!(
-            "| {} | {} | {} | {:.3} | {hycon_residual} | {name} | {time} | {residual} | {} |\n",
+            "| {} | {} | {} | {} | {} | {hycon_residual} | {name} | {time} | {residual} | {} | \
+             {} |\n",
             p.class,
             p.name,
             p.contacts,
-            hycon.seconds * 1e3,
-            largest.map_or("-".into(), |d| format!("{d:.1e}"))
+            time_cell(newton),
+            rules.map_or("-".into(), time_cell),
+            cell(largest),
+            cell(rules.filter(|r| r.settled).map(|r| r.difference)),
         );
     }
     s
