@@ -520,9 +520,9 @@ enum Bench {
         /// Contacts of the random problems, comma separated.
         #[arg(long, value_delimiter = ',', default_values_t = [10, 30, 100, 300])]
         sizes: Vec<usize>,
-        /// Faces per contact radius of the hertz3d and mindlin3d caps.
-        #[arg(long, default_value_t = 4)]
-        a_over_h: usize,
+        /// Faces per contact radius of the hertz3d and mindlin3d caps, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [4, 8])]
+        a_over_h: Vec<usize>,
         /// Siconos' tolerance on its residual (fc3d_compute_error).
         #[arg(long, default_value_t = 1e-10)]
         tolerance: f64,
@@ -537,7 +537,7 @@ enum Bench {
         nsgs_iterations: i32,
         /// Run hycon's rules only on problems of at most this many contacts (up to 200 dense
         /// solves each).
-        #[arg(long, default_value_t = 100)]
+        #[arg(long, default_value_t = 150)]
         rules_max_contacts: usize,
         /// Problem classes, comma separated (hertz3d, mindlin3d, slide3d, plane, random).
         #[arg(long, value_delimiter = ',', default_values = ["hertz3d", "mindlin3d", "slide3d", "plane", "random"])]
@@ -1045,7 +1045,7 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
 fn siconos(
     classes: &[String],
     sizes: &[usize],
-    a_over_h: usize,
+    a_over_h: &[usize],
     settings: &hycon_lab::siconos_bench::BenchSettings,
     out: &Path,
 ) -> AnyResult {
@@ -1054,8 +1054,16 @@ fn siconos(
     let mut runs = Vec::new();
     for class in classes {
         let problems = match class.as_str() {
-            "hertz3d" => local_problems::hertz3d(a_over_h)?,
-            "mindlin3d" => local_problems::mindlin3d(a_over_h)?,
+            "hertz3d" | "mindlin3d" => {
+                let mut all = Vec::new();
+                for &a in a_over_h {
+                    all.extend(match class.as_str() {
+                        "hertz3d" => local_problems::hertz3d(a)?,
+                        _ => local_problems::mindlin3d(a)?,
+                    });
+                }
+                all
+            }
             "slide3d" => local_problems::slide3d()?,
             "plane" => local_problems::plane()?,
             "random" => local_problems::randoms(sizes, 1),
@@ -1386,7 +1394,7 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
                 nsgs_iterations,
                 rules_max_contacts,
             };
-            siconos(&classes, &sizes, a_over_h, &settings, out)?
+            siconos(&classes, &sizes, &a_over_h, &settings, out)?
         }
         Bench::Edge { n, positions } => edge(&n, positions)?,
         Bench::SphereEdge {
