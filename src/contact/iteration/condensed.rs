@@ -15,19 +15,37 @@
 //! direction update; the analysis' [`closed_next`]). It stops when the states repeat, slip
 //! directions to [`SAME_DIRECTION`](crate::contact::tangent::SAME_DIRECTION) (the solution
 //! then satisfies every condition to that angle), and fails on a cycle or after
-//! [`RULES_ITERATIONS`]. Unlike the analysis it closes every penetrating contact at once
-//! (the paper's rule: a local problem has no adjacency for closing by runs) and has no locks.
+//! [`RULES_ITERATIONS`]. A contact alternating between stick and slip is locked in slip, one
+//! alternating between open and closed locked open, by the analysis' own [`ActiveSet`]
+//! (docs/method.md, "Locks and cycles"), and when the states repeat a locked contact must
+//! hold its lock to the analysis' hair (`1e-4` of the gap scale, the largest normal `|r_n|`,
+//! for a contact locked open that penetrates; of the slip scale, the largest `|r|`, for one
+//! locked in slip that slides against its friction), or the solve is unsettled. Unlike the analysis it closes every penetrating
+//! contact at once (the paper's rule: a local problem has no adjacency for closing by runs).
+//!
+//! On a face with friction the direction update is a fixed-point iteration on the slip
+//! directions, which need not settle: it is why the analysis proposes its states from the
+//! linearized conditions there (docs/method.md, "The solver order on a face"), and the
+//! problems of `hycon_lab::local_problems` where contacts slip on faces show it.
 
-use super::active_set::{NodeFacts, Tolerances, closed_at_rest, closed_next};
+use super::active_set::{
+    ActiveSet, Commit, Locks, NodeFacts, Tolerances, closed_at_rest, closed_next,
+};
 use super::fallback::{Condition, Linearized, node_unknowns};
 use super::{DMatrix, FrictionLaw, NodeState, Traction};
 
 /// The rules' iterations at most.
 const RULES_ITERATIONS: usize = 200;
 
+/// The lock rounds (the analysis' default `lock_rounds`): a contact alternating between stick
+/// and slip is locked in slip, one alternating between open and closed is locked open, as in
+/// the analysis (docs/method.md, "Locks and cycles").
+const LOCK_ROUNDS: usize = 3;
+
 /// The rules' tolerances, relative: a contact opens when `tn > RULES_TOLERANCE tn_max`, a stick
-/// contact slips beyond `(1 + RULES_TOLERANCE)` times its cone, and lengths (penetration,
-/// reversed slip) count beyond `RULES_TOLERANCE max |r|`.
+/// contact slips beyond `(1 + RULES_TOLERANCE)` times its cone, a penetration counts beyond
+/// `RULES_TOLERANCE` of the largest normal free term `|r_n|` (the gap scale), a reversed slip
+/// beyond `RULES_TOLERANCE` of the largest `|r|` (the slip scale).
 const RULES_TOLERANCE: f64 = 1e-12;
 
 /// The rules' solution of the conditions.
@@ -49,33 +67,42 @@ pub(crate) fn solve_by_rules(
     laws: &[&dyn FrictionLaw],
     tangents: usize,
 ) -> RulesSolve {
-    let length = RULES_TOLERANCE * r.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    // the scales of the gaps and of the slips: the largest normal and tangential free terms
+    let largest = |normal: bool| {
+        (r.iter().enumerate())
+            .filter(|(j, _)| (j % (1 + tangents) == 0) == normal)
+            .fold(0.0f64, |m, (_, v)| m.max(v.abs()))
+    };
+    let gap_scale = largest(true);
+    let slip_scale = largest(false).max(gap_scale);
     let tolerances = Tolerances {
-        gap: length,
-        slip: length,
+        gap: RULES_TOLERANCE * gap_scale,
+        slip: RULES_TOLERANCE * slip_scale,
         tension: RULES_TOLERANCE,
         friction: RULES_TOLERANCE,
     };
     let (unknowns, laws) = node_unknowns(laws, tangents);
     let m = unknowns.len();
     let c = Linearized::new(&unknowns, &laws, |_, _| tangents, s, r);
-    let mut states = vec![NodeState::Open; c.nodes.len()];
-    let mut seen: Vec<Vec<NodeState>> = Vec::new();
+    let open = vec![NodeState::Open; c.nodes.len()];
+    let mut set = ActiveSet::new(vec![open], Locks::default(), LOCK_ROUNDS);
     let mut t = vec![0.0; m];
     for iteration in 1..=RULES_ITERATIONS {
-        let unsettled = |t: Vec<f64>| RulesSolve {
-            t,
-            settled: false,
-            iterations: iteration,
-        };
-        t = match c.step(&conditions(&c, &states, m)) {
+        let states = &set.states()[0];
+        t = match c.step(&conditions(&c, states, m)) {
             Some(t) => t,
-            None => return unsettled(t),
+            None => {
+                return RulesSolve {
+                    t,
+                    settled: false,
+                    iterations: iteration,
+                };
+            }
         };
         let rho = c.residual(&t);
         let tn_max = (c.nodes.iter()).fold(0.0f64, |a, n| a.max(t[n.normal].abs()));
-        let next: Vec<NodeState> = (c.nodes.iter().zip(&states))
-            .map(|(node, &state)| {
+        let next: Vec<NodeState> = (c.nodes.iter().zip(states).enumerate())
+            .map(|(k, (node, &state))| {
                 let facts = NodeFacts {
                     traction: Traction {
                         normal: t[node.normal],
@@ -86,22 +113,33 @@ pub(crate) fn solve_by_rules(
                     law: node.law,
                 };
                 match state {
-                    NodeState::Open if facts.gap < -tolerances.gap => closed_at_rest(node.law),
-                    _ => closed_next(state, &facts, &tolerances, tn_max, true),
+                    NodeState::Open if facts.gap < -tolerances.gap && set.may_close((0, k)) => {
+                        closed_at_rest(node.law)
+                    }
+                    _ => closed_next(state, &facts, &tolerances, tn_max, set.may_stick((0, k))),
                 }
             })
             .collect();
-        if next == states {
+        let next = vec![next];
+        if set.changes(&next) == 0 {
+            // a locked contact must hold its lock to its hair, as at the analysis' convergence
+            let node = |k: usize| &c.nodes[k];
+            let breach = set
+                .edge_penetration(|(_, k)| (-rho[node(k).normal], gap_scale))
+                .or_else(|| set.slip_reversal(|(_, k)| (node(k).trial(|j| rho[j]), slip_scale)));
             return RulesSolve {
                 t,
-                settled: true,
+                settled: breach.is_none(),
                 iterations: iteration,
             };
         }
-        if seen.contains(&next) {
-            return unsettled(t);
+        if let Commit::Cycle { .. } = set.commit(next) {
+            return RulesSolve {
+                t,
+                settled: false,
+                iterations: iteration,
+            };
         }
-        seen.push(std::mem::replace(&mut states, next));
     }
     RulesSolve {
         t,
