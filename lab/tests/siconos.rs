@@ -267,7 +267,7 @@ fn random_problem(contacts: usize, seed: u64) -> LocalProblem {
 
 #[test]
 fn siconos_residual_is_hycons_on_another_scale() {
-    // e = hycon's residual * |q| = Siconos' * max(|q|, |r|, |u|), at a solution and away
+    // e = hycon's residual * |q| = Siconos' * max(|q|, |r|, |u|), away from the solution
     let problem = random_problem(6, 3);
     let siconos = SiconosProblem::new(&problem).unwrap();
     let solution = problem.solve_newton().r;
@@ -276,12 +276,13 @@ fn siconos_residual_is_hycons_on_another_scale() {
     for r in [
         solution.iter().map(|v| v * 1.01).collect::<Vec<_>>(),
         solution.iter().map(|v| v * 3.0 + 0.1).collect(),
-        vec![0.0; problem.q().len()],
+        solution.iter().map(|v| v * 0.5).collect(),
     ] {
         let scale = norm_q.max(norm(&r)).max(norm(&problem.velocity(&r)));
         let hycon = problem.natural_map_residual(&r) * norm_q;
         let theirs = siconos.compute_error(&r) * scale;
-        assert!(hycon > 1e-3, "{hycon}");
+        // away from the solution: not a comparison of two roundoffs
+        assert!(problem.natural_map_residual(&r) > 1e-3, "{hycon}");
         assert!((hycon - theirs).abs() <= 1e-13 * hycon, "{hycon} {theirs}");
     }
 }
@@ -311,4 +312,24 @@ fn siconos_and_hycon_find_the_same_reactions() {
             );
         }
     }
+}
+
+/// The cone of `mu = 0` is the half-line `r_T = 0, r_N >= 0`: a trial point below it with no
+/// tangential part projects to zero (Siconos' `projectionOnCone` tests the polar cone first).
+#[test]
+fn an_open_frictionless_contact_has_no_residual() {
+    // one frictionless contact, open at r = 0 (u = q = (1, 0, 0)): r = 0 solves it, and
+    // r - P_K(r - û) = 0 - P_K((-1, 0, 0)) = 0 with the cone of mu = 0 the half-line r_T = 0,
+    // r_N >= 0
+    let problem = LocalProblem::new(
+        3,
+        nalgebra::DMatrix::identity(3, 3),
+        vec![1.0, 0.0, 0.0],
+        vec![0.0],
+    )
+    .unwrap();
+    let siconos = SiconosProblem::new(&problem).unwrap();
+    let r = [0.0; 3];
+    assert_eq!(siconos.compute_error(&r), 0.0);
+    assert_eq!(problem.natural_map_residual(&r), 0.0);
 }
