@@ -14,6 +14,11 @@
 //! `r_i . û_i = 0`: open (`r = 0`, `u_N >= 0`), sticking (`r` inside the cone, `u = 0`) or
 //! slipping (`r` on the cone, `u_N = 0`, `u_T` against `r_T`).
 //!
+//! hycon solves it two ways: [`LocalProblem::solve_newton`] (the fallback's semi-smooth Newton
+//! method) and [`LocalProblem::solve_rules`] (the paper's rules on the condensed conditions);
+//! [`ContactAnalysis::local_problem`](crate::contact::iteration::ContactAnalysis::local_problem)
+//! exports a converged increment as such a problem ([`LocalExport`]).
+//!
 //! hycon's own conditions (the fallback's `S t - rho = r`, `tn <= 0`, `rho_n <= 0`: compression
 //! and closure negative) are this problem with the normal components' signs turned:
 //! `r = D t`, `u = D rho`, `W = D S D`, `q = -D r_h`, `D = diag(-1, 1, .., 1)` per contact.

@@ -33,6 +33,9 @@ impl ContactAnalysis {
     /// rows, and with a force-controlled plate `S` with the plate's translations condensed out
     /// (its stiffness positive definite over the force-controlled directions).
     ///
+    /// After an increment the automatic cutback took in sub-increments, it is the last
+    /// sub-increment's problem (its slips counted from the sub-increment's start).
+    ///
     /// Takes `&mut self` because the flexibility may gain columns (lazy `F` under small
     /// kinematics); the converged state is not changed.
     ///

@@ -208,12 +208,12 @@ pub(crate) fn solve_conditions(
     Linearized::new(&unknowns, &laws, |_, _| tangents, s, r).unbordered_solution()
 }
 
+/// The unknowns `(pair, node, row)` of some nodes and the friction law of each.
+pub(super) type NodeUnknowns<'a> = (Vec<(usize, usize, Row)>, Vec<&'a dyn FrictionLaw>);
+
 /// The unknowns of `laws.len()` nodes of one pair, each its normal followed by `tangents`
 /// tangential ones, and the law of each unknown.
-pub(super) fn node_unknowns<'a>(
-    laws: &[&'a dyn FrictionLaw],
-    tangents: usize,
-) -> (Vec<(usize, usize, Row)>, Vec<&'a dyn FrictionLaw>) {
+pub(super) fn node_unknowns<'a>(laws: &[&'a dyn FrictionLaw], tangents: usize) -> NodeUnknowns<'a> {
     let per_node = 1 + tangents;
     let unknowns: Vec<(usize, usize, Row)> = (0..laws.len())
         .flat_map(|k| {
