@@ -11,9 +11,10 @@
 //! program against the installed headers and compares every field offset and size with
 //! these.
 //!
-//! Siconos' residual differs from [`LocalProblem::natural_map_residual`] in its scale only:
-//! both take `e = sqrt(sum_i |r_i - P_K_i(r_i - û_i)|^2)`, Siconos divides it by
-//! `max(|q|, |r|, |u|)` where hycon divides by `|q|`.
+//! Siconos' residual differs from [`LocalProblem::natural_map_residual`] in its scale: both
+//! take `e = sqrt(sum_i |r_i - P_K_i(r_i - û_i)|^2)`, Siconos divides it by
+//! `max(|q|, |r|, |u|)` where hycon divides by `|q|` (and, for `mu = 0`, Siconos projects a
+//! trial point `(n < 0, 0, 0)` to zero where hycon keeps it: docs/bench/siconos.md).
 
 use hycon::contact::local::LocalProblem;
 use std::os::raw::c_int;
