@@ -516,6 +516,40 @@ enum Bench {
         #[arg(long)]
         write: bool,
     },
+    /// Siconos' fc3d solvers (NSN_AC with and without line search, NSN_AC after the
+    /// extragradient warm start, NSGS) and hycon's semi-smooth Newton solve side by side on
+    /// the same in-memory local problems: the 3D scenes' increments (hertz3d, mindlin3d,
+    /// slide3d), the plane disk (hycon only: Siconos' fc3d is 3D) and random well-posed
+    /// problems of growing size. Prints the tables, writes siconos_table.md and siconos.json
+    /// to --out [default: docs/bench]. Feature `siconos` (links libsiconos_numerics).
+    #[cfg(feature = "siconos")]
+    Siconos {
+        /// Contacts of the random problems, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [10, 30, 100, 300])]
+        sizes: Vec<usize>,
+        /// Faces per contact radius of the hertz3d and mindlin3d caps, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = [4, 8])]
+        a_over_h: Vec<usize>,
+        /// Siconos' tolerance on its residual (fc3d_compute_error).
+        #[arg(long, default_value_t = 1e-10)]
+        tolerance: f64,
+        /// Runs per solver and problem (the best time counts; a run over 2 s is not repeated).
+        #[arg(long, default_value_t = 3)]
+        repeats: usize,
+        /// Iterations allowed to Siconos' Newton methods.
+        #[arg(long, default_value_t = 1000)]
+        newton_iterations: i32,
+        /// Sweeps allowed to Siconos' NSGS.
+        #[arg(long, default_value_t = 20_000)]
+        nsgs_iterations: i32,
+        /// Run hycon's rules only on problems of at most this many contacts (up to 200 dense
+        /// solves each).
+        #[arg(long, default_value_t = 150)]
+        rules_max_contacts: usize,
+        /// Problem classes, comma separated (hertz3d, mindlin3d, slide3d, plane, random).
+        #[arg(long, value_delimiter = ',', default_values = ["hertz3d", "mindlin3d", "slide3d", "plane", "random"])]
+        classes: Vec<String>,
+    },
 }
 
 /// `--kinematics`.
@@ -1013,6 +1047,80 @@ fn edge(ns: &[usize], positions: usize) -> AnyResult {
     Ok(())
 }
 
+/// `hycon bench siconos`: the problems of each class in turn, a line per problem as it is
+/// done, then both tables; writes siconos_table.md and siconos.json to `out`.
+#[cfg(feature = "siconos")]
+fn siconos(
+    classes: &[String],
+    sizes: &[usize],
+    a_over_h: &[usize],
+    settings: &hycon_lab::siconos_bench::BenchSettings,
+    out: &Path,
+) -> AnyResult {
+    use hycon_lab::local_problems;
+    use hycon_lab::siconos_bench::{compare, full_table, summary_table};
+    let mut runs = Vec::new();
+    for class in classes {
+        let problems = match class.as_str() {
+            "hertz3d" | "mindlin3d" => {
+                let mut all = Vec::new();
+                for &a in a_over_h {
+                    all.extend(match class.as_str() {
+                        "hertz3d" => local_problems::hertz3d(a)?,
+                        _ => local_problems::mindlin3d(a)?,
+                    });
+                }
+                all
+            }
+            "slide3d" => local_problems::slide3d()?,
+            "plane" => local_problems::plane()?,
+            "random" => local_problems::randoms(sizes, 1),
+            other => return Err(format!("unknown problem class {other:?}").into()),
+        };
+        for p in &problems {
+            let r = compare(p, settings);
+            let times: Vec<String> = (r.runs.iter())
+                .map(|s| format!("{} {:.3} ms", s.solver, s.seconds * 1e3))
+                .collect();
+            println!(
+                "{}/{} ({} contacts): {}",
+                r.class,
+                r.name,
+                r.contacts,
+                times.join(", ")
+            );
+            runs.push(r);
+        }
+    }
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    let threads = std::env::var("OPENBLAS_NUM_THREADS").unwrap_or_else(|_| "unset".into());
+    let head = format!(
+        "tolerance {:e}, best of {} runs; load average {}; BLAS mapped: {}; \
+         OPENBLAS_NUM_THREADS {threads}\n",
+        settings.tolerance,
+        settings.repeats,
+        load.split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" "),
+        hycon_lab::bench::blas_libraries().join(", ")
+    );
+    let table = format!("{head}\n{}\n{}", summary_table(&runs), full_table(&runs));
+    println!("\n{table}");
+    std::fs::create_dir_all(out)?;
+    std::fs::write(out.join("siconos_table.md"), &table)?;
+    std::fs::write(
+        out.join("siconos.json"),
+        serde_json::to_string_pretty(&runs)?,
+    )?;
+    println!(
+        "written: {}, {}",
+        out.join("siconos_table.md").display(),
+        out.join("siconos.json").display()
+    );
+    Ok(())
+}
+
 /// `hycon bench hertz3d`: one row per modulus ratio, cap and block size (`[caps, blocks]`)
 /// and a/h, each followed by the time split, the fastest of `repeats` runs of each analysis
 /// (and the radial comparison with `radial`).
@@ -1276,6 +1384,26 @@ fn bench(what: Bench, out: Option<&Path>) -> AnyResult {
             }
         }
         Bench::Guard { reference, write } => guard(&reference, write)?,
+        #[cfg(feature = "siconos")]
+        Bench::Siconos {
+            sizes,
+            a_over_h,
+            tolerance,
+            repeats,
+            newton_iterations,
+            nsgs_iterations,
+            rules_max_contacts,
+            classes,
+        } => {
+            let settings = hycon_lab::siconos_bench::BenchSettings {
+                tolerance,
+                repeats,
+                newton_iterations,
+                nsgs_iterations,
+                rules_max_contacts,
+            };
+            siconos(&classes, &sizes, &a_over_h, &settings, out)?
+        }
         Bench::Edge { n, positions } => edge(&n, positions)?,
         Bench::SphereEdge {
             n,

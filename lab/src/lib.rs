@@ -27,6 +27,8 @@
 //! * [`local_problems`]: named sets of FCLIB local problems: increments of the 3D and plane
 //!   scenes exported with their converged reactions, random well-posed problems.
 //! * [`slide3d`]: a block dragged over a flat at an angle to its mesh lines (3D friction).
+//! * `siconos` (feature `siconos`): Siconos' `fc3d` solvers on hycon's local problems, side
+//!   by side with hycon's; `siconos_bench`: the bench (`hycon bench siconos`).
 #![warn(missing_docs)]
 
 pub mod axisymmetric;
@@ -46,5 +48,9 @@ pub mod presses;
 pub mod report;
 pub mod scene;
 pub mod scenefile;
+#[cfg(feature = "siconos")]
+pub mod siconos;
+#[cfg(feature = "siconos")]
+pub mod siconos_bench;
 pub mod slide3d;
 pub mod solid_scene;

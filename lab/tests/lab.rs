@@ -28,4 +28,6 @@ mod linear;
 mod local_problems;
 mod scene_findings;
 mod scenes;
+#[cfg(feature = "siconos")]
+mod siconos;
 mod stress_suite;
