@@ -193,3 +193,14 @@ fn a_floating_body_under_a_force_controlled_plate_is_refused() {
     let refused = analysis.local_problem().unwrap_err().to_string();
     assert!(refused.contains("floating body"), "{refused}");
 }
+
+/// The cone of `mu = 0` is the half-line `r_T = 0, r_N >= 0`: an open frictionless contact at
+/// `r = 0` (`u = q = (1, 0, 0)`) solves its problem, `r - P_K(r - û) = -P_K((-1, 0, 0)) = 0`.
+#[test]
+fn an_open_frictionless_contact_has_no_residual() {
+    let problem =
+        LocalProblem::new(3, DMatrix::identity(3, 3), vec![1.0, 0.0, 0.0], vec![0.0]).unwrap();
+    assert_eq!(problem.natural_map_residual(&[0.0; 3]), 0.0);
+    // and a reaction that pulls is not a solution
+    assert!(problem.natural_map_residual(&[-0.5, 0.0, 0.0]) > 0.1);
+}

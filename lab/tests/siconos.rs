@@ -317,8 +317,6 @@ fn siconos_and_hycon_find_the_same_reactions() {
 /// The cone of `mu = 0` is the half-line `r_T = 0, r_N >= 0`: a trial point below it with no
 /// tangential part projects to zero (Siconos' `projectionOnCone` tests the polar cone first).
 #[test]
-#[ignore = "hycon's project_on_cone (src/contact/local.rs) keeps (n < 0, 0, 0) for mu = 0: it \
-            must test the polar cone |x_T| mu <= -x_N first, as Siconos does"]
 fn an_open_frictionless_contact_has_no_residual() {
     // one frictionless contact, open at r = 0 (u = q = (1, 0, 0)): r = 0 solves it, and
     // r - P_K(r - û) = 0 - P_K((-1, 0, 0)) = 0 with the cone of mu = 0 the half-line r_T = 0,

@@ -122,8 +122,8 @@ impl LocalProblem {
         let asymmetry = (&w - w.transpose()).amax();
         if asymmetry > 1e-12 * largest {
             return invalid(format!(
-                "W is not symmetric (|W - W^T| reaches {asymmetry:.3e} of its largest entry \
-                 {largest:.3e})"
+                "W is not symmetric (|W - W^T| reaches {asymmetry:.3e} against a largest \
+                 entry of {largest:.3e})"
             ));
         }
         Ok(LocalProblem { dim, w, q, mu })
@@ -160,8 +160,10 @@ impl LocalProblem {
         u.iter().copied().collect()
     }
 
-    /// The natural-map residual of the reactions `r`, as Siconos' `fc3d_compute_error` states
-    /// it: `sqrt(sum_i |r_i - P_K_i(r_i - û_i)|^2) / |q|` (not divided where `|q|` is zero),
+    /// The natural-map residual of the reactions `r`: the norm `e` of Siconos'
+    /// `fc3d_compute_error` relative to the free term, `e / |q|` with
+    /// `e = sqrt(sum_i |r_i - P_K_i(r_i - û_i)|^2)` (not divided where `|q|` is zero; Siconos
+    /// 4.4 divides the same `e` by `max(|q|, |r|, |u|)`, libfclib's merit by `1 + sqrt|q|`),
     /// `û_i = u_i + mu_i |u_T,i| e_N` with `u = W r + q`, `P_K_i` the closest point of the
     /// Coulomb cone. It vanishes exactly at a solution.
     pub fn natural_map_residual(&self, r: &[f64]) -> f64 {
@@ -249,11 +251,12 @@ impl LocalProblem {
 /// The closest point of the cone `|x_T| <= mu x_N` to `x` (normal first).
 fn project_on_cone(x: &[f64], mu: f64) -> Vec<f64> {
     let (n, t) = (x[0], x[1..].iter().map(|v| v * v).sum::<f64>().sqrt());
-    if t <= mu * n {
-        return x.to_vec();
-    }
+    // the polar cone first: with mu = 0 a point (n < 0, 0) lies in both tests
     if mu * t <= -n {
         return vec![0.0; x.len()];
+    }
+    if t <= mu * n {
+        return x.to_vec();
     }
     let n_cone = (n + mu * t) / (1.0 + mu * mu);
     let mut p = vec![n_cone; 1];
