@@ -48,6 +48,7 @@ use super::{
     Tangential, closed_at_rest, column, dot, linearized_state, plate,
 };
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
+use faer::linalg::solvers::Solve;
 use plate::dot_dense;
 
 /// The work of the fallback's projected Gauss-Seidel, at most: `sweeps m^2 <= FALLBACK_WORK`
@@ -68,6 +69,11 @@ const FALLBACK_WINDOW: usize = 20_000;
 /// Projected Gauss-Seidel sweeps before the semi-smooth Newton method starts from their
 /// tractions.
 const START_SWEEPS: usize = 1000;
+
+/// Projected Gauss-Seidel sweeps before the local solver's first semi-smooth Newton attempt,
+/// and the steps that attempt may take ([`Linearized::warm_solution`]).
+const WARM_SWEEPS: usize = 10;
+const WARM_STEPS: usize = 8;
 
 /// The sweeps stop when no traction changes by more than this, relative to the largest.
 const FALLBACK_TOLERANCE: f64 = 1e-12;
@@ -197,7 +203,8 @@ impl ContactAnalysis {
 
 /// The conditions `S t - r = rho` of `laws.len()` nodes, each with its normal unknown followed
 /// by `tangents` tangential ones (`S` symmetric), solved as the fallback solves them
-/// ([`Linearized::solution`]). The solver of [`crate::contact::local`].
+/// ([`Linearized::solution`]) but from a shorter start first ([`Linearized::warm_solution`]).
+/// The solver of [`crate::contact::local`].
 pub(crate) fn solve_conditions(
     s: DMatrix<f64>,
     r: Vec<f64>,
@@ -205,7 +212,7 @@ pub(crate) fn solve_conditions(
     tangents: usize,
 ) -> ConditionsSolve {
     let (unknowns, laws) = node_unknowns(laws, tangents);
-    Linearized::new(&unknowns, &laws, |_, _| tangents, s, r).unbordered_solution()
+    Linearized::new(&unknowns, &laws, |_, _| tangents, s, r).warm_solution()
 }
 
 /// The unknowns `(pair, node, row)` of some nodes and the friction law of each.
@@ -471,7 +478,7 @@ impl<'a> Linearized<'a> {
     fn unbordered_solution(&self) -> ConditionsSolve {
         let m = self.r.len();
         let (start, sweeps) = self.projected(vec![0.0; m], START_SWEEPS);
-        let (outcome, steps) = self.counted_active_set(start.clone());
+        let (outcome, steps) = self.counted_active_set(start.clone(), ACTIVE_SET_STEPS);
         match outcome {
             Some(t) => ConditionsSolve {
                 t,
@@ -487,6 +494,33 @@ impl<'a> Linearized<'a> {
                     settled: false,
                     steps,
                     sweeps: sweeps + after,
+                }
+            }
+        }
+    }
+
+    /// The local solver's order ([`solve_conditions`]): the semi-smooth Newton method from a
+    /// warm start of [`WARM_SWEEPS`] projected sweeps (as Siconos starts its Newton method
+    /// from a few extragradient iterations), within [`WARM_STEPS`]; where it does not settle
+    /// there, the fallback's order ([`unbordered_solution`](Self::unbordered_solution)). The
+    /// fallback itself keeps its long start: it runs once an increment has failed, where a
+    /// robust start matters more than its sweeps.
+    fn warm_solution(&self) -> ConditionsSolve {
+        let m = self.r.len();
+        let (warm, sweeps) = self.projected(vec![0.0; m], WARM_SWEEPS);
+        match self.counted_active_set(warm, WARM_STEPS) {
+            (Some(t), steps) => ConditionsSolve {
+                t,
+                settled: true,
+                steps,
+                sweeps,
+            },
+            (None, steps) => {
+                let full = self.unbordered_solution();
+                ConditionsSolve {
+                    steps: steps + full.steps,
+                    sweeps: sweeps + full.sweeps,
+                    ..full
                 }
             }
         }
@@ -604,15 +638,16 @@ impl<'a> Linearized<'a> {
     /// same choice again, which it then satisfies exactly. `None` when it does not settle
     /// within [`ACTIVE_SET_STEPS`] or a step's matrix is singular.
     fn active_set(&self, t: Vec<f64>) -> Option<Vec<f64>> {
-        self.counted_active_set(t).0
+        self.counted_active_set(t, ACTIVE_SET_STEPS).0
     }
 
-    /// [`active_set`](Self::active_set), with the steps it took (the linear solves).
-    fn counted_active_set(&self, mut t: Vec<f64>) -> (Option<Vec<f64>>, usize) {
+    /// [`active_set`](Self::active_set) within `max_steps`, with the steps it took (the
+    /// linear solves).
+    fn counted_active_set(&self, mut t: Vec<f64>, max_steps: usize) -> (Option<Vec<f64>>, usize) {
         let (s, m) = (&self.s, self.r.len());
         let k = self.border.as_ref().map_or(0, PlateBorder::len);
         let mut last: Vec<Condition> = Vec::new();
-        for steps in 0..ACTIVE_SET_STEPS {
+        for steps in 0..max_steps {
             let rho = self.residual(&t);
             let mut conditions = vec![Condition::Zero; m];
             conditions.resize(m + k, Condition::Balance);
@@ -649,7 +684,7 @@ impl<'a> Linearized<'a> {
             }
             last = conditions;
         }
-        (None, ACTIVE_SET_STEPS)
+        (None, max_steps)
     }
 
     /// One semi-smooth Newton step: the solution of the linear `conditions`, one per unknown
@@ -685,7 +720,12 @@ impl<'a> Linearized<'a> {
                 }
             }
         }
-        Some(a.lu().solve(&g)?.iter().copied().collect())
+        // faer's blocked LU (the product's small system is factored by it too, boundary.rs)
+        let a = faer::MatRef::from_column_major_slice(a.as_slice(), n, n);
+        let mut x = faer::Mat::from_fn(n, 1, |i, _| g[i]);
+        a.partial_piv_lu().solve_in_place(x.as_mut());
+        let x: Vec<f64> = (0..n).map(|i| x[(i, 0)]).collect();
+        x.iter().all(|v| v.is_finite()).then_some(x)
     }
 }
 
