@@ -121,7 +121,7 @@ step "cargo fmt --check"
 cargo fmt --check
 
 step "cargo doc --no-deps"
-RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps
+RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps --all-features
 
 # Last, because it rebuilds target/release/libhycon.* with the feature (the install and the
 # consumers above used the default build).
