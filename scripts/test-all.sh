@@ -121,7 +121,9 @@ step "cargo fmt --check"
 cargo fmt --check
 
 step "cargo doc --no-deps"
-RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps
+# With all features, as clippy: rustdoc then reuses clippy's check build of the dependencies (the
+# lab's manifest gives bitflags the feature proptest gives it there), docs/ci-timings.md.
+RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps --all-features
 
 # Last, because it rebuilds target/release/libhycon.* with the feature (the install and the
 # consumers above used the default build).
