@@ -189,8 +189,9 @@ impl LocalProblem {
     }
 
     /// The solution by the semi-smooth Newton method on the conditions (the primal-dual
-    /// active set method, started by projected Gauss-Seidel sweeps: the fallback's solver,
-    /// docs/method.md "The fallback"), in hycon's signs (module docs) and back.
+    /// active set method of the fallback, docs/method.md "The fallback"), from 10 projected
+    /// Gauss-Seidel sweeps within 8 steps and, where that does not settle, from the
+    /// fallback's long start; in hycon's signs (module docs) and back.
     pub fn solve_newton(&self) -> LocalSolve {
         let (s, rh, laws) = self.hycon_form();
         let laws: Vec<&dyn FrictionLaw> = laws.iter().map(|l| l as &dyn FrictionLaw).collect();
