@@ -9,6 +9,7 @@ mod axisymmetric;
 mod c_api;
 mod contact3d_geometry;
 mod contact3d_plate;
+mod contact3d_slip_directions;
 mod contact3d_validation;
 mod contact_cutback;
 mod contact_geometry;

@@ -16,14 +16,14 @@
 
 use crate::closed3d::HertzSphere;
 use crate::hertz3d::{POISSON, YOUNGS, e_star};
+use crate::solid_scene::{Multipliers, SolidScene};
 use hycon::Result;
 use hycon::contact::iteration::{
     ContactAnalysis, ContactOptions, FacePair, IncrementInfo, NodeResult, PlateControl,
 };
 use hycon::contact::space::Vector;
+use hycon::solid::Isotropic;
 use hycon::solid::contact_meshes::{CapModel, CapOnBlock, ContactMesh};
-use hycon::solid::model::SolidModel;
-use hycon::solid::{BrickFormulation, Isotropic};
 
 /// The analysis of `mesh` (a cap on a block) with the cap's top tied to a rigid plate (module
 /// docs): both bodies of `E = 1` and `poisson`, the contact pair `pair`.
@@ -32,27 +32,20 @@ use hycon::solid::{BrickFormulation, Isotropic};
 /// Those of the material, the model and `ContactAnalysis::solid_with_plate`.
 pub fn tied_cap(mesh: &ContactMesh, poisson: f64, pair: FacePair) -> Result<ContactAnalysis> {
     let material = Isotropic::new(YOUNGS, poisson)?;
-    let mut model = SolidModel::new(
-        mesh.mesh.clone(),
-        vec![material, material],
-        BrickFormulation::Hybrid18,
+    // the scene's bodies, supports and planes; its pair is `pair`
+    let scene = SolidScene::new(
+        mesh.clone(),
+        [material; 2],
+        &[0, 1, 2],
+        Multipliers::Upper,
+        pair.friction,
     )?;
-    model.prescribe(&mesh.b_bottom, &[0, 1, 2])?;
-    model.prescribe(&mesh.a_top, &[0, 1, 2])?;
-    for (plane, nodes) in &mesh.symmetry {
-        // the scenes' planes are x = 0 and y = 0 (`fix` keeps the held and tied nodes' zero)
-        let d = (plane.normal.iter()).position(|&v| v != 0.0).unwrap_or(0);
-        for &n in nodes {
-            model.fix(n, d, 0.0);
-        }
-    }
-    let planes: Vec<_> = mesh.symmetry.iter().map(|(p, _)| *p).collect();
     ContactAnalysis::solid_with_plate(
-        model,
+        scene.model,
         vec![pair],
-        &planes,
+        &scene.planes,
         ContactOptions::default(),
-        mesh.a_top.clone(),
+        scene.mesh.a_top,
     )
 }
 

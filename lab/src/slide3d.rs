@@ -12,13 +12,13 @@
 //! facets, a slip direction kept from the first drag increment errs in direction.
 //! [`Slide::run`] reports both per increment ([`Increment`]).
 
+use crate::solid_scene::{Multipliers, SolidScene};
 use hycon::Result;
 use hycon::contact::iteration::{
-    ContactAnalysis, ContactOptions, FacePair, Kinematics, NodeResult, NodeState,
+    ContactAnalysis, ContactOptions, Kinematics, NodeResult, NodeState,
 };
+use hycon::solid::Isotropic;
 use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
-use hycon::solid::model::SolidModel;
-use hycon::solid::{BrickFormulation, Isotropic};
 
 /// Young's modulus of both bodies.
 pub const YOUNGS: f64 = 1.0;
@@ -130,26 +130,19 @@ impl Slide {
     /// # Errors
     /// Those of the mesh, the model and `ContactAnalysis::solid`.
     pub fn analysis(&self) -> Result<(ContactMesh, ContactAnalysis)> {
-        let mesh = self.mesh()?;
         let material = Isotropic::new(YOUNGS, POISSON)?;
-        let mut model = SolidModel::new(
-            mesh.mesh.clone(),
-            vec![material, material],
-            BrickFormulation::Hybrid18,
+        let scene = SolidScene::new(
+            self.mesh()?,
+            [material; 2],
+            &[0, 1, 2],
+            Multipliers::Upper,
+            self.mu,
         )?;
-        model.prescribe(&mesh.b_bottom, &[0, 1, 2])?;
-        model.prescribe(&mesh.a_top, &[0, 1, 2])?;
-        let pair = FacePair {
-            a: mesh.a_faces.clone(),
-            b: mesh.b_faces.clone(),
-            friction: self.mu,
-        };
-        let options = ContactOptions {
+        let analysis = scene.analysis(ContactOptions {
             kinematics: self.kinematics,
             ..ContactOptions::default()
-        };
-        let analysis = ContactAnalysis::solid(model, vec![pair], &[], options)?;
-        Ok((mesh, analysis))
+        })?;
+        Ok((scene.mesh, analysis))
     }
 
     /// The prescribed values of the block's top (the model's `3 n_nodes` dofs) after `step`

@@ -101,8 +101,8 @@ mod small_system;
 mod solid;
 mod surfaces;
 use active_set::{
-    ActiveSet, BNodeHit, BNodes, EDGE_PENETRATION, Locks, NodeFacts, NodeKey, Rows, Tolerances,
-    close_nearest, closed_at_rest, linearized_state, rows_of,
+    ActiveSet, BNodeHit, BNodes, EDGE_PENETRATION, LINEARIZED_CONE, Locks, NodeFacts, NodeKey,
+    Rows, Tolerances, close_nearest, closed_at_rest, linearized_state, rows_of,
 };
 use boundary::{Boundary, Flexibility};
 pub use checks::{CONDITION_LIMIT, SMALL_SLIDING_LIMIT};

@@ -357,7 +357,8 @@ impl ContactAnalysis {
     ///                 gap = 0 (complementarity)      |gap| / g_s
     /// stick:          |ts| <= mu p                   max(0, |ts| - mu p) / tn_max
     ///                 no slip                        |v| / v_s
-    /// slip:           slip opposes ts (sign v >= 0)  max(0, -sign v) / v_s
+    /// slip:           slip opposes ts (d . v >= 0)    max(0, -d . v) / v_s
+    ///                 slip along d (on a face)       |v - (d . v) d| / v_s
     /// B node over an A segment whose two nodes are open (pointwise):
     ///                 distance >= 0                  max(0, -distance) / g_s
     /// ```
@@ -369,7 +370,8 @@ impl ContactAnalysis {
     /// `1e-3` of the gap scale, as in the axisymmetric sphere of
     /// `lab/tests/contact_axisymmetric.rs`, whose results are validated against Hertz).
     ///
-    /// (a slip node carries `ts = mu sign tn` by construction, a frictionless one `ts = 0`).
+    /// (`d` is a slip node's direction; it carries `ts = mu tn d` by construction, a frictionless
+    /// node `ts = 0`).
     pub(super) fn violation(
         &self,
         surfaces: &[ContactSurface],
@@ -431,10 +433,20 @@ impl ContactAnalysis {
                         );
                         found(slip().norm() / motion_scale, "a stick node slides");
                     }
-                    NodeState::Slip { direction } if !law.is_frictionless() => found(
-                        -direction.along(&slip()) / motion_scale,
-                        "a slip node slides against its friction",
-                    ),
+                    NodeState::Slip { direction } if !law.is_frictionless() => {
+                        let slip = slip();
+                        let along = direction.along(&slip);
+                        found(
+                            -along / motion_scale,
+                            "a slip node slides against its friction",
+                        );
+                        // on a face the slip must be parallel to the direction too: its part
+                        // across it (exactly 0 in the plane, where `d = +-1`)
+                        found(
+                            (slip - direction.vector().scaled(along)).norm() / motion_scale,
+                            "a slip node slides across the direction of its friction",
+                        );
+                    }
                     _ => {}
                 }
             }

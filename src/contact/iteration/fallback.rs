@@ -44,8 +44,8 @@
 use super::driver::Attempt;
 use super::small_system::{Row, SmallSystem};
 use super::{
-    Border, ContactAnalysis, ContactSurface, DMatrix, DVector, FrictionLaw, NodeState, Result,
-    Tangential, closed_at_rest, column, dot, linearized_state, plate,
+    Border, ContactAnalysis, ContactSurface, DMatrix, DVector, FrictionLaw, LINEARIZED_CONE,
+    NodeState, Result, Tangential, closed_at_rest, column, dot, linearized_state, plate,
 };
 use crate::contact::tangent::{MAX_TANGENTS, SAME_DIRECTION};
 use faer::linalg::solvers::Solve;
@@ -65,6 +65,12 @@ const FALLBACK_WORK: f64 = 4e9;
 /// projected iteration does not converge (with a large `mu` the friction bounds that follow
 /// `tn` can keep it cycling), and more sweeps would not help.
 const FALLBACK_WINDOW: usize = 20_000;
+
+/// Gauss-Seidel's tractions that did not settle are taken as they are when they satisfy the
+/// conditions to this ([`Linearized::breach`]: sweeps at the round-off floor of a rotated
+/// model), else the Newton method with turning directions is tried
+/// ([`Linearized::solution`]).
+const GAUSS_SEIDEL_BREACH: f64 = 1e-6;
 
 /// Projected Gauss-Seidel sweeps before the semi-smooth Newton method starts from their
 /// tractions.
@@ -373,6 +379,37 @@ impl Candidate<'_> {
         self.tangent_unknowns().map(|(j, _)| s[(j, j)]).sum()
     }
 
+    /// On a face (both tangents kept), the Newton linearization of its slip condition
+    /// ([`TurningCone`]) at the tractions `t` with normal `tn`, trial tangential traction `at`,
+    /// slip coefficients `c` and tangent scale `sigma`, into `conditions`.
+    fn turning(
+        &self,
+        tn: f64,
+        at: Tangential,
+        c: Tangential,
+        sigma: f64,
+        conditions: &mut [Condition],
+    ) {
+        let (mu, size) = (c.norm(), at.norm());
+        let q = at.scaled(1.0 / size);
+        let first = self.normal + 1;
+        for (j, cj) in self.tangent_unknowns() {
+            let mut w = [0.0; MAX_TANGENTS];
+            for (k, ck) in self.tangent_unknowns() {
+                let delta = if j == k { 1.0 } else { 0.0 };
+                let (qj, qk) = (q.components()[cj], q.components()[ck]);
+                w[k - first] = mu * tn * (delta - qj * qk) / size;
+            }
+            conditions[j] = Condition::TurningCone(TurningCone {
+                normal: self.normal,
+                c: c.components()[cj],
+                first,
+                w,
+                sigma,
+            });
+        }
+    }
+
     /// Its tangential traction in `t`.
     pub(super) fn tangential(&self, t: &[f64]) -> Tangential {
         self.trial(|j| t[j])
@@ -399,11 +436,44 @@ pub(super) enum Condition {
     Row,
     Zero,
     Cone(usize, f64),
+    TurningCone(TurningCone),
     Balance,
 }
 
+/// The Newton linearization of a face node's slip condition (two tangential unknowns):
+/// `ts = c(at) tn` with `c = -mu at / |at|` turning with the trial traction `at = ts - rho_t /
+/// sigma`, so that the direction converges quadratically with the tractions (a direction held
+/// from the last step, as [`Condition::Cone`] does in the plane, converges linearly at best,
+/// and on a face of 20 slipping nodes it wandered for the whole step budget:
+/// `solid_randomized` seed 1 round 106). Row `j` of a node's tangential unknowns:
+/// `dts_j - c_j dtn + sum_k w_k d(at_k) = -(ts_j - c_j tn)`, with
+/// `w_k = mu tn (delta_jk - q_j q_k) / |at|`, `q = at / |at|` and `d(at_k) = dt_k - (S_k dt +
+/// G_k dU) / sigma`; for `t + dt` it reads `ts_j - c_j tn + sum_k w_k (t_k - (S_k t + G_k U) /
+/// sigma) = -sum_k w_k r_k / sigma` (`P(q) at = 0`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct TurningCone {
+    /// The node's normal unknown.
+    normal: usize,
+    /// `c_j`.
+    c: f64,
+    /// The node's first tangential unknown (they follow each other).
+    first: usize,
+    /// `w_k` per tangential unknown of the node.
+    w: [f64; MAX_TANGENTS],
+    /// The node's tangent scale ([`Candidate::tangent_scale`]).
+    sigma: f64,
+}
+
+/// A step's turning slip coefficients ([`TurningCone`]) that agree with the last's to this,
+/// relative to their size, make the same choice: the Newton steps converge quadratically down
+/// to round-off, whose floor was `1e-11` to `2e-10` in `solid_randomized` seed 1 round 106 in
+/// other units (with [`SAME_DIRECTION`] they never stopped); `1e-9` of a slip across its
+/// direction is far below the slip tolerance.
+const TURNING_DIRECTION: f64 = 1e-9;
+
 /// Whether a step makes the same choice as the last: the same kind of condition per unknown,
-/// and on the cone slip coefficients equal to [`SAME_DIRECTION`] of their size. In the plane
+/// and on the cone slip coefficients equal to [`SAME_DIRECTION`] of their size
+/// ([`TURNING_DIRECTION`] for turning ones). In the plane
 /// the coefficients are exactly `+mu` or `-mu`, so the choice is the same or not; on a face
 /// (two tangents) the direction of the slip turns continuously from step to step, and a
 /// solution of conditions whose directions agree to round-off satisfies them to round-off.
@@ -412,6 +482,10 @@ fn same_conditions(a: &[Condition], b: &[Condition]) -> bool {
         && a.iter().zip(b).all(|(x, y)| match (*x, *y) {
             (Condition::Cone(i, c), Condition::Cone(j, d)) => {
                 i == j && (c - d).abs() <= SAME_DIRECTION * (c.abs() + d.abs())
+            }
+            (Condition::TurningCone(a), Condition::TurningCone(b)) => {
+                a.normal == b.normal
+                    && (a.c - b.c).abs() <= TURNING_DIRECTION * (a.c.abs() + b.c.abs())
             }
             _ => x == y,
         })
@@ -464,7 +538,14 @@ impl<'a> Linearized<'a> {
 
     /// The solution: a rough start by projected Gauss-Seidel ([`START_SWEEPS`]), then exact
     /// by the semi-smooth Newton method; where that does not settle, Gauss-Seidel on to
-    /// convergence (within [`FALLBACK_WORK`]).
+    /// convergence (within [`FALLBACK_WORK`]); where that does not settle either (with the
+    /// friction bounds following `tn` the sweeps can cycle, in one order of the nodes and not
+    /// in another), the Newton method again from the start with a face node's slip direction
+    /// linearized too ([`TurningCone`]), and Gauss-Seidel's last tractions if that fails.
+    /// (Not the turning directions first: where the held ones settle, at a zero increment
+    /// whose slip nodes sit on the cone with no slip, the turning ones settled on stick or
+    /// slip by round-off from iterate to iterate, and the contact set cycled in 3 of
+    /// `solid_randomized`'s first 150 rounds of seed 1.)
     fn solution(&self) -> Vec<f64> {
         if let Some(border) = &self.border {
             return self.bordered_solution(border);
@@ -477,38 +558,47 @@ impl<'a> Linearized<'a> {
     /// the steps and sweeps it took.
     fn unbordered_solution(&self) -> ConditionsSolve {
         let m = self.r.len();
-        let (start, sweeps) = self.projected(vec![0.0; m], START_SWEEPS);
-        let (outcome, steps) = self.counted_active_set(start.clone(), ACTIVE_SET_STEPS);
-        match outcome {
-            Some(t) => ConditionsSolve {
+        let (start, sweeps, _) = self.projected(vec![0.0; m], START_SWEEPS);
+        let (outcome, steps) = self.counted_active_set(start.clone(), ACTIVE_SET_STEPS, false);
+        if let Some(t) = outcome {
+            return ConditionsSolve {
                 t,
                 settled: true,
                 steps,
                 sweeps,
-            },
-            None => {
-                let more = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
-                let (t, after) = self.projected(start, more.max(FALLBACK_WINDOW));
-                ConditionsSolve {
-                    t,
-                    settled: false,
-                    steps,
-                    sweeps: sweeps + after,
-                }
-            }
+            };
+        }
+        let more = (FALLBACK_WORK / (m * m).max(1) as f64) as usize;
+        let (t, after, settled) = self.projected(start.clone(), more.max(FALLBACK_WINDOW));
+        let sweeps = sweeps + after;
+        if settled || !self.on_a_face() || self.breach(&t) <= GAUSS_SEIDEL_BREACH {
+            return ConditionsSolve {
+                t,
+                settled,
+                steps,
+                sweeps,
+            };
+        }
+        let (turned, more_steps) = self.counted_active_set(start, ACTIVE_SET_STEPS, true);
+        ConditionsSolve {
+            settled: turned.is_some(),
+            t: turned.unwrap_or(t),
+            steps: steps + more_steps,
+            sweeps,
         }
     }
 
-    /// The local solver's order ([`solve_conditions`]): the semi-smooth Newton method from a
-    /// warm start of [`WARM_SWEEPS`] projected sweeps (as Siconos starts its Newton method
-    /// from a few extragradient iterations), within [`WARM_STEPS`]; where it does not settle
-    /// there, the fallback's order ([`unbordered_solution`](Self::unbordered_solution)). The
-    /// fallback itself keeps its long start: it runs once an increment has failed, where a
-    /// robust start matters more than its sweeps.
+    /// The local solver's order ([`solve_conditions`]): the semi-smooth Newton method with
+    /// the slip directions linearized ([`TurningCone`]) from a warm start of [`WARM_SWEEPS`]
+    /// projected sweeps (as Siconos starts its Newton method from a few extragradient
+    /// iterations), within [`WARM_STEPS`]; where it does not settle there, the fallback's
+    /// order ([`unbordered_solution`](Self::unbordered_solution)). The fallback itself keeps
+    /// its long start and its held directions first: it runs once an increment has failed,
+    /// where a robust start matters more than its sweeps.
     fn warm_solution(&self) -> ConditionsSolve {
         let m = self.r.len();
-        let (warm, sweeps) = self.projected(vec![0.0; m], WARM_SWEEPS);
-        match self.counted_active_set(warm, WARM_STEPS) {
+        let (warm, sweeps, _) = self.projected(vec![0.0; m], WARM_SWEEPS);
+        match self.counted_active_set(warm, WARM_STEPS, true) {
             (Some(t), steps) => ConditionsSolve {
                 t,
                 settled: true,
@@ -526,6 +616,49 @@ impl<'a> Linearized<'a> {
         }
     }
 
+    /// Whether a candidate has two tangential unknowns (a face node with both tangents kept).
+    fn on_a_face(&self) -> bool {
+        self.nodes.iter().any(|n| n.tangents == MAX_TANGENTS)
+    }
+
+    /// How far the tractions `t` are from satisfying the conditions, node by node, each in
+    /// its own units: tractions relative to the largest `|t|` (`tn <= 0`, `|ts| <= mu |tn|`),
+    /// residuals relative to the largest `|rho|` (`rho_n <= 0`, `rho_n = 0` where `tn < 0`,
+    /// `rho_t = 0` inside the cone, on it `rho_t` opposing `ts` and parallel to it); 0 for
+    /// an exact solution, unchanged under a change of units.
+    fn breach(&self, t: &[f64]) -> f64 {
+        let rho = self.residual(t);
+        let largest = |v: &[f64]| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        let relative = |v: f64, scale: f64| if scale > 0.0 { v / scale } else { 0.0 };
+        let (t_max, rho_max) = (largest(&t[..rho.len()]), largest(&rho));
+        let mut worst = 0.0f64;
+        for node in &self.nodes {
+            let i = node.normal;
+            worst = worst
+                .max(relative(t[i], t_max))
+                .max(relative(rho[i], rho_max));
+            if t[i] < 0.0 {
+                worst = worst.max(relative(rho[i].abs(), rho_max));
+            }
+            if node.tangents == 0 {
+                continue;
+            }
+            let (ts, rho_t) = (node.tangential(t), node.tangential(&rho));
+            let limit = node.law.stick_limit(t[i]);
+            worst = worst.max(relative(ts.norm() - limit, t_max));
+            let off = if ts.norm() < (1.0 - LINEARIZED_CONE) * limit || ts.norm() == 0.0 {
+                rho_t.norm()
+            } else {
+                // on the cone: `rho_t = -a ts / |ts|` with `a >= 0`
+                let q = ts.scaled(1.0 / ts.norm());
+                let a = -q.dot(&rho_t);
+                (rho_t - q.scaled(-a)).norm() + (-a).max(0.0)
+            };
+            worst = worst.max(relative(off, rho_max));
+        }
+        worst
+    }
+
     /// With a plate border: the contact tractions `t` and the plate's translations `U`
     /// together, by the semi-smooth Newton method from the solution with every candidate
     /// closed and sticking; where that does not settle, the condensed conditions'
@@ -537,7 +670,7 @@ impl<'a> Linearized<'a> {
         let Some(start) = self.step(&all) else {
             return vec![0.0; m + border.len()];
         };
-        if let Some(x) = self.active_set(start.clone()) {
+        if let Some(x) = self.active_set(start.clone(), false) {
             return x;
         }
         let condensed = border.condensed(&self.s, &self.r).map(|(s, r)| Linearized {
@@ -578,8 +711,9 @@ impl<'a> Linearized<'a> {
     /// than [`FALLBACK_TOLERANCE`] of the largest, within `sweeps`, or until a window of
     /// [`FALLBACK_WINDOW`] sweeps brings the change no lower. `S` is symmetric positive
     /// definite here (every column is its row).
-    /// Returns the tractions and the sweeps taken.
-    fn projected(&self, mut t: Vec<f64>, sweeps: usize) -> (Vec<f64>, usize) {
+    /// Returns the tractions, the sweeps taken and whether they settled (no traction
+    /// changing by more than [`FALLBACK_TOLERANCE`] of the largest).
+    fn projected(&self, mut t: Vec<f64>, sweeps: usize) -> (Vec<f64>, usize, bool) {
         let s = &self.s;
         let mut taken = 0;
         let mut rho = self.residual(&t);
@@ -615,7 +749,7 @@ impl<'a> Linearized<'a> {
             let largest = t.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             let relative = largest_change / largest;
             if largest_change <= FALLBACK_TOLERANCE * largest {
-                break;
+                return (t, sweep, true);
             }
             if sweep % FALLBACK_WINDOW == 0 {
                 if relative >= last_window {
@@ -624,7 +758,7 @@ impl<'a> Linearized<'a> {
                 last_window = relative;
             }
         }
-        (t, taken)
+        (t, taken, false)
     }
 
     /// The semi-smooth Newton method (the primal-dual active set method of Hüeber, Stadler
@@ -635,15 +769,22 @@ impl<'a> Linearized<'a> {
     /// law's slip coefficients for the slip `at` opposes: [`FrictionLaw::trial_slip`]; in
     /// the plane `ts = mu |tn|` with the sign of `at`). Each step
     /// solves those linear conditions; the method stops when a step's solution makes the
-    /// same choice again, which it then satisfies exactly. `None` when it does not settle
+    /// same choice again, which it then satisfies exactly. With `turning`, a face node's slip
+    /// condition is linearized in its direction too ([`TurningCone`]), and the method stops
+    /// when the directions agree to [`TURNING_DIRECTION`]. `None` when it does not settle
     /// within [`ACTIVE_SET_STEPS`] or a step's matrix is singular.
-    fn active_set(&self, t: Vec<f64>) -> Option<Vec<f64>> {
-        self.counted_active_set(t, ACTIVE_SET_STEPS).0
+    fn active_set(&self, t: Vec<f64>, turning: bool) -> Option<Vec<f64>> {
+        self.counted_active_set(t, ACTIVE_SET_STEPS, turning).0
     }
 
     /// [`active_set`](Self::active_set) within `max_steps`, with the steps it took (the
     /// linear solves).
-    fn counted_active_set(&self, mut t: Vec<f64>, max_steps: usize) -> (Option<Vec<f64>>, usize) {
+    fn counted_active_set(
+        &self,
+        mut t: Vec<f64>,
+        max_steps: usize,
+        turning: bool,
+    ) -> (Option<Vec<f64>>, usize) {
         let (s, m) = (&self.s, self.r.len());
         let k = self.border.as_ref().map_or(0, PlateBorder::len);
         let mut last: Vec<Condition> = Vec::new();
@@ -669,8 +810,12 @@ impl<'a> Linearized<'a> {
                         .for_each(|(j, _)| conditions[j] = Condition::Row),
                     Some(slip) => {
                         let c = node.law.slip_coefficients(slip);
-                        for (j, ci) in node.tangent_unknowns() {
-                            conditions[j] = Condition::Cone(i, c.components()[ci]);
+                        if turning && node.tangents == MAX_TANGENTS {
+                            node.turning(t[i], at, c, sigma, &mut conditions);
+                        } else {
+                            for (j, ci) in node.tangent_unknowns() {
+                                conditions[j] = Condition::Cone(i, c.components()[ci]);
+                            }
                         }
                     }
                 }
@@ -717,6 +862,23 @@ impl<'a> Linearized<'a> {
                 Condition::Cone(normal, c) => {
                     a[(j, j)] = 1.0;
                     a[(j, normal)] = -c;
+                }
+                Condition::TurningCone(cone) => {
+                    a[(j, j)] = 1.0;
+                    a[(j, cone.normal)] = -cone.c;
+                    for (k, w) in cone.w.iter().enumerate() {
+                        let tk = cone.first + k;
+                        a[(j, tk)] += w;
+                        for (l, &x) in s.column(tk).iter().enumerate() {
+                            a[(j, l)] -= w * x / cone.sigma;
+                        }
+                        if let Some(b) = &self.border {
+                            for (l, &x) in b.g.row(tk).iter().enumerate() {
+                                a[(j, m + l)] -= w * x / cone.sigma;
+                            }
+                        }
+                        g[j] -= w * self.r[tk] / cone.sigma;
+                    }
                 }
             }
         }
@@ -799,7 +961,7 @@ mod tests {
             let laws: Vec<&dyn FrictionLaw> = vec![&law; unknowns.len()];
             let c = Linearized::new(&unknowns, &laws, |_, _| 1, s, r);
             let m = c.r.len();
-            let exact = c.active_set(vec![0.0; m]).expect("settles");
+            let exact = c.active_set(vec![0.0; m], false).expect("settles");
             assert!(violation(&c, &exact) < 1e-13, "seed {seed}");
             // the same solution as projected Gauss-Seidel's to convergence (unique here)
             let projected = c.projected(vec![0.0; m], 1_000_000).0;
@@ -886,7 +1048,9 @@ mod tests {
                 let m = c.r.len();
                 c.border = Some(plate_border(&unknowns, seed, floating));
                 let b = c.border.as_ref().unwrap();
-                let x = c.active_set(c.bordered_solution(b)).expect("settles");
+                let x = c
+                    .active_set(c.bordered_solution(b), false)
+                    .expect("settles");
                 assert!(
                     violation(&c, &x) < 1e-12,
                     "seed {seed}: {}",
@@ -969,7 +1133,7 @@ mod tests {
             c.nodes[0].tangential(&[-1.0, 0.25, 0.0]),
             Tangential::on_face(0.0, 0.25)
         );
-        assert_eq!(c.active_set(vec![0.0; 3]).unwrap(), [-1.0, 0.2, 0.0]);
+        assert_eq!(c.active_set(vec![0.0; 3], false).unwrap(), [-1.0, 0.2, 0.0]);
     }
 
     /// On a face (two tangents per node, the cone a disc): the semi-smooth Newton method, its
@@ -986,7 +1150,7 @@ mod tests {
             let c = Linearized::new(&unknowns, &laws, |_, _| 2, s, r);
             assert!(c.nodes.iter().any(|n| n.tangents == 2));
             let m = c.r.len();
-            let exact = c.active_set(vec![0.0; m]).expect("settles");
+            let exact = c.active_set(vec![0.0; m], false).expect("settles");
             assert!(
                 violation(&c, &exact) < 1e-12,
                 "seed {seed}: {}",

@@ -37,7 +37,8 @@ pub(super) use convergence::{Convergence, Iterate};
 pub(super) use locks::{EDGE_PENETRATION, Locks};
 use locks::{open_closed_flips, stick_slip_flips};
 pub(super) use rules::{
-    BNodeHit, NodeFacts, Rows, Tolerances, close_nearest, closed_at_rest, closed_next,
+    BNodeHit, LINEARIZED_CONE, NodeFacts, Rows, Tolerances, close_nearest, closed_at_rest,
+    closed_next,
     linearized_state, rows_of,
 };
 
