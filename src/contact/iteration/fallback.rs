@@ -810,7 +810,9 @@ impl<'a> Linearized<'a> {
                         .for_each(|(j, _)| conditions[j] = Condition::Row),
                     Some(slip) => {
                         let c = node.law.slip_coefficients(slip);
-                        if turning && node.tangents == MAX_TANGENTS {
+                        // no direction to turn without friction (the local problem's
+                        // frictionless contacts keep their tangential rows) or trial
+                        if turning && node.tangents == MAX_TANGENTS && c.norm() > 0.0 {
                             node.turning(t[i], at, c, sigma, &mut conditions);
                         } else {
                             for (j, ci) in node.tangent_unknowns() {

@@ -38,8 +38,7 @@ pub(super) use locks::{EDGE_PENETRATION, Locks};
 use locks::{open_closed_flips, stick_slip_flips};
 pub(super) use rules::{
     BNodeHit, LINEARIZED_CONE, NodeFacts, Rows, Tolerances, close_nearest, closed_at_rest,
-    closed_next,
-    linearized_state, rows_of,
+    closed_next, linearized_state, rows_of,
 };
 
 /// A node of the iteration: (pair, index of the A node in the pair).
