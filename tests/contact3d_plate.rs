@@ -8,6 +8,7 @@
 //! bit; bad input gets its error. (Hertz and Mindlin at a given load:
 //! `lab/tests/contact_plate3d.rs`.)
 
+use crate::common::block_on_flat_model;
 use crate::common::{last_error, turned_block_on_flat};
 use hycon::contact::faces::SymmetryPlane;
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, PlateControl};
@@ -31,25 +32,12 @@ fn pair(c: &ContactMesh, friction: f64) -> FacePair {
     }
 }
 
-/// The model with the flat's bottom held and the block's top prescribed in `top` directions.
-fn model(c: &ContactMesh, top: &[usize]) -> SolidModel {
-    let material = Isotropic::new(1.0, 0.3).unwrap();
-    let mut model = SolidModel::new(
-        c.mesh.clone(),
-        vec![material; 2],
-        BrickFormulation::Hybrid18,
-    )
-    .unwrap();
-    model.prescribe(&c.b_bottom, &[0, 1, 2]).unwrap();
-    model.prescribe(&c.a_top, top).unwrap();
-    model
-}
-
 /// The Rust analysis with the block's top tied to the plate.
 fn rust_analysis(c: &ContactMesh, friction: f64) -> ContactAnalysis {
     let (options, top) = (ContactOptions::default(), c.a_top.clone());
     let pairs = vec![pair(c, friction)];
-    ContactAnalysis::solid_with_plate(model(c, &[0, 1, 2]), pairs, &[], options, top).unwrap()
+    ContactAnalysis::solid_with_plate(block_on_flat_model(c, &[0, 1, 2]), pairs, &[], options, top)
+        .unwrap()
 }
 
 /// The faces as `(brick, local face)` values, flat.
@@ -326,7 +314,7 @@ fn bad_plate_input_is_refused() {
 
     // without a plate
     let rust = ContactAnalysis::solid(
-        model(&c, &[0, 1, 2]),
+        block_on_flat_model(&c, &[0, 1, 2]),
         vec![pair(&c, FRICTION)],
         &[],
         ContactOptions::default(),
@@ -382,7 +370,7 @@ fn a_plate_does_not_cross_a_symmetry_plane() {
     let plane = SymmetryPlane::new(c.mesh.nodes[c.a_top[0]], [1.0, 0.0, 0.0]).unwrap();
     let options = ContactOptions::default();
     let mut analysis = ContactAnalysis::solid_with_plate(
-        model(&c, &[0, 1, 2]),
+        block_on_flat_model(&c, &[0, 1, 2]),
         vec![pair(&c, FRICTION)],
         &[plane],
         options,

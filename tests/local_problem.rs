@@ -1,12 +1,11 @@
 //! The local frictional contact problem (`hycon::contact::local`): its checks, its
 //! natural-map residual and the semi-smooth Newton solve, on problems with known solutions.
 
+use crate::common::block_on_flat_model;
 use crate::common::turned_block_on_flat;
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, PlateControl};
 use hycon::contact::local::LocalProblem;
 use hycon::solid::contact_meshes::ContactMesh;
-use hycon::solid::model::SolidModel;
-use hycon::solid::{BrickFormulation, Isotropic};
 use nalgebra::DMatrix;
 
 /// One contact, `W = I`, pressed (`q_N = -1`) and sheared beyond the cone (`|q_T| = 0.5 >
@@ -74,15 +73,7 @@ fn a_frictionless_contact_has_no_tangential_reaction() {
 /// The turned block on the flat (`E = 1`, `nu = 0.3`, the flat's bottom held), its top
 /// prescribed in every direction (or, with a plate, tied to it).
 fn block_on_flat(c: &ContactMesh, friction: f64, plate: bool) -> ContactAnalysis {
-    let material = Isotropic::new(1.0, 0.3).unwrap();
-    let mut model = SolidModel::new(
-        c.mesh.clone(),
-        vec![material; 2],
-        BrickFormulation::Hybrid18,
-    )
-    .unwrap();
-    model.prescribe(&c.b_bottom, &[0, 1, 2]).unwrap();
-    model.prescribe(&c.a_top, &[0, 1, 2]).unwrap();
+    let model = block_on_flat_model(c, &[0, 1, 2]);
     let pairs = vec![FacePair {
         a: c.a_faces.clone(),
         b: c.b_faces.clone(),

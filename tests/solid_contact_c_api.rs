@@ -3,12 +3,11 @@
 //! from Rust on the same model: the C results are the Rust ones copied, to the bit, with
 //! friction and slip (a block turned by 30 degrees pressed on a flat, then dragged along x).
 
+use crate::common::block_on_flat_model;
 use crate::common::{last_error, turned_block_on_flat};
 use hycon::contact::iteration::{ContactAnalysis, ContactOptions, FacePair, NodeState};
 use hycon::ffi::*;
 use hycon::solid::contact_meshes::ContactMesh;
-use hycon::solid::model::SolidModel;
-use hycon::solid::{BrickFormulation, Isotropic};
 use std::ptr::{null, null_mut};
 
 const FRICTION: f64 = 0.3;
@@ -38,15 +37,7 @@ fn brick_faces(c: &ContactMesh, faces: &[[usize; 4]]) -> Vec<usize> {
 
 /// The Rust analysis after the press and the drag.
 fn rust_analysis(c: &ContactMesh) -> ContactAnalysis {
-    let material = Isotropic::new(1.0, 0.3).unwrap();
-    let mut model = SolidModel::new(
-        c.mesh.clone(),
-        vec![material; 2],
-        BrickFormulation::Hybrid18,
-    )
-    .unwrap();
-    model.prescribe(&c.b_bottom, &[0, 1, 2]).unwrap();
-    model.prescribe(&c.a_top, &[0, 1, 2]).unwrap();
+    let model = block_on_flat_model(c, &[0, 1, 2]);
     let pair = FacePair {
         a: c.a_faces.clone(),
         b: c.b_faces.clone(),

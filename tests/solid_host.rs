@@ -8,6 +8,7 @@
 //! (`1e-10` of each quantity's largest value: the two paths factor `K` in different orders);
 //! bad input is named, each case with its own check.
 
+use crate::common::block_on_flat_model;
 use crate::common::last_error;
 use faer::Mat;
 use hycon::contact::bodies::{
@@ -52,15 +53,7 @@ fn block() -> Scene {
     }
     .build()
     .unwrap();
-    let material = Isotropic::new(1.0, 0.3).unwrap();
-    let mut model = SolidModel::new(
-        c.mesh.clone(),
-        vec![material; 2],
-        BrickFormulation::Hybrid18,
-    )
-    .unwrap();
-    model.prescribe(&c.b_bottom, &[0, 1, 2]).unwrap();
-    model.prescribe(&c.a_top, &[0, 1, 2]).unwrap();
+    let model = block_on_flat_model(&c, &[0, 1, 2]);
     let increments = [0.0, DRAG]
         .iter()
         .map(|&drag| {

@@ -4,6 +4,8 @@
 use hycon::ffi::hycon_last_error_message;
 use hycon::mesh::Mesh;
 use hycon::solid::contact_meshes::{BlockOnFlat, ContactMesh};
+use hycon::solid::model::SolidModel;
+use hycon::solid::{BrickFormulation, Isotropic};
 use std::ffi::CStr;
 
 pub mod press3d;
@@ -35,6 +37,21 @@ pub fn turned_block_on_flat() -> ContactMesh {
     }
     .build()
     .unwrap()
+}
+
+/// A block-on-flat mesh `c` as a solid model (`E = 1`, `nu = 0.3`, hybrid bricks): the flat's
+/// bottom held, the block's top prescribed in the directions `top`.
+pub fn block_on_flat_model(c: &ContactMesh, top: &[usize]) -> SolidModel {
+    let material = Isotropic::new(1.0, 0.3).unwrap();
+    let mut model = SolidModel::new(
+        c.mesh.clone(),
+        vec![material; 2],
+        BrickFormulation::Hybrid18,
+    )
+    .unwrap();
+    model.prescribe(&c.b_bottom, &[0, 1, 2]).unwrap();
+    model.prescribe(&c.a_top, top).unwrap();
+    model
 }
 
 /// A permutation of `0..n` from `seed` (Fisher-Yates with a small LCG).
