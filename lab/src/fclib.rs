@@ -190,16 +190,12 @@ pub fn write_local(
         return fail("libfclib could not create the file (fclib_write_local failed)".into());
     }
     if let Some(r) = solution {
-        let (mut r, mut u) = (r.to_vec(), problem.velocity(r));
-        let mut record = sys::fclib_solution {
-            v: ptr::null_mut(),
-            u: u.as_mut_ptr(),
-            r: r.as_mut_ptr(),
-            l: ptr::null_mut(),
-        };
         // SAFETY: u and r have the W->n entries libfclib writes from them; v and l are not
         // read for a local problem without R.
-        if unsafe { sys::fclib_write_solution(&mut record, c_path.as_ptr()) } != 1 {
+        let written = with_solution_record(problem, r, |record| unsafe {
+            sys::fclib_write_solution(record, c_path.as_ptr())
+        });
+        if written != 1 {
             return fail("libfclib could not add the solution (fclib_write_solution)".into());
         }
     }
@@ -291,6 +287,22 @@ pub fn merit(problem: &LocalProblem, r: &[f64]) -> Option<f64> {
     if problem.dim() != 3 || r.len() != problem.q().len() {
         return None;
     }
+    // SAFETY: the view and the record live through the call, r and u have W->n entries, and
+    // libfclib's merit function only reads them (V and R null: no equality part).
+    Some(with_solution_record(problem, r, |record| {
+        with_fclib_local(problem, None, |local| unsafe {
+            sys::fclib_merit_local(local, sys::fclib_merit_MERIT_1, record)
+        })
+    }))
+}
+
+/// `f` given FCLIB's solution record of the reactions `r` (`u = W r + q` beside them; no `v`
+/// and `l`, which a local problem has not), its arrays alive through the call.
+fn with_solution_record<T>(
+    problem: &LocalProblem,
+    r: &[f64],
+    f: impl FnOnce(&mut sys::fclib_solution) -> T,
+) -> T {
     let (mut r, mut u) = (r.to_vec(), problem.velocity(r));
     let mut record = sys::fclib_solution {
         v: ptr::null_mut(),
@@ -298,11 +310,7 @@ pub fn merit(problem: &LocalProblem, r: &[f64]) -> Option<f64> {
         r: r.as_mut_ptr(),
         l: ptr::null_mut(),
     };
-    // SAFETY: the view and the record live through the call, r and u have W->n entries, and
-    // libfclib's merit function only reads them (V and R null: no equality part).
-    Some(with_fclib_local(problem, None, |local| unsafe {
-        sys::fclib_merit_local(local, sys::fclib_merit_MERIT_1, &mut record)
-    }))
+    f(&mut record)
 }
 
 unsafe extern "C" {

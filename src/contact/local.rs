@@ -210,13 +210,9 @@ impl LocalProblem {
         self.solved(&solve.t, solve.settled, solve.iterations, 0)
     }
 
-    /// The sign of component `j` between FCLIB's and hycon's signs: `-1` on a normal.
+    /// The sign of component `j` between FCLIB's and hycon's signs ([`fclib_sign`]).
     fn flip(&self, j: usize) -> f64 {
-        if j.is_multiple_of(self.dim) {
-            -1.0
-        } else {
-            1.0
-        }
+        fclib_sign(j, self.dim)
     }
 
     /// The problem in hycon's signs (module docs): `S = D W D`, `r_h = -D q` and a Coulomb law
@@ -247,6 +243,12 @@ impl LocalProblem {
             sweeps,
         }
     }
+}
+
+/// The sign of component `j` of contacts of `dim` components between FCLIB's and hycon's
+/// signs (module docs: `D`): `-1` on a normal, `1` on a tangent.
+pub(crate) fn fclib_sign(j: usize, dim: usize) -> f64 {
+    if j.is_multiple_of(dim) { -1.0 } else { 1.0 }
 }
 
 /// The closest point of the cone `|x_T| <= mu x_N` to `x` (normal first).

@@ -6,7 +6,7 @@ use super::fallback::PlateBorder;
 use super::plate::Border;
 use super::small_system::Row;
 use super::{ContactAnalysis, DMatrix, NodeState, dot};
-use crate::contact::local::{LocalContact, LocalExport, LocalProblem};
+use crate::contact::local::{LocalContact, LocalExport, LocalProblem, fclib_sign};
 use crate::error::{Error, Result};
 
 /// What an increment converged from, kept for its local problem: the converged contact
@@ -125,7 +125,7 @@ impl ContactAnalysis {
             });
         }
         let m = contacts.len() * d;
-        let sign = |a: usize| if a.is_multiple_of(d) { -1.0 } else { 1.0 };
+        let sign = |a: usize| fclib_sign(a, d);
         let mut w = DMatrix::zeros(m, m);
         let mut q = vec![0.0; m];
         let mut kept = vec![false; m];
